@@ -1,0 +1,44 @@
+#pragma once
+// What the user asked for on the command line.
+
+#include "PathTracer.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+
+namespace ptview {
+
+// Exit codes: 0 success, 1 the renderer failed at run time, 2 bad input (arguments or files).
+constexpr int kExitRuntimeError = 1;
+constexpr int kExitBadInput = 2;
+
+struct RenderOptions {
+    std::string scenePath;
+    std::string outPath;            // .png (tone mapped, 8-bit sRGB-like gamma 2.2) or .pfm (linear)
+    int samplesPerPixel = 256;
+    std::optional<glm::ivec2> size; // default: the scene camera's resolution
+    RenderSettings settings;
+    float exposureStops = 0.0f;
+};
+
+struct ViewerOptions {
+    std::string scenePath;
+    RenderSettings settings;
+    float exposureStops = 0.0f;
+    int frames = 0;              // > 0: render this many frames, save the screenshot, exit
+    std::string screenshotPath;
+};
+
+struct CommandLine {
+    enum class Mode { Viewer, Render } mode = Mode::Viewer;
+    RenderOptions render;
+    ViewerOptions viewer;
+};
+
+// Parses argv. Returns the exit code to leave with when parsing ends the program (help, or bad
+// arguments, reported on stderr), or nullopt to go on.
+std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out);
+
+} // namespace ptview

@@ -1,0 +1,129 @@
+#include "RenderCommand.h"
+
+#include "HeadlessContext.h"
+#include "ImageIO.h"
+#include "PathTracer.h"
+#include "Scene.h"
+#include "ShaderAssembler.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace ptview {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+enum class OutputFormat { Png, Pfm };
+
+// Progress on stderr: one line rewritten in place on a terminal, a line every few seconds in a log.
+class ProgressReporter {
+public:
+    ProgressReporter(std::string label, int total) : label_(std::move(label)), total_(total), start_(Clock::now()),
+                                                     interactive_(::isatty(STDERR_FILENO) != 0) {}
+
+    void update(int done) {
+        double elapsed = secondsSince(start_);
+        double interval = interactive_ ? 0.5 : 5.0;
+        if (elapsed < 1.0 || elapsed - lastReport_ < interval) return;
+        lastReport_ = elapsed;
+        double eta = done > 0 ? elapsed * (total_ - done) / done : 0.0;
+        std::fprintf(stderr, "%s%s: %d/%d spp (%.0f%%), %.1f s elapsed, ETA %.1f s%s", interactive_ ? "\r" : "",
+                     label_.c_str(), done, total_, 100.0 * done / total_, elapsed, eta, interactive_ ? "   " : "\n");
+        reported_ = true;
+    }
+
+    void finish() const {
+        if (reported_ && interactive_) std::fputc('\n', stderr);
+    }
+
+    double elapsed() const { return secondsSince(start_); }
+
+private:
+    std::string label_;
+    int total_;
+    Clock::time_point start_;
+    bool interactive_;
+    double lastReport_ = 0.0;
+    bool reported_ = false;
+};
+
+} // namespace
+
+int runRenderCommand(const RenderOptions& options) {
+    // Everything the user typed is checked before any GPU work, and no file is written on error.
+    std::string extension = std::filesystem::path(options.outPath).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+    OutputFormat format;
+    if (extension == ".png") {
+        format = OutputFormat::Png;
+    } else if (extension == ".pfm") {
+        format = OutputFormat::Pfm;
+    } else {
+        std::cerr << "ptview: " << options.outPath << ": unsupported output format (use .png or .pfm)\n";
+        return kExitBadInput;
+    }
+    std::filesystem::path outDir = std::filesystem::path(options.outPath).parent_path();
+    if (!outDir.empty() && !std::filesystem::is_directory(outDir)) {
+        std::cerr << "ptview: " << options.outPath << ": directory " << outDir << " does not exist\n";
+        return kExitBadInput;
+    }
+
+    Scene scene;
+    try {
+        scene = loadScene(options.scenePath);
+    } catch (const SceneError& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    glm::ivec2 size = options.size.value_or(scene.camera.resolution);
+
+    try {
+        HeadlessContext context;
+        PathTracer tracer;
+        tracer.setScene(scene);
+        tracer.setImageSize(size);
+        tracer.setSettings(options.settings);
+
+        // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample.
+        ProgressReporter progress(options.scenePath, options.samplesPerPixel);
+        int batch = 1;
+        while (tracer.sampleCount() < options.samplesPerPixel) {
+            Clock::time_point batchStart = Clock::now();
+            int count = std::min(batch, options.samplesPerPixel - tracer.sampleCount());
+            for (int i = 0; i < count; ++i) tracer.renderSample();
+            glFinish();
+            if (secondsSince(batchStart) < 0.2 && batch < 1024) batch *= 2;
+            progress.update(tracer.sampleCount());
+        }
+        progress.finish();
+        double seconds = progress.elapsed();
+
+        if (format == OutputFormat::Png)
+            writePng(options.outPath, tracer.readToneMapped(options.exposureStops));
+        else
+            writePfm(options.outPath, tracer.readMean());
+
+        double samples = static_cast<double>(size.x) * size.y * options.samplesPerPixel;
+        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %.2f s, %.1f M samples/s) on %s\n",
+                     options.outPath.c_str(), size.x, size.y, options.samplesPerPixel, options.settings.maxDepth,
+                     seconds, samples / seconds * 1e-6, context.description().c_str());
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitRuntimeError;
+    }
+    return 0;
+}
+
+} // namespace ptview

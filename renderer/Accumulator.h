@@ -1,0 +1,60 @@
+#pragma once
+// Progressive accumulation targets: per pixel, a Kahan-compensated sum of samples and a sum of
+// squares, in RGBA32F textures that are ping-ponged (a pass reads the previous sums and writes
+// the new ones). shaders/accumulate.glsl is the GPU half.
+
+#include "GlObjects.h"
+#include "GlProgram.h"
+#include "Image.h"
+
+#include <glm/glm.hpp>
+
+namespace ptview {
+
+// Per-pixel mean and the variance of that mean, estimated from the samples themselves.
+struct PixelStatistics {
+    ImageRgbF mean;
+    ImageRgbF varianceOfMean;
+    int sampleCount = 0;
+};
+
+class Accumulator {
+public:
+    static constexpr int kTextureCount = 3; // sum, compensation, sum of squares
+
+    // Points a program's accumulate.glsl samplers at units firstUnit .. firstUnit + 2.
+    static void bindSamplers(const GlProgram& program, int firstUnit);
+
+    // Reallocates (and restarts) only when the size changes. Throws std::invalid_argument for
+    // sizes the GPU cannot hold.
+    void resize(glm::ivec2 size);
+    void restart() { sampleCount_ = 0; }
+
+    // Binds the target to draw into and the previous sums for reading; the caller then draws
+    // one sample per pixel with a program that calls accumulateSample().
+    void beginPass(int firstUnit) const;
+    void endPass();
+
+    // Binds the latest sum and compensation for display.
+    void bindLatest(int sumUnit, int compensationUnit) const;
+
+    PixelStatistics readStatistics() const;
+
+    int sampleCount() const { return sampleCount_; }
+    glm::ivec2 size() const { return size_; }
+
+private:
+    struct Target {
+        GlFramebuffer framebuffer;
+        GlTexture textures[kTextureCount];
+    };
+    const Target& latest() const { return targets_[1 - writeIndex_]; }
+    void readAttachment(int attachment, std::vector<float>& rgba) const;
+
+    Target targets_[2];
+    int writeIndex_ = 0;
+    int sampleCount_ = 0;
+    glm::ivec2 size_{0, 0};
+};
+
+} // namespace ptview

@@ -1,0 +1,25 @@
+#pragma once
+// A linked vertex + fragment program built from assembled GLSL.
+
+#include "GlObjects.h"
+#include "ShaderAssembler.h"
+
+namespace ptview {
+
+class GlProgram {
+public:
+    // Throws ShaderError with the driver's log mapped to file:line.
+    GlProgram(const AssembledShader& vertex, const AssembledShader& fragment);
+
+    GLuint id() const { return handle_.id(); }
+    // Looked up once at set-up time; -1 when the compiler removed an unused uniform.
+    GLint uniformLocation(const char* name) const { return glGetUniformLocation(id(), name); }
+    // Binds a sampler uniform to a texture unit for the program's lifetime.
+    void bindSamplerUnit(const char* name, GLint unit) const;
+    void bindUniformBlock(const char* name, GLuint bindingPoint) const;
+
+private:
+    GlProgramHandle handle_;
+};
+
+} // namespace ptview

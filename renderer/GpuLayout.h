@@ -1,0 +1,49 @@
+#pragma once
+// C++ mirrors of GPU data layouts. Each must match its GLSL declaration byte for byte.
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace ptview {
+
+// shaders/frame_uniforms.glsl, std140: a vec3 and the scalar after it share one 16-byte slot.
+struct FrameUniforms {
+    glm::vec3 cameraEye;
+    float tanHalfFovY;
+    glm::vec3 cameraRight;
+    float aspect;
+    glm::vec3 cameraUp;
+    std::uint32_t frameIndex;
+    glm::vec3 cameraForward;
+    std::uint32_t seed;
+    glm::vec3 environmentRadiance;
+    std::int32_t maxDepth;
+    glm::ivec2 imageSize;
+    std::int32_t pad0;
+    std::int32_t pad1;
+};
+static_assert(sizeof(FrameUniforms) == 96, "FrameUniforms must match the std140 FrameBlock");
+
+// shaders/scene_data.glsl: one texel (RGBA32F) of a buffer texture.
+struct GpuSphere {
+    glm::vec3 center;
+    float radius;
+};
+static_assert(sizeof(GpuSphere) == 16, "one RGBA32F texel");
+
+struct GpuQuad {
+    glm::vec4 center; // w unused
+    glm::vec4 u;
+    glm::vec4 v;
+    glm::vec4 dual;   // cross(u, v) / |cross(u, v)|^2, turns hit offsets into (a, b) coordinates
+};
+static_assert(sizeof(GpuQuad) == 64, "four RGBA32F texels");
+
+struct GpuMaterialParams {
+    glm::vec4 albedo;   // w unused
+    glm::vec4 radiance; // w unused
+};
+static_assert(sizeof(GpuMaterialParams) == 32, "two RGBA32F texels");
+
+} // namespace ptview

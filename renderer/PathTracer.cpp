@@ -1,0 +1,159 @@
+#include "PathTracer.h"
+
+#include "GpuLayout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+constexpr GLuint kFrameBlockBinding = 0;
+constexpr int kAccumulationUnit = 0;                             // units 0..2
+constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..8
+
+// Our passes own all of this state; ImGui or a caller may have changed it.
+void resetPassState() {
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_FRAMEBUFFER_SRGB); // the display pass encodes gamma itself
+}
+
+void flipRows(std::vector<std::uint8_t>& pixels, int width, int height, int bytesPerPixel) {
+    size_t rowBytes = static_cast<size_t>(width) * static_cast<size_t>(bytesPerPixel);
+    for (int y = 0; y < height / 2; ++y) {
+        auto top = pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(y) * rowBytes);
+        auto bottom = pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(height - 1 - y) * rowBytes);
+        std::swap_ranges(top, top + static_cast<std::ptrdiff_t>(rowBytes), bottom);
+    }
+}
+
+} // namespace
+
+PathTracer::PathTracer(const std::filesystem::path& shaderDir) {
+    ShaderAssembler assembler(shaderDir);
+    AssembledShader vertex = assembler.assemble("fullscreen.vert");
+    pathTraceProgram_ = std::make_unique<GlProgram>(vertex, assembler.assemble("pathtrace.frag"));
+    displayProgram_ = std::make_unique<GlProgram>(vertex, assembler.assemble("display.frag"));
+
+    const GlProgram& trace = *pathTraceProgram_;
+    trace.bindUniformBlock("FrameBlock", kFrameBlockBinding);
+    Accumulator::bindSamplers(trace, kAccumulationUnit);
+    const char* sceneSamplers[GpuScene::kTextureCount] = {"uSpheres", "uSphereMaterials", "uQuads",
+                                                          "uQuadMaterials", "uMaterialParams", "uMaterialTypes"};
+    for (int i = 0; i < GpuScene::kTextureCount; ++i) trace.bindSamplerUnit(sceneSamplers[i], kSceneUnit + i);
+    sphereCountLocation_ = trace.uniformLocation("uSphereCount");
+    quadCountLocation_ = trace.uniformLocation("uQuadCount");
+
+    const GlProgram& show = *displayProgram_;
+    show.bindSamplerUnit("uSum", 0);
+    show.bindSamplerUnit("uCompensation", 1);
+    invSampleCountLocation_ = show.uniformLocation("uInvSampleCount");
+    exposureScaleLocation_ = show.uniformLocation("uExposureScale");
+    outputSizeLocation_ = show.uniformLocation("uOutputSize");
+
+    emptyVertexArray_ = createVertexArray();
+    frameUniformBuffer_ = createBuffer();
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
+    glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+void PathTracer::setScene(const Scene& scene) {
+    gpuScene_.upload(scene);
+    glUseProgram(pathTraceProgram_->id());
+    glUniform1i(sphereCountLocation_, gpuScene_.sphereCount());
+    glUniform1i(quadCountLocation_, gpuScene_.quadCount());
+    camera_ = scene.camera;
+    environmentRadiance_ = scene.environment;
+    restart();
+}
+
+void PathTracer::setSettings(const RenderSettings& settings) {
+    if (settings == settings_) return;
+    settings_ = settings;
+    restart();
+}
+
+void PathTracer::setImageSize(glm::ivec2 size) {
+    accumulator_.resize(size);
+}
+
+void PathTracer::updateFrameUniforms() {
+    glm::ivec2 size = accumulator_.size();
+    glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
+    glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
+    FrameUniforms frame{};
+    frame.cameraEye = camera_.eye;
+    frame.tanHalfFovY = std::tan(glm::radians(camera_.vfovDeg) * 0.5f);
+    frame.cameraRight = right;
+    frame.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    frame.cameraUp = glm::cross(right, forward);
+    frame.frameIndex = static_cast<std::uint32_t>(accumulator_.sampleCount());
+    frame.cameraForward = forward;
+    frame.seed = settings_.seed;
+    frame.environmentRadiance = environmentRadiance_;
+    frame.maxDepth = settings_.maxDepth;
+    frame.imageSize = size;
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameUniforms), &frame);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+void PathTracer::renderSample() {
+    updateFrameUniforms();
+    resetPassState();
+    accumulator_.beginPass(kAccumulationUnit);
+    glUseProgram(pathTraceProgram_->id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
+    gpuScene_.bind(kSceneUnit);
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    accumulator_.endPass();
+}
+
+void PathTracer::display(glm::ivec2 viewportSize, float exposureStops) const {
+    resetPassState();
+    glViewport(0, 0, viewportSize.x, viewportSize.y);
+    glUseProgram(displayProgram_->id());
+    int samples = accumulator_.sampleCount();
+    glUniform1f(invSampleCountLocation_, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
+    glUniform1f(exposureScaleLocation_, std::exp2(exposureStops));
+    glUniform2f(outputSizeLocation_, static_cast<float>(viewportSize.x), static_cast<float>(viewportSize.y));
+    accumulator_.bindLatest(0, 1);
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+}
+
+ImageRgbF PathTracer::readMean() const {
+    return accumulator_.readStatistics().mean;
+}
+
+ImageRgba8 PathTracer::readToneMapped(float exposureStops) const {
+    glm::ivec2 size = accumulator_.size();
+    GlTexture color = createTexture();
+    glBindTexture(GL_TEXTURE_2D, color.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    GlFramebuffer framebuffer = createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("cannot render to an RGBA8 target");
+    display(size, exposureStops);
+
+    ImageRgba8 image{size.x, size.y, {}};
+    image.rgba.resize(static_cast<size_t>(size.x) * static_cast<size_t>(size.y) * 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    flipRows(image.rgba, image.width, image.height, 4);
+    return image;
+}
+
+} // namespace ptview

@@ -1,0 +1,69 @@
+#pragma once
+// The scene model: what a scene file describes, validated and in world units (metres, Y up).
+// The UI edits this model and the renderer uploads it; neither knows about JSON.
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ptview {
+
+struct CameraDesc {
+    glm::vec3 eye{0.0f, 0.0f, 1.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};  // projected to be orthogonal to the view direction
+    float vfovDeg = 40.0f;           // full vertical field of view
+    glm::ivec2 resolution{512, 512}; // width, height in pixels
+};
+
+enum class MaterialType { Diffuse, Emitter };
+
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::Diffuse;
+    glm::vec3 albedo{0.0f};   // Diffuse: Lambertian reflectance in [0, 1], two-sided
+    glm::vec3 radiance{0.0f}; // Emitter: radiance leaving the front side (W sr^-1 m^-2); reflects nothing
+};
+
+enum class ShapeType { Sphere, Quad, Box };
+
+struct Shape {
+    std::string name;
+    ShapeType type = ShapeType::Sphere;
+    int material = 0; // index into Scene::materials
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;                  // Sphere
+    glm::vec3 u{1.0f, 0.0f, 0.0f};        // Quad: corners center ± u ± v,
+    glm::vec3 v{0.0f, 0.0f, 1.0f};        //   front (emitting) side along cross(u, v)
+    glm::vec3 halfSize{0.5f};             // Box: half extents in its local frame
+    glm::vec3 rotationAxis{0.0f, 1.0f, 0.0f}; // Box: local-to-world rotation, right-hand rule
+    float rotationDeg = 0.0f;
+};
+
+struct Scene {
+    std::filesystem::path path; // where it was loaded from; empty for scenes built in code
+    CameraDesc camera;
+    glm::vec3 environment{0.0f}; // radiance of rays that escape the scene
+    std::vector<Material> materials;
+    std::vector<Shape> shapes;
+};
+
+// A scene file that cannot be used. what() reads "FILE: /json/pointer: reason" or, for
+// malformed JSON, "FILE:LINE:COLUMN: reason", on one line.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Throws SceneError naming the file and the place in it.
+Scene loadScene(const std::filesystem::path& path);
+// Same, for text already in memory; sourceName is used in error messages and as Scene::path.
+Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName);
+
+// The rotation of a box as a matrix (local to world).
+glm::mat3 boxRotation(const Shape& box);
+
+} // namespace ptview

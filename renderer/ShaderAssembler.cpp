@@ -1,0 +1,105 @@
+#include "ShaderAssembler.h"
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace ptview {
+namespace {
+
+std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Expander {
+    const std::filesystem::path& includeDir;
+    AssembledShader& out;
+    std::set<std::filesystem::path> included;
+
+    void expand(const std::filesystem::path& path, const std::string& displayName) {
+        std::filesystem::path canonical = std::filesystem::weakly_canonical(path);
+        if (!included.insert(canonical).second) return;
+        std::ifstream probe(path);
+        if (!probe) throw ShaderError(displayName + ": cannot open shader file");
+        std::string text = readText(path);
+
+        int fileId = static_cast<int>(out.files.size());
+        out.files.push_back(displayName);
+        static const std::regex includeLine(R"re(^\s*#\s*include\s*"([^"]+)"\s*$)re");
+        static const std::regex versionLine(R"(^\s*#\s*version\b.*$)");
+
+        std::istringstream lines(text);
+        std::string line;
+        int lineNumber = 0;
+        bool needsLineDirective = true;
+        while (std::getline(lines, line)) {
+            ++lineNumber;
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            std::smatch match;
+            if (std::regex_match(line, versionLine)) {
+                // #version must stay the first line of the program.
+                if (fileId != 0 || !out.source.empty())
+                    throw ShaderError(displayName + ":" + std::to_string(lineNumber) +
+                                      ": #version allowed only on the first line of the entry file");
+                out.source += line + "\n";
+                needsLineDirective = true;
+                continue;
+            }
+            if (std::regex_match(line, match, includeLine)) {
+                std::filesystem::path target = includeDir / match[1].str();
+                if (!std::filesystem::is_regular_file(target))
+                    throw ShaderError(displayName + ":" + std::to_string(lineNumber) +
+                                      ": cannot find include \"" + match[1].str() + "\"");
+                expand(target, match[1].str());
+                needsLineDirective = true;
+                continue;
+            }
+            if (needsLineDirective) {
+                out.source += "#line " + std::to_string(lineNumber) + " " + std::to_string(fileId) + "\n";
+                needsLineDirective = false;
+            }
+            out.source += line + "\n";
+        }
+    }
+};
+
+} // namespace
+
+ShaderAssembler::ShaderAssembler(std::filesystem::path includeDir) : includeDir_(std::move(includeDir)) {}
+
+AssembledShader ShaderAssembler::assemble(const std::filesystem::path& entry) const {
+    AssembledShader shader;
+    Expander expander{includeDir_, shader, {}};
+    std::filesystem::path path = entry.is_absolute() ? entry : includeDir_ / entry;
+    expander.expand(path, entry.is_absolute() ? entry.string() : entry.generic_string());
+    return shader;
+}
+
+std::string AssembledShader::annotateLog(const std::string& driverLog) const {
+    // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ...".
+    static const std::regex mesa(R"((\d+):(\d+)\((\d+)\))");
+    static const std::regex nvidia(R"((\d+)\((\d+)\))");
+    auto name = [this](const std::string& id) {
+        size_t index = std::stoul(id);
+        return index < files.size() ? files[index] : "source " + id;
+    };
+    std::istringstream lines(driverLog);
+    std::string line, result;
+    while (std::getline(lines, line)) {
+        std::smatch match;
+        if (std::regex_search(line, match, mesa) && match.position(0) == 0) {
+            line = name(match[1]) + ":" + match[2].str() + ":" + match[3].str() + match.suffix().str();
+        } else if (std::regex_search(line, match, nvidia) && match.position(0) == 0) {
+            line = name(match[1]) + ":" + match[2].str() + match.suffix().str();
+        }
+        result += line + "\n";
+    }
+    return result;
+}
+
+} // namespace ptview

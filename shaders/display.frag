@@ -1,0 +1,19 @@
+#version 410 core
+// Shows the accumulated mean, tone mapped, stretched over the output viewport.
+#include "tonemap.glsl"
+
+uniform sampler2D uSum;
+uniform sampler2D uCompensation;
+uniform float uInvSampleCount;
+uniform float uExposureScale; // 2^exposure
+uniform vec2 uOutputSize;     // viewport size in pixels
+
+out vec4 outColor;
+
+void main() {
+    vec2 texCoord = gl_FragCoord.xy / uOutputSize;
+    vec3 sum = texture(uSum, texCoord).rgb;
+    vec3 compensation = texture(uCompensation, texCoord).rgb;
+    vec3 mean = (sum - compensation) * uInvSampleCount;
+    outColor = vec4(displayTransform(mean, uExposureScale), 1.0);
+}

@@ -1,0 +1,10 @@
+// Per-frame values shared by every pass. Mirrored by FrameUniforms in renderer/GpuLayout.h
+// (std140: each vec3 is followed by the scalar that fills its 16-byte slot).
+layout(std140) uniform FrameBlock {
+    vec3 uCameraEye;          float uTanHalfFovY;
+    vec3 uCameraRight;        float uAspect;       // width / height
+    vec3 uCameraUp;           uint uFrameIndex;    // samples already accumulated
+    vec3 uCameraForward;      uint uSeed;
+    vec3 uEnvironmentRadiance; int uMaxDepth;      // bounces; 0 shows emitters only
+    ivec2 uImageSize;         int uPad0; int uPad1;
+};

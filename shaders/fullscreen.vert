@@ -1,0 +1,7 @@
+#version 410 core
+// One triangle that covers the viewport: cheaper than a quad (no diagonal seam to shade twice)
+// and needs no vertex buffer.
+void main() {
+    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}

@@ -1,0 +1,81 @@
+// Ray-shape intersection against every shape of the scene.
+#include "constants.glsl"
+#include "ray.glsl"
+#include "scene_data.glsl"
+
+struct Hit {
+    float t;
+    vec3 posWorld;
+    vec3 normalGeom; // unit, outward for spheres and along cross(u, v) for quads: the emitting side
+    int material;
+};
+
+// Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
+// Gems, ch. 7) that keeps precision for small spheres far from the origin.
+float intersectSphere(Ray ray, vec4 sphere) {
+    vec3 f = ray.origin - sphere.xyz;
+    float b = dot(f, ray.direction);
+    vec3 offsetFromChord = f - b * ray.direction;
+    float discriminant = sphere.w * sphere.w - dot(offsetFromChord, offsetFromChord);
+    if (discriminant < 0.0) return kInfinity;
+    float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
+    float c = dot(f, f) - sphere.w * sphere.w;
+    float t0 = c / q;
+    float t1 = q;
+    float tNear = min(t0, t1);
+    float tFar = max(t0, t1);
+    if (tNear > 0.0) return tNear;
+    return tFar > 0.0 ? tFar : kInfinity;
+}
+
+// Parallelogram center ± u ± v. `dual` turns the hit offset into the coordinates along u and v
+// without assuming u and v orthogonal.
+float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
+    vec3 n = cross(u, v);
+    float denom = dot(ray.direction, n);
+    if (denom == 0.0) return kInfinity;
+    float t = dot(center - ray.origin, n) / denom;
+    if (!(t > 0.0)) return kInfinity;
+    vec3 offset = ray.origin + t * ray.direction - center;
+    float a = dot(dual, cross(offset, v));
+    float b = dot(dual, cross(u, offset));
+    return (abs(a) <= 1.0 && abs(b) <= 1.0) ? t : kInfinity;
+}
+
+bool intersectScene(Ray ray, out Hit hit) {
+    hit.t = kInfinity;
+    hit.material = -1;
+    int sphereHit = -1;
+    int quadHit = -1;
+    for (int i = 0; i < uSphereCount; ++i) {
+        float t = intersectSphere(ray, texelFetch(uSpheres, i));
+        if (t < hit.t) { hit.t = t; sphereHit = i; }
+    }
+    for (int i = 0; i < uQuadCount; ++i) {
+        float t = intersectQuad(ray, texelFetch(uQuads, 4 * i).xyz, texelFetch(uQuads, 4 * i + 1).xyz,
+                                texelFetch(uQuads, 4 * i + 2).xyz, texelFetch(uQuads, 4 * i + 3).xyz);
+        if (t < hit.t) { hit.t = t; quadHit = i; sphereHit = -1; }
+    }
+    if (hit.t == kInfinity) return false;
+
+    hit.posWorld = ray.origin + hit.t * ray.direction;
+    if (sphereHit >= 0) {
+        vec4 sphere = texelFetch(uSpheres, sphereHit);
+        hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
+        hit.material = int(texelFetch(uSphereMaterials, sphereHit).r);
+    } else {
+        hit.normalGeom = normalize(cross(texelFetch(uQuads, 4 * quadHit + 1).xyz,
+                                         texelFetch(uQuads, 4 * quadHit + 2).xyz));
+        hit.material = int(texelFetch(uQuadMaterials, quadHit).r);
+    }
+    return true;
+}
+
+// A ray leaving a surface point, pushed off the surface along the geometric normal on the side it
+// leaves by. The push grows with the point's magnitude because float spacing does.
+Ray spawnRay(vec3 posWorld, vec3 normalGeom, vec3 directionWorld) {
+    const float kRelativeOffset = 1e-4;
+    float scale = 1.0 + max(abs(posWorld.x), max(abs(posWorld.y), abs(posWorld.z)));
+    vec3 side = dot(directionWorld, normalGeom) >= 0.0 ? normalGeom : -normalGeom;
+    return Ray(posWorld + side * (kRelativeOffset * scale), directionWorld);
+}

@@ -1,0 +1,4 @@
+struct Ray {
+    vec3 origin;
+    vec3 direction; // unit length
+};
