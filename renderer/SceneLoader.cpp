@@ -1,0 +1,528 @@
+// Reads scene files (JSON, described in docs/scene-format.md) into the scene model.
+//
+// Scene files are written by hand, so every rejection names the file and the place in it as a
+// JSON pointer, and anything unexpected (an unknown key, a wrong type, a number that is not
+// finite) is an error rather than silently ignored: a typo such as "radus" would otherwise give a
+// default radius and a puzzling image instead of a message.
+
+#include "Scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace ptview {
+namespace {
+
+// Ordered so that materials keep the order of the file, which the UI lists and Shape::material
+// indexes.
+using Json = nlohmann::ordered_json;
+using Pointer = Json::json_pointer;
+
+constexpr int kMaxResolution = 16384;
+
+// A problem at a place in the document. parseScene adds the file name, so the readers below
+// need not carry it around.
+class PlaceError : public std::runtime_error {
+public:
+    PlaceError(Pointer place, const std::string& reason)
+        : std::runtime_error(reason), where(std::move(place)) {}
+    Pointer where;
+};
+
+// Text that is not JSON at all; only a byte offset can say where.
+class SyntaxError : public std::runtime_error {
+public:
+    SyntaxError(std::size_t byteOffset, const std::string& reason)
+        : std::runtime_error(reason), offset(byteOffset) {}
+    std::size_t offset; // of the offending byte; may be one past the end
+};
+
+// Keys and strings may hold escaped newlines ("a\nb"), which must not break the message in two.
+SceneError oneLineError(const std::string& message) {
+    std::string line;
+    for (char c : message) {
+        auto code = static_cast<unsigned char>(c);
+        if (code < 0x20 || code == 0x7F) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04X", code);
+            line += escaped;
+        } else {
+            line += c;
+        }
+    }
+    return SceneError(line);
+}
+
+[[noreturn]] void fail(const Pointer& at, const std::string& reason) {
+    throw PlaceError(at, reason);
+}
+
+std::string describe(const Json& value) {
+    switch (value.type()) {
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::null: return "null";
+    default: return "a number";
+    }
+}
+
+// nlohmann's messages carry an exception id and its own line/column (which counts a newline as
+// column 0 of the next line); keep only the reason, without the echo of the last token, which
+// for an unterminated string can be the rest of the file.
+std::string shortSyntaxReason(std::string message) {
+    auto dropThrough = [&message](const std::string& marker) {
+        if (std::size_t at = message.find(marker); at != std::string::npos)
+            message.erase(0, at + marker.size());
+    };
+    dropThrough("] ");
+    if (message.rfind("parse error", 0) == 0)
+        dropThrough(": ");
+    if (message.rfind("syntax error while parsing", 0) == 0)
+        dropThrough(" - ");
+    const std::string lastRead = "; last read: '";
+    if (std::size_t begin = message.find(lastRead); begin != std::string::npos) {
+        std::size_t expected = message.find("'; expected ", begin + lastRead.size());
+        std::size_t end = expected == std::string::npos ? message.size() : expected + 1;
+        message.erase(begin, end - begin);
+    }
+    return message;
+}
+
+// Builds the document through nlohmann's SAX interface instead of Json::parse for two things
+// Json::parse cannot do: reject duplicate keys (it keeps the last one silently, so a copied
+// material that was not renamed would replace the original) and name the value whose number
+// overflows, such as 1e999 (it reports that without any position).
+class DocumentBuilder final : public nlohmann::json_sax<Json> {
+public:
+    Json root;
+
+    bool null() override { return addValue(nullptr); }
+    bool boolean(bool value) override { return addValue(value); }
+    bool number_integer(number_integer_t value) override { return addValue(value); }
+    bool number_unsigned(number_unsigned_t value) override { return addValue(value); }
+    bool number_float(number_float_t value, const string_t&) override { return addValue(value); }
+    bool string(string_t& value) override { return addValue(std::move(value)); }
+    bool binary(binary_t& value) override { return addValue(Json::binary(std::move(value))); }
+
+    bool start_object(std::size_t) override { return openContainer(Json::object()); }
+    bool end_object() override { return closeContainer(); }
+    bool start_array(std::size_t) override { return openContainer(Json::array()); }
+    bool end_array() override { return closeContainer(); }
+
+    bool key(string_t& name) override {
+        Frame& top = stack.back();
+        if (top.container->contains(name))
+            fail(placeWithin(stack.size() - 1) / name, "duplicate key");
+        top.key = std::move(name);
+        return true;
+    }
+
+    bool parse_error(std::size_t position, const std::string& lastToken,
+                     const Json::exception& error) override {
+        constexpr int kNumberOverflow = 406;
+        if (error.id == kNumberOverflow)
+            fail(placeWithin(stack.size()), "number " + lastToken + " is out of range");
+        // position counts bytes read, so it is one past the offending byte.
+        throw SyntaxError(position > 0 ? position - 1 : 0, shortSyntaxReason(error.what()));
+    }
+
+private:
+    struct Frame {
+        Json* container;
+        std::string key; // objects: the key whose value is being read
+    };
+    // Pointers stay valid: only the innermost container grows, and none of its elements is open.
+    std::vector<Frame> stack;
+
+    Json* place(Json&& value) {
+        if (stack.empty()) {
+            root = std::move(value);
+            return &root;
+        }
+        Frame& top = stack.back();
+        if (top.container->is_array()) {
+            top.container->push_back(std::move(value));
+            return &top.container->back();
+        }
+        Json& slot = (*top.container)[top.key];
+        slot = std::move(value);
+        return &slot;
+    }
+    bool addValue(Json&& value) {
+        place(std::move(value));
+        return true;
+    }
+    bool openContainer(Json&& empty) {
+        stack.push_back({place(std::move(empty)), {}});
+        return true;
+    }
+    bool closeContainer() {
+        stack.pop_back();
+        return true;
+    }
+
+    // The pointer through the outermost `depth` open containers. In an enclosing array the open
+    // element is the last one; in the innermost container the value being read is not added yet.
+    Pointer placeWithin(std::size_t depth) const {
+        Pointer at;
+        for (std::size_t i = 0; i < depth; ++i) {
+            const Frame& frame = stack[i];
+            if (frame.container->is_object()) {
+                at /= frame.key;
+            } else {
+                bool isOpenElement = i + 1 < stack.size();
+                at /= frame.container->size() - (isOpenElement ? 1 : 0);
+            }
+        }
+        return at;
+    }
+};
+
+// 1-based line and column (in UTF-8 characters, as editors count) of a byte offset.
+std::pair<int, int> lineAndColumn(const std::string& text, std::size_t offset) {
+    offset = std::min(offset, text.size());
+    int line = 1;
+    std::size_t lineStart = 0;
+    for (std::size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            lineStart = i + 1;
+        }
+    }
+    int column = 1;
+    for (std::size_t i = lineStart; i < offset; ++i) {
+        bool isContinuationByte = (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80;
+        column += isContinuationByte ? 0 : 1;
+    }
+    return {line, column};
+}
+
+// --- Readers: each checks one value and names it on failure -------------------------------------
+
+void checkKeys(const Json& object, const Pointer& at, std::initializer_list<const char*> allowed) {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        bool known = std::any_of(allowed.begin(), allowed.end(),
+                                 [&](const char* name) { return it.key() == name; });
+        if (!known) {
+            std::string list;
+            for (const char* name : allowed)
+                list += (list.empty() ? "" : ", ") + std::string(name);
+            fail(at / it.key(), "unknown key (expected one of: " + list + ")");
+        }
+    }
+}
+
+const Json& requireObject(const Json& value, const Pointer& at) {
+    if (!value.is_object())
+        fail(at, "expected an object, got " + describe(value));
+    return value;
+}
+
+const Json& requireKey(const Json& object, const Pointer& at, const char* key) {
+    auto it = object.find(key);
+    if (it == object.end())
+        fail(at / key, "missing required key");
+    return *it;
+}
+
+const Json* optionalKey(const Json& object, const char* key) {
+    auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+}
+
+std::string readString(const Json& value, const Pointer& at) {
+    if (!value.is_string())
+        fail(at, "expected a string, got " + describe(value));
+    return value.get<std::string>();
+}
+
+// The parser already rejects numbers that overflow a double; this catches those that fit a
+// double but not the float the renderer stores.
+float readNumber(const Json& value, const Pointer& at) {
+    if (!value.is_number())
+        fail(at, "expected a number, got " + describe(value));
+    double number = value.get<double>();
+    if (!std::isfinite(number) || std::abs(number) > std::numeric_limits<float>::max())
+        fail(at, "number " + value.dump() + " is out of range");
+    return static_cast<float>(number);
+}
+
+float readPositive(const Json& value, const Pointer& at) {
+    float number = readNumber(value, at);
+    if (!(number > 0.0f))
+        fail(at, "expected a positive number");
+    return number;
+}
+
+// [x, y, z] where every component must satisfy isValid, which `expected` describes.
+template <typename Predicate>
+glm::vec3 readVec3(const Json& value, const Pointer& at, Predicate isValid, const char* expected) {
+    if (!value.is_array() || value.size() != 3)
+        fail(at, "expected an array of 3 numbers");
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) {
+        Pointer componentAt = at / i;
+        v[i] = readNumber(value[i], componentAt);
+        if (!isValid(v[i]))
+            fail(componentAt, std::string("expected ") + expected);
+    }
+    return v;
+}
+
+glm::vec3 readVec3(const Json& value, const Pointer& at) {
+    return readVec3(value, at, [](float) { return true; }, "a number");
+}
+
+glm::vec3 readNonzeroVec3(const Json& value, const Pointer& at) {
+    glm::vec3 v = readVec3(value, at);
+    if (v == glm::vec3(0.0f))
+        fail(at, "expected a nonzero vector");
+    return v;
+}
+
+// Parallel within float noise: the sine of the angle between them is below 1e-6.
+bool areParallel(const glm::vec3& a, const glm::vec3& b) {
+    return glm::length(glm::cross(a, b)) <= 1e-6f * glm::length(a) * glm::length(b);
+}
+
+glm::ivec2 readResolution(const Json& value, const Pointer& at) {
+    if (!value.is_array() || value.size() != 2)
+        fail(at, "expected an array of 2 integers (width, height)");
+    glm::ivec2 resolution;
+    for (int i = 0; i < 2; ++i) {
+        const Json& size = value[i];
+        bool isValid = size.is_number_integer() && size.get<std::int64_t>() >= 1 &&
+                       size.get<std::int64_t>() <= kMaxResolution;
+        if (!isValid)
+            fail(at / i, "expected an integer in [1, " + std::to_string(kMaxResolution) + "]");
+        resolution[i] = size.get<int>();
+    }
+    return resolution;
+}
+
+// Which keys are allowed depends on "type", so it is read first; but when it is missing, a
+// misspelt "typ" is the likely cause and is worth naming, so unknown keys are reported first.
+void requireType(const Json& object, const Pointer& at,
+                 std::initializer_list<const char*> anyType) {
+    if (!object.contains("type")) {
+        checkKeys(object, at, anyType);
+        fail(at / "type", "missing required key");
+    }
+}
+
+// --- Scene parts --------------------------------------------------------------------------------
+
+CameraDesc readCamera(const Json& value, const Pointer& at) {
+    requireObject(value, at);
+    checkKeys(value, at, {"eye", "target", "up", "vfov_deg", "resolution"});
+    CameraDesc camera;
+    camera.eye = readVec3(requireKey(value, at, "eye"), at / "eye");
+    camera.target = readVec3(requireKey(value, at, "target"), at / "target");
+    if (camera.target == camera.eye)
+        fail(at / "target", "must differ from eye");
+    if (const Json* up = optionalKey(value, "up")) {
+        camera.up = readNonzeroVec3(*up, at / "up");
+        if (areParallel(camera.up, camera.target - camera.eye))
+            fail(at / "up", "must not be parallel to the view direction (target - eye)");
+    } else if (areParallel(camera.up, camera.target - camera.eye)) {
+        fail(at / "up", "missing, and the default [0, 1, 0] is parallel to the view direction");
+    }
+    camera.vfovDeg = readNumber(requireKey(value, at, "vfov_deg"), at / "vfov_deg");
+    if (!(camera.vfovDeg > 0.0f && camera.vfovDeg < 180.0f))
+        fail(at / "vfov_deg", "expected a number in (0, 180)");
+    camera.resolution = readResolution(requireKey(value, at, "resolution"), at / "resolution");
+    return camera;
+}
+
+glm::vec3 readEnvironment(const Json& value, const Pointer& at) {
+    requireObject(value, at);
+    checkKeys(value, at, {"color"});
+    return readVec3(requireKey(value, at, "color"), at / "color",
+                    [](float c) { return c >= 0.0f; }, "a non-negative number");
+}
+
+Material readMaterial(const std::string& name, const Json& value, const Pointer& at) {
+    requireObject(value, at);
+    Material material;
+    material.name = name;
+    requireType(value, at, {"type", "albedo", "radiance"});
+    std::string type = readString(value.at("type"), at / "type");
+    if (type == "diffuse") {
+        material.type = MaterialType::Diffuse;
+        checkKeys(value, at, {"type", "albedo"});
+        // Above 1 a surface would reflect more than it receives and paths would not converge.
+        material.albedo = readVec3(requireKey(value, at, "albedo"), at / "albedo",
+                                   [](float c) { return c >= 0.0f && c <= 1.0f; },
+                                   "a number in [0, 1]");
+    } else if (type == "emitter") {
+        material.type = MaterialType::Emitter;
+        checkKeys(value, at, {"type", "radiance"});
+        material.radiance = readVec3(requireKey(value, at, "radiance"), at / "radiance",
+                                     [](float c) { return c >= 0.0f; }, "a non-negative number");
+    } else {
+        fail(at / "type", "unknown material type \"" + type + "\" (expected diffuse or emitter)");
+    }
+    return material;
+}
+
+int findMaterial(const std::vector<Material>& materials, const std::string& name) {
+    auto it = std::find_if(materials.begin(), materials.end(),
+                           [&](const Material& m) { return m.name == name; });
+    return it == materials.end() ? -1 : static_cast<int>(std::distance(materials.begin(), it));
+}
+
+Shape readShape(const Json& value, const Pointer& at, std::size_t index,
+                const std::vector<Material>& materials) {
+    requireObject(value, at);
+    Shape shape;
+    requireType(value, at,
+                {"name", "type", "material", "center", "radius", "u", "v", "half_size",
+                 "rotation"});
+    std::string type = readString(value.at("type"), at / "type");
+    if (type == "sphere") {
+        shape.type = ShapeType::Sphere;
+        checkKeys(value, at, {"name", "type", "material", "center", "radius"});
+    } else if (type == "quad") {
+        shape.type = ShapeType::Quad;
+        checkKeys(value, at, {"name", "type", "material", "center", "u", "v"});
+    } else if (type == "box") {
+        shape.type = ShapeType::Box;
+        checkKeys(value, at, {"name", "type", "material", "center", "half_size", "rotation"});
+    } else {
+        fail(at / "type", "unknown shape type \"" + type + "\" (expected sphere, quad or box)");
+    }
+
+    const Json* name = optionalKey(value, "name");
+    shape.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
+    std::string materialName = readString(requireKey(value, at, "material"), at / "material");
+    shape.material = findMaterial(materials, materialName);
+    if (shape.material < 0)
+        fail(at / "material", "unknown material \"" + materialName + "\"");
+    shape.center = readVec3(requireKey(value, at, "center"), at / "center");
+
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        shape.radius = readPositive(requireKey(value, at, "radius"), at / "radius");
+        break;
+    case ShapeType::Quad:
+        shape.u = readNonzeroVec3(requireKey(value, at, "u"), at / "u");
+        shape.v = readNonzeroVec3(requireKey(value, at, "v"), at / "v");
+        // A degenerate quad has no area and no normal.
+        if (areParallel(shape.u, shape.v))
+            fail(at / "v", "must not be parallel to u");
+        break;
+    case ShapeType::Box:
+        shape.halfSize = readVec3(requireKey(value, at, "half_size"), at / "half_size",
+                                  [](float c) { return c > 0.0f; }, "a positive number");
+        if (const Json* rotation = optionalKey(value, "rotation")) {
+            Pointer rotationAt = at / "rotation";
+            requireObject(*rotation, rotationAt);
+            checkKeys(*rotation, rotationAt, {"axis", "degrees"});
+            shape.rotationAxis =
+                readNonzeroVec3(requireKey(*rotation, rotationAt, "axis"), rotationAt / "axis");
+            shape.rotationDeg =
+                readNumber(requireKey(*rotation, rotationAt, "degrees"), rotationAt / "degrees");
+        }
+        break;
+    }
+    return shape;
+}
+
+Scene readScene(const Json& root) {
+    const Pointer top;
+    if (!root.is_object())
+        fail(top, "expected an object at the top level, got " + describe(root));
+    checkKeys(root, top, {"camera", "environment", "materials", "shapes"});
+
+    Scene scene;
+    scene.camera = readCamera(requireKey(root, top, "camera"), top / "camera");
+    if (const Json* environment = optionalKey(root, "environment"))
+        scene.environment = readEnvironment(*environment, top / "environment");
+
+    const Pointer materialsAt = top / "materials";
+    const Json& materials = requireObject(requireKey(root, top, "materials"), materialsAt);
+    for (auto it = materials.begin(); it != materials.end(); ++it)
+        scene.materials.push_back(readMaterial(it.key(), it.value(), materialsAt / it.key()));
+
+    const Pointer shapesAt = top / "shapes";
+    const Json& shapes = requireKey(root, top, "shapes");
+    if (!shapes.is_array())
+        fail(shapesAt, "expected an array, got " + describe(shapes));
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        scene.shapes.push_back(readShape(shapes[i], shapesAt / i, i, scene.materials));
+    return scene;
+}
+
+} // namespace
+
+Scene loadScene(const std::filesystem::path& path) {
+    auto cannotOpen = [&path](int error) {
+        return oneLineError(path.string() + ": cannot open scene file: " + std::strerror(error));
+    };
+    // Opening a directory succeeds and only the read fails, with a less helpful errno.
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored))
+        throw cannotOpen(EISDIR);
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
+        throw cannotOpen(errno);
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (file.bad())
+        throw cannotOpen(errno);
+    return parseScene(text.str(), path);
+}
+
+Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName) {
+    const std::string file = sourceName.string();
+    try {
+        DocumentBuilder builder;
+        Json::sax_parse(jsonText, &builder, Json::input_format_t::json, /*strict=*/true);
+        Scene scene = readScene(builder.root);
+        scene.path = sourceName;
+        return scene;
+    } catch (const SyntaxError& error) {
+        auto [line, column] = lineAndColumn(jsonText, error.offset);
+        throw oneLineError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                           ": malformed JSON: " + error.what());
+    } catch (const PlaceError& error) {
+        std::string where = error.where.to_string();
+        // The whole document has the empty pointer, which would read as a stray ": ".
+        throw oneLineError(file + ": " + (where.empty() ? "" : where + ": ") + error.what());
+    }
+}
+
+glm::mat3 boxRotation(const Shape& box) {
+    float axisLength = glm::length(box.rotationAxis);
+    // Only scenes built in code can get here with a zero axis; no rotation beats NaNs.
+    if (!(axisLength > 0.0f))
+        return glm::mat3(1.0f);
+    glm::vec3 k = box.rotationAxis / axisLength;
+    float angle = glm::radians(box.rotationDeg);
+    float c = std::cos(angle);
+    float s = std::sin(angle);
+    // Rodrigues: R = c I + s [k]x + (1 - c) k k^T. glm takes columns, so [k]x reads transposed.
+    glm::mat3 crossMatrix(0.0f, k.z, -k.y,
+                          -k.z, 0.0f, k.x,
+                          k.y, -k.x, 0.0f);
+    return c * glm::mat3(1.0f) + s * crossMatrix + (1.0f - c) * glm::outerProduct(k, k);
+}
+
+} // namespace ptview

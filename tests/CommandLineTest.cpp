@@ -1,0 +1,155 @@
+// End-to-end tests of the real `ptview` binary: bad input is refused with exit code 2 and a one-line
+// message naming the file and place, and nothing is written; good input renders what it should.
+#include "ImageIO.h"
+#include "RunCommand.h"
+
+#include <stb_image.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::shellQuoted;
+using testing::runCommand;
+
+const std::string kBinary = PTVIEW_BINARY;
+const std::string kCornell = PTVIEW_ASSETS_DIR "/scenes/cornell.json";
+
+class CommandLineTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("ptview_cli_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name) << text;
+        return (dir_ / name).string();
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    // Expects a refusal: exit 2, the message on one line containing `expected`, no output file.
+    void expectRefused(const std::string& arguments, const std::string& expected) {
+        testing::CommandResult result = runCommand(kBinary + " " + arguments);
+        EXPECT_EQ(result.exitCode, 2) << result.output;
+        EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;
+        EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+        EXPECT_FALSE(fs::exists(path("out.png")));
+    }
+
+    fs::path dir_;
+};
+
+// A scene that is only an environment: every pixel sees exactly its radiance.
+std::string environmentOnlyScene(const std::string& color) {
+    return R"({ "camera": { "eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 60, "resolution": [8, 6] },
+               "environment": { "color": )" + color + R"( }, "materials": {}, "shapes": [] })";
+}
+
+TEST_F(CommandLineTest, MissingSceneFile) {
+    expectRefused("render " + shellQuoted(path("absent.json")) + " --out " + shellQuoted(path("out.png")),
+                  path("absent.json") + ": cannot open scene file");
+}
+
+TEST_F(CommandLineTest, MalformedJsonNamesLineAndColumn) {
+    std::string scene = write("broken.json", "{\n  \"camera\": {\n    \"eye\": [0, 0 0]\n");
+    expectRefused("render " + shellQuoted(scene) + " --out " + shellQuoted(path("out.png")), scene + ":3:");
+}
+
+TEST_F(CommandLineTest, NegativeRadiusNamesJsonPointer) {
+    std::string scene = write("neg.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": { "white": { "type": "diffuse", "albedo": [0.5,0.5,0.5] } },
+        "shapes": [ { "type": "sphere", "center": [0,0,0], "radius": -1, "material": "white" } ] })");
+    expectRefused("render " + shellQuoted(scene) + " --out " + shellQuoted(path("out.png")), scene + ": /shapes/0/radius");
+}
+
+TEST_F(CommandLineTest, UnknownShapeAndMaterial) {
+    std::string cone = write("cone.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": { "white": { "type": "diffuse", "albedo": [0.5,0.5,0.5] } },
+        "shapes": [ { "type": "cone", "center": [0,0,0], "material": "white" } ] })");
+    expectRefused("render " + shellQuoted(cone) + " --out " + shellQuoted(path("out.png")), cone + ": /shapes/0/type");
+    std::string typo = write("typo.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": { "white": { "type": "diffuse", "albedo": [0.5,0.5,0.5] } },
+        "shapes": [ { "type": "sphere", "center": [0,0,0], "radius": 1, "material": "wite" } ] })");
+    expectRefused("render " + shellQuoted(typo) + " --out " + shellQuoted(path("out.png")), typo + ": /shapes/0/material");
+}
+
+TEST_F(CommandLineTest, WrongTypeNamesJsonPointer) {
+    std::string scene = write("type.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": "wide", "resolution": [8,8] },
+        "materials": {}, "shapes": [] })");
+    expectRefused("render " + shellQuoted(scene) + " --out " + shellQuoted(path("out.png")), scene + ": /camera/vfov_deg");
+}
+
+TEST_F(CommandLineTest, BadArgumentsAndOutputFormat) {
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --size 12by4", "--size");
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --spp 0", "--spp");
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.bmp")), "unsupported output format");
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("no/such/dir/out.png")), "does not exist");
+    expectRefused("render " + shellQuoted(kCornell), "--out");
+}
+
+TEST_F(CommandLineTest, FailedRenderLeavesExistingOutputUntouched) {
+    std::ofstream(path("out.pfm")) << "precious";
+    testing::CommandResult result =
+        runCommand(kBinary + " render " + shellQuoted(path("absent.json")) + " --out " + shellQuoted(path("out.pfm")));
+    EXPECT_EQ(result.exitCode, 2);
+    std::ifstream in(path("out.pfm"));
+    std::string contents((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(contents, "precious");
+}
+
+TEST_F(CommandLineTest, PfmHoldsLinearRadianceAtTheRequestedSize) {
+    std::string scene = write("env.json", environmentOnlyScene("[0.25, 1.5, 7.0]"));
+    testing::CommandResult result =
+        runCommand(kBinary + " render " + shellQuoted(scene) + " --out " + shellQuoted(path("env.pfm")) + " --spp 3 --size 5x4");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    ImageRgbF image = readPfm(path("env.pfm"));
+    ASSERT_EQ(image.width, 5);
+    ASSERT_EQ(image.height, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) {
+            EXPECT_NEAR(image.at(x, y).r, 0.25f, 1e-6f);
+            EXPECT_NEAR(image.at(x, y).g, 1.5f, 1e-6f);
+            EXPECT_NEAR(image.at(x, y).b, 7.0f, 1e-6f);
+        }
+}
+
+TEST_F(CommandLineTest, PngIsExposedReinhardGamma22) {
+    std::string scene = write("env.json", environmentOnlyScene("[0.1, 1.0, 4.0]"));
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(scene) + " --out " +
+                                               shellQuoted(path("env.png")) + " --spp 2 --exposure 1");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(path("env.png").c_str(), &width, &height, &channels, 4);
+    ASSERT_NE(pixels, nullptr);
+    EXPECT_EQ(width, 8); // the scene's resolution
+    EXPECT_EQ(height, 6);
+    const double radiance[3] = {0.1, 1.0, 4.0};
+    for (int c = 0; c < 3; ++c) {
+        double exposed = radiance[c] * 2.0; // +1 stop
+        double expected = 255.0 * std::pow(exposed / (1.0 + exposed), 1.0 / 2.2);
+        EXPECT_NEAR(pixels[c], expected, 1.0) << "channel " << c;
+    }
+    EXPECT_EQ(pixels[3], 255);
+    stbi_image_free(pixels);
+}
+
+TEST_F(CommandLineTest, RenderReportsWhatItWrote) {
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " +
+                                               shellQuoted(path("c.png")) + " --spp 2 --size 32x32 --depth 2 --seed 7");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("32x32, 2 spp, depth 2"), std::string::npos) << result.output;
+    EXPECT_TRUE(fs::exists(path("c.png")));
+}
+
+} // namespace
+} // namespace ptview

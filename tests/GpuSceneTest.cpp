@@ -1,0 +1,57 @@
+// Flattening the scene model into GPU primitives (CPU side, no GL needed).
+#include "GpuScene.h"
+#include "Scene.h"
+
+#include <gtest/gtest.h>
+
+namespace ptview {
+namespace {
+
+TEST(FlattenScene, BoxBecomesSixOutwardQuadsCoveringItsSurface) {
+    Scene scene;
+    scene.materials.push_back(Material{"white", MaterialType::Diffuse, glm::vec3(0.5f), glm::vec3(0.0f)});
+    Shape box;
+    box.type = ShapeType::Box;
+    box.center = {0.3f, 0.6f, -0.3f};
+    box.halfSize = {0.3f, 0.6f, 0.2f};
+    box.rotationAxis = {0.0f, 1.0f, 0.0f};
+    box.rotationDeg = 17.0f;
+    scene.shapes.push_back(box);
+
+    ScenePrimitives primitives = flattenScene(scene);
+    ASSERT_EQ(primitives.quads.size(), 6u);
+    double area = 0.0;
+    for (const GpuQuad& quad : primitives.quads) {
+        glm::vec3 center(quad.center), n = glm::cross(glm::vec3(quad.u), glm::vec3(quad.v));
+        EXPECT_GT(glm::dot(n, center - box.center), 0.0f) << "face normal must leave the box";
+        area += 4.0 * glm::length(n);
+        // dual * |n|^2 == n: the intersection code relies on it.
+        EXPECT_NEAR(glm::length(glm::vec3(quad.dual) * glm::dot(n, n) - n), 0.0f, 1e-5f);
+    }
+    const glm::vec3 s = 2.0f * box.halfSize;
+    EXPECT_NEAR(area, 2.0 * (s.x * s.y + s.y * s.z + s.z * s.x), 1e-5);
+}
+
+TEST(FlattenScene, KeepsMaterialsAndSphereRecords) {
+    Scene scene;
+    scene.materials.push_back(Material{"white", MaterialType::Diffuse, glm::vec3(0.5f), glm::vec3(0.0f)});
+    scene.materials.push_back(Material{"lamp", MaterialType::Emitter, glm::vec3(0.0f), glm::vec3(17, 12, 4)});
+    Shape sphere;
+    sphere.type = ShapeType::Sphere;
+    sphere.center = {1, 2, 3};
+    sphere.radius = 0.25f;
+    sphere.material = 1;
+    scene.shapes.push_back(sphere);
+
+    ScenePrimitives primitives = flattenScene(scene);
+    ASSERT_EQ(primitives.spheres.size(), 1u);
+    EXPECT_EQ(primitives.spheres[0].center, glm::vec3(1, 2, 3));
+    EXPECT_EQ(primitives.spheres[0].radius, 0.25f);
+    EXPECT_EQ(primitives.sphereMaterials[0], 1u);
+    ASSERT_EQ(primitives.materialTypes.size(), 2u);
+    EXPECT_EQ(primitives.materialTypes[1], static_cast<std::uint32_t>(MaterialType::Emitter));
+    EXPECT_EQ(glm::vec3(primitives.materialParams[1].radiance), glm::vec3(17, 12, 4));
+}
+
+} // namespace
+} // namespace ptview

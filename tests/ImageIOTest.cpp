@@ -1,0 +1,100 @@
+#include "ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+#include <sstream>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempPath(const std::string& name) {
+    return fs::temp_directory_path() / ("ptview_imageio_" + std::to_string(::getpid()) + "_" + name);
+}
+
+std::string readBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST(Pfm, RoundTripsAndStoresRowsBottomToTop) {
+    ImageRgbF image(2, 2);
+    image.set(0, 0, {1.0f, 0.0f, 0.0f}); // top row
+    image.set(1, 0, {2.0f, 0.0f, 0.0f});
+    image.set(0, 1, {0.0f, 0.0f, 3.0f}); // bottom row
+    image.set(1, 1, {0.0f, 0.5f, 4.0f});
+    fs::path path = tempPath("rows.pfm");
+    writePfm(path, image);
+
+    std::string bytes = readBytes(path);
+    const std::string header = "PF\n2 2\n-1.0\n";
+    ASSERT_EQ(bytes.substr(0, header.size()), header);
+    float firstStored[3];
+    std::memcpy(firstStored, bytes.data() + header.size(), sizeof firstStored);
+    EXPECT_EQ(firstStored[2], 3.0f) << "the first stored row must be the image's bottom row";
+
+    ImageRgbF back = readPfm(path);
+    EXPECT_EQ(back.width, 2);
+    EXPECT_EQ(back.rgb, image.rgb);
+    fs::remove(path);
+}
+
+TEST(Pfm, ReadsTheReferenceWithTopLeftOrigin) {
+    // Block means quoted in shared/refs/README.md, rows and columns from the top-left.
+    ImageRgbF reference = readPfm(PTVIEW_TEST_DATA_DIR "/cornell_reference.pfm");
+    auto blockMean = [&](int y0, int y1, int x0, int x1) {
+        glm::dvec3 sum(0.0);
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) sum += glm::dvec3(reference.at(x, y));
+        return sum / double((y1 - y0) * (x1 - x0));
+    };
+    glm::dvec3 backWall = blockMean(120, 136, 132, 148);
+    EXPECT_NEAR(backWall.r, 0.2617, 5e-4);
+    EXPECT_NEAR(backWall.g, 0.1929, 5e-4);
+    glm::dvec3 leftWall = blockMean(120, 136, 30, 46);
+    EXPECT_NEAR(leftWall.r, 0.2292, 5e-4);
+    EXPECT_NEAR(leftWall.g, 0.0149, 5e-4);
+    glm::dvec3 floor = blockMean(218, 234, 107, 123);
+    EXPECT_NEAR(floor.r, 0.2421, 5e-4);
+}
+
+TEST(Pfm, RejectsTruncatedAndForeignFiles) {
+    fs::path path = tempPath("bad.pfm");
+    std::ofstream(path, std::ios::binary) << "PF\n4 4\n-1.0\n" << std::string(10, '\0');
+    EXPECT_THROW(readPfm(path), std::runtime_error);
+    std::ofstream(path, std::ios::binary) << "P6\n4 4\n255\n";
+    EXPECT_THROW(readPfm(path), std::runtime_error);
+    fs::remove(path);
+}
+
+TEST(AtomicWrite, ReplacesWholeFileAndLeavesNoTemporary) {
+    fs::path dir = tempPath("dir");
+    fs::create_directories(dir);
+    fs::path path = dir / "out.bin";
+    std::ofstream(path) << "old contents that are longer";
+    writeFileAtomically(path, "new");
+    EXPECT_EQ(readBytes(path), "new");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+    fs::remove_all(dir);
+}
+
+TEST(AtomicWrite, FailureNamesTheFileAndCreatesNothing) {
+    fs::path path = tempPath("missing_dir") / "out.png";
+    try {
+        writeFileAtomically(path, "x");
+        FAIL() << "expected an error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos);
+    }
+    EXPECT_FALSE(fs::exists(path.parent_path()));
+}
+
+} // namespace
+} // namespace ptview

@@ -1,0 +1,433 @@
+// Scene loading: the shipped Cornell box reads back as the reference describes it, and every kind
+// of bad input is rejected with a one-line message that names the file and the place in it.
+
+#include "Scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ptview {
+namespace {
+
+const char* const kSource = "scenes/bad.json";
+
+// A valid scene with one of each shape, so that each bad-input test changes one thing in it.
+std::string validScene() {
+    return R"({
+  "camera": { "eye": [0, 1, 3.9], "target": [0, 1, 0], "vfov_deg": 40, "resolution": [64, 48] },
+  "materials": {
+    "white": { "type": "diffuse", "albedo": [0.73, 0.73, 0.73] },
+    "light": { "type": "emitter", "radiance": [17, 12, 4] }
+  },
+  "shapes": [
+    { "type": "quad", "center": [0, 0, 0], "u": [0, 0, 1], "v": [1, 0, 0], "material": "white" },
+    { "type": "sphere", "center": [0, 0.3, 0], "radius": 0.3, "material": "white" },
+    { "type": "box", "center": [0, 0.5, 0], "half_size": [0.5, 0.5, 0.5], "material": "light" }
+  ]
+})";
+}
+
+// The same scene with the first occurrence of `from` replaced by `to`.
+std::string validSceneWith(const std::string& from, const std::string& to) {
+    std::string text = validScene();
+    std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "the test's edit does not apply: " << from;
+    if (at != std::string::npos)
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+// The message of the SceneError that parsing throws, or a note that it threw none.
+std::string errorFrom(const std::string& text) {
+    try {
+        parseScene(text, kSource);
+    } catch (const SceneError& error) {
+        return error.what();
+    }
+    return "(no SceneError thrown)";
+}
+
+// The file name and the JSON pointer lead the message, and it stays on one line so that a log or
+// a status bar shows all of it.
+void expectPlaceError(const std::string& message, const std::string& pointer,
+                      const std::string& reasonPart) {
+    EXPECT_EQ(message.rfind(std::string(kSource) + ": " + pointer + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find(reasonPart), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+// The reference's yaw: R = [[cos,0,sin],[0,1,0],[-sin,0,cos]] (rows), world = R * local.
+void expectReferenceYaw(const glm::mat3& r, float degrees) {
+    double angle = glm::radians(static_cast<double>(degrees));
+    float c = static_cast<float>(std::cos(angle));
+    float s = static_cast<float>(std::sin(angle));
+    float reference[3][3] = {{c, 0, s}, {0, 1, 0}, {-s, 0, c}};
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col)
+            EXPECT_NEAR(r[col][row], reference[row][col], 1e-6f)
+                << "degrees " << degrees << " row " << row << " col " << col;
+}
+
+// --- The shipped Cornell box --------------------------------------------------------------------
+
+Scene loadCornell() {
+    return loadScene(std::filesystem::path(PTVIEW_ASSETS_DIR) / "scenes" / "cornell.json");
+}
+
+const Shape& shapeNamed(const Scene& scene, const std::string& name) {
+    for (const Shape& shape : scene.shapes)
+        if (shape.name == name)
+            return shape;
+    throw std::runtime_error("no shape named " + name);
+}
+
+TEST(SceneLoader, CornellHasTheReferenceCamera) {
+    Scene cornell = loadCornell();
+    EXPECT_EQ(cornell.camera.eye, glm::vec3(0.0f, 1.0f, 3.9f));
+    EXPECT_EQ(cornell.camera.target, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_EQ(cornell.camera.up, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_FLOAT_EQ(cornell.camera.vfovDeg, 40.0f);
+    EXPECT_EQ(cornell.camera.resolution, glm::ivec2(256, 256));
+    EXPECT_EQ(cornell.environment, glm::vec3(0.0f));
+    EXPECT_EQ(cornell.path.filename(), "cornell.json");
+}
+
+TEST(SceneLoader, CornellKeepsMaterialsInFileOrder) {
+    Scene cornell = loadCornell();
+    ASSERT_EQ(cornell.materials.size(), 4u);
+    const char* names[] = {"white", "red", "green", "light"};
+    for (int i = 0; i < 4; ++i)
+        EXPECT_EQ(cornell.materials[i].name, names[i]);
+    EXPECT_EQ(cornell.materials[0].type, MaterialType::Diffuse);
+    EXPECT_EQ(cornell.materials[1].albedo, glm::vec3(0.63f, 0.065f, 0.05f));
+    EXPECT_EQ(cornell.materials[2].albedo, glm::vec3(0.14f, 0.45f, 0.091f));
+    EXPECT_EQ(cornell.materials[3].type, MaterialType::Emitter);
+    EXPECT_EQ(cornell.materials[3].radiance, glm::vec3(17.0f, 12.0f, 4.0f));
+}
+
+TEST(SceneLoader, CornellHasEightNamedShapes) {
+    Scene cornell = loadCornell();
+    ASSERT_EQ(cornell.shapes.size(), 8u);
+    const char* names[] = {"floor", "ceiling", "back_wall", "left_wall",
+                           "right_wall", "light", "tall_box", "short_box"};
+    for (int i = 0; i < 8; ++i)
+        EXPECT_EQ(cornell.shapes[i].name, names[i]);
+    EXPECT_EQ(cornell.materials[shapeNamed(cornell, "left_wall").material].name, "red");
+    EXPECT_EQ(cornell.materials[shapeNamed(cornell, "right_wall").material].name, "green");
+    EXPECT_EQ(cornell.materials[shapeNamed(cornell, "tall_box").material].name, "white");
+}
+
+TEST(SceneLoader, CornellLightFacesDown) {
+    Scene cornell = loadCornell();
+    const Shape& light = shapeNamed(cornell, "light");
+    EXPECT_EQ(light.type, ShapeType::Quad);
+    EXPECT_EQ(cornell.materials[light.material].name, "light");
+    EXPECT_EQ(light.center, glm::vec3(0.0f, 1.99f, 0.0f));
+    EXPECT_EQ(light.u, glm::vec3(0.25f, 0.0f, 0.0f));
+    EXPECT_EQ(light.v, glm::vec3(0.0f, 0.0f, 0.2f));
+    // One-sided: it must emit toward the floor.
+    glm::vec3 front = glm::normalize(glm::cross(light.u, light.v));
+    EXPECT_FLOAT_EQ(front.y, -1.0f);
+}
+
+TEST(SceneLoader, CornellBoxesAreYawedAboutY) {
+    Scene cornell = loadCornell();
+    const Shape& tall = shapeNamed(cornell, "tall_box");
+    EXPECT_EQ(tall.type, ShapeType::Box);
+    EXPECT_EQ(tall.center, glm::vec3(-0.33f, 0.6f, -0.3f));
+    EXPECT_EQ(tall.halfSize, glm::vec3(0.3f, 0.6f, 0.3f));
+    EXPECT_EQ(tall.rotationAxis, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_FLOAT_EQ(tall.rotationDeg, 17.0f);
+    EXPECT_FLOAT_EQ(shapeNamed(cornell, "short_box").rotationDeg, -17.0f);
+    EXPECT_EQ(shapeNamed(cornell, "short_box").halfSize, glm::vec3(0.3f));
+    expectReferenceYaw(boxRotation(tall), 17.0f);
+    expectReferenceYaw(boxRotation(shapeNamed(cornell, "short_box")), -17.0f);
+}
+
+// --- boxRotation --------------------------------------------------------------------------------
+
+TEST(SceneLoader, BoxRotationMatchesReferenceYaw) {
+    for (float degrees : {17.0f, -17.0f, 90.0f, 200.0f}) {
+        Shape box;
+        box.type = ShapeType::Box;
+        box.rotationAxis = glm::vec3(0.0f, 3.0f, 0.0f); // not unit: must be normalized
+        box.rotationDeg = degrees;
+        expectReferenceYaw(boxRotation(box), degrees);
+    }
+}
+
+TEST(SceneLoader, BoxRotationFollowsRightHandRule) {
+    Shape box;
+    box.rotationAxis = glm::vec3(0.0f, 0.0f, 1.0f);
+    box.rotationDeg = 90.0f;
+    glm::vec3 x = boxRotation(box) * glm::vec3(1.0f, 0.0f, 0.0f);
+    EXPECT_NEAR(x.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(x.y, 1.0f, 1e-6f); // +X turns to +Y about +Z
+    EXPECT_NEAR(x.z, 0.0f, 1e-6f);
+
+    box.rotationAxis = glm::vec3(1.0f, 1.0f, 1.0f);
+    box.rotationDeg = 120.0f; // cycles the axes x -> y -> z
+    glm::vec3 y = boxRotation(box) * glm::vec3(0.0f, 1.0f, 0.0f);
+    EXPECT_NEAR(y.z, 1.0f, 1e-5f);
+}
+
+TEST(SceneLoader, BoxRotationIsIdentityWithoutRotation) {
+    Shape box;
+    EXPECT_EQ(boxRotation(box), glm::mat3(1.0f));
+}
+
+// --- Valid inline scenes ------------------------------------------------------------------------
+
+TEST(SceneLoader, ParsesValidSceneWithDefaults) {
+    Scene scene = parseScene(validScene(), kSource);
+    EXPECT_EQ(scene.path, std::filesystem::path(kSource));
+    EXPECT_EQ(scene.camera.up, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_EQ(scene.camera.resolution, glm::ivec2(64, 48));
+    EXPECT_EQ(scene.environment, glm::vec3(0.0f));
+    ASSERT_EQ(scene.shapes.size(), 3u);
+    EXPECT_EQ(scene.shapes[0].name, "quad 0");
+    EXPECT_EQ(scene.shapes[1].name, "sphere 1");
+    EXPECT_EQ(scene.shapes[1].radius, 0.3f);
+    EXPECT_EQ(scene.shapes[2].name, "box 2");
+    EXPECT_EQ(scene.shapes[2].material, 1);
+    EXPECT_EQ(scene.shapes[2].rotationDeg, 0.0f);
+}
+
+TEST(SceneLoader, ReadsEnvironmentColor) {
+    Scene scene = parseScene(
+        validSceneWith(R"("materials")",
+                       R"("environment": { "color": [0.1, 0.2, 0.3] }, "materials")"),
+        kSource);
+    EXPECT_EQ(scene.environment, glm::vec3(0.1f, 0.2f, 0.3f));
+}
+
+// --- Files and syntax ---------------------------------------------------------------------------
+
+TEST(SceneLoader, RejectsMissingFile) {
+    std::filesystem::path path = "no/such/dir/missing.json";
+    try {
+        loadScene(path);
+        FAIL() << "no SceneError thrown";
+    } catch (const SceneError& error) {
+        std::string message = error.what();
+        EXPECT_EQ(message, path.string() + ": cannot open scene file: No such file or directory");
+    }
+}
+
+TEST(SceneLoader, RejectsDirectory) {
+    try {
+        loadScene(PTVIEW_ASSETS_DIR);
+        FAIL() << "no SceneError thrown";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  std::string(PTVIEW_ASSETS_DIR) + ": cannot open scene file: Is a directory");
+    }
+}
+
+TEST(SceneLoader, MalformedJsonNamesLineAndColumn) {
+    // The stray comma is on line 3; the parser notices at the ']' after it, column 17.
+    std::string text = "{\n  \"camera\": {\n    \"eye\": [0,1,],\n  }\n}\n";
+    std::string message = errorFrom(text);
+    EXPECT_EQ(message.rfind(std::string(kSource) + ":3:17: malformed JSON: ", 0), 0u) << message;
+    EXPECT_NE(message.find("unexpected ']'"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(SceneLoader, MalformedJsonCountsCharactersNotBytes) {
+    // "é" is two bytes in UTF-8 but one column in an editor.
+    std::string message = errorFrom("{\"caméra\": x}");
+    EXPECT_EQ(message.rfind(std::string(kSource) + ":1:12: malformed JSON: ", 0), 0u) << message;
+}
+
+TEST(SceneLoader, MalformedJsonAtEndOfInput) {
+    std::string message = errorFrom("{\n  \"camera\": {}\n");
+    std::string expected = std::string(kSource) + ":3:1: malformed JSON: unexpected end of input";
+    EXPECT_EQ(message.rfind(expected, 0), 0u) << message;
+}
+
+TEST(SceneLoader, UnterminatedStringStaysOnOneLine) {
+    std::string message = errorFrom("{\"camera\": \"abc\ndef\"}");
+    EXPECT_EQ(message.rfind(std::string(kSource) + ":1:16: malformed JSON: ", 0), 0u) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(SceneLoader, RejectsEmptyText) {
+    std::string message = errorFrom("");
+    EXPECT_EQ(message.rfind(std::string(kSource) + ":1:1: malformed JSON: ", 0), 0u) << message;
+}
+
+TEST(SceneLoader, RejectsNonFiniteNumber) {
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 1e999")),
+                     "/shapes/1/radius", "1e999");
+    expectPlaceError(errorFrom(validSceneWith("[0, 1, 3.9]", "[0, -1e999, 3.9]")),
+                     "/camera/eye/1", "out of range");
+}
+
+TEST(SceneLoader, RejectsNumberBeyondFloatRange) {
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 1e300")),
+                     "/shapes/1/radius", "out of range");
+}
+
+TEST(SceneLoader, RejectsDuplicateKey) {
+    expectPlaceError(errorFrom(validSceneWith(R"("light": {)",
+                                              R"("white": { "type": "emitter" }, "light": {)")),
+                     "/materials/white", "duplicate key");
+}
+
+TEST(SceneLoader, RejectsDuplicateKeyInsideArray) {
+    std::string twice = validSceneWith("\"radius\": 0.3,", "\"radius\": 0.3, \"radius\": 0.4,");
+    expectPlaceError(errorFrom(twice), "/shapes/1/radius", "duplicate key");
+}
+
+TEST(SceneLoader, RejectsNonObjectTopLevel) {
+    std::string message = errorFrom("[1, 2]");
+    EXPECT_EQ(message,
+              std::string(kSource) + ": expected an object at the top level, got an array");
+}
+
+// --- Structure ----------------------------------------------------------------------------------
+
+TEST(SceneLoader, RejectsMissingRequiredKey) {
+    expectPlaceError(errorFrom(validSceneWith("\"vfov_deg\": 40, ", "")), "/camera/vfov_deg",
+                     "missing required key");
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3, ", "")), "/shapes/1/radius",
+                     "missing required key");
+    expectPlaceError(errorFrom("{\"camera\": {}, \"materials\": {}, \"shapes\": []}"),
+                     "/camera/eye", "missing required key");
+    expectPlaceError(errorFrom("{}"), "/camera", "missing required key");
+    expectPlaceError(errorFrom(validSceneWith("\"type\": \"emitter\", ", "")),
+                     "/materials/light/type", "missing required key");
+}
+
+TEST(SceneLoader, RejectsUnknownKey) {
+    expectPlaceError(errorFrom(validSceneWith("\"radius\"", "\"radus\"")), "/shapes/1/radus",
+                     "unknown key");
+    expectPlaceError(errorFrom(validSceneWith("\"camera\"", "\"camra\"")), "/camra", "unknown key");
+    // A misspelt type is named rather than reported as a missing "type".
+    expectPlaceError(errorFrom(validSceneWith("\"type\": \"sphere\"", "\"typ\": \"sphere\"")),
+                     "/shapes/1/typ", "unknown key");
+    expectPlaceError(errorFrom(validSceneWith("\"type\": \"emitter\"", "\"tpye\": \"emitter\"")),
+                     "/materials/light/tpye", "unknown key");
+    // Keys that belong to another type are unknown too.
+    expectPlaceError(errorFrom(validSceneWith("\"radiance\"", "\"albedo\"")),
+                     "/materials/light/albedo", "unknown key");
+}
+
+TEST(SceneLoader, EscapesKeysInPointer) {
+    // JSON Pointer writes '~' as ~0 and '/' as ~1.
+    expectPlaceError(errorFrom(validSceneWith("\"radius\"", "\"a/b~c\"")), "/shapes/1/a~1b~0c",
+                     "unknown key");
+}
+
+TEST(SceneLoader, EscapesControlCharactersInMessage) {
+    // A key may hold an escaped newline; the message must still be one line.
+    expectPlaceError(errorFrom(validSceneWith("\"radius\"", "\"rad\\nius\"")),
+                     "/shapes/1/rad\\u000Aius", "unknown key");
+}
+
+TEST(SceneLoader, RejectsWrongTypes) {
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": \"0.3\"")),
+                     "/shapes/1/radius", "expected a number, got a string");
+    expectPlaceError(errorFrom(validSceneWith("[0, 0.3, 0]", "[0, 0.3]")), "/shapes/1/center",
+                     "expected an array of 3 numbers");
+    expectPlaceError(errorFrom(validSceneWith("[0, 0.3, 0]", "[0, true, 0]")), "/shapes/1/center/1",
+                     "expected a number, got a boolean");
+    expectPlaceError(errorFrom(validSceneWith("\"material\": \"white\"", "\"material\": 0")),
+                     "/shapes/0/material", "expected a string");
+    expectPlaceError(errorFrom(validSceneWith("[64, 48]", "[64.5, 48]")), "/camera/resolution/0",
+                     "expected an integer");
+    expectPlaceError(errorFrom(R"({"camera": {"eye": [0, 0, 1], "target": [0, 0, 0], "vfov_deg": 40,
+                                              "resolution": [8, 8]},
+                                   "materials": {}, "shapes": {}})"),
+                     "/shapes", "expected an array, got an object");
+}
+
+// --- Shapes and materials -----------------------------------------------------------------------
+
+TEST(SceneLoader, RejectsUnknownShapeType) {
+    std::string message = errorFrom(validSceneWith("\"type\": \"sphere\"", "\"type\": \"cone\""));
+    EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/type: unknown shape type \"cone\" "
+                                              "(expected sphere, quad or box)");
+}
+
+TEST(SceneLoader, RejectsUnknownMaterialReference) {
+    std::string message =
+        errorFrom(validSceneWith("\"radius\": 0.3, \"material\": \"white\"",
+                                 "\"radius\": 0.3, \"material\": \"wite\""));
+    EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/material: unknown material \"wite\"");
+}
+
+TEST(SceneLoader, RejectsUnknownMaterialType) {
+    expectPlaceError(errorFrom(validSceneWith("\"type\": \"emitter\"", "\"type\": \"mirror\"")),
+                     "/materials/light/type", "unknown material type \"mirror\"");
+}
+
+TEST(SceneLoader, RejectsNegativeRadius) {
+    std::string message = errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": -0.3"));
+    EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/radius: expected a positive number");
+}
+
+TEST(SceneLoader, RejectsZeroRadius) {
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 0")),
+                     "/shapes/1/radius", "expected a positive number");
+}
+
+TEST(SceneLoader, RejectsAlbedoAboveOne) {
+    expectPlaceError(errorFrom(validSceneWith("[0.73, 0.73, 0.73]", "[0.73, 1.2, 0.73]")),
+                     "/materials/white/albedo/1", "expected a number in [0, 1]");
+}
+
+TEST(SceneLoader, RejectsNegativeRadiance) {
+    expectPlaceError(errorFrom(validSceneWith("[17, 12, 4]", "[17, 12, -4]")),
+                     "/materials/light/radiance/2", "expected a non-negative number");
+}
+
+TEST(SceneLoader, RejectsParallelQuadEdges) {
+    expectPlaceError(errorFrom(validSceneWith("\"v\": [1, 0, 0]", "\"v\": [0, 0, -2]")),
+                     "/shapes/0/v", "must not be parallel to u");
+    expectPlaceError(errorFrom(validSceneWith("\"v\": [1, 0, 0]", "\"v\": [0, 0, 0]")),
+                     "/shapes/0/v", "expected a nonzero vector");
+}
+
+TEST(SceneLoader, RejectsBadBox) {
+    expectPlaceError(errorFrom(validSceneWith("[0.5, 0.5, 0.5]", "[0.5, 0, 0.5]")),
+                     "/shapes/2/half_size/1", "expected a positive number");
+    auto withRotation = [](const std::string& rotation) {
+        return validSceneWith(R"("material": "light")",
+                              R"("rotation": )" + rotation + R"(, "material": "light")");
+    };
+    expectPlaceError(errorFrom(withRotation(R"({ "axis": [0, 0, 0], "degrees": 5 })")),
+                     "/shapes/2/rotation/axis", "expected a nonzero vector");
+    expectPlaceError(errorFrom(withRotation(R"({ "axis": [0, 1, 0] })")),
+                     "/shapes/2/rotation/degrees", "missing required key");
+    expectPlaceError(errorFrom(withRotation("17")), "/shapes/2/rotation",
+                     "expected an object, got a number");
+}
+
+// --- Camera -------------------------------------------------------------------------------------
+
+TEST(SceneLoader, RejectsBadCamera) {
+    expectPlaceError(errorFrom(validSceneWith("\"vfov_deg\": 40", "\"vfov_deg\": 180")),
+                     "/camera/vfov_deg", "expected a number in (0, 180)");
+    expectPlaceError(errorFrom(validSceneWith("\"vfov_deg\": 40", "\"vfov_deg\": 0")),
+                     "/camera/vfov_deg", "expected a number in (0, 180)");
+    expectPlaceError(errorFrom(validSceneWith("[64, 48]", "[64, 0]")), "/camera/resolution/1",
+                     "expected an integer in [1, 16384]");
+    expectPlaceError(errorFrom(validSceneWith("[64, 48]", "[16385, 48]")), "/camera/resolution/0",
+                     "expected an integer in [1, 16384]");
+    expectPlaceError(errorFrom(validSceneWith("[64, 48]", "[64]")), "/camera/resolution",
+                     "expected an array of 2 integers");
+    expectPlaceError(errorFrom(validSceneWith("\"target\": [0, 1, 0]", "\"target\": [0, 1, 3.9]")),
+                     "/camera/target", "must differ from eye");
+    expectPlaceError(errorFrom(validSceneWith("\"vfov_deg\"", "\"up\": [0, 0, -2], \"vfov_deg\"")),
+                     "/camera/up", "parallel");
+    // Looking straight down with the default up is just as unusable.
+    expectPlaceError(errorFrom(validSceneWith("\"target\": [0, 1, 0]", "\"target\": [0, -1, 3.9]")),
+                     "/camera/up", "parallel");
+}
+
+} // namespace
+} // namespace ptview

@@ -1,0 +1,58 @@
+// The real viewer in a real window under Xvfb: it opens, renders frames, and the screenshot shows
+// the converging image with the ImGui panel over it.
+#include "RunCommand.h"
+
+#include <stb_image.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(WindowSmoke, ViewerRendersCornellBoxWithPanel) {
+    ASSERT_EQ(testing::runCommand("command -v xvfb-run").exitCode, 0)
+        << "xvfb-run is missing: scripts/test installs the xvfb package";
+    fs::path screenshot = fs::temp_directory_path() / ("ptview_window_" + std::to_string(::getpid()) + ".png");
+    testing::CommandResult result = testing::runCommand(
+        "xvfb-run -a -s '-screen 0 1024x800x24' " + std::string(PTVIEW_BINARY) + " " +
+        testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") + " --frames 4 --screenshot " +
+        testing::shellQuoted(screenshot.string()));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(screenshot.string().c_str(), &width, &height, &channels, 3);
+    ASSERT_NE(pixels, nullptr) << result.output;
+    EXPECT_EQ(width, 768); // the 256x256 scene, scaled up to a usable window
+    EXPECT_EQ(height, 768);
+
+    // Not blank: many distinct colours, and the red and green walls where they belong.
+    std::set<int> colours;
+    long redWall = 0, greenWall = 0, panelTitle = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const unsigned char* p = pixels + 3 * (y * width + x);
+            colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+            if (y > height / 4 && y < 3 * height / 4) {
+                if (x < width / 8 && p[0] > 2 * p[1] + 20) ++redWall;
+                if (x > 7 * width / 8 && p[1] > p[0] + 20) ++greenWall;
+            }
+            // ImGui's default focused title bar colour, (41, 74, 122).
+            if (y < 60 && std::abs(p[0] - 41) < 8 && std::abs(p[1] - 74) < 8 && std::abs(p[2] - 122) < 8) ++panelTitle;
+        }
+    }
+    stbi_image_free(pixels);
+    fs::remove(screenshot);
+    EXPECT_GT(colours.size(), 500u);
+    EXPECT_GT(redWall, 300);
+    EXPECT_GT(greenWall, 300);
+    EXPECT_GT(panelTitle, 1000) << "the Render panel should be in the screenshot";
+}
+
+} // namespace
+} // namespace ptview
