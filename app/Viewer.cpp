@@ -31,6 +31,12 @@ struct FrameStats {
     double samplesPerSecond = 0.0;
 };
 
+// Installed before ImGui's own callbacks, which chain to it.
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard)
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+}
+
 void reportGlfwError(int code, const char* description) {
     std::fprintf(stderr, "ptview: GLFW error %d: %s\n", code, description);
 }
@@ -108,6 +114,7 @@ int runViewer(const ViewerOptions& options) {
         return kExitRuntimeError;
     }
 
+    glfwSetKeyCallback(window, onKey);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini litter in the user's directory

@@ -54,5 +54,15 @@ TEST(WindowSmoke, ViewerRendersCornellBoxWithPanel) {
     EXPECT_GT(panelTitle, 1000) << "the Render panel should be in the screenshot";
 }
 
+TEST(WindowSmoke, ViewerSurvivesResizingAndQuitsWithEscape) {
+    ASSERT_EQ(testing::runCommand("command -v xvfb-run && command -v xdotool").exitCode, 0)
+        << "xvfb-run or xdotool is missing: scripts/test installs them";
+    testing::CommandResult result = testing::runCommand(
+        "xvfb-run -a -s '-screen 0 1280x1024x24' " + testing::shellQuoted(PTVIEW_TEST_SCRIPT_DIR "/window_resize.sh") +
+        " " + std::string(PTVIEW_BINARY) + " " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json"));
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("viewer exit code 0"), std::string::npos) << result.output;
+}
+
 } // namespace
 } // namespace ptview

@@ -1,0 +1,94 @@
+// Behaviour of the progressive renderer on the real GLSL, headless.
+#include "GlTestContext.h"
+#include "PathTracer.h"
+#include "Scene.h"
+
+#include <gtest/gtest.h>
+
+namespace ptview {
+namespace {
+
+constexpr glm::ivec2 kSize{48, 48};
+
+Scene cornell() {
+    return loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+}
+
+ImageRgbF render(const Scene& scene, RenderSettings settings, int samplesPerPixel) {
+    testing::glContext();
+    PathTracer tracer;
+    tracer.setScene(scene);
+    tracer.setImageSize(kSize);
+    tracer.setSettings(settings);
+    for (int i = 0; i < samplesPerPixel; ++i) tracer.renderSample();
+    return tracer.readMean();
+}
+
+TEST(PathTracer, DepthZeroShowsOnlyEmittersSeenDirectly) {
+    ImageRgbF image = render(cornell(), RenderSettings{0, 3}, 4);
+    int lit = 0;
+    for (int y = 0; y < kSize.y; ++y) {
+        for (int x = 0; x < kSize.x; ++x) {
+            glm::vec3 value = image.at(x, y);
+            if (value == glm::vec3(0.0f)) continue;
+            ++lit;
+            // Only the light (17, 12, 4), partly covering edge pixels.
+            EXPECT_NEAR(value.g / value.r, 12.0f / 17.0f, 1e-4f);
+            EXPECT_LE(value.r, 17.0f + 1e-4f);
+            EXPECT_LT(y, kSize.y / 4) << "the light is at the top of the image";
+        }
+    }
+    EXPECT_GT(lit, 5);
+    EXPECT_LT(lit, kSize.x * kSize.y / 20);
+}
+
+TEST(PathTracer, EachExtraBounceOnlyAddsLight) {
+    // The same seed replays the same path prefixes, so deeper renders add light pixel by pixel.
+    Scene scene = cornell();
+    ImageRgbF previous = render(scene, RenderSettings{1, 5}, 2);
+    for (int depth = 2; depth <= 4; ++depth) {
+        ImageRgbF deeper = render(scene, RenderSettings{depth, 5}, 2);
+        double added = 0.0;
+        for (int y = 0; y < kSize.y; ++y)
+            for (int x = 0; x < kSize.x; ++x) {
+                glm::vec3 gain = deeper.at(x, y) - previous.at(x, y);
+                EXPECT_GE(glm::min(gain.r, glm::min(gain.g, gain.b)), -1e-4f * (1.0f + deeper.at(x, y).r));
+                added += gain.r + gain.g + gain.b;
+            }
+        EXPECT_GT(added, 0.0) << "depth " << depth << " should add indirect light";
+        previous = deeper;
+    }
+}
+
+TEST(PathTracer, SeedReproducesOrDecorrelates) {
+    Scene scene = cornell();
+    ImageRgbF a = render(scene, RenderSettings{4, 11}, 2);
+    ImageRgbF b = render(scene, RenderSettings{4, 11}, 2);
+    ImageRgbF c = render(scene, RenderSettings{4, 12}, 2);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_NE(a.rgb, c.rgb);
+}
+
+TEST(PathTracer, ChangingSettingsOrSizeRestartsAccumulation) {
+    testing::glContext();
+    PathTracer tracer;
+    tracer.setScene(cornell());
+    tracer.setImageSize(kSize);
+    for (int i = 0; i < 3; ++i) tracer.renderSample();
+    EXPECT_EQ(tracer.sampleCount(), 3);
+    tracer.setSettings(tracer.settings()); // no change: keep going
+    tracer.setImageSize(kSize);
+    EXPECT_EQ(tracer.sampleCount(), 3);
+    RenderSettings deeper = tracer.settings();
+    deeper.maxDepth += 1;
+    tracer.setSettings(deeper);
+    EXPECT_EQ(tracer.sampleCount(), 0);
+    tracer.renderSample();
+    tracer.setImageSize({kSize.x + 1, kSize.y});
+    EXPECT_EQ(tracer.sampleCount(), 0);
+    EXPECT_THROW(tracer.setImageSize({0, 10}), std::invalid_argument);
+    EXPECT_THROW(tracer.setImageSize({1 << 20, 10}), std::invalid_argument);
+}
+
+} // namespace
+} // namespace ptview
