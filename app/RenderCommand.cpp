@@ -52,7 +52,7 @@ private:
     int total_;
     Clock::time_point start_;
     bool interactive_;
-    double lastReport_ = 0.0;
+    double lastReport_ = -1e9; // the first report comes after one second
     bool reported_ = false;
 };
 

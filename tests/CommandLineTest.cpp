@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <unistd.h>
 
 namespace ptview {
@@ -149,6 +150,20 @@ TEST_F(CommandLineTest, RenderReportsWhatItWrote) {
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_NE(result.output.find("32x32, 2 spp, depth 2"), std::string::npos) << result.output;
     EXPECT_TRUE(fs::exists(path("c.png")));
+}
+
+TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " +
+                                               shellQuoted(path("c.pfm")) + " --spp 400 --size 128x128");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::smatch seconds;
+    ASSERT_TRUE(std::regex_search(result.output, seconds, std::regex(R"(depth 8, ([0-9.]+) s,)"))) << result.output;
+    // Progress starts once a render has run for a second (this takes several on llvmpipe); a GPU
+    // may finish sooner, and then there is nothing to report.
+    if (std::stod(seconds[1]) > 1.5) {
+        EXPECT_TRUE(std::regex_search(result.output, std::regex(R"(\d+/400 spp \(\d+%\), [0-9.]+ s elapsed, ETA [0-9.]+ s)")))
+            << result.output;
+    }
 }
 
 } // namespace
