@@ -20,8 +20,8 @@ struct FrameUniforms {
     glm::vec3 environmentRadiance;
     std::int32_t maxDepth;
     glm::ivec2 imageSize;
-    std::int32_t pad0;
-    std::int32_t pad1;
+    std::uint32_t samplerMode;  // SamplerMode
+    std::uint32_t sampleBudget; // samples per pixel the grid and stratified patterns are sized for
 };
 static_assert(sizeof(FrameUniforms) == 96, "FrameUniforms must match the std140 FrameBlock");
 

@@ -98,6 +98,8 @@ void PathTracer::updateFrameUniforms() {
     frame.environmentRadiance = environmentRadiance_;
     frame.maxDepth = settings_.maxDepth;
     frame.imageSize = size;
+    frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
+    frame.sampleBudget = settings_.sampleBudget;
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameUniforms), &frame);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);

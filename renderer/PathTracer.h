@@ -8,6 +8,7 @@
 #include "GlProgram.h"
 #include "GpuScene.h"
 #include "Image.h"
+#include "SamplerMode.h"
 #include "Scene.h"
 
 #include <cstdint>
@@ -19,9 +20,14 @@ namespace ptview {
 struct RenderSettings {
     int maxDepth = 8;       // bounces; 0 shows only what the camera sees directly
     std::uint32_t seed = 0; // decorrelates independent renders of the same scene
+    SamplerMode sampler = SamplerMode::Random;
+    // The samples per pixel the render is heading for: grid and stratified lay out patterns of
+    // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
+    std::uint32_t sampleBudget = 1024;
 
     bool operator==(const RenderSettings& other) const {
-        return maxDepth == other.maxDepth && seed == other.seed;
+        return maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
+               sampleBudget == other.sampleBudget;
     }
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
 };

@@ -6,5 +6,5 @@ layout(std140) uniform FrameBlock {
     vec3 uCameraUp;           uint uFrameIndex;    // samples already accumulated
     vec3 uCameraForward;      uint uSeed;
     vec3 uEnvironmentRadiance; int uMaxDepth;      // bounces; 0 shows emitters only
-    ivec2 uImageSize;         int uPad0; int uPad1;
+    ivec2 uImageSize;         uint uSamplerMode;   uint uSampleBudget; // see sampler.glsl
 };

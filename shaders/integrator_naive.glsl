@@ -1,12 +1,12 @@
 // Naive path tracing: directions come from BSDF sampling alone, and emission counts only when a
 // path happens to hit an emitter. Unbiased up to uMaxDepth bounces, but noisy for small lights.
 #include "frame_uniforms.glsl"
-#include "rng.glsl"
+#include "sampler.glsl"
 #include "intersect.glsl"
 #include "bsdf.glsl"
 #include "emission.glsl"
 
-vec3 estimateRadiance(Ray ray, inout Rng rng) {
+vec3 estimateRadiance(Ray ray, Sampler sampler) {
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
     for (int bounce = 0; bounce <= uMaxDepth; ++bounce) {
@@ -23,7 +23,8 @@ vec3 estimateRadiance(Ray ray, inout Rng rng) {
         // Two-sided surface: shade on the side the path arrived from.
         vec3 normalFacing = dot(hit.normalGeom, woWorld) >= 0.0 ? hit.normalGeom : -hit.normalGeom;
         ShadingFrame frame = makeShadingFrame(normalFacing);
-        BsdfSample bs = sampleLambertian(material.albedo, toLocal(frame, woWorld), rngNextFloat2(rng));
+        BsdfSample bs = sampleLambertian(material.albedo, toLocal(frame, woWorld),
+                                         samplerGet2D(sampler, bsdfDimension(bounce)));
         if (bs.pdfSolidAngle == 0.0) break;
         throughput *= bs.weight; // weight already holds f*|cos|/pdf
         if (all(equal(throughput, vec3(0.0)))) break;

@@ -1,0 +1,52 @@
+#pragma once
+// Runs the real GLSL sampler and warps headless and reads back what they produce: the harness of
+// the statistical tests and the source of the warp visualizer's points. Needs a current context.
+
+#include "GlProgram.h"
+#include "SamplerMode.h"
+#include "Warp.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace ptview {
+
+struct WarpRequest {
+    Warp warp = Warp::Square;
+    SamplerMode sampler = SamplerMode::Random;
+    int count = 1024;                 // total samples
+    std::uint32_t samplesPerPixel = 0; // samples per simulated pixel; 0: all in one pixel
+    std::uint32_t sampleBudget = 0;    // grid/stratified pattern size; 0: samplesPerPixel
+    std::uint32_t seed = 0;
+    std::uint32_t dimension = 0;       // which sampler dimension feeds the warp
+    float cosThetaMax = 0.5f;          // uniform cone only (0.5: a 60 degree half-angle)
+};
+
+struct WarpSample {
+    glm::vec2 u;        // what the sampler produced
+    glm::vec3 point;    // warp(u); 2D domains have z = 0
+    float pdf = 0.0f;   // the warp's density at point
+    glm::vec2 inverse;  // inverse(warp(u)); equals u where the inverse is exact
+};
+
+class WarpProbe {
+public:
+    explicit WarpProbe(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
+
+    // Sample i is sample i % samplesPerPixel of pixel i / samplesPerPixel.
+    std::vector<WarpSample> sample(const WarpRequest& request) const;
+    // The density of request.warp at each point (request.warp and cosThetaMax are used).
+    std::vector<float> pdf(const WarpRequest& request, const std::vector<glm::vec3>& points) const;
+
+private:
+    void run(const WarpRequest& request, int mode, int count, const std::vector<glm::vec3>* points,
+             std::vector<glm::vec4>& pointAndPdf, std::vector<glm::vec4>& uAndInverse) const;
+
+    std::unique_ptr<GlProgram> program_;
+};
+
+} // namespace ptview

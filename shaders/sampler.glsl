@@ -1,0 +1,134 @@
+// Sample generators. A path asks for numbers by dimension index (see the layout below), never
+// "the next number", so every path dimension gets its own stratification and scrambling, and all
+// four modes give each dimension the same meaning.
+//
+//   random      independent uniform numbers, hashed from (pixel, sample, dimension, seed)
+//   grid        the cell centres of an n x n grid (n^2 <= budget): regular, for teaching; biased
+//   stratified  one jittered point per cell of that grid, cells visited in a shuffled order
+//   sobol       Sobol' (0,2)-sequence, Owen-scrambled per pixel and dimension (Burley 2020)
+//
+// grid and stratified cover one pattern of n^2 samples per pixel, then start another; sobol is
+// best at power-of-two sample counts.
+#include "rng.glsl"
+
+const uint kSamplerRandom = 0u;
+const uint kSamplerGrid = 1u;
+const uint kSamplerStratified = 2u;
+const uint kSamplerSobol = 3u;
+
+// Dimension layout of a path: the camera jitter, then a fixed block per bounce, so that a given
+// bounce's BSDF sample is the same dimension in every path whatever happened before.
+const uint kDimensionCamera = 0u;            // 2D: position inside the pixel
+const uint kDimensionsPerBounce = 4u;
+uint bsdfDimension(int bounce)              { return 1u + uint(bounce) * kDimensionsPerBounce; }      // 2D
+uint lightChoiceDimension(int bounce)       { return 1u + uint(bounce) * kDimensionsPerBounce + 1u; } // 1D
+uint lightPositionDimension(int bounce)     { return 1u + uint(bounce) * kDimensionsPerBounce + 2u; } // 2D
+uint russianRouletteDimension(int bounce)   { return 1u + uint(bounce) * kDimensionsPerBounce + 3u; } // 1D
+
+struct Sampler {
+    uint mode;
+    uint pixelSeed;
+    uint sampleIndex;
+    uint gridSide; // n: grid and stratified patterns have n^2 samples
+};
+
+Sampler createSampler(uvec2 pixel, uint sampleIndex, uint seed, uint mode, uint sampleBudget) {
+    // Integer square root without trusting float sqrt to round the right way.
+    uint side = uint(sqrt(float(max(sampleBudget, 1u))));
+    while (side * side > sampleBudget && side > 1u) --side;
+    while ((side + 1u) * (side + 1u) <= sampleBudget) ++side;
+    return Sampler(mode, pcgHash(pixel.x + pcgHash(pixel.y + pcgHash(seed))), sampleIndex, max(side, 1u));
+}
+
+// A bijection of [0, length) chosen by `seed` (Kensler, "Correlated Multi-Jittered Sampling",
+// 2013): a hash restricted to the next power of two, walking the cycle until it lands in range.
+uint permuteIndex(uint index, uint length, uint seed) {
+    uint mask = length - 1u;
+    mask |= mask >> 1u; mask |= mask >> 2u; mask |= mask >> 4u; mask |= mask >> 8u; mask |= mask >> 16u;
+    do {
+        index ^= seed; index *= 0xe170893du; index ^= seed >> 16u;
+        index ^= (index & mask) >> 4u; index ^= seed >> 8u; index *= 0x0929eb3fu; index ^= seed >> 23u;
+        index ^= (index & mask) >> 1u; index *= 1u | seed >> 27u; index *= 0x6935fa69u;
+        index ^= (index & mask) >> 11u; index *= 0x74dcb303u; index ^= (index & mask) >> 2u;
+        index *= 0x9e501cc3u; index ^= (index & mask) >> 2u; index *= 0xc860a3dfu;
+        index &= mask; index ^= index >> 5u;
+    } while (index >= length);
+    return (index + seed) % length;
+}
+
+// Owen scrambling by hashing (Laine and Karras 2011, constants from Burley 2020): a random
+// permutation of the binary tree of intervals, applied to the reversed bits.
+uint nestedUniformScramble(uint x, uint seed) {
+    x = bitfieldReverse(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return bitfieldReverse(x);
+}
+
+// The first two Sobol' dimensions: van der Corput, and the dimension from the polynomial x + 1.
+uint sobolDimension0(uint index) {
+    return bitfieldReverse(index);
+}
+
+uint sobolDimension1(uint index) {
+    uint result = 0u;
+    for (uint direction = 1u << 31u; index != 0u; index >>= 1u, direction ^= direction >> 1u)
+        if ((index & 1u) != 0u) result ^= direction;
+    return result;
+}
+
+uint dimensionSeed(Sampler sampler, uint dimension) {
+    return pcgHash(sampler.pixelSeed ^ pcgHash(dimension + 0x9e3779b9u));
+}
+
+vec2 samplerGet2D(Sampler sampler, uint dimension) {
+    uint seed = dimensionSeed(sampler, dimension);
+    uint patternSize = sampler.gridSide * sampler.gridSide;
+    if (sampler.mode == kSamplerGrid || sampler.mode == kSamplerStratified) {
+        uint inPattern = sampler.sampleIndex % patternSize;
+        vec2 offset = vec2(0.5);
+        uint cell;
+        if (sampler.mode == kSamplerGrid) {
+            // The same grid in every pixel; only the visiting order differs between dimensions,
+            // so dimensions are not trivially correlated.
+            cell = permuteIndex(inPattern, patternSize, pcgHash(dimension + 0x68bc21ebu));
+        } else {
+            uint patternSeed = pcgHash(seed + sampler.sampleIndex / patternSize);
+            cell = permuteIndex(inPattern, patternSize, patternSeed);
+            uint jitter = pcgHash(patternSeed ^ pcgHash(inPattern));
+            offset = vec2(uintToUnitFloat(jitter), uintToUnitFloat(pcgHash(jitter)));
+        }
+        return (vec2(float(cell % sampler.gridSide), float(cell / sampler.gridSide)) + offset) /
+               float(sampler.gridSide);
+    }
+    if (sampler.mode == kSamplerSobol) {
+        uint index = nestedUniformScramble(sampler.sampleIndex, seed);
+        return vec2(uintToUnitFloat(nestedUniformScramble(sobolDimension0(index), pcgHash(seed ^ 0x5bd1e995u))),
+                    uintToUnitFloat(nestedUniformScramble(sobolDimension1(index), pcgHash(seed ^ 0x1b873593u))));
+    }
+    uint bits = pcgHash(seed ^ pcgHash(sampler.sampleIndex));
+    return vec2(uintToUnitFloat(bits), uintToUnitFloat(pcgHash(bits)));
+}
+
+float samplerGet1D(Sampler sampler, uint dimension) {
+    uint seed = dimensionSeed(sampler, dimension);
+    uint patternSize = sampler.gridSide * sampler.gridSide;
+    if (sampler.mode == kSamplerGrid || sampler.mode == kSamplerStratified) {
+        uint inPattern = sampler.sampleIndex % patternSize;
+        if (sampler.mode == kSamplerGrid)
+            return (float(permuteIndex(inPattern, patternSize, pcgHash(dimension + 0x68bc21ebu))) + 0.5) /
+                   float(patternSize);
+        uint patternSeed = pcgHash(seed + sampler.sampleIndex / patternSize);
+        uint stratum = permuteIndex(inPattern, patternSize, patternSeed);
+        float jitter = uintToUnitFloat(pcgHash(patternSeed ^ pcgHash(inPattern)));
+        return (float(stratum) + jitter) / float(patternSize);
+    }
+    if (sampler.mode == kSamplerSobol) {
+        uint index = nestedUniformScramble(sampler.sampleIndex, seed);
+        return uintToUnitFloat(nestedUniformScramble(sobolDimension0(index), pcgHash(seed ^ 0x5bd1e995u)));
+    }
+    return uintToUnitFloat(pcgHash(seed ^ pcgHash(sampler.sampleIndex)));
+}
