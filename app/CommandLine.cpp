@@ -2,13 +2,44 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <regex>
 
 namespace ptview {
 namespace {
 
+// An option that takes one of a fixed set of names; an unknown name is rejected with the list.
+template <typename Value>
+CLI::Option* addNamedOption(CLI::App& app, const std::string& flag, Value& value, const std::string& what,
+                            const std::vector<std::pair<std::string, Value>>& names) {
+    std::string list;
+    for (const auto& entry : names) list += (list.empty() ? "" : ", ") + entry.first;
+    CLI::Validator lookup(
+        [names, what, list](std::string& text) -> std::string {
+            for (const auto& entry : names)
+                if (text == entry.first) return {};
+            return "unknown " + what + " \"" + text + "\" (valid: " + list + ")";
+        },
+        "NAME");
+    return app.add_option_function<std::string>(
+                  flag,
+                  [&value, names](const std::string& text) {
+                      for (const auto& entry : names)
+                          if (text == entry.first) value = entry.second;
+                  },
+                  what + ": " + list)
+        ->check(lookup);
+}
+
+void addSamplerOption(CLI::App& app, SamplerMode& sampler) {
+    std::vector<std::pair<std::string, SamplerMode>> names;
+    for (const SamplerModeName& entry : samplerModeNames()) names.emplace_back(entry.name, entry.mode);
+    addNamedOption(app, "--sampler", sampler, "sampler", names)->default_str(samplerModeName(sampler));
+}
+
 void addRenderSettings(CLI::App& app, RenderSettings& settings, float& exposureStops) {
+    addSamplerOption(app, settings.sampler);
     app.add_option("--depth", settings.maxDepth, "maximum number of bounces (0: emitters only)")
         ->check(CLI::Range(0, 1024))->capture_default_str();
     app.add_option("--seed", settings.seed, "random seed; renders with different seeds are independent")
@@ -53,6 +84,22 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(kImageSize);
     addRenderSettings(*renderCommand, render.settings, render.exposureStops);
 
+    WarpOptions& warp = out.warp;
+    std::vector<std::pair<std::string, Warp>> warpNames;
+    for (const WarpInfo& info : warpInfos()) warpNames.emplace_back(info.name, info.warp);
+    float coneAngleDeg = 60.0f;
+    CLI::App* warpCommand = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
+    addNamedOption(*warpCommand, "--warp", warp.request.warp, "warp", warpNames)->required();
+    addSamplerOption(*warpCommand, warp.request.sampler);
+    warpCommand->add_option("--count", warp.request.count, "number of points")
+        ->check(CLI::Range(1, 1 << 22))->capture_default_str();
+    warpCommand->add_option("--seed", warp.request.seed, "random seed")->capture_default_str();
+    warpCommand->add_option("--cone-angle", coneAngleDeg, "half-angle of uniform-cone in degrees")
+        ->check(CLI::Range(0.1f, 180.0f))->capture_default_str();
+    warpCommand->add_option("--out,-o", warp.outPath, "output image (.png)")->required();
+    warpCommand->add_option("--image-size", warp.imageSize, "width and height of the picture in pixels")
+        ->check(CLI::Range(64, 8192))->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -67,6 +114,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     if (viewer.frames > 0 && viewer.screenshotPath.empty()) {
         std::cerr << "ptview: --frames needs --screenshot FILE.png\n";
         return kExitBadInput;
+    }
+    if (*warpCommand) {
+        out.mode = CommandLine::Mode::Warp;
+        warp.request.cosThetaMax = std::cos(coneAngleDeg * 3.14159265358979f / 180.0f);
     }
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;

@@ -2,6 +2,7 @@
 // What the user asked for on the command line.
 
 #include "PathTracer.h"
+#include "WarpProbe.h"
 
 #include <glm/glm.hpp>
 
@@ -31,10 +32,17 @@ struct ViewerOptions {
     std::string screenshotPath;
 };
 
+struct WarpOptions {
+    WarpRequest request;   // count, warp, sampler, seed, cone angle
+    std::string outPath;   // .png
+    int imageSize = 800;
+};
+
 struct CommandLine {
-    enum class Mode { Viewer, Render } mode = Mode::Viewer;
+    enum class Mode { Viewer, Render, Warp } mode = Mode::Viewer;
     RenderOptions render;
     ViewerOptions viewer;
+    WarpOptions warp;
 };
 
 // Parses argv. Returns the exit code to leave with when parsing ends the program (help, or bad

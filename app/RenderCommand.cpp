@@ -91,7 +91,9 @@ int runRenderCommand(const RenderOptions& options) {
         PathTracer tracer;
         tracer.setScene(scene);
         tracer.setImageSize(size);
-        tracer.setSettings(options.settings);
+        RenderSettings settings = options.settings;
+        settings.sampleBudget = static_cast<std::uint32_t>(options.samplesPerPixel); // fully stratified at the end
+        tracer.setSettings(settings);
 
         // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample.
         ProgressReporter progress(options.scenePath, options.samplesPerPixel);
@@ -113,8 +115,9 @@ int runRenderCommand(const RenderOptions& options) {
             writePfm(options.outPath, tracer.readMean());
 
         double samples = static_cast<double>(size.x) * size.y * options.samplesPerPixel;
-        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %.2f s, %.1f M samples/s) on %s\n",
+        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %.2f s, %.1f M samples/s) on %s\n",
                      options.outPath.c_str(), size.x, size.y, options.samplesPerPixel, options.settings.maxDepth,
+                     samplerModeName(options.settings.sampler),
                      seconds, samples / seconds * 1e-6, context.description().c_str());
     } catch (const std::invalid_argument& e) {
         std::cerr << "ptview: " << e.what() << "\n";

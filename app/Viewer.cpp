@@ -2,6 +2,7 @@
 
 #include "ImageIO.h"
 #include "PathTracer.h"
+#include "Readback.h"
 #include "Scene.h"
 
 #include <glad/gl.h>
@@ -49,16 +50,9 @@ glm::ivec2 initialWindowSize(glm::ivec2 resolution) {
 }
 
 ImageRgba8 readWindow(glm::ivec2 size) {
-    ImageRgba8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<size_t>(size.x) * size.y * 4)};
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    size_t rowBytes = static_cast<size_t>(size.x) * 4;
-    for (int y = 0; y < size.y / 2; ++y)
-        std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * rowBytes),
-                         image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * rowBytes),
-                         image.rgba.begin() + static_cast<std::ptrdiff_t>((size.y - 1 - y) * rowBytes));
+    ImageRgba8 image = readColorRgba8(size);
     for (size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255; // the window is opaque
     return image;
 }

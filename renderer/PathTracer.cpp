@@ -1,6 +1,7 @@
 #include "PathTracer.h"
 
 #include "GpuLayout.h"
+#include "Readback.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,15 +21,6 @@ void resetPassState() {
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_FRAMEBUFFER_SRGB); // the display pass encodes gamma itself
-}
-
-void flipRows(std::vector<std::uint8_t>& pixels, int width, int height, int bytesPerPixel) {
-    size_t rowBytes = static_cast<size_t>(width) * static_cast<size_t>(bytesPerPixel);
-    for (int y = 0; y < height / 2; ++y) {
-        auto top = pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(y) * rowBytes);
-        auto bottom = pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(height - 1 - y) * rowBytes);
-        std::swap_ranges(top, top + static_cast<std::ptrdiff_t>(rowBytes), bottom);
-    }
 }
 
 } // namespace
@@ -148,13 +140,9 @@ ImageRgba8 PathTracer::readToneMapped(float exposureStops) const {
         throw std::runtime_error("cannot render to an RGBA8 target");
     display(size, exposureStops);
 
-    ImageRgba8 image{size.x, size.y, {}};
-    image.rgba.resize(static_cast<size_t>(size.x) * static_cast<size_t>(size.y) * 4);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    ImageRgba8 image = readColorRgba8(size);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    flipRows(image.rgba, image.width, image.height, 4);
     return image;
 }
 

@@ -1,0 +1,42 @@
+#include "WarpCommand.h"
+
+#include "HeadlessContext.h"
+#include "ImageIO.h"
+#include "WarpView.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace ptview {
+
+int runWarpCommand(const WarpOptions& options) {
+    std::filesystem::path out(options.outPath);
+    std::string extension = out.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+    if (extension != ".png") {
+        std::cerr << "ptview: " << options.outPath << ": unsupported output format (use .png)\n";
+        return kExitBadInput;
+    }
+    if (!out.parent_path().empty() && !std::filesystem::is_directory(out.parent_path())) {
+        std::cerr << "ptview: " << options.outPath << ": directory " << out.parent_path() << " does not exist\n";
+        return kExitBadInput;
+    }
+    try {
+        HeadlessContext context;
+        WarpProbe probe;
+        WarpView view;
+        const WarpInfo& info = warpInfo(options.request.warp);
+        view.setSamples(info.domain, probe.sample(options.request),
+                        options.request.warp == Warp::UniformCone ? options.request.cosThetaMax : -1.0f);
+        writePng(out, view.renderImage(glm::ivec2(options.imageSize), defaultWarpCamera(info.domain)));
+        std::fprintf(stderr, "ptview: wrote %s (%d points, %s warp, %s sampler)\n", options.outPath.c_str(),
+                     options.request.count, info.name, samplerModeName(options.request.sampler));
+    } catch (const std::exception& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitRuntimeError;
+    }
+    return 0;
+}
+
+} // namespace ptview

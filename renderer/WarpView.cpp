@@ -1,0 +1,160 @@
+#include "WarpView.h"
+
+#include "Readback.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+const glm::vec3 kOutlineColor(0.55f, 0.55f, 0.6f);
+const glm::vec3 kTriangleCorners[3] = {{-1.0f, -0.577f, 0.0f}, {1.0f, -0.577f, 0.0f}, {0.0f, 1.155f, 0.0f}};
+
+void appendCircle(std::vector<glm::vec3>& lines, glm::vec3 center, glm::vec3 a, glm::vec3 b) {
+    const int segments = 96;
+    for (int i = 0; i < segments; ++i) {
+        float t0 = 6.2831853f * static_cast<float>(i) / segments, t1 = 6.2831853f * static_cast<float>(i + 1) / segments;
+        lines.push_back(center + std::cos(t0) * a + std::sin(t0) * b);
+        lines.push_back(center + std::cos(t1) * a + std::sin(t1) * b);
+    }
+}
+
+std::vector<glm::vec3> outline(WarpDomain domain, float cosThetaMax) {
+    std::vector<glm::vec3> lines;
+    const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    switch (domain) {
+    case WarpDomain::Square: {
+        const glm::vec3 corners[4] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+        for (int i = 0; i < 4; ++i) lines.insert(lines.end(), {corners[i], corners[(i + 1) % 4]});
+        break;
+    }
+    case WarpDomain::Disk:
+        appendCircle(lines, glm::vec3(0.0f), x, y);
+        break;
+    case WarpDomain::Triangle:
+        for (int i = 0; i < 3; ++i) lines.insert(lines.end(), {kTriangleCorners[i], kTriangleCorners[(i + 1) % 3]});
+        break;
+    case WarpDomain::Sphere: {
+        appendCircle(lines, glm::vec3(0.0f), x, y); // equator
+        appendCircle(lines, glm::vec3(0.0f), x, z);
+        appendCircle(lines, glm::vec3(0.0f), y, z);
+        lines.insert(lines.end(), {glm::vec3(0.0f), 1.3f * z}); // the warp's axis, +z
+        if (cosThetaMax > -1.0f) {                              // the cone's rim
+            float sinThetaMax = std::sqrt(std::max(0.0f, 1.0f - cosThetaMax * cosThetaMax));
+            appendCircle(lines, cosThetaMax * z, sinThetaMax * x, sinThetaMax * y);
+        }
+        break;
+    }
+    }
+    return lines;
+}
+
+} // namespace
+
+glm::mat4 OrbitCamera::viewProjection(float aspect) const {
+    float yaw = glm::radians(yawDeg), pitch = glm::radians(glm::clamp(pitchDeg, -89.0f, 89.0f));
+    glm::vec3 eye = distance * glm::vec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+    glm::mat4 view = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    return glm::perspective(glm::radians(40.0f), aspect, 0.05f, 100.0f) * view;
+}
+
+OrbitCamera defaultWarpCamera(WarpDomain domain) {
+    if (domain == WarpDomain::Sphere) return OrbitCamera{-60.0f, 20.0f, 4.2f};
+    return OrbitCamera{};
+}
+
+glm::vec3 displayPosition(WarpDomain domain, glm::vec3 point) {
+    if (domain == WarpDomain::Square) return glm::vec3(2.0f * glm::vec2(point) - 1.0f, 0.0f);
+    if (domain == WarpDomain::Triangle)
+        return point.x * kTriangleCorners[0] + point.y * kTriangleCorners[1] + (1.0f - point.x - point.y) * kTriangleCorners[2];
+    return point;
+}
+
+WarpView::WarpView(const std::filesystem::path& shaderDir) {
+    ShaderAssembler assembler(shaderDir);
+    program_ = std::make_unique<GlProgram>(assembler.assemble("warp_points.vert"), assembler.assemble("warp_points.frag"));
+    viewProjectionLocation_ = program_->uniformLocation("uViewProjection");
+    pointSizeLocation_ = program_->uniformLocation("uPointSize");
+    roundPointsLocation_ = program_->uniformLocation("uRoundPoints");
+    pointArray_ = createVertexArray();
+    outlineArray_ = createVertexArray();
+    pointBuffer_ = createBuffer();
+    outlineBuffer_ = createBuffer();
+}
+
+void WarpView::upload(GlVertexArray& vertexArray, GlBuffer& buffer, const std::vector<Vertex>& vertices) {
+    glBindVertexArray(vertexArray.id());
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, color)));
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void WarpView::setSamples(WarpDomain domain, const std::vector<WarpSample>& samples, float cosThetaMax) {
+    std::vector<Vertex> points;
+    points.reserve(samples.size());
+    for (const WarpSample& sample : samples)
+        points.push_back({displayPosition(domain, sample.point), glm::vec3(sample.u, 0.35f) * 0.85f + 0.15f});
+    upload(pointArray_, pointBuffer_, points);
+    pointCount_ = static_cast<GLsizei>(points.size());
+
+    std::vector<Vertex> lines;
+    for (glm::vec3 p : outline(domain, cosThetaMax)) lines.push_back({p, kOutlineColor});
+    upload(outlineArray_, outlineBuffer_, lines);
+    outlineCount_ = static_cast<GLsizei>(lines.size());
+}
+
+void WarpView::draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const {
+    glViewport(0, 0, viewportSize.x, viewportSize.y);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST); // points are sparse; depth would hide the far side of the sphere
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+
+    glUseProgram(program_->id());
+    glm::mat4 viewProjection = camera.viewProjection(static_cast<float>(viewportSize.x) / static_cast<float>(viewportSize.y));
+    glUniformMatrix4fv(viewProjectionLocation_, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniform1i(roundPointsLocation_, 0);
+    glBindVertexArray(outlineArray_.id());
+    glDrawArrays(GL_LINES, 0, outlineCount_);
+
+    // Fewer points can be bigger; keep dense sets readable.
+    float pointSize = glm::clamp(600.0f / std::sqrt(static_cast<float>(std::max(pointCount_, 1))), 1.5f, 9.0f) *
+                      static_cast<float>(viewportSize.y) / 800.0f;
+    glUniform1f(pointSizeLocation_, std::max(pointSize, 1.0f));
+    glUniform1i(roundPointsLocation_, 1);
+    glBindVertexArray(pointArray_.id());
+    glDrawArrays(GL_POINTS, 0, pointCount_);
+    glBindVertexArray(0);
+    glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+ImageRgba8 WarpView::renderImage(glm::ivec2 size, const OrbitCamera& camera) const {
+    GlTexture color = createTexture();
+    glBindTexture(GL_TEXTURE_2D, color.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    GlFramebuffer framebuffer = createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("warp view: cannot render to an RGBA8 target");
+    draw(size, camera);
+
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    ImageRgba8 image = readColorRgba8(size);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return image;
+}
+
+} // namespace ptview

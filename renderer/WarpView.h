@@ -1,0 +1,63 @@
+#pragma once
+// Draws warped sample points in 3D with the outline of their domain: the picture behind
+// `ptview warp` and the viewer's warp visualizer. Points are coloured by the u that produced them
+// (red along u.x, green along u.y), so one sees where each part of the square lands.
+
+#include "GlObjects.h"
+#include "GlProgram.h"
+#include "Image.h"
+#include "Warp.h"
+#include "WarpProbe.h"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace ptview {
+
+// An orbit around the origin, +z up.
+struct OrbitCamera {
+    float yawDeg = -90.0f;
+    float pitchDeg = 89.0f;
+    float distance = 3.4f;
+
+    glm::mat4 viewProjection(float aspect) const;
+};
+
+// Looking straight down at planar domains, from above and aside at spherical ones.
+OrbitCamera defaultWarpCamera(WarpDomain domain);
+
+// Where a warp's output is drawn: the square and triangle are mapped to shapes centred on the
+// origin; disks and directions are drawn as they are.
+glm::vec3 displayPosition(WarpDomain domain, glm::vec3 point);
+
+class WarpView {
+public:
+    explicit WarpView(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
+
+    void setSamples(WarpDomain domain, const std::vector<WarpSample>& samples, float cosThetaMax);
+    // Into the bound draw framebuffer, over the whole viewport.
+    void draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const;
+    // Offscreen, for headless pictures.
+    ImageRgba8 renderImage(glm::ivec2 size, const OrbitCamera& camera) const;
+
+private:
+    struct Vertex {
+        glm::vec3 position;
+        glm::vec3 color;
+    };
+    static void upload(GlVertexArray& vertexArray, GlBuffer& buffer, const std::vector<Vertex>& vertices);
+
+    std::unique_ptr<GlProgram> program_;
+    GLint viewProjectionLocation_ = -1;
+    GLint pointSizeLocation_ = -1;
+    GLint roundPointsLocation_ = -1;
+    GlVertexArray pointArray_, outlineArray_;
+    GlBuffer pointBuffer_, outlineBuffer_;
+    GLsizei pointCount_ = 0;
+    GLsizei outlineCount_ = 0;
+};
+
+} // namespace ptview
