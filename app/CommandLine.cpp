@@ -72,6 +72,11 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     app.add_option("--frames", viewer.frames, "render this many frames, save --screenshot and exit")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
+    std::vector<std::pair<std::string, Warp>> warpNames;
+    for (const WarpInfo& info : warpInfos()) warpNames.emplace_back(info.name, info.warp);
+    addNamedOption(app, "--warp", viewer.warp.warp, "warp", warpNames)
+        ->each([&viewer](const std::string&) { viewer.showWarp = true; })
+        ->description("open the warp visualizer on this warp (uses --sampler too)");
 
     RenderOptions& render = out.render;
     std::string sizeText;
@@ -85,8 +90,6 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     addRenderSettings(*renderCommand, render.settings, render.exposureStops);
 
     WarpOptions& warp = out.warp;
-    std::vector<std::pair<std::string, Warp>> warpNames;
-    for (const WarpInfo& info : warpInfos()) warpNames.emplace_back(info.name, info.warp);
     float coneAngleDeg = 60.0f;
     CLI::App* warpCommand = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
     addNamedOption(*warpCommand, "--warp", warp.request.warp, "warp", warpNames)->required();
@@ -111,6 +114,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         return kExitBadInput;
     }
 
+    viewer.warp.sampler = viewer.settings.sampler;
     if (viewer.frames > 0 && viewer.screenshotPath.empty()) {
         std::cerr << "ptview: --frames needs --screenshot FILE.png\n";
         return kExitBadInput;

@@ -30,6 +30,8 @@ struct ViewerOptions {
     float exposureStops = 0.0f;
     int frames = 0;              // > 0: render this many frames, save the screenshot, exit
     std::string screenshotPath;
+    bool showWarp = false;       // open in the warp visualizer
+    WarpRequest warp{Warp::CosineHemisphere, SamplerMode::Random, 1024};
 };
 
 struct WarpOptions {

@@ -4,6 +4,7 @@
 #include "PathTracer.h"
 #include "Readback.h"
 #include "Scene.h"
+#include "WarpVisualizer.h"
 
 #include <glad/gl.h>
 // GLFW after glad, so it does not pull in the system GL header.
@@ -68,6 +69,11 @@ void drawRenderPanel(const Scene& scene, PathTracer& tracer, RenderSettings& set
     ImGui::Text("%.2f M samples/s", stats.samplesPerSecond * 1e-6);
     ImGui::Separator();
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
+    if (ImGui::BeginCombo("sampler", samplerModeName(settings.sampler))) {
+        for (const SamplerModeName& entry : samplerModeNames())
+            if (ImGui::Selectable(entry.name, entry.mode == settings.sampler)) settings.sampler = entry.mode;
+        ImGui::EndCombo();
+    }
     ImGui::SliderFloat("exposure (stops)", &exposureStops, -10.0f, 10.0f, "%.1f");
     if (ImGui::Button("Restart")) tracer.restart();
     ImGui::End();
@@ -122,6 +128,8 @@ int runViewer(const ViewerOptions& options) {
         RenderSettings settings = options.settings;
         float exposureStops = options.exposureStops;
         FrameStats stats;
+        WarpVisualizer warpVisualizer(options.warp);
+        warpVisualizer.setActive(options.showWarp);
         Clock::time_point lastFrame = Clock::now();
         int frame = 0;
 
@@ -137,21 +145,27 @@ int runViewer(const ViewerOptions& options) {
             tracer.setSettings(settings);
 
             int samplesThisFrame = 0;
-            Clock::time_point renderStart = Clock::now();
-            do {
-                tracer.renderSample();
-                glFinish();
-                ++samplesThisFrame;
-            } while (samplesThisFrame < kMaxSamplesPerFrame &&
-                     std::chrono::duration<double>(Clock::now() - renderStart).count() < kFrameBudgetSeconds);
-
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            tracer.display(framebufferSize, exposureStops);
+            if (warpVisualizer.active()) {
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                warpVisualizer.draw(framebufferSize); // the path tracer pauses meanwhile
+            } else {
+                Clock::time_point renderStart = Clock::now();
+                do {
+                    tracer.renderSample();
+                    glFinish();
+                    ++samplesThisFrame;
+                } while (samplesThisFrame < kMaxSamplesPerFrame &&
+                         std::chrono::duration<double>(Clock::now() - renderStart).count() < kFrameBudgetSeconds);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                tracer.display(framebufferSize, exposureStops);
+            }
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             drawRenderPanel(scene, tracer, settings, exposureStops, stats);
+            warpVisualizer.drawPanel();
+            if (warpVisualizer.active()) warpVisualizer.handleMouse();
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 

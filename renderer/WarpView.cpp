@@ -63,7 +63,7 @@ glm::mat4 OrbitCamera::viewProjection(float aspect) const {
 }
 
 OrbitCamera defaultWarpCamera(WarpDomain domain) {
-    if (domain == WarpDomain::Sphere) return OrbitCamera{-60.0f, 20.0f, 4.2f};
+    if (domain == WarpDomain::Sphere) return OrbitCamera{-60.0f, 30.0f, 4.2f};
     return OrbitCamera{};
 }
 
@@ -80,6 +80,7 @@ WarpView::WarpView(const std::filesystem::path& shaderDir) {
     viewProjectionLocation_ = program_->uniformLocation("uViewProjection");
     pointSizeLocation_ = program_->uniformLocation("uPointSize");
     roundPointsLocation_ = program_->uniformLocation("uRoundPoints");
+    cameraDistanceLocation_ = program_->uniformLocation("uCameraDistance");
     pointArray_ = createVertexArray();
     outlineArray_ = createVertexArray();
     pointBuffer_ = createBuffer();
@@ -125,6 +126,7 @@ void WarpView::draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const {
     glUseProgram(program_->id());
     glm::mat4 viewProjection = camera.viewProjection(static_cast<float>(viewportSize.x) / static_cast<float>(viewportSize.y));
     glUniformMatrix4fv(viewProjectionLocation_, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniform1f(cameraDistanceLocation_, camera.distance);
     glUniform1i(roundPointsLocation_, 0);
     glBindVertexArray(outlineArray_.id());
     glDrawArrays(GL_LINES, 0, outlineCount_);

@@ -54,6 +54,7 @@ private:
     GLint viewProjectionLocation_ = -1;
     GLint pointSizeLocation_ = -1;
     GLint roundPointsLocation_ = -1;
+    GLint cameraDistanceLocation_ = -1;
     GlVertexArray pointArray_, outlineArray_;
     GlBuffer pointBuffer_, outlineBuffer_;
     GLsizei pointCount_ = 0;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -164,6 +165,41 @@ TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
         EXPECT_TRUE(std::regex_search(result.output, std::regex(R"(\d+/400 spp \(\d+%\), [0-9.]+ s elapsed, ETA [0-9.]+ s)")))
             << result.output;
     }
+}
+
+TEST_F(CommandLineTest, UnknownWarpOrSamplerListsValidNames) {
+    expectRefused("warp --warp cone --out " + shellQuoted(path("out.png")),
+                  "unknown warp \"cone\" (valid: square, uniform-disk, concentric-disk, uniform-sphere, uniform-cone, "
+                  "uniform-hemisphere, cosine-hemisphere, uniform-triangle)");
+    expectRefused("warp --warp square --sampler halton --out " + shellQuoted(path("out.png")),
+                  "unknown sampler \"halton\" (valid: random, grid, stratified, sobol)");
+    expectRefused("render " + shellQuoted(kCornell) + " --sampler halton --out " + shellQuoted(path("out.png")),
+                  "unknown sampler \"halton\"");
+    expectRefused("--sampler halton", "unknown sampler \"halton\"");
+}
+
+TEST_F(CommandLineTest, WarpDrawsItsPointsInsideTheDomainOutline) {
+    testing::CommandResult result = runCommand(kBinary + " warp --warp concentric-disk --sampler stratified --count 256 "
+                                               "--image-size 200 --out " + shellQuoted(path("w.png")));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(path("w.png").c_str(), &width, &height, &channels, 3);
+    ASSERT_NE(pixels, nullptr);
+    EXPECT_EQ(width, 200);
+    // The unit disk seen from 3.4 units with a 40 degree field of view spans a radius of 0.404 of
+    // the picture; its outline is drawn there. Count lit pixels well inside and well outside it.
+    long inside = 0, outside = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const unsigned char* p = pixels + 3 * (y * width + x);
+            bool lit = std::max({p[0], p[1], p[2]}) > 60; // the background is (20, 20, 23)
+            double radius = std::hypot(x + 0.5 - width / 2.0, y + 0.5 - height / 2.0) / width;
+            if (radius < 0.38) inside += lit;
+            if (radius > 0.43) outside += lit;
+        }
+    stbi_image_free(pixels);
+    EXPECT_GT(inside, 500);
+    EXPECT_EQ(outside, 0);
 }
 
 } // namespace

@@ -54,6 +54,31 @@ TEST(WindowSmoke, ViewerRendersCornellBoxWithPanel) {
     EXPECT_GT(panelTitle, 1000) << "the Render panel should be in the screenshot";
 }
 
+TEST(WindowSmoke, WarpVisualizerDrawsPointsInTheViewer) {
+    fs::path screenshot = fs::temp_directory_path() / ("ptview_warp_window_" + std::to_string(::getpid()) + ".png");
+    testing::CommandResult result = testing::runCommand(
+        "xvfb-run -a -s '-screen 0 1024x800x24' " + std::string(PTVIEW_BINARY) +
+        " --warp uniform-sphere --sampler sobol --frames 2 --screenshot " + testing::shellQuoted(screenshot.string()));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("(0 spp)"), std::string::npos) << "the path tracer pauses in the visualizer";
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(screenshot.string().c_str(), &width, &height, &channels, 3);
+    ASSERT_NE(pixels, nullptr);
+    // Points are coloured by (u.x, u.y): strongly red-not-green and green-not-red points both appear
+    // in the lower right quarter, away from the panels.
+    long reddish = 0, greenish = 0;
+    for (int y = height / 2; y < height; ++y)
+        for (int x = width / 2; x < width; ++x) {
+            const unsigned char* p = pixels + 3 * (y * width + x);
+            reddish += p[0] > p[1] + 60;
+            greenish += p[1] > p[0] + 60;
+        }
+    stbi_image_free(pixels);
+    fs::remove(screenshot);
+    EXPECT_GT(reddish, 200);
+    EXPECT_GT(greenish, 200);
+}
+
 TEST(WindowSmoke, ViewerSurvivesResizingAndQuitsWithEscape) {
     ASSERT_EQ(testing::runCommand("command -v xvfb-run && command -v xdotool").exitCode, 0)
         << "xvfb-run or xdotool is missing: scripts/test installs them";

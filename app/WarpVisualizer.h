@@ -1,0 +1,34 @@
+#pragma once
+// The viewer's warp visualizer: N points of a warp fed by a sampler, drawn in 3D and orbited with
+// the mouse, with warp, sampler, N and the cone angle in an ImGui panel. Needs a current context.
+
+#include "WarpProbe.h"
+#include "WarpView.h"
+
+#include <glm/glm.hpp>
+
+namespace ptview {
+
+class WarpVisualizer {
+public:
+    explicit WarpVisualizer(const WarpRequest& initial);
+
+    bool active() const { return active_; }
+    void setActive(bool active) { active_ = active; }
+
+    // The panel, and the mouse when no panel wants it: drag to orbit, wheel to zoom.
+    void drawPanel();
+    void handleMouse();
+    void draw(glm::ivec2 viewportSize);
+
+private:
+    WarpProbe probe_;
+    WarpView view_;
+    WarpRequest request_;
+    OrbitCamera camera_;
+    float coneAngleDeg_ = 60.0f;
+    bool active_ = false;
+    bool dirty_ = true;
+};
+
+} // namespace ptview
