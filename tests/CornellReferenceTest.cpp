@@ -103,5 +103,43 @@ TEST(CornellReference, BlockMeansMatchIndependentRenderer) {
     }
 }
 
+class CornellReferenceBySampler : public ::testing::TestWithParam<SamplerMode> {};
+
+// Every sampler but grid is unbiased: the image mean converges to the reference's. The per-pixel
+// variance overestimates the error of stratified and sobol, so the tolerance is conservative there.
+TEST_P(CornellReferenceBySampler, ImageMeanMatches) {
+    testing::glContext();
+    constexpr int size = 64, samplesPerPixel = 256;
+    PathTracer tracer;
+    tracer.setScene(loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json"));
+    tracer.setImageSize({size, size});
+    RenderSettings settings{kMaxDepth, 2};
+    settings.sampler = GetParam();
+    settings.sampleBudget = samplesPerPixel;
+    tracer.setSettings(settings);
+    for (int i = 0; i < samplesPerPixel; ++i) tracer.renderSample();
+    PixelStatistics stats = tracer.readStatistics();
+
+    ImageRgbF reference = readPfm(PTVIEW_TEST_DATA_DIR "/cornell_reference.pfm");
+    glm::dvec3 ours(0.0), ref(0.0), varianceSum(0.0);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            ours += glm::dvec3(stats.mean.at(x, y));
+            varianceSum += glm::dvec3(stats.varianceOfMean.at(x, y));
+        }
+    for (int y = 0; y < reference.height; ++y)
+        for (int x = 0; x < reference.width; ++x) ref += glm::dvec3(reference.at(x, y));
+    ours /= double(size * size);
+    ref /= double(reference.width * reference.height);
+    for (int c = 0; c < 3; ++c) {
+        double standardError = std::sqrt(varianceSum[c]) / (size * size);
+        EXPECT_NEAR(ours[c], ref[c], 3.0 * standardError + 0.01 * ref[c]) << samplerModeName(GetParam()) << " channel " << c;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Samplers, CornellReferenceBySampler,
+                         ::testing::Values(SamplerMode::Random, SamplerMode::Stratified, SamplerMode::Sobol),
+                         [](const ::testing::TestParamInfo<SamplerMode>& info) { return std::string(samplerModeName(info.param)); });
+
 } // namespace
 } // namespace ptview
