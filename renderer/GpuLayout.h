@@ -41,8 +41,10 @@ struct GpuQuad {
 static_assert(sizeof(GpuQuad) == 64, "four RGBA32F texels");
 
 struct GpuMaterialParams {
-    glm::vec4 albedo;   // w unused
-    glm::vec4 radiance; // w unused
+    glm::vec3 color;
+    float ior;
+    glm::vec3 radiance;
+    float roughness;
 };
 static_assert(sizeof(GpuMaterialParams) == 32, "two RGBA32F texels");
 

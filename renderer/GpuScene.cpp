@@ -58,7 +58,7 @@ ScenePrimitives flattenScene(const Scene& scene) {
         }
     }
     for (const Material& material : scene.materials) {
-        out.materialParams.push_back(GpuMaterialParams{glm::vec4(material.albedo, 0.0f), glm::vec4(material.radiance, 0.0f)});
+        out.materialParams.push_back(GpuMaterialParams{material.color, material.ior, material.radiance, material.roughness});
         out.materialTypes.push_back(static_cast<std::uint32_t>(material.type));
     }
     return out;

@@ -19,13 +19,19 @@ struct CameraDesc {
     glm::ivec2 resolution{512, 512}; // width, height in pixels
 };
 
-enum class MaterialType { Diffuse, Emitter };
+// The order is the GPU's: shaders/material.glsl numbers the types the same way.
+enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic };
 
 struct Material {
     std::string name;
     MaterialType type = MaterialType::Diffuse;
-    glm::vec3 albedo{0.0f};   // Diffuse: Lambertian reflectance in [0, 1], two-sided
+    // The model's one colour, each component in [0, 1]: Diffuse and Plastic: albedo of the
+    // (base) Lambertian; DiffuseTransmission and SpecularTransmission: transmittance; Mirror:
+    // reflectance; Glass: tint of both lobes; Metal: reflectance at normal incidence.
+    glm::vec3 color{0.0f};
     glm::vec3 radiance{0.0f}; // Emitter: radiance leaving the front side (W sr^-1 m^-2); reflects nothing
+    float ior = 1.5f;         // SpecularTransmission, Glass, Plastic (coat): inside / outside, in [1, 4]
+    float roughness = 0.0f;   // Metal, Plastic (coat): in [0, 1], GGX alpha = roughness^2; 0 = smooth
 };
 
 enum class ShapeType { Sphere, Quad, Box };

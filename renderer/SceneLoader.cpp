@@ -19,6 +19,7 @@
 #include <initializer_list>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -216,7 +217,8 @@ std::pair<int, int> lineAndColumn(const std::string& text, std::size_t offset) {
 
 // --- Readers: each checks one value and names it on failure -------------------------------------
 
-void checkKeys(const Json& object, const Pointer& at, std::initializer_list<const char*> allowed) {
+template <typename Names>
+void checkKeys(const Json& object, const Pointer& at, const Names& allowed) {
     for (auto it = object.begin(); it != object.end(); ++it) {
         bool known = std::any_of(allowed.begin(), allowed.end(),
                                  [&](const char* name) { return it.key() == name; });
@@ -319,6 +321,10 @@ glm::ivec2 readResolution(const Json& value, const Pointer& at) {
 
 // Which keys are allowed depends on "type", so it is read first; but when it is missing, a
 // misspelt "typ" is the likely cause and is worth naming, so unknown keys are reported first.
+void checkKeys(const Json& object, const Pointer& at, std::initializer_list<const char*> allowed) {
+    checkKeys<std::initializer_list<const char*>>(object, at, allowed);
+}
+
 void requireType(const Json& object, const Pointer& at,
                  std::initializer_list<const char*> anyType) {
     if (!object.contains("type")) {
@@ -358,26 +364,74 @@ glm::vec3 readEnvironment(const Json& value, const Pointer& at) {
                     [](float c) { return c >= 0.0f; }, "a non-negative number");
 }
 
+// Which keys each material type takes. Every type but emitter has one colour, under the name
+// users know for that model; ior and roughness only where the model has them.
+struct MaterialSchema {
+    const char* name;
+    MaterialType type;
+    const char* colorKey;                   // nullptr: the type has no colour
+    std::optional<glm::vec3> colorDefault;  // nullopt: the colour is required
+    bool hasIor;
+    bool hasRoughness;
+};
+
+const MaterialSchema kMaterialSchemas[] = {
+    {"diffuse", MaterialType::Diffuse, "albedo", std::nullopt, false, false},
+    {"emitter", MaterialType::Emitter, nullptr, std::nullopt, false, false},
+    {"diffuse_transmission", MaterialType::DiffuseTransmission, "transmittance", std::nullopt, false, false},
+    {"mirror", MaterialType::Mirror, "reflectance", glm::vec3(1.0f), false, false},
+    {"specular_transmission", MaterialType::SpecularTransmission, "transmittance", glm::vec3(1.0f), true, false},
+    {"glass", MaterialType::Glass, "tint", glm::vec3(1.0f), true, false},
+    {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true},
+    {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true},
+};
+
 Material readMaterial(const std::string& name, const Json& value, const Pointer& at) {
     requireObject(value, at);
     Material material;
     material.name = name;
-    requireType(value, at, {"type", "albedo", "radiance"});
+    requireType(value, at, {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "ior", "roughness"});
     std::string type = readString(value.at("type"), at / "type");
-    if (type == "diffuse") {
-        material.type = MaterialType::Diffuse;
-        checkKeys(value, at, {"type", "albedo"});
-        // Above 1 a surface would reflect more than it receives and paths would not converge.
-        material.albedo = readVec3(requireKey(value, at, "albedo"), at / "albedo",
-                                   [](float c) { return c >= 0.0f && c <= 1.0f; },
-                                   "a number in [0, 1]");
-    } else if (type == "emitter") {
-        material.type = MaterialType::Emitter;
-        checkKeys(value, at, {"type", "radiance"});
+    const MaterialSchema* schema = nullptr;
+    std::string typeList;
+    for (const MaterialSchema& candidate : kMaterialSchemas) {
+        if (type == candidate.name) schema = &candidate;
+        typeList += (typeList.empty() ? "" : ", ") + std::string(candidate.name);
+    }
+    if (!schema) fail(at / "type", "unknown material type \"" + type + "\" (expected one of: " + typeList + ")");
+    material.type = schema->type;
+
+    std::vector<const char*> keys = {"type"};
+    if (schema->type == MaterialType::Emitter) keys.push_back("radiance");
+    if (schema->colorKey) keys.push_back(schema->colorKey);
+    if (schema->hasIor) keys.push_back("ior");
+    if (schema->hasRoughness) keys.push_back("roughness");
+    checkKeys(value, at, keys);
+
+    if (schema->type == MaterialType::Emitter) {
         material.radiance = readVec3(requireKey(value, at, "radiance"), at / "radiance",
                                      [](float c) { return c >= 0.0f; }, "a non-negative number");
-    } else {
-        fail(at / "type", "unknown material type \"" + type + "\" (expected diffuse or emitter)");
+    }
+    if (schema->colorKey) {
+        const Json* color = schema->colorDefault ? optionalKey(value, schema->colorKey)
+                                                 : &requireKey(value, at, schema->colorKey);
+        // Above 1 a surface would return more light than it receives.
+        material.color = color ? readVec3(*color, at / schema->colorKey,
+                                          [](float c) { return c >= 0.0f && c <= 1.0f; }, "a number in [0, 1]")
+                               : *schema->colorDefault;
+    }
+    if (schema->hasIor) {
+        if (const Json* ior = optionalKey(value, "ior")) {
+            material.ior = readNumber(*ior, at / "ior");
+            if (!(material.ior >= 1.0f && material.ior <= 4.0f)) fail(at / "ior", "expected a number in [1, 4]");
+        }
+    }
+    if (schema->hasRoughness) {
+        if (const Json* roughness = optionalKey(value, "roughness")) {
+            material.roughness = readNumber(*roughness, at / "roughness");
+            if (!(material.roughness >= 0.0f && material.roughness <= 1.0f))
+                fail(at / "roughness", "expected a number in [0, 1]");
+        }
     }
     return material;
 }

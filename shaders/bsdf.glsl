@@ -1,34 +1,42 @@
-// BSDFs.
-//
-// Conventions (all BSDF code follows them):
-// - Directions point away from the surface: wo toward the viewer (the previous path vertex),
-//   wi toward the light (the next vertex). Suffix Local = in the shading frame, where +z is the
-//   shading normal turned to the side of wo.
-// - f(wo, wi) is the BSDF value alone; it does NOT include |cos(theta_i)|.
-// - A sample's weight is f(wo, wi) * |cos(theta_i)| / pdf(wi), pdf in solid angle. A failed
-//   sample has pdf = 0 and weight = 0: callers end the path there, nothing NaN travels on.
-#include "warps.glsl"
-#include "shading_frame.glsl"
+// The BSDF of a material: f, pdf and sampling, dispatched on the material type. The conventions
+// (directions, frames, what f and a sample's weight are) are at the top of bsdf_common.glsl.
+#include "material.glsl"
+#include "bsdf_common.glsl"
+#include "bsdf_diffuse.glsl"
+#include "bsdf_specular.glsl"
+#include "bsdf_metal.glsl"
+#include "bsdf_plastic.glsl"
 
-struct BsdfSample {
-    vec3 wiLocal;
-    vec3 weight;
-    float pdfSolidAngle;
-};
-
-// Lambertian reflection, two-sided: the caller's frame already faces wo.
-vec3 lambertianF(vec3 albedo, vec3 woLocal, vec3 wiLocal) {
-    return (woLocal.z > 0.0 && wiLocal.z > 0.0) ? albedo * kInvPi : vec3(0.0);
+vec3 bsdfF(Material material, vec3 woLocal, vec3 wiLocal) {
+    switch (material.type) {
+    case kMaterialDiffuse: return lambertianReflectionF(material.color, woLocal, wiLocal);
+    case kMaterialDiffuseTransmission: return lambertianTransmissionF(material.color, woLocal, wiLocal);
+    case kMaterialMetal: return metalF(material.color, material.roughness, woLocal, wiLocal);
+    case kMaterialPlastic: return plasticF(material.color, material.ior, material.roughness, woLocal, wiLocal);
+    default: return vec3(0.0); // delta models and emitters
+    }
 }
 
-float lambertianPdf(vec3 woLocal, vec3 wiLocal) {
-    return woLocal.z > 0.0 ? cosineHemispherePdf(wiLocal.z) : 0.0;
+float bsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) {
+    switch (material.type) {
+    case kMaterialDiffuse: return lambertianReflectionPdf(woLocal, wiLocal);
+    case kMaterialDiffuseTransmission: return lambertianTransmissionPdf(woLocal, wiLocal);
+    case kMaterialMetal: return metalPdf(material.roughness, woLocal, wiLocal);
+    case kMaterialPlastic: return plasticPdf(material.color, material.ior, material.roughness, woLocal, wiLocal);
+    default: return 0.0;
+    }
 }
 
-BsdfSample sampleLambertian(vec3 albedo, vec3 woLocal, vec2 u) {
-    vec3 wiLocal = sampleCosineHemisphere(u);
-    float pdf = lambertianPdf(woLocal, wiLocal);
-    if (pdf == 0.0) return BsdfSample(wiLocal, vec3(0.0), 0.0);
-    // albedo/pi * cos / (cos/pi): the cosine cancels exactly.
-    return BsdfSample(wiLocal, albedo, pdf);
+// uLobe picks among a model's lobes; u places the direction within the lobe.
+BsdfSample sampleBsdf(Material material, vec3 woLocal, float uLobe, vec2 u) {
+    switch (material.type) {
+    case kMaterialDiffuse: return sampleLambertianReflection(material.color, woLocal, u);
+    case kMaterialDiffuseTransmission: return sampleLambertianTransmission(material.color, woLocal, u);
+    case kMaterialMirror: return sampleMirror(material.color, woLocal);
+    case kMaterialSpecularTransmission: return sampleSpecularTransmission(material.color, material.ior, woLocal);
+    case kMaterialGlass: return sampleGlass(material.color, material.ior, woLocal, uLobe);
+    case kMaterialMetal: return sampleMetal(material.color, material.roughness, woLocal, u);
+    case kMaterialPlastic: return samplePlastic(material.color, material.ior, material.roughness, woLocal, uLobe, u);
+    default: return failedBsdfSample(); // emitters reflect nothing
+    }
 }

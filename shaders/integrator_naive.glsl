@@ -4,6 +4,7 @@
 #include "sampler.glsl"
 #include "intersect.glsl"
 #include "bsdf.glsl"
+#include "shading_frame.glsl"
 #include "emission.glsl"
 
 vec3 estimateRadiance(Ray ray, Sampler sampler) {
@@ -20,11 +21,9 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         radiance += throughput * emittedRadiance(material, hit.normalGeom, woWorld);
         if (bounce == uMaxDepth || material.type == kMaterialEmitter) break; // emitters reflect nothing
 
-        // Two-sided surface: shade on the side the path arrived from.
-        vec3 normalFacing = dot(hit.normalGeom, woWorld) >= 0.0 ? hit.normalGeom : -hit.normalGeom;
-        ShadingFrame frame = makeShadingFrame(normalFacing);
-        BsdfSample bs = sampleLambertian(material.albedo, toLocal(frame, woWorld),
-                                         samplerGet2D(sampler, bsdfDimension(bounce)));
+        ShadingFrame frame = makeShadingFrame(hit.normalGeom); // BSDFs handle either side themselves
+        BsdfSample bs = sampleBsdf(material, toLocal(frame, woWorld), samplerGet1D(sampler, bsdfLobeDimension(bounce)),
+                                   samplerGet2D(sampler, bsdfDimension(bounce)));
         if (bs.pdfSolidAngle == 0.0) break;
         throughput *= bs.weight; // weight already holds f*|cos|/pdf
         if (all(equal(throughput, vec3(0.0)))) break;

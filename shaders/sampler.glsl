@@ -19,11 +19,12 @@ const uint kSamplerSobol = 3u;
 // Dimension layout of a path: the camera jitter, then a fixed block per bounce, so that a given
 // bounce's BSDF sample is the same dimension in every path whatever happened before.
 const uint kDimensionCamera = 0u;            // 2D: position inside the pixel
-const uint kDimensionsPerBounce = 4u;
+const uint kDimensionsPerBounce = 5u;
 uint bsdfDimension(int bounce)              { return 1u + uint(bounce) * kDimensionsPerBounce; }      // 2D
-uint lightChoiceDimension(int bounce)       { return 1u + uint(bounce) * kDimensionsPerBounce + 1u; } // 1D
-uint lightPositionDimension(int bounce)     { return 1u + uint(bounce) * kDimensionsPerBounce + 2u; } // 2D
-uint russianRouletteDimension(int bounce)   { return 1u + uint(bounce) * kDimensionsPerBounce + 3u; } // 1D
+uint bsdfLobeDimension(int bounce)          { return 1u + uint(bounce) * kDimensionsPerBounce + 1u; } // 1D
+uint lightChoiceDimension(int bounce)       { return 1u + uint(bounce) * kDimensionsPerBounce + 2u; } // 1D
+uint lightPositionDimension(int bounce)     { return 1u + uint(bounce) * kDimensionsPerBounce + 3u; } // 2D
+uint russianRouletteDimension(int bounce)   { return 1u + uint(bounce) * kDimensionsPerBounce + 4u; } // 1D
 
 struct Sampler {
     uint mode;

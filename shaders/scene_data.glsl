@@ -1,26 +1,19 @@
 // Scene data as the GPU sees it: buffer textures filled by renderer/GpuScene.cpp. Buffer textures
 // (not SSBOs) keep the fragment path within OpenGL 4.1.
+#include "material.glsl"
 
 uniform samplerBuffer uSpheres;        // per sphere: (center.xyz, radius)
 uniform usamplerBuffer uSphereMaterials;
 uniform samplerBuffer uQuads;          // per quad: center, u, v, dual = cross(u, v) / |cross(u, v)|^2
 uniform usamplerBuffer uQuadMaterials;
-uniform samplerBuffer uMaterialParams; // per material: albedo, radiance
+uniform samplerBuffer uMaterialParams; // per material: (color, ior), (radiance, roughness)
 uniform usamplerBuffer uMaterialTypes;
 uniform int uSphereCount;
 uniform int uQuadCount;
 
-const uint kMaterialDiffuse = 0u;
-const uint kMaterialEmitter = 1u;
-
-struct Material {
-    uint type;
-    vec3 albedo;
-    vec3 radiance;
-};
-
 Material fetchMaterial(int index) {
-    return Material(texelFetch(uMaterialTypes, index).r,
-                    texelFetch(uMaterialParams, 2 * index).rgb,
-                    texelFetch(uMaterialParams, 2 * index + 1).rgb);
+    vec4 colorAndIor = texelFetch(uMaterialParams, 2 * index);
+    vec4 radianceAndRoughness = texelFetch(uMaterialParams, 2 * index + 1);
+    return Material(texelFetch(uMaterialTypes, index).r, colorAndIor.rgb, colorAndIor.a,
+                    radianceAndRoughness.rgb, radianceAndRoughness.a);
 }

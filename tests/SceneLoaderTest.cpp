@@ -102,8 +102,8 @@ TEST(SceneLoader, CornellKeepsMaterialsInFileOrder) {
     for (int i = 0; i < 4; ++i)
         EXPECT_EQ(cornell.materials[i].name, names[i]);
     EXPECT_EQ(cornell.materials[0].type, MaterialType::Diffuse);
-    EXPECT_EQ(cornell.materials[1].albedo, glm::vec3(0.63f, 0.065f, 0.05f));
-    EXPECT_EQ(cornell.materials[2].albedo, glm::vec3(0.14f, 0.45f, 0.091f));
+    EXPECT_EQ(cornell.materials[1].color, glm::vec3(0.63f, 0.065f, 0.05f));
+    EXPECT_EQ(cornell.materials[2].color, glm::vec3(0.14f, 0.45f, 0.091f));
     EXPECT_EQ(cornell.materials[3].type, MaterialType::Emitter);
     EXPECT_EQ(cornell.materials[3].radiance, glm::vec3(17.0f, 12.0f, 4.0f));
 }
@@ -361,8 +361,54 @@ TEST(SceneLoader, RejectsUnknownMaterialReference) {
 }
 
 TEST(SceneLoader, RejectsUnknownMaterialType) {
-    expectPlaceError(errorFrom(validSceneWith("\"type\": \"emitter\"", "\"type\": \"mirror\"")),
-                     "/materials/light/type", "unknown material type \"mirror\"");
+    expectPlaceError(errorFrom(validSceneWith("\"type\": \"emitter\"", "\"type\": \"velvet\"")),
+                     "/materials/light/type",
+                     "unknown material type \"velvet\" (expected one of: diffuse, emitter, diffuse_transmission, "
+                     "mirror, specular_transmission, glass, metal, plastic)");
+}
+
+TEST(SceneLoader, ReadsEveryMaterialTypeWithDefaults) {
+    Scene scene = parseScene(R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": {
+          "paper": { "type": "diffuse_transmission", "transmittance": [0.5, 0.6, 0.7] },
+          "chrome": { "type": "mirror" },
+          "film": { "type": "specular_transmission", "ior": 1.33 },
+          "water": { "type": "glass", "ior": 1.33, "tint": [0.9, 1, 1] },
+          "gold": { "type": "metal", "reflectance": [1.0, 0.78, 0.34], "roughness": 0.3 },
+          "toy": { "type": "plastic", "albedo": [0.8, 0.1, 0.1], "roughness": 0.2 }
+        },
+        "shapes": [] })", "all.json");
+    ASSERT_EQ(scene.materials.size(), 6u);
+    EXPECT_EQ(scene.materials[0].type, MaterialType::DiffuseTransmission);
+    EXPECT_EQ(scene.materials[0].color, glm::vec3(0.5f, 0.6f, 0.7f));
+    EXPECT_EQ(scene.materials[1].type, MaterialType::Mirror);
+    EXPECT_EQ(scene.materials[1].color, glm::vec3(1.0f)); // default reflectance
+    EXPECT_EQ(scene.materials[2].type, MaterialType::SpecularTransmission);
+    EXPECT_FLOAT_EQ(scene.materials[2].ior, 1.33f);
+    EXPECT_EQ(scene.materials[3].type, MaterialType::Glass);
+    EXPECT_EQ(scene.materials[3].color, glm::vec3(0.9f, 1.0f, 1.0f));
+    EXPECT_EQ(scene.materials[4].type, MaterialType::Metal);
+    EXPECT_FLOAT_EQ(scene.materials[4].roughness, 0.3f);
+    EXPECT_EQ(scene.materials[5].type, MaterialType::Plastic);
+    EXPECT_FLOAT_EQ(scene.materials[5].ior, 1.5f); // default coat
+    EXPECT_FLOAT_EQ(scene.materials[5].roughness, 0.2f);
+}
+
+TEST(SceneLoader, RejectsMaterialParametersOutOfRangeOrForeignToTheType) {
+    auto sceneWithMaterial = [](const std::string& material) {
+        return R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+                    "materials": { "m": )" + material + R"( }, "shapes": [] })";
+    };
+    expectPlaceError(errorFrom(sceneWithMaterial(R"({ "type": "glass", "ior": 0.5 })")), "/materials/m/ior",
+                     "expected a number in [1, 4]");
+    expectPlaceError(errorFrom(sceneWithMaterial(R"({ "type": "metal", "reflectance": [1,1,1], "roughness": 1.5 })")),
+                     "/materials/m/roughness", "expected a number in [0, 1]");
+    expectPlaceError(errorFrom(sceneWithMaterial(R"({ "type": "metal", "roughness": 0.5 })")),
+                     "/materials/m/reflectance", "missing required key");
+    expectPlaceError(errorFrom(sceneWithMaterial(R"({ "type": "mirror", "roughness": 0.5 })")),
+                     "/materials/m/roughness", "unknown key");
+    expectPlaceError(errorFrom(sceneWithMaterial(R"({ "type": "glass", "tint": [1, 2, 1] })")),
+                     "/materials/m/tint/1", "expected a number in [0, 1]");
 }
 
 TEST(SceneLoader, RejectsNegativeRadius) {

@@ -1,0 +1,39 @@
+// Rough metal: GGX microfacet reflection with height-correlated Smith shadowing-masking and a
+// Schlick Fresnel from the per-channel reflectance at normal incidence. Two-sided: evaluated as
+// if wo were on the front side (an isotropic BSDF is symmetric under flipping both z's).
+#include "bsdf_common.glsl"
+#include "fresnel.glsl"
+#include "microfacet.glsl"
+
+vec3 metalF(vec3 reflectance, float roughness, vec3 woLocal, vec3 wiLocal) {
+    if (!sameHemisphere(woLocal, wiLocal)) return vec3(0.0);
+    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
+    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
+    vec3 wi = vec3(wiLocal.xy, wiLocal.z * side);
+    vec3 h = wo + wi;
+    if (dot(h, h) == 0.0) return vec3(0.0);
+    h = normalize(h);
+    float alpha = ggxAlpha(roughness);
+    return fresnelSchlick(reflectance, dot(wo, h)) * ggxD(h, alpha) * ggxG2(wo, wi, alpha) / (4.0 * wo.z * wi.z);
+}
+
+float metalPdf(float roughness, vec3 woLocal, vec3 wiLocal) {
+    if (!sameHemisphere(woLocal, wiLocal)) return 0.0;
+    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
+    return ggxReflectionPdf(vec3(woLocal.xy, woLocal.z * side), vec3(wiLocal.xy, wiLocal.z * side), ggxAlpha(roughness));
+}
+
+BsdfSample sampleMetal(vec3 reflectance, float roughness, vec3 woLocal, vec2 u) {
+    if (woLocal.z == 0.0) return failedBsdfSample();
+    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
+    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
+    float alpha = ggxAlpha(roughness);
+    vec3 h = sampleGgxVisibleNormal(wo, alpha, u);
+    vec3 wi = reflect(-wo, h);
+    float woDotH = dot(wo, h);
+    if (wi.z <= 0.0 || woDotH <= 0.0) return failedBsdfSample();
+    // f cos / pdf with pdf = G1(wo) D (wo.h) / (wo.z 4 (wo.h)): D and the cosines cancel.
+    vec3 weight = fresnelSchlick(reflectance, woDotH) * (ggxG2(wo, wi, alpha) / ggxG1(wo, alpha));
+    float pdf = ggxVisibleNormalPdf(wo, h, alpha) / (4.0 * woDotH);
+    return BsdfSample(vec3(wi.xy, wi.z * side), weight, pdf, false);
+}
