@@ -57,11 +57,17 @@ ScenePrimitives flattenScene(const Scene& scene) {
             break;
         }
     }
-    for (const Material& material : scene.materials) {
+    flattenMaterials(scene.materials, out);
+    return out;
+}
+
+void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out) {
+    out.materialParams.clear();
+    out.materialTypes.clear();
+    for (const Material& material : materials) {
         out.materialParams.push_back(GpuMaterialParams{material.color, material.ior, material.radiance, material.roughness});
         out.materialTypes.push_back(static_cast<std::uint32_t>(material.type));
     }
-    return out;
 }
 
 void GpuScene::upload(const Scene& scene) {
@@ -76,10 +82,16 @@ void GpuScene::upload(const Scene& scene) {
     fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_R32UI, primitives.sphereMaterials);
     fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, primitives.quads);
     fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_R32UI, primitives.quadMaterials);
-    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, primitives.materialParams);
-    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_R32UI, primitives.materialTypes);
+    uploadMaterials(scene.materials);
     sphereCount_ = static_cast<int>(primitives.spheres.size());
     quadCount_ = static_cast<int>(primitives.quads.size());
+}
+
+void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
+    ScenePrimitives primitives;
+    flattenMaterials(materials, primitives);
+    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, primitives.materialParams);
+    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_R32UI, primitives.materialTypes);
 }
 
 void GpuScene::bind(int firstUnit) const {

@@ -20,14 +20,17 @@ struct ScenePrimitives {
     std::vector<std::uint32_t> materialTypes;
 };
 
-// Pure CPU step, testable without a GL context.
+// Pure CPU steps, testable without a GL context.
 ScenePrimitives flattenScene(const Scene& scene);
+void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out);
 
 class GpuScene {
 public:
     static constexpr int kTextureCount = 6;
 
     void upload(const Scene& scene);
+    // Material edits only: no geometry is re-sent and nothing is recompiled.
+    void uploadMaterials(const std::vector<Material>& materials);
     // Binds the buffer textures to units firstUnit .. firstUnit + kTextureCount - 1, in the order
     // spheres, sphere materials, quads, quad materials, material params, material types.
     void bind(int firstUnit) const;

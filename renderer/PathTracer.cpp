@@ -64,6 +64,11 @@ void PathTracer::setScene(const Scene& scene) {
     restart();
 }
 
+void PathTracer::setMaterials(const std::vector<Material>& materials) {
+    gpuScene_.uploadMaterials(materials);
+    restart();
+}
+
 void PathTracer::setSettings(const RenderSettings& settings) {
     if (settings == settings_) return;
     settings_ = settings;

@@ -39,6 +39,9 @@ public:
 
     // Each of these restarts accumulation.
     void setScene(const Scene& scene);
+    // Live material edits (same count and order as the scene's): re-sent to the GPU as they are,
+    // no shader is recompiled; the next sample already uses them.
+    void setMaterials(const std::vector<Material>& materials);
     void setSettings(const RenderSettings& settings); // restarts only when something changed
     void setImageSize(glm::ivec2 size);               // restarts only when the size changed
     void restart() { accumulator_.restart(); }
