@@ -3,6 +3,7 @@
 // the statistical tests and the source of the warp visualizer's points. Needs a current context.
 
 #include "GlProgram.h"
+#include "ProbePass.h"
 #include "SamplerMode.h"
 #include "Warp.h"
 
@@ -43,8 +44,7 @@ public:
     std::vector<float> pdf(const WarpRequest& request, const std::vector<glm::vec3>& points) const;
 
 private:
-    void run(const WarpRequest& request, int mode, int count, const std::vector<glm::vec3>* points,
-             std::vector<glm::vec4>& pointAndPdf, std::vector<glm::vec4>& uAndInverse) const;
+    std::vector<ProbeData> run(const WarpRequest& request, int mode, int count, const ProbeData& points) const;
 
     std::unique_ptr<GlProgram> program_;
 };

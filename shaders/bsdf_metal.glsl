@@ -1,24 +1,25 @@
 // Rough metal: GGX microfacet reflection with height-correlated Smith shadowing-masking and a
-// Schlick Fresnel from the per-channel reflectance at normal incidence. Two-sided: evaluated as
-// if wo were on the front side (an isotropic BSDF is symmetric under flipping both z's).
+// Schlick Fresnel from the per-channel reflectance at normal incidence; an effectively smooth
+// metal is a Fresnel-weighted mirror (delta). Two-sided: evaluated as if wo were on the front
+// side (an isotropic BSDF is symmetric under flipping both z's).
 #include "bsdf_common.glsl"
 #include "fresnel.glsl"
 #include "microfacet.glsl"
 
 vec3 metalF(vec3 reflectance, float roughness, vec3 woLocal, vec3 wiLocal) {
-    if (!sameHemisphere(woLocal, wiLocal)) return vec3(0.0);
+    float alpha = ggxAlpha(roughness);
+    if (!sameHemisphere(woLocal, wiLocal) || ggxIsEffectivelySmooth(alpha)) return vec3(0.0);
     float side = woLocal.z > 0.0 ? 1.0 : -1.0;
     vec3 wo = vec3(woLocal.xy, woLocal.z * side);
     vec3 wi = vec3(wiLocal.xy, wiLocal.z * side);
     vec3 h = wo + wi;
     if (dot(h, h) == 0.0) return vec3(0.0);
     h = normalize(h);
-    float alpha = ggxAlpha(roughness);
     return fresnelSchlick(reflectance, dot(wo, h)) * ggxD(h, alpha) * ggxG2(wo, wi, alpha) / (4.0 * wo.z * wi.z);
 }
 
 float metalPdf(float roughness, vec3 woLocal, vec3 wiLocal) {
-    if (!sameHemisphere(woLocal, wiLocal)) return 0.0;
+    if (!sameHemisphere(woLocal, wiLocal) || ggxIsEffectivelySmooth(ggxAlpha(roughness))) return 0.0;
     float side = woLocal.z > 0.0 ? 1.0 : -1.0;
     return ggxReflectionPdf(vec3(woLocal.xy, woLocal.z * side), vec3(wiLocal.xy, wiLocal.z * side), ggxAlpha(roughness));
 }
@@ -28,6 +29,8 @@ BsdfSample sampleMetal(vec3 reflectance, float roughness, vec3 woLocal, vec2 u) 
     float side = woLocal.z > 0.0 ? 1.0 : -1.0;
     vec3 wo = vec3(woLocal.xy, woLocal.z * side);
     float alpha = ggxAlpha(roughness);
+    if (ggxIsEffectivelySmooth(alpha))
+        return BsdfSample(reflectLocal(woLocal), fresnelSchlick(reflectance, wo.z), 1.0, true);
     vec3 h = sampleGgxVisibleNormal(wo, alpha, u);
     vec3 wi = reflect(-wo, h);
     float woDotH = dot(wo, h);

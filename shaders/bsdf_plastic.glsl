@@ -1,5 +1,5 @@
 // Plastic: a Lambertian base under a dielectric coat, the "Kd/Ks" material users know. The coat
-// reflects by Fresnel (smooth when roughness is 0, else GGX); light reaching the base crosses the
+// reflects by Fresnel (smooth when roughness is about 0, else GGX); light reaching the base crosses the
 // coat twice, so the base is weighted by (1 - F(theta_o)) (1 - F(theta_i)). Both weights stay
 // below what the coat lets through, so the sum never reflects more than arrives. Two-sided.
 #include "bsdf_common.glsl"
@@ -8,7 +8,7 @@
 #include "warps.glsl"
 
 bool plasticIsSmooth(float roughness) {
-    return roughness == 0.0;
+    return ggxIsEffectivelySmooth(ggxAlpha(roughness));
 }
 
 // Probability of sampling the coat: its reflectance toward wo against what the base returns.

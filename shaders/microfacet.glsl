@@ -3,25 +3,32 @@
 // expose roughness with alpha = roughness^2 (see ggxAlpha).
 #include "constants.glsl"
 
-// Perceptually even steps for users: alpha = roughness^2, kept away from 0 where D overflows.
+// Perceptually even steps for users: alpha = roughness^2.
 float ggxAlpha(float roughness) {
-    return max(roughness * roughness, 1e-4);
+    return roughness * roughness;
+}
+
+// Below this width D is a spike that float cannot resolve (a sampled direction's pdf would not
+// survive re-evaluation), so models treat the surface as perfectly smooth: a delta lobe.
+bool ggxIsEffectivelySmooth(float alpha) {
+    return alpha < 1e-3;
 }
 
 // Normal distribution D(h), a density of microfacet normals per projected area (D * cos integrates
 // to 1 over the hemisphere).
+// Written with sin^2 from the x, y components: the textbook 1 + cos^2 (alpha^2 - 1) cancels
+// catastrophically near the peak when alpha is small.
 float ggxD(vec3 hLocal, float alpha) {
-    float cos2 = hLocal.z * hLocal.z;
     float alpha2 = alpha * alpha;
-    float denom = cos2 * (alpha2 - 1.0) + 1.0;
+    float denom = dot(hLocal.xy, hLocal.xy) + hLocal.z * hLocal.z * alpha2;
     return alpha2 / (kPi * denom * denom);
 }
 
-// Smith's Lambda for GGX; written with cos^2 so it stays finite at grazing angles.
+// Smith's Lambda for GGX, with tan^2 from the x, y components for the same reason as ggxD.
 float ggxLambda(vec3 wLocal, float alpha) {
     float cos2 = wLocal.z * wLocal.z;
     if (cos2 <= 0.0) return 1e30;
-    float tan2 = max(0.0, 1.0 - cos2) / cos2;
+    float tan2 = dot(wLocal.xy, wLocal.xy) / cos2;
     return 0.5 * (sqrt(1.0 + alpha * alpha * tan2) - 1.0);
 }
 
