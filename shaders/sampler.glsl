@@ -81,6 +81,14 @@ uint sobolDimension1(uint index) {
     return result;
 }
 
+// (stratum + jitter) / strata, kept inside the stratum: the float sum stratum + jitter rounds up
+// to stratum + 1 when jitter is within half an ulp of 1, which would put the sample in the next
+// stratum, or at exactly 1.0 from the last one.
+float jitterInStratum(uint stratum, float jitter, uint strata) {
+    float belowNext = uintBitsToFloat(floatBitsToUint(float(stratum + 1u)) - 1u);
+    return min(float(stratum) + jitter, belowNext) / float(strata);
+}
+
 uint dimensionSeed(Sampler sampler, uint dimension) {
     return pcgHash(sampler.pixelSeed ^ pcgHash(dimension + 0x9e3779b9u));
 }
@@ -102,8 +110,8 @@ vec2 samplerGet2D(Sampler sampler, uint dimension) {
             uint jitter = pcgHash(patternSeed ^ pcgHash(inPattern));
             offset = vec2(uintToUnitFloat(jitter), uintToUnitFloat(pcgHash(jitter)));
         }
-        return (vec2(float(cell % sampler.gridSide), float(cell / sampler.gridSide)) + offset) /
-               float(sampler.gridSide);
+        return vec2(jitterInStratum(cell % sampler.gridSide, offset.x, sampler.gridSide),
+                    jitterInStratum(cell / sampler.gridSide, offset.y, sampler.gridSide));
     }
     if (sampler.mode == kSamplerSobol) {
         uint index = nestedUniformScramble(sampler.sampleIndex, seed);
@@ -125,7 +133,7 @@ float samplerGet1D(Sampler sampler, uint dimension) {
         uint patternSeed = pcgHash(seed + sampler.sampleIndex / patternSize);
         uint stratum = permuteIndex(inPattern, patternSize, patternSeed);
         float jitter = uintToUnitFloat(pcgHash(patternSeed ^ pcgHash(inPattern)));
-        return (float(stratum) + jitter) / float(patternSize);
+        return jitterInStratum(stratum, jitter, patternSize);
     }
     if (sampler.mode == kSamplerSobol) {
         uint index = nestedUniformScramble(sampler.sampleIndex, seed);
