@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace ptview {
 namespace {
 
@@ -67,6 +69,20 @@ TEST(PathTracer, SeedReproducesOrDecorrelates) {
     ImageRgbF c = render(scene, RenderSettings{4, 12}, 2);
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_NE(a.rgb, c.rgb);
+}
+
+TEST(PathTracer, MirrorAndGlassSpheresRenderFinitePlausibleImages) {
+    Scene spheres = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell_spheres.json");
+    ImageRgbF image = render(spheres, RenderSettings{16, 9}, 16);
+    glm::dvec3 sum(0.0);
+    for (float value : image.rgb) ASSERT_TRUE(std::isfinite(value));
+    for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) sum += glm::dvec3(image.at(x, y));
+    glm::dvec3 mean = sum / double(kSize.x * kSize.y);
+    // The plain box's mean is (0.215, 0.142, 0.041); lossless spheres change it by some percent.
+    EXPECT_NEAR(mean.r, 0.215, 0.05);
+    EXPECT_NEAR(mean.g, 0.142, 0.035);
+    EXPECT_NEAR(mean.b, 0.041, 0.012);
 }
 
 TEST(PathTracer, ChangingSettingsOrSizeRestartsAccumulation) {
