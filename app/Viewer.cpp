@@ -1,6 +1,7 @@
 #include "Viewer.h"
 
 #include "ImageIO.h"
+#include "MaterialsPanel.h"
 #include "PathTracer.h"
 #include "Readback.h"
 #include "Scene.h"
@@ -130,6 +131,7 @@ int runViewer(const ViewerOptions& options) {
         FrameStats stats;
         WarpVisualizer warpVisualizer(options.warp);
         warpVisualizer.setActive(options.showWarp);
+        MaterialsPanel materialsPanel(scene);
         Clock::time_point lastFrame = Clock::now();
         int frame = 0;
 
@@ -164,6 +166,7 @@ int runViewer(const ViewerOptions& options) {
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             drawRenderPanel(scene, tracer, settings, exposureStops, stats);
+            if (materialsPanel.draw(scene)) tracer.setMaterials(scene.materials); // the next frame shows it
             warpVisualizer.drawPanel();
             if (warpVisualizer.active()) warpVisualizer.handleMouse();
             ImGui::Render();

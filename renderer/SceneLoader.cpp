@@ -5,6 +5,7 @@
 // finite) is an error rather than silently ignored: a typo such as "radus" would otherwise give a
 // default radius and a puzzling image instead of a message.
 
+#include "MaterialSchema.h"
 #include "Scene.h"
 
 #include <nlohmann/json.hpp>
@@ -364,41 +365,19 @@ glm::vec3 readEnvironment(const Json& value, const Pointer& at) {
                     [](float c) { return c >= 0.0f; }, "a non-negative number");
 }
 
-// Which keys each material type takes. Every type but emitter has one colour, under the name
-// users know for that model; ior and roughness only where the model has them.
-struct MaterialSchema {
-    const char* name;
-    MaterialType type;
-    const char* colorKey;                   // nullptr: the type has no colour
-    std::optional<glm::vec3> colorDefault;  // nullopt: the colour is required
-    bool hasIor;
-    bool hasRoughness;
-};
-
-const MaterialSchema kMaterialSchemas[] = {
-    {"diffuse", MaterialType::Diffuse, "albedo", std::nullopt, false, false},
-    {"emitter", MaterialType::Emitter, nullptr, std::nullopt, false, false},
-    {"diffuse_transmission", MaterialType::DiffuseTransmission, "transmittance", std::nullopt, false, false},
-    {"mirror", MaterialType::Mirror, "reflectance", glm::vec3(1.0f), false, false},
-    {"specular_transmission", MaterialType::SpecularTransmission, "transmittance", glm::vec3(1.0f), true, false},
-    {"glass", MaterialType::Glass, "tint", glm::vec3(1.0f), true, false},
-    {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true},
-    {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true},
-};
-
 Material readMaterial(const std::string& name, const Json& value, const Pointer& at) {
     requireObject(value, at);
     Material material;
     material.name = name;
     requireType(value, at, {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "ior", "roughness"});
     std::string type = readString(value.at("type"), at / "type");
-    const MaterialSchema* schema = nullptr;
-    std::string typeList;
-    for (const MaterialSchema& candidate : kMaterialSchemas) {
-        if (type == candidate.name) schema = &candidate;
-        typeList += (typeList.empty() ? "" : ", ") + std::string(candidate.name);
+    const MaterialSchema* schema = findMaterialSchema(type);
+    if (!schema) {
+        std::string typeList;
+        for (const MaterialSchema& candidate : kMaterialSchemas)
+            typeList += (typeList.empty() ? "" : ", ") + std::string(candidate.name);
+        fail(at / "type", "unknown material type \"" + type + "\" (expected one of: " + typeList + ")");
     }
-    if (!schema) fail(at / "type", "unknown material type \"" + type + "\" (expected one of: " + typeList + ")");
     material.type = schema->type;
 
     std::vector<const char*> keys = {"type"};

@@ -1,0 +1,193 @@
+#include "MaterialsPanel.h"
+
+#include "MaterialSchema.h"
+#include "SceneWriter.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <exception>
+
+namespace ptview {
+namespace {
+
+constexpr float kPanelWidth = 320.0f;
+constexpr float kDefaultStrength = 10.0f; // a surface turned emitter lights the Cornell box
+constexpr float kDefaultRoughness = 0.2f; // visibly rough, so metal and plastic differ from mirror
+// What the loader gives a type that does not have the parameter, so that an edited model equals
+// what saving and loading it gives back.
+constexpr float kLoaderIor = 1.5f;
+
+void emitterControlsFrom(const glm::vec3& radiance, glm::vec3& color, float& strength) {
+    strength = std::max(radiance.r, std::max(radiance.g, radiance.b));
+    color = strength > 0.0f ? radiance / strength : glm::vec3(1.0f);
+}
+
+// An emitter made from a surface shows the surface's colour, unless that is black.
+glm::vec3 emitterColor(const glm::vec3& shownColor) {
+    return shownColor == glm::vec3(0.0f) ? glm::vec3(1.0f) : shownColor;
+}
+
+// The material as `type`, keeping its colour (an emitter's shown colour) and the parameters both
+// types have; a parameter new to it gets a usable value, and one the new type lacks goes back to
+// the loader's default.
+Material retyped(const Material& material, MaterialType type, const glm::vec3& shownColor) {
+    const MaterialSchema& from = materialSchema(material.type);
+    const MaterialSchema& to = materialSchema(type);
+    Material result;
+    result.name = material.name;
+    result.type = type;
+    if (type == MaterialType::Emitter) {
+        result.radiance = emitterColor(shownColor) * kDefaultStrength;
+    } else {
+        result.color = shownColor;
+    }
+    if (to.hasIor) result.ior = from.hasIor ? material.ior : kLoaderIor;
+    if (to.hasRoughness) result.roughness = from.hasRoughness ? material.roughness : kDefaultRoughness;
+    return result;
+}
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+const char* colorTooltip(MaterialType type) {
+    switch (type) {
+    case MaterialType::Diffuse: return "Lambertian reflectance";
+    case MaterialType::DiffuseTransmission: return "Lambertian transmittance to the other side";
+    case MaterialType::Mirror: return "constant reflectance, no Fresnel";
+    case MaterialType::SpecularTransmission: return "refracted fraction; always refracts";
+    case MaterialType::Glass: return "multiplies both the reflected and the refracted light";
+    case MaterialType::Metal: return "reflectance at normal incidence (Schlick Fresnel)";
+    case MaterialType::Plastic: return "albedo of the Lambertian base under the coat";
+    case MaterialType::Emitter: break;
+    }
+    return "";
+}
+
+} // namespace
+
+MaterialsPanel::MaterialsPanel(const Scene& scene) : savePath_(scene.path.string()) {}
+
+bool MaterialsPanel::draw(Scene& scene) {
+    emitters_.resize(scene.materials.size());
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(std::max(10.0f, io.DisplaySize.x - kPanelWidth - 10.0f), 10.0f),
+                            ImGuiCond_FirstUseEver);
+    // As wide as the labels need, as tall as the open headers need, up to the window's height.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f),
+                                        ImVec2(kPanelWidth, std::max(100.0f, io.DisplaySize.y - 20.0f)));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    bool changed = false;
+    if (ImGui::Begin("Materials", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (scene.materials.empty()) ImGui::TextDisabled("the scene has no materials");
+        ImGui::PushItemWidth(-110.0f); // room for the labels
+        for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+            Material& material = scene.materials[i];
+            // "###" keeps the header's id (and open state) when its type changes.
+            std::string header = material.name + "  (" + materialSchema(material.type).name + ")###material" +
+                                 std::to_string(i);
+            if (!ImGui::CollapsingHeader(header.c_str())) continue;
+            ImGui::PushID(static_cast<int>(i));
+            changed |= drawMaterial(material, emitters_[i]);
+            ImGui::PopID();
+        }
+        ImGui::PopItemWidth();
+        ImGui::Separator();
+        save(scene);
+    }
+    ImGui::End();
+    return changed;
+}
+
+bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) {
+    bool changed = false;
+    if (material.type == MaterialType::Emitter && emitter.color * emitter.strength != material.radiance)
+        emitterControlsFrom(material.radiance, emitter.color, emitter.strength);
+
+    const MaterialSchema& schema = materialSchema(material.type);
+    if (ImGui::BeginCombo("type", schema.name)) {
+        for (const MaterialSchema& candidate : kMaterialSchemas) {
+            bool isCurrent = candidate.type == material.type;
+            if (ImGui::Selectable(candidate.name, isCurrent) && !isCurrent) {
+                glm::vec3 shownColor = material.type == MaterialType::Emitter ? emitter.color : material.color;
+                material = retyped(material, candidate.type, shownColor);
+                if (candidate.type == MaterialType::Emitter) {
+                    emitter.color = emitterColor(shownColor); // their product is the radiance, exactly
+                    emitter.strength = kDefaultStrength;
+                }
+                changed = true;
+            }
+            if (isCurrent) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+    }
+    // The schema may have changed with the type.
+    const MaterialSchema& current = materialSchema(material.type);
+
+    constexpr ImGuiColorEditFlags kColorFlags = ImGuiColorEditFlags_Float;
+    if (material.type == MaterialType::Emitter) {
+        bool edited = ImGui::ColorEdit3("colour", &emitter.color.x, kColorFlags);
+        tooltip("radiance = colour x strength");
+        edited |= ImGui::DragFloat("strength", &emitter.strength, 0.1f, 0.0f, 1e4f, "%.2f",
+                                   ImGuiSliderFlags_AlwaysClamp);
+        tooltip("radiance of the front side, W sr^-1 m^-2, at colour 1");
+        if (edited) {
+            emitter.color = glm::clamp(emitter.color, 0.0f, 1.0f);
+            material.radiance = emitter.color * emitter.strength;
+            changed = true;
+        }
+        ImGui::TextDisabled("radiance %.3g %.3g %.3g", material.radiance.r, material.radiance.g,
+                            material.radiance.b);
+    } else if (current.colorKey) {
+        if (ImGui::ColorEdit3(current.colorKey, &material.color.x, kColorFlags)) {
+            material.color = glm::clamp(material.color, 0.0f, 1.0f); // the loader's range
+            changed = true;
+        }
+        tooltip(colorTooltip(material.type));
+    }
+    if (current.hasIor) {
+        changed |= ImGui::SliderFloat("ior", &material.ior, 1.0f, 4.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        tooltip("index of refraction, inside / outside");
+    }
+    if (current.hasRoughness) {
+        changed |= ImGui::SliderFloat("roughness", &material.roughness, 0.0f, 1.0f, "%.3f",
+                                      ImGuiSliderFlags_AlwaysClamp);
+        tooltip("GGX alpha = roughness^2; 0 is perfectly smooth");
+        ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
+    }
+    return changed;
+}
+
+void MaterialsPanel::save(Scene& scene) {
+    ImGui::TextUnformatted("Save scene as");
+    ImGui::SetNextItemWidth(-60.0f);
+    bool submitted = ImGui::InputText("##path", &savePath_, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    submitted |= ImGui::Button("Save");
+    if (submitted) {
+        if (savePath_.empty()) {
+            saveFailed_ = true;
+            saveStatus_ = "enter a file name";
+        } else {
+            try {
+                saveScene(scene, savePath_);
+                scene.path = savePath_;
+                saveFailed_ = false;
+                saveStatus_ = "saved " + savePath_;
+            } catch (const std::exception& error) {
+                saveFailed_ = true;
+                saveStatus_ = error.what();
+            }
+        }
+    }
+    if (!saveStatus_.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(saveFailed_ ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "%s",
+                           saveStatus_.c_str());
+        ImGui::PopTextWrapPos();
+    }
+}
+
+} // namespace ptview

@@ -1,0 +1,48 @@
+#pragma once
+// Which keys each material type takes in a scene file. The loader, the writer and the materials
+// panel all read this one table, so a type cannot gain a key in one of them and not the others.
+
+#include "Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string_view>
+
+namespace ptview {
+
+// Every type but emitter has one colour, under the name users know for that model (it is also
+// the panel's label); ior and roughness only where the model has them.
+struct MaterialSchema {
+    const char* name; // the JSON "type"
+    MaterialType type;
+    const char* colorKey;                  // nullptr: the type has no colour (emitter: "radiance")
+    std::optional<glm::vec3> colorDefault; // nullopt: the colour is required
+    bool hasIor;
+    bool hasRoughness;
+};
+
+// In MaterialType order, so kMaterialSchemas[int(type)] is the schema of type.
+inline const MaterialSchema kMaterialSchemas[] = {
+    {"diffuse", MaterialType::Diffuse, "albedo", std::nullopt, false, false},
+    {"emitter", MaterialType::Emitter, nullptr, std::nullopt, false, false},
+    {"diffuse_transmission", MaterialType::DiffuseTransmission, "transmittance", std::nullopt, false, false},
+    {"mirror", MaterialType::Mirror, "reflectance", glm::vec3(1.0f), false, false},
+    {"specular_transmission", MaterialType::SpecularTransmission, "transmittance", glm::vec3(1.0f), true, false},
+    {"glass", MaterialType::Glass, "tint", glm::vec3(1.0f), true, false},
+    {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true},
+    {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true},
+};
+
+inline const MaterialSchema& materialSchema(MaterialType type) {
+    return kMaterialSchemas[static_cast<int>(type)];
+}
+
+// nullptr when no type has that name.
+inline const MaterialSchema* findMaterialSchema(std::string_view name) {
+    for (const MaterialSchema& schema : kMaterialSchemas)
+        if (name == schema.name) return &schema;
+    return nullptr;
+}
+
+} // namespace ptview

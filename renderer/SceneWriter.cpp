@@ -1,0 +1,237 @@
+// Writes the scene model as JSON. The document is built as an ordered nlohmann tree (which keeps
+// key order and escapes strings) and printed by a small printer of our own, for two things
+// nlohmann's dump cannot do: short arrays and objects on one line, and floats in the shortest
+// form that the loader reads back as the same float (dump prints the double, 0.7300000190734863).
+
+#include "SceneWriter.h"
+
+#include "ImageIO.h"
+#include "MaterialSchema.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Containers whose one-line form fits this many columns (indent, key and comma included) stay on
+// one line, except the top level and the sections in it that hold more than one entry (camera,
+// materials, shapes), which read better one entry a line whatever their size.
+constexpr std::size_t kLineWidth = 120;
+
+[[noreturn]] void fail(const std::string& pointer, const std::string& reason) {
+    throw std::runtime_error(pointer + ": " + reason);
+}
+
+// Floats are stored in the tree as the double of the float, which converts back exactly.
+Json number(float value) {
+    return static_cast<double>(value);
+}
+
+Json vec3(const glm::vec3& v) {
+    return Json::array({number(v.x), number(v.y), number(v.z)});
+}
+
+// The loader reads a number with strtod and keeps it only when it fits a float, then rounds it
+// to float; the fewest significant digits that survive exactly that read back as the same float.
+// They are then written as people write numbers: positional (1000, 0.001) unless that would take
+// many zeros (1e-30, 3.4028235e38).
+std::string formatFloat(float value, const std::string& pointer) {
+    if (!std::isfinite(value)) fail(pointer, "cannot write a number that is not finite");
+    // nlohmann reads "-0" as the integer 0, which has no sign.
+    if (value == 0.0f) return std::signbit(value) ? "-0.0" : "0";
+    char scientific[64];
+    for (int digits = 1; digits <= 17; ++digits) { // 17 digits give the double exactly
+        std::snprintf(scientific, sizeof scientific, "%.*e", digits - 1, static_cast<double>(value));
+        double read = std::strtod(scientific, nullptr);
+        if (std::abs(read) <= std::numeric_limits<float>::max() && static_cast<float>(read) == value) break;
+    }
+    // scientific is "[-]d[.ddd]e±XX": split it into sign, digits and the exponent of the first digit.
+    std::string text = scientific;
+    std::size_t e = text.find('e');
+    int exponent = std::atoi(text.c_str() + e + 1);
+    std::string mantissa = text.substr(0, e);
+    std::string sign = mantissa[0] == '-' ? "-" : "";
+    std::string digits;
+    for (char c : mantissa)
+        if (c >= '0' && c <= '9') digits += c;
+    int count = static_cast<int>(digits.size());
+    if (exponent >= 16 || exponent < -6) {
+        std::string result = sign + digits.substr(0, 1);
+        if (count > 1) result += "." + digits.substr(1);
+        return result + "e" + std::to_string(exponent);
+    }
+    if (exponent < 0) return sign + "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+    if (count <= exponent + 1) return sign + digits + std::string(static_cast<std::size_t>(exponent + 1 - count), '0');
+    return sign + digits.substr(0, static_cast<std::size_t>(exponent + 1)) + "." +
+           digits.substr(static_cast<std::size_t>(exponent + 1));
+}
+
+// --- Printer -------------------------------------------------------------------------------------
+
+std::string scalarText(const Json& value, const std::string& pointer) {
+    switch (value.type()) {
+    case Json::value_t::number_float: return formatFloat(static_cast<float>(value.get<double>()), pointer);
+    case Json::value_t::string:
+        try {
+            return value.dump();
+        } catch (const Json::exception&) {
+            fail(pointer, "text is not valid UTF-8");
+        }
+    default: return value.dump();
+    }
+}
+
+std::string joinPointer(const std::string& pointer, const std::string& token) {
+    std::string escaped;
+    for (char c : token) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+    return pointer + "/" + escaped;
+}
+
+std::string keyText(const std::string& key, const std::string& pointer) {
+    return scalarText(Json(key), pointer) + ": ";
+}
+
+std::string oneLine(const Json& value, const std::string& pointer) {
+    if (value.is_array()) {
+        std::string text = "[";
+        for (std::size_t i = 0; i < value.size(); ++i)
+            text += (i ? ", " : "") + oneLine(value[i], pointer + "/" + std::to_string(i));
+        return text + "]";
+    }
+    if (value.is_object()) {
+        std::string text = "{";
+        bool first = true;
+        for (auto it = value.begin(); it != value.end(); ++it) {
+            std::string at = joinPointer(pointer, it.key());
+            text += (first ? "" : ", ") + keyText(it.key(), at) + oneLine(it.value(), at);
+            first = false;
+        }
+        return text + "}";
+    }
+    return scalarText(value, pointer);
+}
+
+// Appends value, whose line already holds `prefix` columns (indent, key and comma), to out.
+void print(const Json& value, const std::string& pointer, int depth, std::size_t prefix, std::string& out) {
+    std::string line = oneLine(value, pointer);
+    bool isContainer = value.is_array() || value.is_object();
+    bool isSection = depth == 0 || (depth == 1 && value.size() > 1);
+    if (!isContainer || value.empty() || (!isSection && prefix + line.size() <= kLineWidth)) {
+        out += line;
+        return;
+    }
+    std::string inner(static_cast<std::size_t>(2 * depth + 2), ' ');
+    out += value.is_array() ? "[\n" : "{\n";
+    std::size_t index = 0;
+    for (auto it = value.begin(); it != value.end(); ++it, ++index) {
+        std::string at = value.is_array() ? pointer + "/" + std::to_string(index) : joinPointer(pointer, it.key());
+        std::string key = value.is_object() ? keyText(it.key(), at) : "";
+        out += inner + key;
+        print(it.value(), at, depth + 1, inner.size() + key.size() + 1, out);
+        out += index + 1 < value.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(2 * depth), ' ') + (value.is_array() ? "]" : "}");
+}
+
+// --- Scene parts ---------------------------------------------------------------------------------
+
+Json cameraJson(const CameraDesc& camera) {
+    Json json;
+    json["eye"] = vec3(camera.eye);
+    json["target"] = vec3(camera.target);
+    json["up"] = vec3(camera.up);
+    json["vfov_deg"] = number(camera.vfovDeg);
+    json["resolution"] = Json::array({camera.resolution.x, camera.resolution.y});
+    return json;
+}
+
+Json materialJson(const Material& material) {
+    const MaterialSchema& schema = materialSchema(material.type);
+    Json json;
+    json["type"] = schema.name;
+    if (material.type == MaterialType::Emitter) json["radiance"] = vec3(material.radiance);
+    if (schema.colorKey) json[schema.colorKey] = vec3(material.color);
+    if (schema.hasIor) json["ior"] = number(material.ior);
+    if (schema.hasRoughness) json["roughness"] = number(material.roughness);
+    return json;
+}
+
+Json shapeJson(const Shape& shape, const std::vector<Material>& materials, const std::string& pointer) {
+    Json json;
+    json["name"] = shape.name;
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        json["type"] = "sphere";
+        json["center"] = vec3(shape.center);
+        json["radius"] = number(shape.radius);
+        break;
+    case ShapeType::Quad:
+        json["type"] = "quad";
+        json["center"] = vec3(shape.center);
+        json["u"] = vec3(shape.u);
+        json["v"] = vec3(shape.v);
+        break;
+    case ShapeType::Box:
+        json["type"] = "box";
+        json["center"] = vec3(shape.center);
+        json["half_size"] = vec3(shape.halfSize);
+        if (shape.rotationDeg != 0.0f)
+            json["rotation"] = Json{{"axis", vec3(shape.rotationAxis)}, {"degrees", number(shape.rotationDeg)}};
+        break;
+    }
+    if (shape.material < 0 || static_cast<std::size_t>(shape.material) >= materials.size())
+        fail(pointer + "/material", "material index " + std::to_string(shape.material) + " is out of range");
+    json["material"] = materials[static_cast<std::size_t>(shape.material)].name;
+    return json;
+}
+
+} // namespace
+
+std::string sceneToJson(const Scene& scene) {
+    Json root;
+    root["camera"] = cameraJson(scene.camera);
+    root["environment"] = Json{{"color", vec3(scene.environment)}};
+
+    Json materials = Json::object();
+    for (const Material& material : scene.materials) {
+        // Shapes name their material, so a second one of the same name could not be told apart.
+        if (materials.contains(material.name))
+            fail(joinPointer("/materials", material.name), "two materials have this name");
+        materials[material.name] = materialJson(material);
+    }
+    root["materials"] = std::move(materials);
+
+    Json shapes = Json::array();
+    for (std::size_t i = 0; i < scene.shapes.size(); ++i)
+        shapes.push_back(shapeJson(scene.shapes[i], scene.materials, "/shapes/" + std::to_string(i)));
+    root["shapes"] = std::move(shapes);
+
+    std::string text;
+    print(root, "", 0, 0, text);
+    return text + "\n";
+}
+
+void saveScene(const Scene& scene, const std::filesystem::path& path) {
+    std::string text;
+    try {
+        text = sceneToJson(scene);
+        // Names the file already: parseScene's messages start with the source name.
+        parseScene(text, path);
+    } catch (const SceneError& error) {
+        throw std::runtime_error(std::string(error.what()) + " (not saved: it would not load back)");
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(path.string() + ": " + error.what() + " (not saved)");
+    }
+    writeFileAtomically(path, text);
+}
+
+} // namespace ptview

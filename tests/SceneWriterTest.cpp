@@ -1,0 +1,322 @@
+// Scene writing: what sceneToJson writes loads back as the same model, float for float, and
+// saveScene replaces a file whole or not at all.
+
+#include "MaterialSchema.h"
+#include "Scene.h"
+#include "SceneWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Bit-exact: == on floats, so a value that reads back one ulp off fails.
+void expectVec3Eq(const glm::vec3& expected, const glm::vec3& actual, const std::string& what) {
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(expected[i], actual[i]) << what << "[" << i << "]";
+}
+
+// Every field of the model; the path is where each was read from, so it is not compared.
+void expectSameScene(const Scene& expected, const Scene& actual) {
+    expectVec3Eq(expected.camera.eye, actual.camera.eye, "camera.eye");
+    expectVec3Eq(expected.camera.target, actual.camera.target, "camera.target");
+    expectVec3Eq(expected.camera.up, actual.camera.up, "camera.up");
+    EXPECT_EQ(expected.camera.vfovDeg, actual.camera.vfovDeg);
+    EXPECT_EQ(expected.camera.resolution, actual.camera.resolution);
+    expectVec3Eq(expected.environment, actual.environment, "environment");
+
+    ASSERT_EQ(expected.materials.size(), actual.materials.size());
+    for (std::size_t i = 0; i < expected.materials.size(); ++i) {
+        const Material& e = expected.materials[i];
+        const Material& a = actual.materials[i];
+        std::string what = "material " + std::to_string(i) + " (" + e.name + ")";
+        EXPECT_EQ(e.name, a.name) << what;
+        EXPECT_EQ(e.type, a.type) << what;
+        expectVec3Eq(e.color, a.color, what + " color");
+        expectVec3Eq(e.radiance, a.radiance, what + " radiance");
+        EXPECT_EQ(e.ior, a.ior) << what;
+        EXPECT_EQ(e.roughness, a.roughness) << what;
+    }
+
+    ASSERT_EQ(expected.shapes.size(), actual.shapes.size());
+    for (std::size_t i = 0; i < expected.shapes.size(); ++i) {
+        const Shape& e = expected.shapes[i];
+        const Shape& a = actual.shapes[i];
+        std::string what = "shape " + std::to_string(i) + " (" + e.name + ")";
+        EXPECT_EQ(e.name, a.name) << what;
+        EXPECT_EQ(e.type, a.type) << what;
+        EXPECT_EQ(e.material, a.material) << what;
+        expectVec3Eq(e.center, a.center, what + " center");
+        EXPECT_EQ(e.radius, a.radius) << what;
+        expectVec3Eq(e.u, a.u, what + " u");
+        expectVec3Eq(e.v, a.v, what + " v");
+        expectVec3Eq(e.halfSize, a.halfSize, what + " halfSize");
+        expectVec3Eq(e.rotationAxis, a.rotationAxis, what + " rotationAxis");
+        EXPECT_EQ(e.rotationDeg, a.rotationDeg) << what;
+    }
+}
+
+Scene roundTrip(const Scene& scene) {
+    std::string text = sceneToJson(scene);
+    try {
+        return parseScene(text, "written.json");
+    } catch (const SceneError& error) {
+        ADD_FAILURE() << error.what() << "\n" << text;
+        return {};
+    }
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// A fresh directory per test, removed afterwards.
+class SceneFiles : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("ptview_scene_writer_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        std::error_code ignored;
+        fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add, ignored);
+        fs::remove_all(dir_, ignored);
+    }
+    fs::path dir_;
+};
+
+// Every material type with values away from its defaults, numbers that have no short decimal
+// form, and a box turned about a slanted axis.
+const char* const kEveryMaterialScene = R"({
+  "camera": {"eye": [0.1, -2.5e-7, 3.3333333], "target": [1e-30, 7, -123456.789], "up": [0.2, 0.9, 0.1],
+             "vfov_deg": 33.3, "resolution": [17, 4096]},
+  "environment": {"color": [0.05, 0.1, 1e3]},
+  "materials": {
+    "chalk": {"type": "diffuse", "albedo": [0.1, 0.2, 0.3]},
+    "lamp": {"type": "emitter", "radiance": [100.5, 0.001, 3e4]},
+    "paper": {"type": "diffuse_transmission", "transmittance": [0.7, 0.65, 0.6]},
+    "silvered": {"type": "mirror", "reflectance": [0.9, 0.91, 0.92]},
+    "film": {"type": "specular_transmission", "transmittance": [0.99, 0.98, 0.97], "ior": 1.333},
+    "crown glass": {"type": "glass", "tint": [0.95, 1, 0.9], "ior": 1.52},
+    "gold": {"type": "metal", "reflectance": [1, 0.766, 0.336], "roughness": 0.35},
+    "red \"toy\"/brick~": {"type": "plastic", "albedo": [0.8, 0.05, 0.04], "ior": 3.9, "roughness": 0.123456}
+  },
+  "shapes": [
+    {"name": "ball", "type": "sphere", "center": [0.3, 0.7, -0.123], "radius": 0.333333, "material": "gold"},
+    {"name": "panel", "type": "quad", "center": [0, 1.99, 0], "u": [0.25, 0, 1e-3], "v": [0, 0, 0.2], "material": "lamp"},
+    {"name": "crate", "type": "box", "center": [-0.33, 0.6, -0.3], "half_size": [0.3, 0.6, 0.1],
+     "rotation": {"axis": [0.3, 1, -0.2], "degrees": -377.5}, "material": "red \"toy\"/brick~"},
+    {"name": "block", "type": "box", "center": [1, 2, 3], "half_size": [1, 1, 1], "material": "paper"},
+    {"type": "sphere", "center": [0, 0, 0], "radius": 2, "material": "crown glass"},
+    {"name": "a", "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "film"},
+    {"name": "b", "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "silvered"},
+    {"name": "c", "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "chalk"}
+  ]
+})";
+
+TEST(MaterialSchema, TableFollowsMaterialTypeOrder) {
+    for (int i = 0; i < 8; ++i) {
+        auto type = static_cast<MaterialType>(i);
+        EXPECT_EQ(materialSchema(type).type, type);
+        EXPECT_EQ(findMaterialSchema(materialSchema(type).name), &materialSchema(type));
+    }
+    EXPECT_EQ(findMaterialSchema("velvet"), nullptr);
+}
+
+TEST(SceneWriter, ShippedScenesRoundTrip) {
+    for (const char* name : {"cornell.json", "cornell_spheres.json"}) {
+        SCOPED_TRACE(name);
+        Scene scene = loadScene(fs::path(PTVIEW_ASSETS_DIR) / "scenes" / name);
+        expectSameScene(scene, roundTrip(scene));
+    }
+}
+
+TEST(SceneWriter, EveryMaterialTypeRoundTripsExactly) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    ASSERT_EQ(scene.materials.size(), 8u);
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(scene.materials[i].type, static_cast<MaterialType>(i));
+    Scene written = roundTrip(scene);
+    expectSameScene(scene, written);
+    // Writing what was read back writes the same text.
+    EXPECT_EQ(sceneToJson(written), sceneToJson(scene));
+}
+
+TEST(SceneWriter, FloatsWithoutShortDecimalsRoundTrip) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    const float awkward[] = {0.1f, 1.0f / 3.0f, 2.0f / 3.0f, 1e-7f, -1e-38f, 1e-45f, 16777217.0f,
+                             std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
+                             std::numeric_limits<float>::min(), -0.0f, 0.73f, 12345.678f};
+    for (float value : awkward) {
+        scene.shapes[0].center = glm::vec3(value);
+        Scene written = roundTrip(scene);
+        ASSERT_EQ(written.shapes.size(), scene.shapes.size()) << value;
+        EXPECT_EQ(written.shapes[0].center.y, value) << sceneToJson(scene);
+        EXPECT_EQ(std::signbit(written.shapes[0].center.y), std::signbit(value)) << value;
+    }
+}
+
+TEST(SceneWriter, WritesOnlyTheKeysOfEachType) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    // Values the types do not use are not written, so no key the loader would reject appears.
+    for (Material& material : scene.materials) {
+        if (!materialSchema(material.type).hasIor) material.ior = 2.75f;
+        if (!materialSchema(material.type).hasRoughness) material.roughness = 0.625f;
+    }
+    std::string text = sceneToJson(scene);
+    EXPECT_NO_THROW(parseScene(text, "written.json")) << text;
+    EXPECT_EQ(text.find("2.75"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.625"), std::string::npos) << text;
+    EXPECT_NE(text.find(R"("lamp": {"type": "emitter", "radiance": [100.5, 0.001, 30000]})"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find(R"("gold": {"type": "metal", "reflectance": [1, 0.766, 0.336], "roughness": 0.35})"),
+              std::string::npos)
+        << text;
+}
+
+TEST(SceneWriter, IsReadable) {
+    Scene scene = loadScene(fs::path(PTVIEW_ASSETS_DIR) / "scenes" / "cornell.json");
+    std::string text = sceneToJson(scene);
+    EXPECT_EQ(text.rfind("{\n  \"camera\": {\n    \"eye\": [0, 1, 3.9],\n", 0), 0u) << text;
+    EXPECT_NE(text.find("\n  \"environment\": {\"color\": [0, 0, 0]},\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\n    \"red\": {\"type\": \"diffuse\", \"albedo\": [0.63, 0.065, 0.05]},\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("\n      \"rotation\": {\"axis\": [0, 1, 0], \"degrees\": -17},\n"), std::string::npos)
+        << text;
+    EXPECT_EQ(text.back(), '\n');
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        EXPECT_LE(line.size(), 120u) << line;
+        EXPECT_EQ(line.find('\t'), std::string::npos);
+    }
+}
+
+TEST(SceneWriter, LeavesOutAZeroRotation) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    scene.shapes[2].rotationDeg = 0.0f;
+    scene.shapes[2].rotationAxis = glm::vec3(0.0f, 1.0f, 0.0f);
+    std::string text = sceneToJson(scene);
+    EXPECT_EQ(text.find("\"rotation\""), std::string::npos) << text;
+    expectSameScene(scene, roundTrip(scene));
+}
+
+TEST(SceneWriter, RejectsModelsNoFileCanHold) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    Scene notFinite = scene;
+    notFinite.shapes[1].center.y = std::numeric_limits<float>::quiet_NaN();
+    try {
+        sceneToJson(notFinite);
+        ADD_FAILURE() << "no error for a NaN";
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(), "/shapes/1/center/1: cannot write a number that is not finite");
+    }
+    Scene badIndex = scene;
+    badIndex.shapes[3].material = 8;
+    EXPECT_THROW(sceneToJson(badIndex), std::runtime_error);
+    Scene duplicate = scene;
+    duplicate.materials[1].name = "chalk";
+    EXPECT_THROW(sceneToJson(duplicate), std::runtime_error);
+}
+
+TEST_F(SceneFiles, SaveReplacesAnExistingFileCompletely) {
+    fs::path target = dir_ / "scene.json";
+    {
+        std::ofstream old(target);
+        old << std::string(100000, 'x'); // longer than the scene, so leftovers would show
+    }
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    saveScene(scene, target);
+    EXPECT_EQ(readFile(target), sceneToJson(scene));
+    expectSameScene(scene, loadScene(target));
+    // Nothing left beside it, such as a temporary file.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+TEST_F(SceneFiles, SaveToAMissingDirectoryThrowsNamingTheFile) {
+    fs::path target = dir_ / "missing" / "scene.json";
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    try {
+        saveScene(scene, target);
+        ADD_FAILURE() << "no error";
+    } catch (const std::runtime_error& error) {
+        std::string message = error.what();
+        EXPECT_EQ(message.rfind(target.string() + ": ", 0), 0u) << message;
+        EXPECT_NE(message.find(std::strerror(ENOENT)), std::string::npos) << message;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "missing"));
+}
+
+TEST_F(SceneFiles, FailedSaveLeavesTheTargetIntact) {
+    fs::path target = dir_ / "scene.json";
+    const std::string original = "{ \"the\": \"original\" }\n";
+    {
+        std::ofstream old(target);
+        old << original;
+    }
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+
+    // The temporary file cannot be created: a directory has its name.
+    fs::path temporary = target;
+    temporary += ".tmp-" + std::to_string(::getpid());
+    fs::create_directory(temporary);
+    try {
+        saveScene(scene, target);
+        ADD_FAILURE() << "no error when the temporary file cannot be written";
+    } catch (const std::runtime_error& error) {
+        EXPECT_EQ(std::string(error.what()).rfind(target.string() + ": ", 0), 0u) << error.what();
+    }
+    EXPECT_EQ(readFile(target), original);
+    fs::remove(temporary);
+
+    // A directory we may not write to (root may write anywhere, so the check needs a non-root user).
+    fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec);
+    if (::geteuid() != 0) {
+        try {
+            saveScene(scene, target);
+            ADD_FAILURE() << "no error for an unwritable directory";
+        } catch (const std::runtime_error& error) {
+            EXPECT_EQ(std::string(error.what()).rfind(target.string() + ": ", 0), 0u) << error.what();
+        }
+        EXPECT_EQ(readFile(target), original);
+    }
+    fs::permissions(dir_, fs::perms::owner_all);
+
+    // A model the loader would reject is refused before the file is touched.
+    scene.materials[0].color.x = 1.5f;
+    try {
+        saveScene(scene, target);
+        ADD_FAILURE() << "no error for an albedo above 1";
+    } catch (const std::runtime_error& error) {
+        std::string message = error.what();
+        EXPECT_EQ(message.rfind(target.string() + ": /materials/chalk/albedo/0: ", 0), 0u) << message;
+    }
+    EXPECT_EQ(readFile(target), original);
+
+    scene.materials[0].color.x = 0.5f;
+    scene.shapes[0].radius = std::numeric_limits<float>::infinity();
+    EXPECT_THROW(saveScene(scene, target), std::runtime_error);
+    EXPECT_EQ(readFile(target), original);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+} // namespace
+} // namespace ptview
