@@ -12,6 +12,7 @@ WarpVisualizer::WarpVisualizer(const WarpRequest& initial)
 
 void WarpVisualizer::drawPanel() {
     ImGui::SetNextWindowPos(ImVec2(10, 230), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(!active_, ImGuiCond_FirstUseEver); // out of the way until wanted
     ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("Warp visualizer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::Checkbox("show instead of the render", &active_);
