@@ -165,9 +165,9 @@ int runViewer(const ViewerOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
-            drawRenderPanel(scene, tracer, settings, exposureStops, stats);
             if (materialsPanel.draw(scene)) tracer.setMaterials(scene.materials); // the next frame shows it
             warpVisualizer.drawPanel();
+            drawRenderPanel(scene, tracer, settings, exposureStops, stats); // last: it starts focused
             if (warpVisualizer.active()) warpVisualizer.handleMouse();
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
