@@ -134,21 +134,7 @@ ImageRgbF PathTracer::readMean() const {
 }
 
 ImageRgba8 PathTracer::readToneMapped(float exposureStops) const {
-    glm::ivec2 size = accumulator_.size();
-    GlTexture color = createTexture();
-    glBindTexture(GL_TEXTURE_2D, color.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    GlFramebuffer framebuffer = createFramebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("cannot render to an RGBA8 target");
-    display(size, exposureStops);
-
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    ImageRgba8 image = readColorRgba8(size);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return image;
+    return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) { display(size, exposureStops); });
 }
 
 } // namespace ptview

@@ -143,20 +143,7 @@ void WarpView::draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const {
 }
 
 ImageRgba8 WarpView::renderImage(glm::ivec2 size, const OrbitCamera& camera) const {
-    GlTexture color = createTexture();
-    glBindTexture(GL_TEXTURE_2D, color.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    GlFramebuffer framebuffer = createFramebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("warp view: cannot render to an RGBA8 target");
-    draw(size, camera);
-
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    ImageRgba8 image = readColorRgba8(size);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return image;
+    return renderOffscreenRgba8(size, [&](glm::ivec2 viewportSize) { draw(viewportSize, camera); });
 }
 
 } // namespace ptview
