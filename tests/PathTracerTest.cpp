@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace ptview {
 namespace {
@@ -83,6 +84,23 @@ TEST(PathTracer, MirrorAndGlassSpheresRenderFinitePlausibleImages) {
     EXPECT_NEAR(mean.r, 0.215, 0.05);
     EXPECT_NEAR(mean.g, 0.142, 0.035);
     EXPECT_NEAR(mean.b, 0.041, 0.012);
+}
+
+TEST(PathTracer, EveryShippedSceneLoadsAndRendersFinitePixels) {
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(PTVIEW_ASSETS_DIR "/scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        ++scenes;
+        Scene scene = loadScene(entry.path());
+        ImageRgbF image = render(scene, RenderSettings{8, 4}, 4);
+        double sum = 0.0;
+        for (float value : image.rgb) {
+            ASSERT_TRUE(std::isfinite(value)) << entry.path();
+            sum += value;
+        }
+        EXPECT_GT(sum, 0.0) << entry.path() << " renders black";
+    }
+    EXPECT_GE(scenes, 3);
 }
 
 TEST(PathTracer, ChangingSettingsOrSizeRestartsAccumulation) {
