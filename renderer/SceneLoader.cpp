@@ -279,7 +279,7 @@ template <typename Predicate>
 glm::vec3 readVec3(const Json& value, const Pointer& at, Predicate isValid, const char* expected) {
     if (!value.is_array() || value.size() != 3)
         fail(at, "expected an array of 3 numbers");
-    glm::vec3 v;
+    glm::vec3 v(0.0f);
     for (int i = 0; i < 3; ++i) {
         Pointer componentAt = at / i;
         v[i] = readNumber(value[i], componentAt);
