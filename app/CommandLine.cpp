@@ -40,6 +40,10 @@ void addSamplerOption(CLI::App& app, SamplerMode& sampler) {
 
 void addRenderSettings(CLI::App& app, RenderSettings& settings, float& exposureStops) {
     addSamplerOption(app, settings.sampler);
+    std::vector<std::pair<std::string, Integrator>> integrators;
+    for (const IntegratorName& entry : integratorNames()) integrators.emplace_back(entry.name, entry.integrator);
+    addNamedOption(app, "--integrator", settings.integrator, "integrator", integrators)
+        ->default_str(integratorName(settings.integrator));
     app.add_option("--depth", settings.maxDepth, "maximum number of bounces (0: emitters only)")
         ->check(CLI::Range(0, 1024))->capture_default_str();
     app.add_option("--seed", settings.seed, "random seed; renders with different seeds are independent")

@@ -115,9 +115,9 @@ int runRenderCommand(const RenderOptions& options) {
             writePfm(options.outPath, tracer.readMean());
 
         double samples = static_cast<double>(size.x) * size.y * options.samplesPerPixel;
-        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %.2f s, %.1f M samples/s) on %s\n",
+        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s) on %s\n",
                      options.outPath.c_str(), size.x, size.y, options.samplesPerPixel, options.settings.maxDepth,
-                     samplerModeName(options.settings.sampler),
+                     samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
                      seconds, samples / seconds * 1e-6, context.description().c_str());
     } catch (const std::invalid_argument& e) {
         std::cerr << "ptview: " << e.what() << "\n";

@@ -69,6 +69,14 @@ void drawRenderPanel(const Scene& scene, PathTracer& tracer, RenderSettings& set
     ImGui::Text("%.1f ms per frame", stats.frameSeconds * 1e3);
     ImGui::Text("%.2f M samples/s", stats.samplesPerSecond * 1e-6);
     ImGui::Separator();
+    const IntegratorName* current = &integratorNames()[0];
+    for (const IntegratorName& entry : integratorNames())
+        if (entry.integrator == settings.integrator) current = &entry;
+    if (ImGui::BeginCombo("integrator", current->label)) {
+        for (const IntegratorName& entry : integratorNames())
+            if (ImGui::Selectable(entry.label, entry.integrator == settings.integrator)) settings.integrator = entry.integrator;
+        ImGui::EndCombo();
+    }
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
     if (ImGui::BeginCombo("sampler", samplerModeName(settings.sampler))) {
         for (const SamplerModeName& entry : samplerModeNames())

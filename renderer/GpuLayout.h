@@ -22,8 +22,12 @@ struct FrameUniforms {
     glm::ivec2 imageSize;
     std::uint32_t samplerMode;  // SamplerMode
     std::uint32_t sampleBudget; // samples per pixel the grid and stratified patterns are sized for
+    std::uint32_t integrator;   // Integrator
+    std::uint32_t pad0;
+    std::uint32_t pad1;
+    std::uint32_t pad2;
 };
-static_assert(sizeof(FrameUniforms) == 96, "FrameUniforms must match the std140 FrameBlock");
+static_assert(sizeof(FrameUniforms) == 112, "FrameUniforms must match the std140 FrameBlock");
 
 // shaders/scene_data.glsl: one texel (RGBA32F) of a buffer texture.
 struct GpuSphere {
@@ -39,6 +43,15 @@ struct GpuQuad {
     glm::vec4 dual;   // cross(u, v) / |cross(u, v)|^2, turns hit offsets into (a, b) coordinates
 };
 static_assert(sizeof(GpuQuad) == 64, "four RGBA32F texels");
+
+// shaders/lights.glsl: one RGBA32UI texel per light.
+struct GpuLight {
+    std::uint32_t kind;      // LightKind
+    std::uint32_t primitive; // index among the quads or spheres; unused for the environment
+    std::uint32_t pad0;
+    std::uint32_t pad1;
+};
+static_assert(sizeof(GpuLight) == 16, "one RGBA32UI texel");
 
 struct GpuMaterialParams {
     glm::vec3 color;

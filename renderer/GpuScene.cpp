@@ -1,5 +1,9 @@
 #include "GpuScene.h"
 
+#include <glm/gtc/constants.hpp>
+
+#include <limits>
+
 namespace ptview {
 namespace {
 
@@ -70,6 +74,63 @@ void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& o
     }
 }
 
+LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
+                           glm::vec3 environmentRadiance) {
+    LightTable table;
+    std::vector<double> power;
+    auto emitted = [&](std::uint32_t material) {
+        const Material& m = materials[material];
+        return m.type == MaterialType::Emitter ? glm::dot(m.radiance, glm::vec3(0.2126f, 0.7152f, 0.0722f)) : 0.0f;
+    };
+    glm::vec3 boundsMin(std::numeric_limits<float>::max()), boundsMax(-std::numeric_limits<float>::max());
+    table.quadLight.assign(geometry.quads.size(), -1);
+    for (size_t i = 0; i < geometry.quads.size(); ++i) {
+        const GpuQuad& quad = geometry.quads[i];
+        glm::vec3 c(quad.center), u(quad.u), v(quad.v);
+        for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) {
+            boundsMin = glm::min(boundsMin, corner);
+            boundsMax = glm::max(boundsMax, corner);
+        }
+        float luminance = emitted(geometry.quadMaterials[i]);
+        if (luminance <= 0.0f) continue;
+        table.quadLight[i] = static_cast<std::int32_t>(table.lights.size());
+        table.lights.push_back(GpuLight{static_cast<std::uint32_t>(LightKind::Quad), static_cast<std::uint32_t>(i), 0, 0});
+        power.push_back(4.0 * glm::length(glm::cross(u, v)) * glm::pi<double>() * luminance); // one-sided
+    }
+    table.sphereLight.assign(geometry.spheres.size(), -1);
+    for (size_t i = 0; i < geometry.spheres.size(); ++i) {
+        const GpuSphere& sphere = geometry.spheres[i];
+        boundsMin = glm::min(boundsMin, sphere.center - sphere.radius);
+        boundsMax = glm::max(boundsMax, sphere.center + sphere.radius);
+        float luminance = emitted(geometry.sphereMaterials[i]);
+        if (luminance <= 0.0f) continue;
+        table.sphereLight[i] = static_cast<std::int32_t>(table.lights.size());
+        table.lights.push_back(GpuLight{static_cast<std::uint32_t>(LightKind::Sphere), static_cast<std::uint32_t>(i), 0, 0});
+        double area = 4.0 * glm::pi<double>() * sphere.radius * sphere.radius;
+        power.push_back(area * glm::pi<double>() * luminance);
+    }
+    float environment = glm::dot(environmentRadiance, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+    if (environment > 0.0f) {
+        double radius = boundsMin.x <= boundsMax.x ? 0.5 * glm::length(boundsMax - boundsMin) : 1.0;
+        table.environmentLight = static_cast<std::int32_t>(table.lights.size());
+        table.lights.push_back(GpuLight{static_cast<std::uint32_t>(LightKind::Environment), 0, 0, 0});
+        power.push_back(glm::pi<double>() * radius * radius * glm::pi<double>() * environment);
+    }
+    double total = 0.0;
+    for (double p : power) total += p;
+    double running = 0.0;
+    for (double p : power) {
+        running += p;
+        table.cdf.push_back(static_cast<float>(running / total));
+    }
+    if (!table.cdf.empty()) table.cdf.back() = 1.0f; // no light unreachable through rounding
+    return table;
+}
+
+const char* const GpuScene::kSamplerNames[kTextureCount] = {
+    "uSpheres", "uSphereMaterials", "uQuads", "uQuadMaterials", "uMaterialParams",
+    "uMaterialTypes", "uLightInfo", "uLightCdf", "uQuadLights", "uSphereLights"};
+
 void GpuScene::upload(const Scene& scene) {
     ScenePrimitives primitives = flattenScene(scene);
     for (BufferTexture& slot : textures_) {
@@ -82,9 +143,11 @@ void GpuScene::upload(const Scene& scene) {
     fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_R32UI, primitives.sphereMaterials);
     fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, primitives.quads);
     fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_R32UI, primitives.quadMaterials);
-    uploadMaterials(scene.materials);
     sphereCount_ = static_cast<int>(primitives.spheres.size());
     quadCount_ = static_cast<int>(primitives.quads.size());
+    geometry_ = std::move(primitives);
+    environmentRadiance_ = scene.environment;
+    uploadMaterials(scene.materials);
 }
 
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
@@ -92,6 +155,11 @@ void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     flattenMaterials(materials, primitives);
     fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, primitives.materialParams);
     fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_R32UI, primitives.materialTypes);
+    lights_ = buildLightTable(geometry_, materials, environmentRadiance_);
+    fillBufferTexture(textures_[6].buffer.id(), textures_[6].texture.id(), GL_RGBA32UI, lights_.lights);
+    fillBufferTexture(textures_[7].buffer.id(), textures_[7].texture.id(), GL_R32F, lights_.cdf);
+    fillBufferTexture(textures_[8].buffer.id(), textures_[8].texture.id(), GL_R32I, lights_.quadLight);
+    fillBufferTexture(textures_[9].buffer.id(), textures_[9].texture.id(), GL_R32I, lights_.sphereLight);
 }
 
 void GpuScene::bind(int firstUnit) const {

@@ -20,23 +20,42 @@ struct ScenePrimitives {
     std::vector<std::uint32_t> materialTypes;
 };
 
+// Values match the kLight* constants of shaders/lights.glsl.
+enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Environment = 2 };
+
+// Every emitter the integrators can sample, chosen in proportion to its emitted power.
+struct LightTable {
+    std::vector<GpuLight> lights;
+    std::vector<float> cdf;              // cumulative selection probability; the last is 1
+    std::vector<std::int32_t> quadLight; // per quad: its light index, or -1
+    std::vector<std::int32_t> sphereLight;
+    std::int32_t environmentLight = -1;
+};
+
 // Pure CPU steps, testable without a GL context.
 ScenePrimitives flattenScene(const Scene& scene);
 void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out);
+// The environment's share is its power through a disk as large as the scene's bounding sphere.
+LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
+                           glm::vec3 environmentRadiance);
 
 class GpuScene {
 public:
-    static constexpr int kTextureCount = 6;
+    static constexpr int kTextureCount = 10;
 
     void upload(const Scene& scene);
-    // Material edits only: no geometry is re-sent and nothing is recompiled.
+    // Material edits only: no geometry is re-sent and nothing is recompiled. The light table is
+    // rebuilt, since an edit can make a surface an emitter or change its power.
     void uploadMaterials(const std::vector<Material>& materials);
     // Binds the buffer textures to units firstUnit .. firstUnit + kTextureCount - 1, in the order
-    // spheres, sphere materials, quads, quad materials, material params, material types.
+    // of kSamplerNames.
     void bind(int firstUnit) const;
+    static const char* const kSamplerNames[kTextureCount];
 
     int sphereCount() const { return sphereCount_; }
     int quadCount() const { return quadCount_; }
+    int lightCount() const { return static_cast<int>(lights_.lights.size()); }
+    int environmentLight() const { return lights_.environmentLight; }
 
 private:
     struct BufferTexture {
@@ -44,6 +63,9 @@ private:
         GlTexture texture;
     };
     BufferTexture textures_[kTextureCount];
+    ScenePrimitives geometry_; // kept to rebuild the light table on material edits
+    glm::vec3 environmentRadiance_{0.0f};
+    LightTable lights_;
     int sphereCount_ = 0;
     int quadCount_ = 0;
 };

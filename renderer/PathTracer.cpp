@@ -12,7 +12,7 @@ namespace {
 
 constexpr GLuint kFrameBlockBinding = 0;
 constexpr int kAccumulationUnit = 0;                             // units 0..2
-constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..8
+constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..12
 
 // Our passes own all of this state; ImGui or a caller may have changed it.
 void resetPassState() {
@@ -34,11 +34,11 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir) {
     const GlProgram& trace = *pathTraceProgram_;
     trace.bindUniformBlock("FrameBlock", kFrameBlockBinding);
     Accumulator::bindSamplers(trace, kAccumulationUnit);
-    const char* sceneSamplers[GpuScene::kTextureCount] = {"uSpheres", "uSphereMaterials", "uQuads",
-                                                          "uQuadMaterials", "uMaterialParams", "uMaterialTypes"};
-    for (int i = 0; i < GpuScene::kTextureCount; ++i) trace.bindSamplerUnit(sceneSamplers[i], kSceneUnit + i);
+    for (int i = 0; i < GpuScene::kTextureCount; ++i) trace.bindSamplerUnit(GpuScene::kSamplerNames[i], kSceneUnit + i);
     sphereCountLocation_ = trace.uniformLocation("uSphereCount");
     quadCountLocation_ = trace.uniformLocation("uQuadCount");
+    lightCountLocation_ = trace.uniformLocation("uLightCount");
+    environmentLightLocation_ = trace.uniformLocation("uEnvironmentLight");
 
     const GlProgram& show = *displayProgram_;
     show.bindSamplerUnit("uSum", 0);
@@ -59,6 +59,7 @@ void PathTracer::setScene(const Scene& scene) {
     glUseProgram(pathTraceProgram_->id());
     glUniform1i(sphereCountLocation_, gpuScene_.sphereCount());
     glUniform1i(quadCountLocation_, gpuScene_.quadCount());
+    setLightUniforms();
     camera_ = scene.camera;
     environmentRadiance_ = scene.environment;
     restart();
@@ -66,7 +67,14 @@ void PathTracer::setScene(const Scene& scene) {
 
 void PathTracer::setMaterials(const std::vector<Material>& materials) {
     gpuScene_.uploadMaterials(materials);
+    setLightUniforms();
     restart();
+}
+
+void PathTracer::setLightUniforms() {
+    glUseProgram(pathTraceProgram_->id());
+    glUniform1i(lightCountLocation_, gpuScene_.lightCount());
+    glUniform1i(environmentLightLocation_, gpuScene_.environmentLight());
 }
 
 void PathTracer::setSettings(const RenderSettings& settings) {
@@ -97,6 +105,7 @@ void PathTracer::updateFrameUniforms() {
     frame.imageSize = size;
     frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
     frame.sampleBudget = settings_.sampleBudget;
+    frame.integrator = static_cast<std::uint32_t>(settings_.integrator);
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameUniforms), &frame);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);

@@ -8,6 +8,7 @@
 #include "GlProgram.h"
 #include "GpuScene.h"
 #include "Image.h"
+#include "Integrator.h"
 #include "SamplerMode.h"
 #include "Scene.h"
 
@@ -24,9 +25,10 @@ struct RenderSettings {
     // The samples per pixel the render is heading for: grid and stratified lay out patterns of
     // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
     std::uint32_t sampleBudget = 1024;
+    Integrator integrator = Integrator::Naive;
 
     bool operator==(const RenderSettings& other) const {
-        return maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
+        return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
                sampleBudget == other.sampleBudget;
     }
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
@@ -61,11 +63,14 @@ public:
 
 private:
     void updateFrameUniforms();
+    void setLightUniforms();
 
     std::unique_ptr<GlProgram> pathTraceProgram_;
     std::unique_ptr<GlProgram> displayProgram_;
     GLint sphereCountLocation_ = -1;
     GLint quadCountLocation_ = -1;
+    GLint lightCountLocation_ = -1;
+    GLint environmentLightLocation_ = -1;
     GLint invSampleCountLocation_ = -1;
     GLint exposureScaleLocation_ = -1;
     GLint outputSizeLocation_ = -1;

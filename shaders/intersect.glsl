@@ -8,6 +8,7 @@ struct Hit {
     vec3 posWorld;
     vec3 normalGeom; // unit, outward for spheres and along cross(u, v) for quads: the emitting side
     int material;
+    int light;       // light index of the surface hit, or -1
 };
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
@@ -45,6 +46,7 @@ float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
 bool intersectScene(Ray ray, out Hit hit) {
     hit.t = kInfinity;
     hit.material = -1;
+    hit.light = -1;
     int sphereHit = -1;
     int quadHit = -1;
     for (int i = 0; i < uSphereCount; ++i) {
@@ -63,12 +65,22 @@ bool intersectScene(Ray ray, out Hit hit) {
         vec4 sphere = texelFetch(uSpheres, sphereHit);
         hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
         hit.material = int(texelFetch(uSphereMaterials, sphereHit).r);
+        hit.light = texelFetch(uSphereLights, sphereHit).r;
     } else {
         hit.normalGeom = normalize(cross(texelFetch(uQuads, 4 * quadHit + 1).xyz,
                                          texelFetch(uQuads, 4 * quadHit + 2).xyz));
         hit.material = int(texelFetch(uQuadMaterials, quadHit).r);
+        hit.light = texelFetch(uQuadLights, quadHit).r;
     }
     return true;
+}
+
+// Whether something other than `light` itself lies on the ray closer than maxDistance. Checking
+// the light's identity, not a shortened distance, keeps the test exact for points close to the
+// light, where the ray's offset origin can be nearer to it than the sampled distance says.
+bool occluded(Ray ray, float maxDistance, int light) {
+    Hit hit;
+    return intersectScene(ray, hit) && hit.light != light && hit.t < maxDistance;
 }
 
 // A ray leaving a surface point, pushed off the surface along the geometric normal on the side it

@@ -4,7 +4,7 @@
 #include "constants.glsl"
 #include "sampler.glsl"
 #include "camera.glsl"
-#include "integrator_naive.glsl"
+#include "integrator.glsl"
 #include "accumulate.glsl"
 
 void main() {

@@ -8,8 +8,14 @@ uniform samplerBuffer uQuads;          // per quad: center, u, v, dual = cross(u
 uniform usamplerBuffer uQuadMaterials;
 uniform samplerBuffer uMaterialParams; // per material: (color, ior), (radiance, roughness)
 uniform usamplerBuffer uMaterialTypes;
+uniform usamplerBuffer uLightInfo;     // per light: (kind, primitive, -, -); see lights.glsl
+uniform samplerBuffer uLightCdf;       // cumulative selection probability, by emitted power
+uniform isamplerBuffer uQuadLights;    // per quad: its light index, or -1
+uniform isamplerBuffer uSphereLights;  // per sphere: its light index, or -1
 uniform int uSphereCount;
 uniform int uQuadCount;
+uniform int uLightCount;
+uniform int uEnvironmentLight;         // light index of the environment, or -1 when it is black
 
 Material fetchMaterial(int index) {
     vec4 colorAndIor = texelFetch(uMaterialParams, 2 * index);

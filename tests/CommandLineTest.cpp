@@ -158,7 +158,7 @@ TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
                                                shellQuoted(path("c.pfm")) + " --spp 400 --size 128x128");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::smatch seconds;
-    ASSERT_TRUE(std::regex_search(result.output, seconds, std::regex(R"(depth 8, random sampler, ([0-9.]+) s,)"))) << result.output;
+    ASSERT_TRUE(std::regex_search(result.output, seconds, std::regex(R"(depth 8, random sampler, naive integrator, ([0-9.]+) s,)"))) << result.output;
     // Progress starts once a render has run for a second (this takes several on llvmpipe); a GPU
     // may finish sooner, and then there is nothing to report.
     if (std::stod(seconds[1]) > 1.5) {

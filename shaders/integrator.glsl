@@ -1,0 +1,123 @@
+// The four integrators, chosen at run time by uIntegrator (no recompilation):
+//
+//   naive   BSDF sampling only; emission counts when a path happens to hit it.
+//   direct  emission seen directly, plus one bounce of light sampling (next-event estimation)
+//           with a shadow ray. Nothing reaches the camera through mirrors or glass.
+//   mis     direct lighting from light sampling AND BSDF sampling at the first surface, combined
+//           by the power heuristic.
+//   full    global illumination: MIS next-event estimation at every non-specular vertex, BSDF
+//           sampling to continue, emission found by a BSDF sample weighted against the light
+//           sampling that could have found it (weight 1 after a delta lobe, which light sampling
+//           cannot produce), and unbiased Russian roulette after a few bounces.
+//
+// uMaxDepth bounds the number of scattering events of every path, for all four.
+#include "frame_uniforms.glsl"
+#include "sampler.glsl"
+#include "intersect.glsl"
+#include "bsdf.glsl"
+#include "shading_frame.glsl"
+#include "emission.glsl"
+#include "lights.glsl"
+
+const uint kIntegratorNaive = 0u;
+const uint kIntegratorDirect = 1u;
+const uint kIntegratorMis = 2u;
+const uint kIntegratorFull = 3u;
+
+const int kRussianRouletteStart = 3; // bounces before roulette may end a path
+
+float powerHeuristic(float pdfChosen, float pdfOther) {
+    float a = pdfChosen * pdfChosen;
+    float b = pdfOther * pdfOther;
+    return a + b > 0.0 ? a / (a + b) : 0.0;
+}
+
+// One light sample from the shading point: f * Le * |cos| / pdf, weighted against BSDF sampling
+// when useMis (the BSDF has a non-delta part there).
+vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3 woLocal, Sampler sampler,
+                            int bounce, bool useMis) {
+    if (uLightCount == 0) return vec3(0.0);
+    int light = chooseLight(samplerGet1D(sampler, lightChoiceDimension(bounce)));
+    float selection = lightSelectionProbability(light);
+    LightSample ls = sampleLight(light, hit.posWorld, samplerGet2D(sampler, lightPositionDimension(bounce)));
+    if (ls.pdfSolidAngle <= 0.0 || selection <= 0.0 || all(equal(ls.radiance, vec3(0.0)))) return vec3(0.0);
+    vec3 wiLocal = toLocal(frame, ls.wi);
+    vec3 f = bsdfF(material, woLocal, wiLocal);
+    if (all(equal(f, vec3(0.0)))) return vec3(0.0);
+    if (occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light)) return vec3(0.0);
+    float pdfLight = selection * ls.pdfSolidAngle;
+    float weight = useMis ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0;
+    return f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
+}
+
+// MIS weight of emission reached by a BSDF sample of density pdfBsdf from previousPos.
+float emissionWeight(int light, vec3 previousPos, vec3 wi, float hitDistance, vec3 hitNormal, float pdfBsdf) {
+    if (light < 0) return 1.0; // not in the light table: light sampling never finds it
+    float pdfLight = lightSelectionProbability(light) * lightPdf(light, previousPos, wi, hitDistance, hitNormal);
+    return powerHeuristic(pdfBsdf, pdfLight);
+}
+
+vec3 estimateRadiance(Ray ray, Sampler sampler) {
+    bool lightSampling = uIntegrator != kIntegratorNaive;
+    bool mis = uIntegrator == kIntegratorMis || uIntegrator == kIntegratorFull;
+    // Direct and DirectMIS stop after the first surface's direct lighting.
+    int lastBounce = uIntegrator == kIntegratorFull || uIntegrator == kIntegratorNaive ? uMaxDepth : min(uMaxDepth, 1);
+
+    vec3 radiance = vec3(0.0);
+    vec3 throughput = vec3(1.0);
+    vec3 previousPos = ray.origin;
+    float previousPdf = 0.0;     // solid-angle density of the BSDF sample that made this ray
+    bool previousDelta = true;   // the camera ray counts as delta: nothing else could find it
+    for (int bounce = 0; bounce <= lastBounce; ++bounce) {
+        Hit hit;
+        bool found = intersectScene(ray, hit);
+
+        // ---- Emission reached by the camera ray or a BSDF sample -------------------------------
+        // Light sampling already counted emission one bounce further than the camera unless MIS
+        // shares it; `direct` counts only what the camera sees.
+        bool countEmission = bounce == 0 || !lightSampling || mis;
+        if (countEmission) {
+            if (!found) {
+                float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
+                             : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
+                radiance += throughput * uEnvironmentRadiance * weight;
+            } else {
+                vec3 emitted = emittedRadiance(fetchMaterial(hit.material), hit.normalGeom, -ray.direction);
+                if (any(greaterThan(emitted, vec3(0.0)))) {
+                    float weight = (!lightSampling || previousDelta) ? 1.0
+                                 : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
+                    radiance += throughput * emitted * weight;
+                }
+            }
+        }
+        if (!found || bounce == lastBounce) break;
+        Material material = fetchMaterial(hit.material);
+        if (material.type == kMaterialEmitter) break; // emitters reflect nothing
+
+        ShadingFrame frame = makeShadingFrame(hit.normalGeom); // BSDFs handle either side themselves
+        vec3 woLocal = toLocal(frame, -ray.direction);
+
+        // ---- Next-event estimation --------------------------------------------------------------
+        if (lightSampling) radiance += throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis);
+        if (uIntegrator == kIntegratorDirect) break;
+
+        // ---- BSDF sampling -----------------------------------------------------------------------
+        BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
+                                   samplerGet2D(sampler, bsdfDimension(bounce)));
+        if (bs.pdfSolidAngle == 0.0) break;
+        throughput *= bs.weight; // weight already holds f*|cos|/pdf
+        if (all(equal(throughput, vec3(0.0)))) break;
+        previousPos = hit.posWorld;
+        previousPdf = bs.pdfSolidAngle;
+        previousDelta = bs.isDelta;
+        ray = spawnRay(hit.posWorld, hit.normalGeom, toWorld(frame, bs.wiLocal));
+
+        // ---- Russian roulette: survive with the throughput's largest component ------------------
+        if (uIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
+            float survival = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
+            if (samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival) break;
+            throughput /= survival; // unbiased: no clamp on 1/survival
+        }
+    }
+    return radiance;
+}
