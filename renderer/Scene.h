@@ -29,24 +29,40 @@ struct Material {
     // (base) Lambertian; DiffuseTransmission and SpecularTransmission: transmittance; Mirror:
     // reflectance; Glass: tint of both lobes; Metal: reflectance at normal incidence.
     glm::vec3 color{0.0f};
-    glm::vec3 radiance{0.0f}; // Emitter: radiance leaving the front side (W sr^-1 m^-2); reflects nothing
+    // Radiance leaving the front side (W sr^-1 m^-2). Emitter: its only effect (it reflects
+    // nothing); any other type may emit too ("emission" in the file), on top of reflecting.
+    glm::vec3 radiance{0.0f};
     float ior = 1.5f;         // SpecularTransmission, Glass, Plastic (coat): inside / outside, in [1, 4]
     float roughness = 0.0f;   // Metal, Plastic (coat): in [0, 1], GGX alpha = roughness^2; 0 = smooth
 };
 
-enum class ShapeType { Sphere, Quad, Box };
+enum class ShapeType { Sphere, Quad, Box, Disk };
 
 struct Shape {
     std::string name;
     ShapeType type = ShapeType::Sphere;
     int material = 0; // index into Scene::materials
     glm::vec3 center{0.0f};
-    float radius = 1.0f;                  // Sphere
+    float radius = 1.0f;                  // Sphere, Disk
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};   // Disk: unit; the front (emitting) side
     glm::vec3 u{1.0f, 0.0f, 0.0f};        // Quad: corners center ± u ± v,
     glm::vec3 v{0.0f, 0.0f, 1.0f};        //   front (emitting) side along cross(u, v)
     glm::vec3 halfSize{0.5f};             // Box: half extents in its local frame
     glm::vec3 rotationAxis{0.0f, 1.0f, 0.0f}; // Box: local-to-world rotation, right-hand rule
     float rotationDeg = 0.0f;
+};
+
+// Lights that are points rather than surfaces (delta lights: only light sampling reaches them).
+enum class LightType { Point, Spot };
+
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::vec3 position{0.0f};
+    glm::vec3 intensity{1.0f};            // radiant intensity, W sr^-1 per channel
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // Spot: unit, where the cone points
+    float innerAngleDeg = 20.0f;          // Spot: full intensity within this angle of the axis,
+    float outerAngleDeg = 30.0f;          //   none beyond this one, smooth in between (inner <= outer)
 };
 
 struct Scene {
@@ -55,6 +71,7 @@ struct Scene {
     glm::vec3 environment{0.0f}; // radiance of rays that escape the scene
     std::vector<Material> materials;
     std::vector<Shape> shapes;
+    std::vector<Light> lights;
 };
 
 // A scene file that cannot be used. what() reads "FILE: /json/pointer: reason" or, for
