@@ -44,14 +44,36 @@ struct GpuQuad {
 };
 static_assert(sizeof(GpuQuad) == 64, "four RGBA32F texels");
 
-// shaders/lights.glsl: one RGBA32UI texel per light.
+struct GpuDisk {
+    glm::vec3 center;
+    float radius;
+    glm::vec3 normal; // unit, the front side
+    float pad;
+};
+static_assert(sizeof(GpuDisk) == 32, "two RGBA32F texels");
+
+// Per primitive (RG32I): its material and, when it emits, its light index (else -1).
+struct GpuPrimitiveIds {
+    std::int32_t material;
+    std::int32_t light;
+};
+static_assert(sizeof(GpuPrimitiveIds) == 8, "one RG32I texel");
+
+// shaders/lights.glsl: four RGBA32F texels per light; kind and primitive are stored as the bits
+// of unsigned integers (read back with floatBitsToUint).
 struct GpuLight {
     std::uint32_t kind;      // LightKind
-    std::uint32_t primitive; // index among the quads or spheres; unused for the environment
+    std::uint32_t primitive; // index among the quads, spheres or disks; unused otherwise
     std::uint32_t pad0;
     std::uint32_t pad1;
+    glm::vec3 position;      // point and spot
+    float cosInner;          // spot: full intensity where cos(angle to axis) >= cosInner
+    glm::vec3 direction;     // spot: unit axis
+    float cosOuter;          // spot: nothing where cos(angle to axis) <= cosOuter
+    glm::vec3 intensity;     // point and spot: W sr^-1
+    float pad2;
 };
-static_assert(sizeof(GpuLight) == 16, "one RGBA32UI texel");
+static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
 
 struct GpuMaterialParams {
     glm::vec3 color;

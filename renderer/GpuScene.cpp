@@ -2,6 +2,8 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace ptview {
@@ -24,7 +26,7 @@ void appendBox(const Shape& box, ScenePrimitives& out) {
     };
     for (const auto& face : faces) {
         out.quads.push_back(makeQuad(box.center + face[0], face[1], face[2]));
-        out.quadMaterials.push_back(static_cast<std::uint32_t>(box.material));
+        out.quadMaterials.push_back(box.material);
     }
 }
 
@@ -46,21 +48,25 @@ void fillBufferTexture(GLuint buffer, GLuint texture, GLenum format, const std::
 ScenePrimitives flattenScene(const Scene& scene) {
     ScenePrimitives out;
     for (const Shape& shape : scene.shapes) {
-        auto material = static_cast<std::uint32_t>(shape.material);
         switch (shape.type) {
         case ShapeType::Sphere:
             out.spheres.push_back(GpuSphere{shape.center, shape.radius});
-            out.sphereMaterials.push_back(material);
+            out.sphereMaterials.push_back(shape.material);
             break;
         case ShapeType::Quad:
             out.quads.push_back(makeQuad(shape.center, shape.u, shape.v));
-            out.quadMaterials.push_back(material);
+            out.quadMaterials.push_back(shape.material);
             break;
         case ShapeType::Box:
             appendBox(shape, out);
             break;
+        case ShapeType::Disk:
+            out.disks.push_back(GpuDisk{shape.center, shape.radius, glm::normalize(shape.normal), 0.0f});
+            out.diskMaterials.push_back(shape.material);
+            break;
         }
     }
+    out.lights = scene.lights;
     flattenMaterials(scene.materials, out);
     return out;
 }
@@ -74,78 +80,121 @@ void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& o
     }
 }
 
+namespace {
+
+float luminance(glm::vec3 rgb) {
+    return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+}
+
+// Appends the emitting primitives of one kind: ids for all, a light for each that emits.
+template <typename Primitive, typename Area>
+void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<std::int32_t>& materialOf,
+                   const std::vector<Material>& materials, LightKind kind, Area area, LightTable& table,
+                   std::vector<GpuPrimitiveIds>& ids, std::vector<double>& power) {
+    ids.clear();
+    for (size_t i = 0; i < primitives.size(); ++i) {
+        std::int32_t material = materialOf[i];
+        float emitted = luminance(materials[static_cast<size_t>(material)].radiance);
+        if (emitted <= 0.0f) {
+            ids.push_back({material, -1});
+            continue;
+        }
+        ids.push_back({material, static_cast<std::int32_t>(table.lights.size())});
+        GpuLight light{};
+        light.kind = static_cast<std::uint32_t>(kind);
+        light.primitive = static_cast<std::uint32_t>(i);
+        table.lights.push_back(light);
+        power.push_back(area(primitives[i]) * glm::pi<double>() * emitted); // one-sided Lambertian emitter
+    }
+}
+
+} // namespace
+
 LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
                            glm::vec3 environmentRadiance) {
     LightTable table;
     std::vector<double> power;
-    auto emitted = [&](std::uint32_t material) {
-        const Material& m = materials[material];
-        return m.type == MaterialType::Emitter ? glm::dot(m.radiance, glm::vec3(0.2126f, 0.7152f, 0.0722f)) : 0.0f;
-    };
-    glm::vec3 boundsMin(std::numeric_limits<float>::max()), boundsMax(-std::numeric_limits<float>::max());
-    table.quadLight.assign(geometry.quads.size(), -1);
-    for (size_t i = 0; i < geometry.quads.size(); ++i) {
-        const GpuQuad& quad = geometry.quads[i];
-        glm::vec3 c(quad.center), u(quad.u), v(quad.v);
-        for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) {
-            boundsMin = glm::min(boundsMin, corner);
-            boundsMax = glm::max(boundsMax, corner);
+    addAreaLights(geometry.quads, geometry.quadMaterials, materials, LightKind::Quad,
+                  [](const GpuQuad& q) { return 4.0 * glm::length(glm::cross(glm::vec3(q.u), glm::vec3(q.v))); },
+                  table, table.quadIds, power);
+    addAreaLights(geometry.spheres, geometry.sphereMaterials, materials, LightKind::Sphere,
+                  [](const GpuSphere& s) { return 4.0 * glm::pi<double>() * s.radius * s.radius; },
+                  table, table.sphereIds, power);
+    addAreaLights(geometry.disks, geometry.diskMaterials, materials, LightKind::Disk,
+                  [](const GpuDisk& d) { return glm::pi<double>() * d.radius * d.radius; },
+                  table, table.diskIds, power);
+
+    for (const Light& source : geometry.lights) {
+        GpuLight light{};
+        light.position = source.position;
+        light.intensity = source.intensity;
+        if (source.type == LightType::Point) {
+            light.kind = static_cast<std::uint32_t>(LightKind::Point);
+            power.push_back(4.0 * glm::pi<double>() * luminance(source.intensity));
+        } else {
+            light.kind = static_cast<std::uint32_t>(LightKind::Spot);
+            light.direction = glm::normalize(source.direction);
+            light.cosInner = std::cos(glm::radians(source.innerAngleDeg));
+            light.cosOuter = std::cos(glm::radians(source.outerAngleDeg));
+            // The solid angle of the cone, counting the falloff band half.
+            double cosMiddle = 0.5 * (light.cosInner + light.cosOuter);
+            power.push_back(2.0 * glm::pi<double>() * (1.0 - cosMiddle) * luminance(source.intensity));
         }
-        float luminance = emitted(geometry.quadMaterials[i]);
-        if (luminance <= 0.0f) continue;
-        table.quadLight[i] = static_cast<std::int32_t>(table.lights.size());
-        table.lights.push_back(GpuLight{static_cast<std::uint32_t>(LightKind::Quad), static_cast<std::uint32_t>(i), 0, 0});
-        power.push_back(4.0 * glm::length(glm::cross(u, v)) * glm::pi<double>() * luminance); // one-sided
+        table.lights.push_back(light);
     }
-    table.sphereLight.assign(geometry.spheres.size(), -1);
-    for (size_t i = 0; i < geometry.spheres.size(); ++i) {
-        const GpuSphere& sphere = geometry.spheres[i];
-        boundsMin = glm::min(boundsMin, sphere.center - sphere.radius);
-        boundsMax = glm::max(boundsMax, sphere.center + sphere.radius);
-        float luminance = emitted(geometry.sphereMaterials[i]);
-        if (luminance <= 0.0f) continue;
-        table.sphereLight[i] = static_cast<std::int32_t>(table.lights.size());
-        table.lights.push_back(GpuLight{static_cast<std::uint32_t>(LightKind::Sphere), static_cast<std::uint32_t>(i), 0, 0});
-        double area = 4.0 * glm::pi<double>() * sphere.radius * sphere.radius;
-        power.push_back(area * glm::pi<double>() * luminance);
-    }
-    float environment = glm::dot(environmentRadiance, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+
+    float environment = luminance(environmentRadiance);
     if (environment > 0.0f) {
-        double radius = boundsMin.x <= boundsMax.x ? 0.5 * glm::length(boundsMax - boundsMin) : 1.0;
+        glm::vec3 boundsMin(std::numeric_limits<float>::max()), boundsMax(-std::numeric_limits<float>::max());
+        for (const GpuQuad& quad : geometry.quads) {
+            glm::vec3 c(quad.center), u(quad.u), v(quad.v);
+            for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) {
+                boundsMin = glm::min(boundsMin, corner);
+                boundsMax = glm::max(boundsMax, corner);
+            }
+        }
+        for (const GpuSphere& sphere : geometry.spheres) {
+            boundsMin = glm::min(boundsMin, sphere.center - sphere.radius);
+            boundsMax = glm::max(boundsMax, sphere.center + sphere.radius);
+        }
+        for (const GpuDisk& disk : geometry.disks) {
+            boundsMin = glm::min(boundsMin, disk.center - disk.radius);
+            boundsMax = glm::max(boundsMax, disk.center + disk.radius);
+        }
+        double radius = boundsMin.x <= boundsMax.x ? std::max(0.5 * glm::length(boundsMax - boundsMin), 1e-3) : 1.0;
         table.environmentLight = static_cast<std::int32_t>(table.lights.size());
-        table.lights.push_back(GpuLight{static_cast<std::uint32_t>(LightKind::Environment), 0, 0, 0});
+        GpuLight light{};
+        light.kind = static_cast<std::uint32_t>(LightKind::Environment);
+        table.lights.push_back(light);
         power.push_back(glm::pi<double>() * radius * radius * glm::pi<double>() * environment);
     }
+
     double total = 0.0;
     for (double p : power) total += p;
     double running = 0.0;
     for (double p : power) {
         running += p;
-        table.cdf.push_back(static_cast<float>(running / total));
+        table.cdf.push_back(static_cast<float>(total > 0.0 ? running / total : 1.0));
     }
     if (!table.cdf.empty()) table.cdf.back() = 1.0f; // no light unreachable through rounding
     return table;
 }
 
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
-    "uSpheres", "uSphereMaterials", "uQuads", "uQuadMaterials", "uMaterialParams",
-    "uMaterialTypes", "uLightInfo", "uLightCdf", "uQuadLights", "uSphereLights"};
+    "uSpheres", "uSphereIds", "uQuads", "uQuadIds", "uDisks", "uDiskIds",
+    "uMaterialParams", "uMaterialTypes", "uLights", "uLightCdf"};
 
 void GpuScene::upload(const Scene& scene) {
-    ScenePrimitives primitives = flattenScene(scene);
     for (BufferTexture& slot : textures_) {
         if (slot.buffer.id() == 0) {
             slot.buffer = createBuffer();
             slot.texture = createTexture();
         }
     }
-    fillBufferTexture(textures_[0].buffer.id(), textures_[0].texture.id(), GL_RGBA32F, primitives.spheres);
-    fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_R32UI, primitives.sphereMaterials);
-    fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, primitives.quads);
-    fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_R32UI, primitives.quadMaterials);
-    sphereCount_ = static_cast<int>(primitives.spheres.size());
-    quadCount_ = static_cast<int>(primitives.quads.size());
-    geometry_ = std::move(primitives);
+    geometry_ = flattenScene(scene);
+    fillBufferTexture(textures_[0].buffer.id(), textures_[0].texture.id(), GL_RGBA32F, geometry_.spheres);
+    fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, geometry_.quads);
+    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, geometry_.disks);
     environmentRadiance_ = scene.environment;
     uploadMaterials(scene.materials);
 }
@@ -153,13 +202,14 @@ void GpuScene::upload(const Scene& scene) {
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);
-    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, primitives.materialParams);
-    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_R32UI, primitives.materialTypes);
+    fillBufferTexture(textures_[6].buffer.id(), textures_[6].texture.id(), GL_RGBA32F, primitives.materialParams);
+    fillBufferTexture(textures_[7].buffer.id(), textures_[7].texture.id(), GL_R32UI, primitives.materialTypes);
     lights_ = buildLightTable(geometry_, materials, environmentRadiance_);
-    fillBufferTexture(textures_[6].buffer.id(), textures_[6].texture.id(), GL_RGBA32UI, lights_.lights);
-    fillBufferTexture(textures_[7].buffer.id(), textures_[7].texture.id(), GL_R32F, lights_.cdf);
-    fillBufferTexture(textures_[8].buffer.id(), textures_[8].texture.id(), GL_R32I, lights_.quadLight);
-    fillBufferTexture(textures_[9].buffer.id(), textures_[9].texture.id(), GL_R32I, lights_.sphereLight);
+    fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_RG32I, lights_.sphereIds);
+    fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_RG32I, lights_.quadIds);
+    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_RG32I, lights_.diskIds);
+    fillBufferTexture(textures_[8].buffer.id(), textures_[8].texture.id(), GL_RGBA32F, lights_.lights);
+    fillBufferTexture(textures_[9].buffer.id(), textures_[9].texture.id(), GL_R32F, lights_.cdf);
 }
 
 void GpuScene::bind(int firstUnit) const {

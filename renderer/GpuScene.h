@@ -1,6 +1,6 @@
 #pragma once
-// The scene as GPU primitives: boxes become six quads, and everything goes into buffer textures
-// that shaders/scene_data.glsl reads.
+// The scene as GPU primitives: boxes become six quads, emitters and point/spot lights become a
+// light table, and everything goes into buffer textures that shaders/scene_data.glsl reads.
 
 #include "GlObjects.h"
 #include "GpuLayout.h"
@@ -13,22 +13,24 @@ namespace ptview {
 
 struct ScenePrimitives {
     std::vector<GpuSphere> spheres;
-    std::vector<std::uint32_t> sphereMaterials;
+    std::vector<std::int32_t> sphereMaterials;
     std::vector<GpuQuad> quads;
-    std::vector<std::uint32_t> quadMaterials;
+    std::vector<std::int32_t> quadMaterials;
+    std::vector<GpuDisk> disks;
+    std::vector<std::int32_t> diskMaterials;
+    std::vector<Light> lights; // point and spot
     std::vector<GpuMaterialParams> materialParams;
     std::vector<std::uint32_t> materialTypes;
 };
 
 // Values match the kLight* constants of shaders/lights.glsl.
-enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Environment = 2 };
+enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5 };
 
-// Every emitter the integrators can sample, chosen in proportion to its emitted power.
+// Every light the integrators can sample, chosen in proportion to its emitted power.
 struct LightTable {
     std::vector<GpuLight> lights;
-    std::vector<float> cdf;              // cumulative selection probability; the last is 1
-    std::vector<std::int32_t> quadLight; // per quad: its light index, or -1
-    std::vector<std::int32_t> sphereLight;
+    std::vector<float> cdf; // cumulative selection probability; the last is 1
+    std::vector<GpuPrimitiveIds> sphereIds, quadIds, diskIds;
     std::int32_t environmentLight = -1;
 };
 
@@ -42,18 +44,18 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 class GpuScene {
 public:
     static constexpr int kTextureCount = 10;
+    // The sampler uniforms of shaders/scene_data.glsl, in the order bind() uses units.
+    static const char* const kSamplerNames[kTextureCount];
 
     void upload(const Scene& scene);
     // Material edits only: no geometry is re-sent and nothing is recompiled. The light table is
     // rebuilt, since an edit can make a surface an emitter or change its power.
     void uploadMaterials(const std::vector<Material>& materials);
-    // Binds the buffer textures to units firstUnit .. firstUnit + kTextureCount - 1, in the order
-    // of kSamplerNames.
     void bind(int firstUnit) const;
-    static const char* const kSamplerNames[kTextureCount];
 
-    int sphereCount() const { return sphereCount_; }
-    int quadCount() const { return quadCount_; }
+    int sphereCount() const { return static_cast<int>(geometry_.spheres.size()); }
+    int quadCount() const { return static_cast<int>(geometry_.quads.size()); }
+    int diskCount() const { return static_cast<int>(geometry_.disks.size()); }
     int lightCount() const { return static_cast<int>(lights_.lights.size()); }
     int environmentLight() const { return lights_.environmentLight; }
 
@@ -66,8 +68,6 @@ private:
     ScenePrimitives geometry_; // kept to rebuild the light table on material edits
     glm::vec3 environmentRadiance_{0.0f};
     LightTable lights_;
-    int sphereCount_ = 0;
-    int quadCount_ = 0;
 };
 
 } // namespace ptview

@@ -37,6 +37,7 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir) {
     for (int i = 0; i < GpuScene::kTextureCount; ++i) trace.bindSamplerUnit(GpuScene::kSamplerNames[i], kSceneUnit + i);
     sphereCountLocation_ = trace.uniformLocation("uSphereCount");
     quadCountLocation_ = trace.uniformLocation("uQuadCount");
+    diskCountLocation_ = trace.uniformLocation("uDiskCount");
     lightCountLocation_ = trace.uniformLocation("uLightCount");
     environmentLightLocation_ = trace.uniformLocation("uEnvironmentLight");
 
@@ -59,6 +60,7 @@ void PathTracer::setScene(const Scene& scene) {
     glUseProgram(pathTraceProgram_->id());
     glUniform1i(sphereCountLocation_, gpuScene_.sphereCount());
     glUniform1i(quadCountLocation_, gpuScene_.quadCount());
+    glUniform1i(diskCountLocation_, gpuScene_.diskCount());
     setLightUniforms();
     camera_ = scene.camera;
     environmentRadiance_ = scene.environment;

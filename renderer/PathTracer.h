@@ -69,6 +69,7 @@ private:
     std::unique_ptr<GlProgram> displayProgram_;
     GLint sphereCountLocation_ = -1;
     GLint quadCountLocation_ = -1;
+    GLint diskCountLocation_ = -1;
     GLint lightCountLocation_ = -1;
     GLint environmentLightLocation_ = -1;
     GLint invSampleCountLocation_ = -1;

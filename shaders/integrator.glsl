@@ -46,7 +46,8 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     if (all(equal(f, vec3(0.0)))) return vec3(0.0);
     if (occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light)) return vec3(0.0);
     float pdfLight = selection * ls.pdfSolidAngle;
-    float weight = useMis ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0;
+    // A delta light has no density to weigh against: only light sampling can find it.
+    float weight = useMis && !ls.isDelta ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0;
     return f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
 }
 

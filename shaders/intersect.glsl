@@ -43,12 +43,23 @@ float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
     return (abs(a) <= 1.0 && abs(b) <= 1.0) ? t : kInfinity;
 }
 
+// Disk of the given center, unit normal and radius.
+float intersectDisk(Ray ray, vec3 center, vec3 normal, float radius) {
+    float denom = dot(ray.direction, normal);
+    if (denom == 0.0) return kInfinity;
+    float t = dot(center - ray.origin, normal) / denom;
+    if (!(t > 0.0)) return kInfinity;
+    vec3 offset = ray.origin + t * ray.direction - center;
+    return dot(offset, offset) <= radius * radius ? t : kInfinity;
+}
+
 bool intersectScene(Ray ray, out Hit hit) {
     hit.t = kInfinity;
     hit.material = -1;
     hit.light = -1;
     int sphereHit = -1;
     int quadHit = -1;
+    int diskHit = -1;
     for (int i = 0; i < uSphereCount; ++i) {
         float t = intersectSphere(ray, texelFetch(uSpheres, i));
         if (t < hit.t) { hit.t = t; sphereHit = i; }
@@ -58,20 +69,29 @@ bool intersectScene(Ray ray, out Hit hit) {
                                 texelFetch(uQuads, 4 * i + 2).xyz, texelFetch(uQuads, 4 * i + 3).xyz);
         if (t < hit.t) { hit.t = t; quadHit = i; sphereHit = -1; }
     }
+    for (int i = 0; i < uDiskCount; ++i) {
+        vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
+        float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
+        if (t < hit.t) { hit.t = t; diskHit = i; quadHit = -1; sphereHit = -1; }
+    }
     if (hit.t == kInfinity) return false;
 
     hit.posWorld = ray.origin + hit.t * ray.direction;
+    ivec2 ids;
     if (sphereHit >= 0) {
         vec4 sphere = texelFetch(uSpheres, sphereHit);
         hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
-        hit.material = int(texelFetch(uSphereMaterials, sphereHit).r);
-        hit.light = texelFetch(uSphereLights, sphereHit).r;
-    } else {
+        ids = texelFetch(uSphereIds, sphereHit).rg;
+    } else if (quadHit >= 0) {
         hit.normalGeom = normalize(cross(texelFetch(uQuads, 4 * quadHit + 1).xyz,
                                          texelFetch(uQuads, 4 * quadHit + 2).xyz));
-        hit.material = int(texelFetch(uQuadMaterials, quadHit).r);
-        hit.light = texelFetch(uQuadLights, quadHit).r;
+        ids = texelFetch(uQuadIds, quadHit).rg;
+    } else {
+        hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
+        ids = texelFetch(uDiskIds, diskHit).rg;
     }
+    hit.material = ids.x;
+    hit.light = ids.y;
     return true;
 }
 

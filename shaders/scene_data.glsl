@@ -3,17 +3,18 @@
 #include "material.glsl"
 
 uniform samplerBuffer uSpheres;        // per sphere: (center.xyz, radius)
-uniform usamplerBuffer uSphereMaterials;
+uniform isamplerBuffer uSphereIds;     // per sphere: (material, light index or -1)
 uniform samplerBuffer uQuads;          // per quad: center, u, v, dual = cross(u, v) / |cross(u, v)|^2
-uniform usamplerBuffer uQuadMaterials;
+uniform isamplerBuffer uQuadIds;
+uniform samplerBuffer uDisks;          // per disk: (center, radius), (unit normal, -)
+uniform isamplerBuffer uDiskIds;
 uniform samplerBuffer uMaterialParams; // per material: (color, ior), (radiance, roughness)
 uniform usamplerBuffer uMaterialTypes;
-uniform usamplerBuffer uLightInfo;     // per light: (kind, primitive, -, -); see lights.glsl
+uniform samplerBuffer uLights;         // per light: 4 texels, see lights.glsl
 uniform samplerBuffer uLightCdf;       // cumulative selection probability, by emitted power
-uniform isamplerBuffer uQuadLights;    // per quad: its light index, or -1
-uniform isamplerBuffer uSphereLights;  // per sphere: its light index, or -1
 uniform int uSphereCount;
 uniform int uQuadCount;
+uniform int uDiskCount;
 uniform int uLightCount;
 uniform int uEnvironmentLight;         // light index of the environment, or -1 when it is black
 
