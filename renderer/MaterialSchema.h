@@ -12,7 +12,7 @@
 namespace ptview {
 
 // Every type but emitter has one colour, under the name users know for that model (it is also
-// the panel's label); ior and roughness only where the model has them.
+// the panel's label); ior and roughness only where the model has them; every type may emit.
 struct MaterialSchema {
     const char* name; // the JSON "type"
     MaterialType type;
@@ -20,18 +20,22 @@ struct MaterialSchema {
     std::optional<glm::vec3> colorDefault; // nullopt: the colour is required
     bool hasIor;
     bool hasRoughness;
+    // Where Material::radiance is read and written: "radiance" (emitter: its only effect, so
+    // required) or "emission" (everything else: optional, default black, written only when not).
+    const char* radianceKey;
+    bool radianceRequired;
 };
 
 // In MaterialType order, so kMaterialSchemas[int(type)] is the schema of type.
 inline const MaterialSchema kMaterialSchemas[] = {
-    {"diffuse", MaterialType::Diffuse, "albedo", std::nullopt, false, false},
-    {"emitter", MaterialType::Emitter, nullptr, std::nullopt, false, false},
-    {"diffuse_transmission", MaterialType::DiffuseTransmission, "transmittance", std::nullopt, false, false},
-    {"mirror", MaterialType::Mirror, "reflectance", glm::vec3(1.0f), false, false},
-    {"specular_transmission", MaterialType::SpecularTransmission, "transmittance", glm::vec3(1.0f), true, false},
-    {"glass", MaterialType::Glass, "tint", glm::vec3(1.0f), true, false},
-    {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true},
-    {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true},
+    {"diffuse", MaterialType::Diffuse, "albedo", std::nullopt, false, false, "emission", false},
+    {"emitter", MaterialType::Emitter, nullptr, std::nullopt, false, false, "radiance", true},
+    {"diffuse_transmission", MaterialType::DiffuseTransmission, "transmittance", std::nullopt, false, false, "emission", false},
+    {"mirror", MaterialType::Mirror, "reflectance", glm::vec3(1.0f), false, false, "emission", false},
+    {"specular_transmission", MaterialType::SpecularTransmission, "transmittance", glm::vec3(1.0f), true, false, "emission", false},
+    {"glass", MaterialType::Glass, "tint", glm::vec3(1.0f), true, false, "emission", false},
+    {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true, "emission", false},
+    {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true, "emission", false},
 };
 
 inline const MaterialSchema& materialSchema(MaterialType type) {

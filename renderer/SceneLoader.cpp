@@ -305,6 +305,16 @@ bool areParallel(const glm::vec3& a, const glm::vec3& b) {
     return glm::length(glm::cross(a, b)) <= 1e-6f * glm::length(a) * glm::length(b);
 }
 
+// A nonzero vector, stored at unit length. One that is unit already, as far as a float can tell,
+// is kept as written: normalizing it again could move it by an ulp, and then a file the writer
+// wrote (which holds the stored unit vector) would not read back bit for bit.
+glm::vec3 readDirection(const Json& value, const Pointer& at) {
+    glm::dvec3 v(readNonzeroVec3(value, at)); // double: squaring 1e30 would overflow a float
+    double length = glm::length(v);
+    if (std::abs(length - 1.0) <= 1e-6) return glm::vec3(v);
+    return glm::vec3(v / length);
+}
+
 glm::ivec2 readResolution(const Json& value, const Pointer& at) {
     if (!value.is_array() || value.size() != 2)
         fail(at, "expected an array of 2 integers (width, height)");
@@ -369,7 +379,8 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     requireObject(value, at);
     Material material;
     material.name = name;
-    requireType(value, at, {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "ior", "roughness"});
+    requireType(value, at,
+                {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "ior", "roughness", "emission"});
     std::string type = readString(value.at("type"), at / "type");
     const MaterialSchema* schema = findMaterialSchema(type);
     if (!schema) {
@@ -381,14 +392,17 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     material.type = schema->type;
 
     std::vector<const char*> keys = {"type"};
-    if (schema->type == MaterialType::Emitter) keys.push_back("radiance");
+    if (schema->radianceRequired) keys.push_back(schema->radianceKey);
     if (schema->colorKey) keys.push_back(schema->colorKey);
     if (schema->hasIor) keys.push_back("ior");
     if (schema->hasRoughness) keys.push_back("roughness");
+    if (!schema->radianceRequired) keys.push_back(schema->radianceKey);
     checkKeys(value, at, keys);
 
-    if (schema->type == MaterialType::Emitter) {
-        material.radiance = readVec3(requireKey(value, at, "radiance"), at / "radiance",
+    const Json* radiance = schema->radianceRequired ? &requireKey(value, at, schema->radianceKey)
+                                                    : optionalKey(value, schema->radianceKey);
+    if (radiance) {
+        material.radiance = readVec3(*radiance, at / schema->radianceKey,
                                      [](float c) { return c >= 0.0f; }, "a non-negative number");
     }
     if (schema->colorKey) {
@@ -427,7 +441,7 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     Shape shape;
     requireType(value, at,
                 {"name", "type", "material", "center", "radius", "u", "v", "half_size",
-                 "rotation"});
+                 "rotation", "normal"});
     std::string type = readString(value.at("type"), at / "type");
     if (type == "sphere") {
         shape.type = ShapeType::Sphere;
@@ -438,8 +452,11 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     } else if (type == "box") {
         shape.type = ShapeType::Box;
         checkKeys(value, at, {"name", "type", "material", "center", "half_size", "rotation"});
+    } else if (type == "disk") {
+        shape.type = ShapeType::Disk;
+        checkKeys(value, at, {"name", "type", "material", "center", "normal", "radius"});
     } else {
-        fail(at / "type", "unknown shape type \"" + type + "\" (expected sphere, quad or box)");
+        fail(at / "type", "unknown shape type \"" + type + "\" (expected sphere, quad, box or disk)");
     }
 
     const Json* name = optionalKey(value, "name");
@@ -474,15 +491,72 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
                 readNumber(requireKey(*rotation, rotationAt, "degrees"), rotationAt / "degrees");
         }
         break;
+    case ShapeType::Disk:
+        shape.normal = readDirection(requireKey(value, at, "normal"), at / "normal");
+        shape.radius = readPositive(requireKey(value, at, "radius"), at / "radius");
+        break;
     }
     return shape;
+}
+
+// A spot's cone half-angle: beyond 90 degrees it would light what is behind it.
+float readConeAngle(const Json& value, const Pointer& at) {
+    float degrees = readNumber(value, at);
+    if (!(degrees > 0.0f && degrees <= 90.0f))
+        fail(at, "expected a number in (0, 90]");
+    return degrees;
+}
+
+// A value the file left out, for messages that mention it.
+std::string defaultText(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g, the default", static_cast<double>(value));
+    return text;
+}
+
+Light readLight(const Json& value, const Pointer& at, std::size_t index) {
+    requireObject(value, at);
+    Light light;
+    requireType(value, at,
+                {"name", "type", "position", "direction", "intensity", "inner_deg", "outer_deg"});
+    std::string type = readString(value.at("type"), at / "type");
+    if (type == "point") {
+        light.type = LightType::Point;
+        checkKeys(value, at, {"name", "type", "position", "intensity"});
+    } else if (type == "spot") {
+        light.type = LightType::Spot;
+        checkKeys(value, at,
+                  {"name", "type", "position", "direction", "intensity", "inner_deg", "outer_deg"});
+    } else {
+        fail(at / "type", "unknown light type \"" + type + "\" (expected point or spot)");
+    }
+
+    const Json* name = optionalKey(value, "name");
+    light.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
+    light.position = readVec3(requireKey(value, at, "position"), at / "position");
+    light.intensity = readVec3(requireKey(value, at, "intensity"), at / "intensity",
+                               [](float c) { return c >= 0.0f; }, "a non-negative number");
+    if (light.type == LightType::Spot) {
+        light.direction = readDirection(requireKey(value, at, "direction"), at / "direction");
+        const Json* inner = optionalKey(value, "inner_deg");
+        const Json* outer = optionalKey(value, "outer_deg");
+        if (inner) light.innerAngleDeg = readConeAngle(*inner, at / "inner_deg");
+        if (outer) light.outerAngleDeg = readConeAngle(*outer, at / "outer_deg");
+        // Blame an angle the file gives, the inner one when it gives both.
+        if (light.innerAngleDeg > light.outerAngleDeg && inner)
+            fail(at / "inner_deg", "must not exceed outer_deg (" +
+                                       (outer ? outer->dump() : defaultText(light.outerAngleDeg)) + ")");
+        if (light.innerAngleDeg > light.outerAngleDeg)
+            fail(at / "outer_deg", "must not be less than inner_deg (" + defaultText(light.innerAngleDeg) + ")");
+    }
+    return light;
 }
 
 Scene readScene(const Json& root) {
     const Pointer top;
     if (!root.is_object())
         fail(top, "expected an object at the top level, got " + describe(root));
-    checkKeys(root, top, {"camera", "environment", "materials", "shapes"});
+    checkKeys(root, top, {"camera", "environment", "materials", "shapes", "lights"});
 
     Scene scene;
     scene.camera = readCamera(requireKey(root, top, "camera"), top / "camera");
@@ -500,6 +574,14 @@ Scene readScene(const Json& root) {
         fail(shapesAt, "expected an array, got " + describe(shapes));
     for (std::size_t i = 0; i < shapes.size(); ++i)
         scene.shapes.push_back(readShape(shapes[i], shapesAt / i, i, scene.materials));
+
+    if (const Json* lights = optionalKey(root, "lights")) {
+        const Pointer lightsAt = top / "lights";
+        if (!lights->is_array())
+            fail(lightsAt, "expected an array, got " + describe(*lights));
+        for (std::size_t i = 0; i < lights->size(); ++i)
+            scene.lights.push_back(readLight((*lights)[i], lightsAt / i, i));
+    }
     return scene;
 }
 

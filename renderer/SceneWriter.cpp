@@ -24,7 +24,7 @@ using Json = nlohmann::ordered_json;
 
 // Containers whose one-line form fits this many columns (indent, key and comma included) stay on
 // one line, except the top level and the sections in it that hold more than one entry (camera,
-// materials, shapes), which read better one entry a line whatever their size.
+// materials, shapes, lights), which read better one entry a line whatever their size.
 constexpr std::size_t kLineWidth = 120;
 
 [[noreturn]] void fail(const std::string& pointer, const std::string& reason) {
@@ -158,10 +158,13 @@ Json materialJson(const Material& material) {
     const MaterialSchema& schema = materialSchema(material.type);
     Json json;
     json["type"] = schema.name;
-    if (material.type == MaterialType::Emitter) json["radiance"] = vec3(material.radiance);
+    if (schema.radianceRequired) json[schema.radianceKey] = vec3(material.radiance);
     if (schema.colorKey) json[schema.colorKey] = vec3(material.color);
     if (schema.hasIor) json["ior"] = number(material.ior);
     if (schema.hasRoughness) json["roughness"] = number(material.roughness);
+    // Black is the default, and most surfaces do not glow.
+    if (!schema.radianceRequired && material.radiance != glm::vec3(0.0f))
+        json[schema.radianceKey] = vec3(material.radiance);
     return json;
 }
 
@@ -187,10 +190,30 @@ Json shapeJson(const Shape& shape, const std::vector<Material>& materials, const
         if (shape.rotationDeg != 0.0f)
             json["rotation"] = Json{{"axis", vec3(shape.rotationAxis)}, {"degrees", number(shape.rotationDeg)}};
         break;
+    case ShapeType::Disk:
+        json["type"] = "disk";
+        json["center"] = vec3(shape.center);
+        json["normal"] = vec3(shape.normal);
+        json["radius"] = number(shape.radius);
+        break;
     }
     if (shape.material < 0 || static_cast<std::size_t>(shape.material) >= materials.size())
         fail(pointer + "/material", "material index " + std::to_string(shape.material) + " is out of range");
     json["material"] = materials[static_cast<std::size_t>(shape.material)].name;
+    return json;
+}
+
+Json lightJson(const Light& light) {
+    Json json;
+    json["name"] = light.name;
+    json["type"] = light.type == LightType::Spot ? "spot" : "point";
+    json["position"] = vec3(light.position);
+    if (light.type == LightType::Spot) json["direction"] = vec3(light.direction);
+    json["intensity"] = vec3(light.intensity);
+    if (light.type == LightType::Spot) {
+        json["inner_deg"] = number(light.innerAngleDeg);
+        json["outer_deg"] = number(light.outerAngleDeg);
+    }
     return json;
 }
 
@@ -214,6 +237,12 @@ std::string sceneToJson(const Scene& scene) {
     for (std::size_t i = 0; i < scene.shapes.size(); ++i)
         shapes.push_back(shapeJson(scene.shapes[i], scene.materials, "/shapes/" + std::to_string(i)));
     root["shapes"] = std::move(shapes);
+
+    if (!scene.lights.empty()) {
+        Json lights = Json::array();
+        for (const Light& light : scene.lights) lights.push_back(lightJson(light));
+        root["lights"] = std::move(lights);
+    }
 
     std::string text;
     print(root, "", 0, 0, text);

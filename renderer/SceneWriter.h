@@ -11,10 +11,10 @@ namespace ptview {
 
 // The scene as our JSON, formatted for people: 2-space indent, anything short on one line.
 // Materials keep their order; each writes only the keys of its type, so fields its type does not
-// use are not kept (they read back as the loader's defaults); a box rotation of 0 degrees is left
-// out. Throws std::runtime_error, naming the place as a JSON pointer, for a model no file can
-// hold: a number that is not finite, a shape whose material index is out of range, two
-// materials with the same name.
+// use are not kept (they read back as the loader's defaults); a box rotation of 0 degrees, a
+// black "emission" and an empty "lights" are left out. Throws std::runtime_error, naming the
+// place as a JSON pointer, for a model no file can hold: a number that is not finite, a shape
+// whose material index is out of range, two materials with the same name.
 std::string sceneToJson(const Scene& scene);
 
 // Writes sceneToJson(scene) to path, replacing the file only once the new one is complete, and

@@ -350,7 +350,7 @@ TEST(SceneLoader, RejectsWrongTypes) {
 TEST(SceneLoader, RejectsUnknownShapeType) {
     std::string message = errorFrom(validSceneWith("\"type\": \"sphere\"", "\"type\": \"cone\""));
     EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/type: unknown shape type \"cone\" "
-                                              "(expected sphere, quad or box)");
+                                              "(expected sphere, quad, box or disk)");
 }
 
 TEST(SceneLoader, RejectsUnknownMaterialReference) {
@@ -473,6 +473,241 @@ TEST(SceneLoader, RejectsBadCamera) {
     // Looking straight down with the default up is just as unusable.
     expectPlaceError(errorFrom(validSceneWith("\"target\": [0, 1, 0]", "\"target\": [0, -1, 3.9]")),
                      "/camera/up", "parallel");
+}
+
+// --- Emission, disks and lights ----------------------------------------------------------------
+
+// The valid scene with a fourth shape, a disk given by `disk` (the object's keys, no braces).
+std::string validSceneWithDisk(const std::string& disk) {
+    return validSceneWith(R"("material": "light" })", R"("material": "light" },
+    { )" + disk + " }");
+}
+
+// The valid scene with a "lights" array holding `lights` (its elements, no brackets).
+std::string validSceneWithLights(const std::string& lights) {
+    return validSceneWith("\n  ]\n}", "\n  ],\n  \"lights\": [" + lights + "]\n}");
+}
+
+const char* const kSpot = R"({ "type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": [5, 5, 5] )";
+
+// kSpot with `keys` added before its closing brace.
+std::string spotWith(const std::string& keys) {
+    return std::string(kSpot) + ", " + keys + " }";
+}
+
+TEST(SceneLoader, ReadsEmissionOnEveryNonEmitterType) {
+    Scene scene = parseScene(R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": {
+          "glow": { "type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [1, 2, 3] },
+          "paper": { "type": "diffuse_transmission", "transmittance": [0.5, 0.6, 0.7], "emission": [0.5, 0, 0] },
+          "chrome": { "type": "mirror", "emission": [0, 0.25, 0] },
+          "film": { "type": "specular_transmission", "emission": [0, 0, 4] },
+          "water": { "type": "glass", "emission": [1e-3, 0, 0] },
+          "gold": { "type": "metal", "reflectance": [1.0, 0.78, 0.34], "emission": [10, 20, 30] },
+          "toy": { "type": "plastic", "albedo": [0.8, 0.1, 0.1], "emission": [0, 0, 0] },
+          "plain": { "type": "plastic", "albedo": [0.8, 0.1, 0.1] }
+        },
+        "shapes": [] })", "emission.json");
+    ASSERT_EQ(scene.materials.size(), 8u);
+    EXPECT_EQ(scene.materials[0].radiance, glm::vec3(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(scene.materials[0].color, glm::vec3(0.5f)); // emission is on top of the colour
+    EXPECT_EQ(scene.materials[1].radiance, glm::vec3(0.5f, 0.0f, 0.0f));
+    EXPECT_EQ(scene.materials[2].radiance, glm::vec3(0.0f, 0.25f, 0.0f));
+    EXPECT_EQ(scene.materials[3].radiance, glm::vec3(0.0f, 0.0f, 4.0f));
+    EXPECT_EQ(scene.materials[4].radiance, glm::vec3(1e-3f, 0.0f, 0.0f));
+    EXPECT_EQ(scene.materials[5].radiance, glm::vec3(10.0f, 20.0f, 30.0f));
+    EXPECT_FLOAT_EQ(scene.materials[5].roughness, 0.0f);
+    EXPECT_EQ(scene.materials[6].radiance, glm::vec3(0.0f));
+    EXPECT_EQ(scene.materials[7].radiance, glm::vec3(0.0f)); // default: black
+}
+
+TEST(SceneLoader, RejectsBadEmission) {
+    expectPlaceError(errorFrom(validSceneWith("[0.73, 0.73, 0.73] }", "[0.73, 0.73, 0.73], \"emission\": [1, -0.5, 1] }")),
+                     "/materials/white/emission/1", "expected a non-negative number");
+    expectPlaceError(errorFrom(validSceneWith("[0.73, 0.73, 0.73] }", "[0.73, 0.73, 0.73], \"emission\": [1, 1] }")),
+                     "/materials/white/emission", "expected an array of 3 numbers");
+    // The emitter's radiance is not optional and has one name only.
+    expectPlaceError(errorFrom(validSceneWith("\"radiance\"", "\"emission\"")), "/materials/light/emission",
+                     "unknown key (expected one of: type, radiance)");
+    expectPlaceError(errorFrom(validSceneWith("[0.73, 0.73, 0.73] }", "[0.73, 0.73, 0.73], \"radiance\": [1, 1, 1] }")),
+                     "/materials/white/radiance", "unknown key (expected one of: type, albedo, emission)");
+    // A misspelt type with an emission is still reported as the misspelling.
+    expectPlaceError(errorFrom(validSceneWith("\"type\": \"diffuse\", \"albedo\": [0.73, 0.73, 0.73]",
+                                              "\"typo\": \"diffuse\", \"emission\": [1, 1, 1]")),
+                     "/materials/white/typo", "unknown key");
+}
+
+TEST(SceneLoader, ReadsDisk) {
+    Scene scene = parseScene(
+        validSceneWithDisk(R"("type": "disk", "center": [0, 1.9, -0.5], "normal": [0, 0, 2], "radius": 0.25, "material": "light")"),
+        kSource);
+    ASSERT_EQ(scene.shapes.size(), 4u);
+    const Shape& disk = scene.shapes[3];
+    EXPECT_EQ(disk.type, ShapeType::Disk);
+    EXPECT_EQ(disk.name, "disk 3");
+    EXPECT_EQ(disk.material, 1);
+    EXPECT_EQ(disk.center, glm::vec3(0.0f, 1.9f, -0.5f));
+    EXPECT_EQ(disk.normal, glm::vec3(0.0f, 0.0f, 1.0f)); // stored normalized
+    EXPECT_EQ(disk.radius, 0.25f);
+
+    Scene named = parseScene(validSceneWithDisk(
+        R"("name": "lamp", "type": "disk", "center": [0, 0, 0], "normal": [1, -1, 1e-30], "radius": 3, "material": "white")"),
+        kSource);
+    const Shape& lamp = named.shapes[3];
+    EXPECT_EQ(lamp.name, "lamp");
+    EXPECT_NEAR(glm::length(lamp.normal), 1.0f, 1e-6f);
+    EXPECT_NEAR(lamp.normal.x, std::sqrt(0.5f), 1e-6f);
+    EXPECT_NEAR(lamp.normal.y, -std::sqrt(0.5f), 1e-6f);
+}
+
+TEST(SceneLoader, KeepsAUnitDiskNormalAsWritten) {
+    // Unit as far as a float can tell: normalizing again could move it by an ulp.
+    Scene scene = parseScene(
+        validSceneWithDisk(R"("type": "disk", "center": [0, 0, 0], "normal": [0.6, 0.8, 0], "radius": 1, "material": "white")"),
+        kSource);
+    EXPECT_EQ(scene.shapes[3].normal, glm::vec3(0.6f, 0.8f, 0.0f));
+    // A tiny or a huge vector still normalizes (its length is computed in double).
+    Scene tiny = parseScene(
+        validSceneWithDisk(R"("type": "disk", "center": [0, 0, 0], "normal": [0, 1e-30, 0], "radius": 1, "material": "white")"),
+        kSource);
+    EXPECT_EQ(tiny.shapes[3].normal, glm::vec3(0.0f, 1.0f, 0.0f));
+    Scene huge = parseScene(
+        validSceneWithDisk(R"("type": "disk", "center": [0, 0, 0], "normal": [3e38, 0, 0], "radius": 1, "material": "white")"),
+        kSource);
+    EXPECT_EQ(huge.shapes[3].normal, glm::vec3(1.0f, 0.0f, 0.0f));
+}
+
+TEST(SceneLoader, RejectsBadDisk) {
+    auto disk = [](const std::string& normal, const std::string& radius) {
+        return errorFrom(validSceneWithDisk(R"("type": "disk", "center": [0, 0, 0], "normal": )" + normal +
+                                            R"(, "radius": )" + radius + R"(, "material": "white")"));
+    };
+    expectPlaceError(disk("[0, 0, 0]", "1"), "/shapes/3/normal", "expected a nonzero vector");
+    expectPlaceError(disk("[0, 0, -0.0]", "1"), "/shapes/3/normal", "expected a nonzero vector");
+    expectPlaceError(disk("[0, 1]", "1"), "/shapes/3/normal", "expected an array of 3 numbers");
+    expectPlaceError(disk("[0, 1, 0]", "0"), "/shapes/3/radius", "expected a positive number");
+    expectPlaceError(disk("[0, 1, 0]", "-2"), "/shapes/3/radius", "expected a positive number");
+    expectPlaceError(errorFrom(validSceneWithDisk(R"("type": "disk", "center": [0, 0, 0], "radius": 1, "material": "white")")),
+                     "/shapes/3/normal", "missing required key");
+    expectPlaceError(
+        errorFrom(validSceneWithDisk(R"("type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "material": "white")")),
+        "/shapes/3/radius", "missing required key");
+    expectPlaceError(errorFrom(validSceneWithDisk(
+                         R"("type": "disk", "center": [0, 0, 0], "u": [1, 0, 0], "radius": 1, "material": "white")")),
+                     "/shapes/3/u", "unknown key (expected one of: name, type, material, center, normal, radius)");
+    // Only disks take a normal.
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 0.3, \"normal\": [0, 1, 0]")),
+                     "/shapes/1/normal", "unknown key");
+}
+
+TEST(SceneLoader, SceneWithoutLightsHasNone) {
+    EXPECT_TRUE(parseScene(validScene(), kSource).lights.empty());
+    EXPECT_TRUE(parseScene(validSceneWithLights(""), kSource).lights.empty());
+}
+
+TEST(SceneLoader, ReadsPointAndSpotLightsWithDefaults) {
+    Scene scene = parseScene(validSceneWithLights(R"(
+    { "type": "point", "position": [1, 2, 3], "intensity": [10, 20, 0] },
+    { "type": "spot", "position": [0, 1.9, 0], "direction": [0, -4, 0], "intensity": [3, 3, 3] },
+    { "name": "key", "type": "spot", "position": [-1, 2, 1], "direction": [0.6, -0.8, 0], "intensity": [0, 0, 0],
+      "inner_deg": 12.5, "outer_deg": 45 },
+    { "name": "fill", "type": "point", "position": [0, 0, 0], "intensity": [0.5, 0.5, 0.5] },
+    { "type": "spot", "position": [0, 0, 0], "direction": [1, 0, 0], "intensity": [1, 1, 1],
+      "inner_deg": 90, "outer_deg": 90 })"),
+                             kSource);
+    ASSERT_EQ(scene.lights.size(), 5u);
+    const Light& point = scene.lights[0];
+    EXPECT_EQ(point.name, "point 0");
+    EXPECT_EQ(point.type, LightType::Point);
+    EXPECT_EQ(point.position, glm::vec3(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(point.intensity, glm::vec3(10.0f, 20.0f, 0.0f));
+
+    const Light& spot = scene.lights[1];
+    EXPECT_EQ(spot.name, "spot 1");
+    EXPECT_EQ(spot.type, LightType::Spot);
+    EXPECT_EQ(spot.position, glm::vec3(0.0f, 1.9f, 0.0f));
+    EXPECT_EQ(spot.direction, glm::vec3(0.0f, -1.0f, 0.0f)); // stored normalized
+    EXPECT_EQ(spot.intensity, glm::vec3(3.0f));
+    EXPECT_EQ(spot.innerAngleDeg, 20.0f); // defaults
+    EXPECT_EQ(spot.outerAngleDeg, 30.0f);
+
+    const Light& key = scene.lights[2];
+    EXPECT_EQ(key.name, "key");
+    EXPECT_EQ(key.direction, glm::vec3(0.6f, -0.8f, 0.0f));
+    EXPECT_EQ(key.intensity, glm::vec3(0.0f));
+    EXPECT_EQ(key.innerAngleDeg, 12.5f);
+    EXPECT_EQ(key.outerAngleDeg, 45.0f);
+
+    EXPECT_EQ(scene.lights[3].name, "fill");
+    EXPECT_EQ(scene.lights[3].type, LightType::Point);
+    EXPECT_EQ(scene.lights[4].name, "spot 4");
+    EXPECT_EQ(scene.lights[4].innerAngleDeg, 90.0f);
+    EXPECT_EQ(scene.lights[4].outerAngleDeg, 90.0f);
+}
+
+TEST(SceneLoader, SpotAnglesMayBeGivenOneAtATime) {
+    Scene scene = parseScene(validSceneWithLights(spotWith(R"("inner_deg": 25)") + ", " + spotWith(R"("outer_deg": 20)") +
+                                                  ", " + spotWith(R"("inner_deg": 5)") + ", " +
+                                                  spotWith(R"("outer_deg": 80)")),
+                             kSource);
+    ASSERT_EQ(scene.lights.size(), 4u);
+    EXPECT_EQ(scene.lights[0].innerAngleDeg, 25.0f);
+    EXPECT_EQ(scene.lights[0].outerAngleDeg, 30.0f);
+    EXPECT_EQ(scene.lights[1].innerAngleDeg, 20.0f); // inner == outer: a hard edge
+    EXPECT_EQ(scene.lights[1].outerAngleDeg, 20.0f);
+    EXPECT_EQ(scene.lights[2].innerAngleDeg, 5.0f);
+    EXPECT_EQ(scene.lights[3].outerAngleDeg, 80.0f);
+}
+
+TEST(SceneLoader, RejectsUnknownLightType) {
+    std::string message =
+        errorFrom(validSceneWithLights(R"({ "type": "area", "position": [0, 1, 0], "intensity": [1, 1, 1] })"));
+    EXPECT_EQ(message, std::string(kSource) + ": /lights/0/type: unknown light type \"area\" (expected point or spot)");
+}
+
+TEST(SceneLoader, RejectsBadLights) {
+    const std::string point = R"({ "type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1] })";
+    expectPlaceError(errorFrom(validSceneWithLights(
+                         R"({ "type": "point", "position": [0, 1, 0], "intensity": [1, 1, -1] })")),
+                     "/lights/0/intensity/2", "expected a non-negative number");
+    expectPlaceError(errorFrom(validSceneWithLights(
+                         point + R"(, { "type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0], "intensity": [1, 1, 1] })")),
+                     "/lights/1/direction", "expected a nonzero vector");
+    expectPlaceError(errorFrom(validSceneWithLights(point + ", " + spotWith(R"("inner_deg": 40, "outer_deg": 35)"))),
+                     "/lights/1/inner_deg", "must not exceed outer_deg (35)");
+    expectPlaceError(errorFrom(validSceneWithLights(spotWith(R"("inner_deg": 31)"))), "/lights/0/inner_deg",
+                     "must not exceed outer_deg (30, the default)");
+    expectPlaceError(errorFrom(validSceneWithLights(spotWith(R"("outer_deg": 19.5)"))), "/lights/0/outer_deg",
+                     "must not be less than inner_deg (20, the default)");
+    expectPlaceError(errorFrom(validSceneWithLights(spotWith(R"("outer_deg": 90.5)"))), "/lights/0/outer_deg",
+                     "expected a number in (0, 90]");
+    expectPlaceError(errorFrom(validSceneWithLights(spotWith(R"("inner_deg": 0)"))), "/lights/0/inner_deg",
+                     "expected a number in (0, 90]");
+    expectPlaceError(errorFrom(validSceneWithLights(spotWith(R"("inner_deg": -10)"))), "/lights/0/inner_deg",
+                     "expected a number in (0, 90]");
+    expectPlaceError(errorFrom(validSceneWithLights(spotWith(R"("inner_deg": "20")"))), "/lights/0/inner_deg",
+                     "expected a number, got a string");
+    // Keys of the other type, missing keys and misspellings.
+    expectPlaceError(errorFrom(validSceneWithLights(
+                         R"({ "type": "point", "position": [0, 1, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1] })")),
+                     "/lights/0/direction", "unknown key (expected one of: name, type, position, intensity)");
+    expectPlaceError(errorFrom(validSceneWithLights(R"({ "type": "point", "position": [0, 1, 0] })")),
+                     "/lights/0/intensity", "missing required key");
+    expectPlaceError(errorFrom(validSceneWithLights(R"({ "type": "point", "intensity": [1, 1, 1] })")),
+                     "/lights/0/position", "missing required key");
+    expectPlaceError(errorFrom(validSceneWithLights(
+                         R"({ "type": "spot", "position": [0, 1, 0], "intensity": [1, 1, 1] })")),
+                     "/lights/0/direction", "missing required key");
+    expectPlaceError(errorFrom(validSceneWithLights(R"({ "position": [0, 1, 0], "intensity": [1, 1, 1] })")),
+                     "/lights/0/type", "missing required key");
+    expectPlaceError(errorFrom(validSceneWithLights(R"({ "tpye": "point", "position": [0, 1, 0] })")),
+                     "/lights/0/tpye", "unknown key");
+    expectPlaceError(errorFrom(validSceneWithLights(R"({ "type": "point", "name": 3, "position": [0, 1, 0], "intensity": [1, 1, 1] })")),
+                     "/lights/0/name", "expected a string, got a number");
+    // The container itself.
+    expectPlaceError(errorFrom(validSceneWithLights("7")), "/lights/0", "expected an object, got a number");
+    expectPlaceError(errorFrom(validSceneWith("\n  ]\n}", "\n  ],\n  \"lights\": {}\n}")), "/lights",
+                     "expected an array, got an object");
 }
 
 } // namespace

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -66,6 +67,21 @@ void expectSameScene(const Scene& expected, const Scene& actual) {
         expectVec3Eq(e.halfSize, a.halfSize, what + " halfSize");
         expectVec3Eq(e.rotationAxis, a.rotationAxis, what + " rotationAxis");
         EXPECT_EQ(e.rotationDeg, a.rotationDeg) << what;
+        expectVec3Eq(e.normal, a.normal, what + " normal");
+    }
+
+    ASSERT_EQ(expected.lights.size(), actual.lights.size());
+    for (std::size_t i = 0; i < expected.lights.size(); ++i) {
+        const Light& e = expected.lights[i];
+        const Light& a = actual.lights[i];
+        std::string what = "light " + std::to_string(i) + " (" + e.name + ")";
+        EXPECT_EQ(e.name, a.name) << what;
+        EXPECT_EQ(e.type, a.type) << what;
+        expectVec3Eq(e.position, a.position, what + " position");
+        expectVec3Eq(e.intensity, a.intensity, what + " intensity");
+        expectVec3Eq(e.direction, a.direction, what + " direction");
+        EXPECT_EQ(e.innerAngleDeg, a.innerAngleDeg) << what;
+        EXPECT_EQ(e.outerAngleDeg, a.outerAngleDeg) << what;
     }
 }
 
@@ -316,6 +332,133 @@ TEST_F(SceneFiles, FailedSaveLeavesTheTargetIntact) {
     EXPECT_THROW(saveScene(scene, target), std::runtime_error);
     EXPECT_EQ(readFile(target), original);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+// --- Emission, disks and lights -----------------------------------------------------------------
+
+// Emission on surfaces, disks facing awkward directions and both kinds of light.
+const char* const kLitScene = R"({
+  "camera": {"eye": [0, 1, 4], "target": [0, 1, 0], "vfov_deg": 40, "resolution": [32, 24]},
+  "materials": {
+    "glowing chalk": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [0.1, 2.5e-3, 7e5]},
+    "dark chalk": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]},
+    "hot metal": {"type": "metal", "reflectance": [0.9, 0.9, 0.9], "roughness": 0.2236068, "emission": [3, 1, 0.333]},
+    "lamp": {"type": "emitter", "radiance": [5, 5, 5]}
+  },
+  "shapes": [
+    {"name": "lamp", "type": "disk", "center": [0, 1.5, -0.999], "normal": [0, 0, 1], "radius": 0.15, "material": "lamp"},
+    {"type": "disk", "center": [0.1, 0.2, 0.3], "normal": [1, 2, 3], "radius": 0.333333, "material": "glowing chalk"},
+    {"type": "disk", "center": [0, 0, 0], "normal": [-1e-20, 7, 1e-3], "radius": 12345.678, "material": "hot metal"},
+    {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "dark chalk"}
+  ],
+  "lights": [
+    {"type": "point", "position": [0.1, 1.9, -0.3], "intensity": [2.5, 2, 1.5]},
+    {"name": "key", "type": "spot", "position": [-1, 2, 1], "direction": [0.3, -1, -0.2], "intensity": [40, 35, 30],
+     "inner_deg": 12.5, "outer_deg": 33.333},
+    {"name": "hard", "type": "spot", "position": [1e-7, 0, 0], "direction": [0, -1, 0], "intensity": [0, 0, 0],
+     "inner_deg": 90, "outer_deg": 90},
+    {"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1]}
+  ]
+})";
+
+TEST(SceneWriter, EmissionDisksAndLightsRoundTripExactly) {
+    Scene scene = parseScene(kLitScene, "lit.json");
+    ASSERT_EQ(scene.shapes.size(), 4u);
+    ASSERT_EQ(scene.lights.size(), 4u);
+    Scene written = roundTrip(scene);
+    expectSameScene(scene, written);
+    EXPECT_EQ(sceneToJson(written), sceneToJson(scene));
+}
+
+TEST(SceneWriter, WritesEmissionOnlyWhenItGlows) {
+    Scene scene = parseScene(kLitScene, "lit.json");
+    std::string text = sceneToJson(scene);
+    EXPECT_NE(text.find(R"("glowing chalk": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [0.1, 0.0025, 700000]})"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(R"("dark chalk": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]})"), std::string::npos) << text;
+    EXPECT_NE(text.find(R"("lamp": {"type": "emitter", "radiance": [5, 5, 5]})"), std::string::npos) << text;
+
+    // Every type but the emitter may glow, and each reads back with its glow.
+    for (const MaterialSchema& schema : kMaterialSchemas) {
+        if (schema.radianceRequired) continue;
+        SCOPED_TRACE(schema.name);
+        Scene retyped = scene;
+        retyped.materials[1].type = schema.type;
+        retyped.materials[1].radiance = glm::vec3(0.0f, 1.5f, 0.0f);
+        std::string retypedText = sceneToJson(retyped);
+        EXPECT_NE(retypedText.find(R"("emission": [0, 1.5, 0])"), std::string::npos) << retypedText;
+        expectSameScene(retyped, roundTrip(retyped));
+    }
+}
+
+TEST(SceneWriter, WritesDisksAndLightsReadably) {
+    Scene scene = parseScene(kLitScene, "lit.json");
+    std::string text = sceneToJson(scene);
+    // A disk or a spot light does not fit one line; a point light does.
+    EXPECT_NE(text.find("\n      \"type\": \"disk\",\n      \"center\": [0, 1.5, -0.999],\n      \"normal\": [0, 0, 1],\n"
+                        "      \"radius\": 0.15,\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("\n  \"lights\": [\n    {\"name\": \"point 0\", \"type\": \"point\", \"position\": [0.1, 1.9, -0.3], "
+                        "\"intensity\": [2.5, 2, 1.5]},\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("\n      \"name\": \"spot 3\",\n      \"type\": \"spot\",\n      \"position\": [0, 3, 0],\n"
+                        "      \"direction\": [0, -1, 0],\n      \"intensity\": [1, 1, 1],\n      \"inner_deg\": 20,\n"
+                        "      \"outer_deg\": 30\n    }\n  ]\n}\n"),
+              std::string::npos)
+        << text;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 120u) << line;
+}
+
+TEST(SceneWriter, LeavesOutEmptyLights) {
+    Scene scene = parseScene(kLitScene, "lit.json");
+    scene.lights.clear();
+    std::string text = sceneToJson(scene);
+    EXPECT_EQ(text.find("\"lights\""), std::string::npos) << text;
+    expectSameScene(scene, roundTrip(scene));
+}
+
+TEST(SceneWriter, NormalizedDirectionsReadBackBitForBit) {
+    // The loader normalizes disk normals and spot directions; what it stored must not move when
+    // the written file is normalized again.
+    std::string shapes;
+    std::string lights;
+    std::uint32_t state = 12345u;
+    auto component = [&state]() {
+        state = state * 1664525u + 1013904223u; // any spread of values will do
+        return static_cast<float>(static_cast<std::int32_t>(state >> 8) - (1 << 23)) / static_cast<float>(1 << 20);
+    };
+    for (int i = 0; i < 500; ++i) {
+        std::ostringstream vector;
+        vector.precision(9);
+        vector << "[" << component() << ", " << component() << ", " << component() << "]";
+        shapes += std::string(i ? ", " : "") + R"({"type": "disk", "center": [0, 0, 0], "normal": )" + vector.str() +
+                  R"(, "radius": 1, "material": "m"})";
+        lights += std::string(i ? ", " : "") + R"({"type": "spot", "position": [0, 0, 0], "direction": )" +
+                  vector.str() + R"(, "intensity": [1, 1, 1]})";
+    }
+    Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8]},
+        "materials": {"m": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+        "shapes": [)" + shapes + R"(], "lights": [)" + lights + "]}",
+                             "directions.json");
+    ASSERT_EQ(scene.shapes.size(), 500u);
+    for (const Shape& disk : scene.shapes) EXPECT_NEAR(glm::length(disk.normal), 1.0f, 1e-6f);
+    expectSameScene(scene, roundTrip(scene));
+}
+
+TEST(SceneWriter, EveryShippedSceneRoundTrips) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(PTVIEW_ASSETS_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().filename().string());
+        Scene scene = loadScene(entry.path());
+        expectSameScene(scene, roundTrip(scene));
+        ++count;
+    }
+    EXPECT_GE(count, 5);
 }
 
 } // namespace
