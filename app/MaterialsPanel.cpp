@@ -42,6 +42,8 @@ Material retyped(const Material& material, MaterialType type, const glm::vec3& s
         result.radiance = emitterColor(shownColor) * kDefaultStrength;
     } else {
         result.color = shownColor;
+        // Emission carries over between surface types; an emitter turned surface stops emitting.
+        if (material.type != MaterialType::Emitter) result.radiance = material.radiance;
     }
     if (to.hasIor) result.ior = from.hasIor ? material.ior : kLoaderIor;
     if (to.hasRoughness) result.roughness = from.hasRoughness ? material.roughness : kDefaultRoughness;
@@ -146,6 +148,11 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
             changed = true;
         }
         tooltip(colorTooltip(material.type));
+    }
+    if (material.type != MaterialType::Emitter) {
+        if (ImGui::DragFloat3("emission", &material.radiance.x, 0.05f, 0.0f, 1e4f, "%.2f", ImGuiSliderFlags_AlwaysClamp))
+            changed = true;
+        tooltip("radiance the surface emits from its front side, on top of what it reflects (W sr^-1 m^-2)");
     }
     if (current.hasIor) {
         changed |= ImGui::SliderFloat("ior", &material.ior, 1.0f, 4.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
