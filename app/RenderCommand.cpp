@@ -1,5 +1,6 @@
 #include "RenderCommand.h"
 
+#include "EnvironmentMap.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
 #include "PathTracer.h"
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 namespace ptview {
 namespace {
@@ -78,9 +80,14 @@ int runRenderCommand(const RenderOptions& options) {
     }
 
     Scene scene;
+    std::optional<EnvironmentMap> environmentMap; // read here so that a bad file is bad input
     try {
         scene = loadScene(options.scenePath);
+        if (!scene.environmentMap.empty()) environmentMap = loadEnvironmentMap(scene.environmentMap);
     } catch (const SceneError& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const EnvironmentMapError& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;
     }
@@ -89,7 +96,7 @@ int runRenderCommand(const RenderOptions& options) {
     try {
         HeadlessContext context;
         PathTracer tracer;
-        tracer.setScene(scene);
+        tracer.setScene(scene, environmentMap ? &*environmentMap : nullptr);
         tracer.setImageSize(size);
         RenderSettings settings = options.settings;
         settings.sampleBudget = static_cast<std::uint32_t>(options.samplesPerPixel); // fully stratified at the end
@@ -120,6 +127,9 @@ int runRenderCommand(const RenderOptions& options) {
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
                      seconds, samples / seconds * 1e-6, context.description().c_str());
     } catch (const std::invalid_argument& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const EnvironmentMapError& e) { // too large for this GPU
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;
     } catch (const std::exception& e) {

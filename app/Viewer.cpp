@@ -1,5 +1,6 @@
 #include "Viewer.h"
 
+#include "EnvironmentMap.h"
 #include "ImageIO.h"
 #include "MaterialsPanel.h"
 #include "PathTracer.h"
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 namespace ptview {
 namespace {
@@ -92,9 +94,14 @@ void drawRenderPanel(const Scene& scene, PathTracer& tracer, RenderSettings& set
 
 int runViewer(const ViewerOptions& options) {
     Scene scene;
+    std::optional<EnvironmentMap> environmentMap; // read before opening a window: a bad file is bad input
     try {
         scene = loadScene(options.scenePath);
+        if (!scene.environmentMap.empty()) environmentMap = loadEnvironmentMap(scene.environmentMap);
     } catch (const SceneError& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const EnvironmentMapError& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;
     }
@@ -133,7 +140,7 @@ int runViewer(const ViewerOptions& options) {
     int exitCode = 0;
     try {
         PathTracer tracer;
-        tracer.setScene(scene);
+        tracer.setScene(scene, environmentMap ? &*environmentMap : nullptr);
         RenderSettings settings = options.settings;
         float exposureStops = options.exposureStops;
         FrameStats stats;

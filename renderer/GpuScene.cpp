@@ -184,7 +184,7 @@ const char* const GpuScene::kSamplerNames[kTextureCount] = {
     "uSpheres", "uSphereIds", "uQuads", "uQuadIds", "uDisks", "uDiskIds",
     "uMaterialParams", "uMaterialTypes", "uLights", "uLightCdf"};
 
-void GpuScene::upload(const Scene& scene) {
+void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMeanRadiance) {
     for (BufferTexture& slot : textures_) {
         if (slot.buffer.id() == 0) {
             slot.buffer = createBuffer();
@@ -195,7 +195,7 @@ void GpuScene::upload(const Scene& scene) {
     fillBufferTexture(textures_[0].buffer.id(), textures_[0].texture.id(), GL_RGBA32F, geometry_.spheres);
     fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, geometry_.quads);
     fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, geometry_.disks);
-    environmentRadiance_ = scene.environment;
+    environmentRadiance_ = environmentMeanRadiance.value_or(scene.environment);
     uploadMaterials(scene.materials);
 }
 

@@ -7,6 +7,7 @@
 #include "Scene.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace ptview {
@@ -47,7 +48,9 @@ public:
     // The sampler uniforms of shaders/scene_data.glsl, in the order bind() uses units.
     static const char* const kSamplerNames[kTextureCount];
 
-    void upload(const Scene& scene);
+    // environmentMeanRadiance: the environment's radiance averaged over all directions, which sets
+    // its share of light samples; by default scene.environment (an environment map's mean instead).
+    void upload(const Scene& scene, std::optional<glm::vec3> environmentMeanRadiance = std::nullopt);
     // Material edits only: no geometry is re-sent and nothing is recompiled. The light table is
     // rebuilt, since an edit can make a surface an emitter or change its power.
     void uploadMaterials(const std::vector<Material>& materials);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace ptview {
@@ -13,6 +14,9 @@ namespace {
 constexpr GLuint kFrameBlockBinding = 0;
 constexpr int kAccumulationUnit = 0;                             // units 0..2
 constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..12
+constexpr int kEnvironmentUnit = 13; // units 13..15: the last that OpenGL 4.1 guarantees (16)
+static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
+static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
 
 // Our passes own all of this state; ImGui or a caller may have changed it.
 void resetPassState() {
@@ -40,6 +44,7 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir) {
     diskCountLocation_ = trace.uniformLocation("uDiskCount");
     lightCountLocation_ = trace.uniformLocation("uLightCount");
     environmentLightLocation_ = trace.uniformLocation("uEnvironmentLight");
+    environmentMap_.attach(trace, kEnvironmentUnit);
 
     const GlProgram& show = *displayProgram_;
     show.bindSamplerUnit("uSum", 0);
@@ -55,8 +60,15 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir) {
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
-void PathTracer::setScene(const Scene& scene) {
-    gpuScene_.upload(scene);
+void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentMap) {
+    std::optional<EnvironmentMap> loaded;
+    if (!environmentMap && !scene.environmentMap.empty()) environmentMap = &loaded.emplace(loadEnvironmentMap(scene.environmentMap));
+    environmentMap_.upload(scene.environmentMap.empty() ? nullptr : environmentMap, scene.environmentIntensity,
+                           scene.environmentRotationDeg);
+    if (environmentMap_.hasMap())
+        gpuScene_.upload(scene, environmentMap_.meanRadiance());
+    else
+        gpuScene_.upload(scene);
     glUseProgram(pathTraceProgram_->id());
     glUniform1i(sphereCountLocation_, gpuScene_.sphereCount());
     glUniform1i(quadCountLocation_, gpuScene_.quadCount());
@@ -120,6 +132,7 @@ void PathTracer::renderSample() {
     glUseProgram(pathTraceProgram_->id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
     gpuScene_.bind(kSceneUnit);
+    environmentMap_.bind();
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

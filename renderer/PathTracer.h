@@ -5,7 +5,9 @@
 
 #include "Accumulator.h"
 #include "GlObjects.h"
+#include "EnvironmentMap.h"
 #include "GlProgram.h"
+#include "GpuEnvironmentMap.h"
 #include "GpuScene.h"
 #include "Image.h"
 #include "Integrator.h"
@@ -40,7 +42,9 @@ public:
     explicit PathTracer(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
 
     // Each of these restarts accumulation.
-    void setScene(const Scene& scene);
+    // Reads scene.environmentMap unless the caller already has (environmentMap, to report a bad
+    // file before any GPU work); throws EnvironmentMapError naming the file.
+    void setScene(const Scene& scene, const EnvironmentMap* environmentMap = nullptr);
     // Live material edits (same count and order as the scene's): re-sent to the GPU as they are,
     // no shader is recompiled; the next sample already uses them.
     void setMaterials(const std::vector<Material>& materials);
@@ -79,6 +83,7 @@ private:
     GlVertexArray emptyVertexArray_; // core profile needs a VAO bound even without attributes
     GlBuffer frameUniformBuffer_;
     GpuScene gpuScene_;
+    GpuEnvironmentMap environmentMap_;
     Accumulator accumulator_;
 
     CameraDesc camera_;

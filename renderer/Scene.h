@@ -68,7 +68,14 @@ struct Light {
 struct Scene {
     std::filesystem::path path; // where it was loaded from; empty for scenes built in code
     CameraDesc camera;
-    glm::vec3 environment{0.0f}; // radiance of rays that escape the scene
+    glm::vec3 environment{0.0f}; // radiance of rays that escape the scene (when there is no map)
+    // An equirectangular Radiance .hdr around the scene (docs/scene-format.md gives its
+    // orientation); empty for none. Then escaping rays get map(direction) * environmentIntensity
+    // and `environment` is unused. A file's relative path is resolved against its directory on
+    // loading, so this is relative to the working directory, or absolute; the renderer reads it.
+    std::filesystem::path environmentMap;
+    float environmentIntensity = 1.0f;   // >= 0
+    float environmentRotationDeg = 0.0f; // about +Y, right-hand rule
     std::vector<Material> materials;
     std::vector<Shape> shapes;
     std::vector<Light> lights;

@@ -368,11 +368,31 @@ CameraDesc readCamera(const Json& value, const Pointer& at) {
     return camera;
 }
 
-glm::vec3 readEnvironment(const Json& value, const Pointer& at) {
+// Either a constant "color" or a "map" (scaled by "intensity", turned by "rotation_deg"), never
+// both: a colour beside a map would be silently unused. The map's path stays as written here;
+// parseScene resolves it against the file's directory.
+void readEnvironment(const Json& value, const Pointer& at, Scene& scene) {
     requireObject(value, at);
-    checkKeys(value, at, {"color"});
-    return readVec3(requireKey(value, at, "color"), at / "color",
-                    [](float c) { return c >= 0.0f; }, "a non-negative number");
+    checkKeys(value, at, {"color", "map", "intensity", "rotation_deg"});
+    const Json* map = optionalKey(value, "map");
+    if (!map) {
+        for (const char* key : {"intensity", "rotation_deg"})
+            if (optionalKey(value, key)) fail(at / key, "only allowed with \"map\"");
+        if (!optionalKey(value, "color")) fail(at / "color", "missing required key (or give \"map\")");
+        scene.environment = readVec3(value.at("color"), at / "color",
+                                     [](float c) { return c >= 0.0f; }, "a non-negative number");
+        return;
+    }
+    if (optionalKey(value, "color")) fail(at / "color", "not allowed with \"map\" (the map gives the radiance)");
+    std::string path = readString(*map, at / "map");
+    if (path.empty()) fail(at / "map", "expected a file name, got an empty string");
+    scene.environmentMap = std::filesystem::u8path(path);
+    if (const Json* intensity = optionalKey(value, "intensity")) {
+        scene.environmentIntensity = readNumber(*intensity, at / "intensity");
+        if (!(scene.environmentIntensity >= 0.0f)) fail(at / "intensity", "expected a non-negative number");
+    }
+    if (const Json* rotation = optionalKey(value, "rotation_deg"))
+        scene.environmentRotationDeg = readNumber(*rotation, at / "rotation_deg");
 }
 
 Material readMaterial(const std::string& name, const Json& value, const Pointer& at) {
@@ -561,7 +581,7 @@ Scene readScene(const Json& root) {
     Scene scene;
     scene.camera = readCamera(requireKey(root, top, "camera"), top / "camera");
     if (const Json* environment = optionalKey(root, "environment"))
-        scene.environment = readEnvironment(*environment, top / "environment");
+        readEnvironment(*environment, top / "environment", scene);
 
     const Pointer materialsAt = top / "materials";
     const Json& materials = requireObject(requireKey(root, top, "materials"), materialsAt);
@@ -612,6 +632,10 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         Json::sax_parse(jsonText, &builder, Json::input_format_t::json, /*strict=*/true);
         Scene scene = readScene(builder.root);
         scene.path = sourceName;
+        // Relative to the scene file, as people write them; not normalised, so that ".." means
+        // what the file system says even through symbolic links.
+        if (!scene.environmentMap.empty() && scene.environmentMap.is_relative())
+            scene.environmentMap = sourceName.parent_path() / scene.environmentMap;
         return scene;
     } catch (const SyntaxError& error) {
         auto [line, column] = lineAndColumn(jsonText, error.offset);

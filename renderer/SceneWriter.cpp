@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -217,12 +219,33 @@ Json lightJson(const Light& light) {
     return json;
 }
 
+// The map's path as the loader resolves it: relative to the directory the scene file is read
+// from, or absolute when the two share nothing below the root (a relative path would then climb
+// all the way up).
+std::string environmentMapText(const std::filesystem::path& map, const std::filesystem::path& fileDirectory) {
+    namespace fs = std::filesystem;
+    fs::path target = fs::absolute(map).lexically_normal();
+    fs::path base = fs::absolute(fileDirectory.empty() ? fs::path(".") : fileDirectory).lexically_normal();
+    auto t = target.begin(), b = base.begin();
+    bool sharesTop = target.root_path() == base.root_path() && std::distance(t, target.end()) > 1 &&
+                     std::distance(b, base.end()) > 1 && *std::next(t) == *std::next(b);
+    fs::path relative = sharesTop ? target.lexically_relative(base) : fs::path();
+    return (relative.empty() ? target : relative).generic_u8string();
+}
+
+Json environmentJson(const Scene& scene) {
+    if (scene.environmentMap.empty()) return Json{{"color", vec3(scene.environment)}};
+    return Json{{"map", environmentMapText(scene.environmentMap, scene.path.parent_path())},
+                {"intensity", number(scene.environmentIntensity)},
+                {"rotation_deg", number(scene.environmentRotationDeg)}};
+}
+
 } // namespace
 
 std::string sceneToJson(const Scene& scene) {
     Json root;
     root["camera"] = cameraJson(scene.camera);
-    root["environment"] = Json{{"color", vec3(scene.environment)}};
+    root["environment"] = environmentJson(scene);
 
     Json materials = Json::object();
     for (const Material& material : scene.materials) {
@@ -252,7 +275,9 @@ std::string sceneToJson(const Scene& scene) {
 void saveScene(const Scene& scene, const std::filesystem::path& path) {
     std::string text;
     try {
-        text = sceneToJson(scene);
+        Scene placed = scene; // the environment map's path is written relative to the new file
+        placed.path = path;
+        text = sceneToJson(placed);
         // Names the file already: parseScene's messages start with the source name.
         parseScene(text, path);
     } catch (const SceneError& error) {

@@ -14,12 +14,14 @@ namespace ptview {
 // use are not kept (they read back as the loader's defaults); a box rotation of 0 degrees, a
 // black "emission" and an empty "lights" are left out. Throws std::runtime_error, naming the
 // place as a JSON pointer, for a model no file can hold: a number that is not finite, a shape
-// whose material index is out of range, two materials with the same name.
+// whose material index is out of range, two materials with the same name. An environment map's
+// path is written relative to the directory of scene.path (where the file will be read from).
 std::string sceneToJson(const Scene& scene);
 
 // Writes sceneToJson(scene) to path, replacing the file only once the new one is complete, and
 // only if it loads back (so a model the loader would reject, such as an albedo above 1, is never
-// saved). Throws std::runtime_error naming the file; the file is then left as it was.
+// saved). An environment map's path is written relative to path's directory. Throws
+// std::runtime_error naming the file; the file is then left as it was.
 void saveScene(const Scene& scene, const std::filesystem::path& path);
 
 } // namespace ptview

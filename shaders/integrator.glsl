@@ -18,6 +18,7 @@
 #include "shading_frame.glsl"
 #include "emission.glsl"
 #include "lights.glsl"
+#include "environment_map.glsl"
 
 const uint kIntegratorNaive = 0u;
 const uint kIntegratorDirect = 1u;
@@ -81,7 +82,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (!found) {
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
-                radiance += throughput * uEnvironmentRadiance * weight;
+                radiance += throughput * environmentRadiance(ray.direction) * weight;
             } else {
                 vec3 emitted = emittedRadiance(fetchMaterial(hit.material), hit.normalGeom, -ray.direction);
                 if (any(greaterThan(emitted, vec3(0.0)))) {

@@ -3,10 +3,10 @@
 //
 // Kinds: emissive quads and disks (sampled uniformly by area), emissive spheres (sampled within
 // the cone of directions they subtend when seen from outside, which wastes no sample on the
-// hidden half; by area from inside), the environment (uniform over the sphere), and point and
-// spot lights (delta: one direction, no density; BSDF sampling never finds them, so they never
-// take part in MIS). Area lights radiate from their front side only. Densities are in solid angle
-// at the shading point.
+// hidden half; by area from inside), the environment (by luminance for a map, uniform over the
+// sphere for a constant colour: environment_map.glsl), and point and spot lights (delta: one
+// direction, no density; BSDF sampling never finds them, so they never take part in MIS). Area
+// lights radiate from their front side only. Densities are in solid angle at the shading point.
 //
 // uLights holds four texels per light: (kind, primitive, -, -) as uint bits, (position,
 // cosInner), (direction, cosOuter), (intensity, -); see GpuLight in renderer/GpuLayout.h.
@@ -15,6 +15,7 @@
 #include "emission.glsl"
 #include "warps.glsl"
 #include "shading_frame.glsl"
+#include "environment_map.glsl"
 
 const uint kLightQuad = 0u;
 const uint kLightSphere = 1u;
@@ -73,7 +74,9 @@ LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
     uint kind = kindAndPrimitive.x;
     int primitive = int(kindAndPrimitive.y);
     if (kind == kLightEnvironment) {
-        return LightSample(sampleUniformSphere(u), kInfinity, uEnvironmentRadiance, uniformSpherePdf(vec3(0.0)), false);
+        float pdfSolidAngle;
+        vec3 wi = sampleEnvironment(u, pdfSolidAngle);
+        return LightSample(wi, kInfinity, environmentRadiance(wi), pdfSolidAngle, false);
     }
     if (kind == kLightPoint || kind == kLightSpot) {
         vec4 positionAndCosInner = texelFetch(uLights, 4 * light + 1);
@@ -144,7 +147,7 @@ float lightPdf(int light, vec3 posWorld, vec3 wi, float hitDistance, vec3 hitNor
     uvec2 kindAndPrimitive = lightKindAndPrimitive(light);
     uint kind = kindAndPrimitive.x;
     int primitive = int(kindAndPrimitive.y);
-    if (kind == kLightEnvironment) return uniformSpherePdf(wi);
+    if (kind == kLightEnvironment) return environmentPdf(wi);
     if (kind == kLightPoint || kind == kLightSpot) return 0.0;
     float cosLight = abs(dot(hitNormal, wi));
     if (cosLight == 0.0) return 0.0;
