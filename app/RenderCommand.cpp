@@ -5,6 +5,7 @@
 #include "ImageIO.h"
 #include "PathTracer.h"
 #include "Scene.h"
+#include "SceneInput.h"
 #include "ShaderAssembler.h"
 
 #include <unistd.h>
@@ -79,24 +80,15 @@ int runRenderCommand(const RenderOptions& options) {
         return kExitBadInput;
     }
 
-    Scene scene;
-    std::optional<EnvironmentMap> environmentMap; // read here so that a bad file is bad input
-    try {
-        scene = loadScene(options.scenePath);
-        if (!scene.environmentMap.empty()) environmentMap = loadEnvironmentMap(scene.environmentMap);
-    } catch (const SceneError& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
-    } catch (const EnvironmentMapError& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
-    }
+    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    if (!input) return kExitBadInput;
+    Scene scene = std::move(input->scene);
     glm::ivec2 size = options.size.value_or(scene.camera.resolution);
 
     try {
         HeadlessContext context;
         PathTracer tracer;
-        tracer.setScene(scene, environmentMap ? &*environmentMap : nullptr);
+        tracer.setScene(scene, input->environmentMapOrNull());
         tracer.setImageSize(size);
         RenderSettings settings = options.settings;
         settings.sampleBudget = static_cast<std::uint32_t>(options.samplesPerPixel); // fully stratified at the end

@@ -6,6 +6,7 @@
 #include "PathTracer.h"
 #include "Readback.h"
 #include "Scene.h"
+#include "SceneInput.h"
 #include "WarpVisualizer.h"
 
 #include <glad/gl.h>
@@ -93,18 +94,9 @@ void drawRenderPanel(const Scene& scene, PathTracer& tracer, RenderSettings& set
 } // namespace
 
 int runViewer(const ViewerOptions& options) {
-    Scene scene;
-    std::optional<EnvironmentMap> environmentMap; // read before opening a window: a bad file is bad input
-    try {
-        scene = loadScene(options.scenePath);
-        if (!scene.environmentMap.empty()) environmentMap = loadEnvironmentMap(scene.environmentMap);
-    } catch (const SceneError& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
-    } catch (const EnvironmentMapError& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
-    }
+    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    if (!input) return kExitBadInput;
+    Scene scene = std::move(input->scene);
 
     glfwSetErrorCallback(reportGlfwError);
     if (!glfwInit()) {
@@ -140,7 +132,7 @@ int runViewer(const ViewerOptions& options) {
     int exitCode = 0;
     try {
         PathTracer tracer;
-        tracer.setScene(scene, environmentMap ? &*environmentMap : nullptr);
+        tracer.setScene(scene, input->environmentMapOrNull());
         RenderSettings settings = options.settings;
         float exposureStops = options.exposureStops;
         FrameStats stats;

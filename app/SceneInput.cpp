@@ -1,0 +1,22 @@
+#include "SceneInput.h"
+
+#include <iostream>
+
+namespace ptview {
+
+std::optional<SceneInput> loadSceneInput(const std::string& scenePath) {
+    SceneInput input;
+    try {
+        input.scene = loadScene(scenePath);
+        if (!input.scene.environmentMap.empty()) input.environmentMap = loadEnvironmentMap(input.scene.environmentMap);
+    } catch (const SceneError& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return std::nullopt;
+    } catch (const EnvironmentMapError& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return std::nullopt;
+    }
+    return input;
+}
+
+} // namespace ptview
