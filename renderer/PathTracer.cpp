@@ -65,10 +65,7 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
     if (!environmentMap && !scene.environmentMap.empty()) environmentMap = &loaded.emplace(loadEnvironmentMap(scene.environmentMap));
     environmentMap_.upload(scene.environmentMap.empty() ? nullptr : environmentMap, scene.environmentIntensity,
                            scene.environmentRotationDeg);
-    if (environmentMap_.hasMap())
-        gpuScene_.upload(scene, environmentMap_.meanRadiance());
-    else
-        gpuScene_.upload(scene);
+    gpuScene_.upload(scene, environmentMap_.hasMap() ? std::optional<glm::vec3>(environmentMap_.meanRadiance()) : std::nullopt);
     glUseProgram(pathTraceProgram_->id());
     glUniform1i(sphereCountLocation_, gpuScene_.sphereCount());
     glUniform1i(quadCountLocation_, gpuScene_.quadCount());

@@ -75,26 +75,27 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         bool found = intersectScene(ray, hit);
 
         // ---- Emission reached by the camera ray or a BSDF sample -------------------------------
-        // Light sampling already counted emission one bounce further than the camera unless MIS
-        // shares it; `direct` counts only what the camera sees.
+        // `direct` counts only what the camera sees (light sampling covers the next bounce);
+        // `mis` and `full` count it with the weight of BSDF sampling against light sampling.
         bool countEmission = bounce == 0 || !lightSampling || mis;
-        if (countEmission) {
-            if (!found) {
+        if (!found) {
+            if (countEmission) {
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
                 radiance += throughput * environmentRadiance(ray.direction) * weight;
-            } else {
-                vec3 emitted = emittedRadiance(fetchMaterial(hit.material), hit.normalGeom, -ray.direction);
-                if (any(greaterThan(emitted, vec3(0.0)))) {
-                    float weight = (!lightSampling || previousDelta) ? 1.0
-                                 : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
-                    radiance += throughput * emitted * weight;
-                }
+            }
+            break;
+        }
+        Material material = fetchMaterial(hit.material);
+        if (countEmission) {
+            vec3 emitted = emittedRadiance(material, hit.normalGeom, -ray.direction);
+            if (any(greaterThan(emitted, vec3(0.0)))) {
+                float weight = (!lightSampling || previousDelta) ? 1.0
+                             : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
+                radiance += throughput * emitted * weight;
             }
         }
-        if (!found || bounce == lastBounce) break;
-        Material material = fetchMaterial(hit.material);
-        if (material.type == kMaterialEmitter) break; // emitters reflect nothing
+        if (bounce == lastBounce || material.type == kMaterialEmitter) break; // emitters reflect nothing
 
         ShadingFrame frame = makeShadingFrame(hit.normalGeom); // BSDFs handle either side themselves
         vec3 woLocal = toLocal(frame, -ray.direction);
