@@ -5,6 +5,7 @@
 #include "ImageIO.h"
 #include "PathTracer.h"
 #include "Scene.h"
+#include "OutputPath.h"
 #include "SceneInput.h"
 #include "ShaderAssembler.h"
 
@@ -63,22 +64,9 @@ private:
 
 int runRenderCommand(const RenderOptions& options) {
     // Everything the user typed is checked before any GPU work, and no file is written on error.
-    std::string extension = std::filesystem::path(options.outPath).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
-    OutputFormat format;
-    if (extension == ".png") {
-        format = OutputFormat::Png;
-    } else if (extension == ".pfm") {
-        format = OutputFormat::Pfm;
-    } else {
-        std::cerr << "ptview: " << options.outPath << ": unsupported output format (use .png or .pfm)\n";
-        return kExitBadInput;
-    }
-    std::filesystem::path outDir = std::filesystem::path(options.outPath).parent_path();
-    if (!outDir.empty() && !std::filesystem::is_directory(outDir)) {
-        std::cerr << "ptview: " << options.outPath << ": directory " << outDir << " does not exist\n";
-        return kExitBadInput;
-    }
+    std::optional<std::string> extension = checkOutputPath(options.outPath, {".png", ".pfm"});
+    if (!extension) return kExitBadInput;
+    OutputFormat format = *extension == ".png" ? OutputFormat::Png : OutputFormat::Pfm;
 
     std::optional<SceneInput> input = loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;

@@ -1,5 +1,7 @@
 #include "WarpCommand.h"
 
+#include "OutputPath.h"
+
 #include "HeadlessContext.h"
 #include "ImageIO.h"
 #include "WarpView.h"
@@ -11,17 +13,7 @@
 namespace ptview {
 
 int runWarpCommand(const WarpOptions& options) {
-    std::filesystem::path out(options.outPath);
-    std::string extension = out.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
-    if (extension != ".png") {
-        std::cerr << "ptview: " << options.outPath << ": unsupported output format (use .png)\n";
-        return kExitBadInput;
-    }
-    if (!out.parent_path().empty() && !std::filesystem::is_directory(out.parent_path())) {
-        std::cerr << "ptview: " << options.outPath << ": directory " << out.parent_path() << " does not exist\n";
-        return kExitBadInput;
-    }
+    if (!checkOutputPath(options.outPath, {".png"})) return kExitBadInput;
     try {
         HeadlessContext context;
         WarpProbe probe;
@@ -29,7 +21,7 @@ int runWarpCommand(const WarpOptions& options) {
         const WarpInfo& info = warpInfo(options.request.warp);
         view.setSamples(info.domain, probe.sample(options.request),
                         options.request.warp == Warp::UniformCone ? options.request.cosThetaMax : -1.0f);
-        writePng(out, view.renderImage(glm::ivec2(options.imageSize), defaultWarpCamera(info.domain)));
+        writePng(options.outPath, view.renderImage(glm::ivec2(options.imageSize), defaultWarpCamera(info.domain)));
         std::fprintf(stderr, "ptview: wrote %s (%d points, %s warp, %s sampler)\n", options.outPath.c_str(),
                      options.request.count, info.name, samplerModeName(options.request.sampler));
     } catch (const std::exception& e) {
