@@ -38,7 +38,7 @@ void addSamplerOption(CLI::App& app, SamplerMode& sampler) {
     addNamedOption(app, "--sampler", sampler, "sampler", names)->default_str(samplerModeName(sampler));
 }
 
-void addRenderSettings(CLI::App& app, RenderSettings& settings, float& exposureStops) {
+void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings& display) {
     addSamplerOption(app, settings.sampler);
     std::vector<std::pair<std::string, Integrator>> integrators;
     for (const IntegratorName& entry : integratorNames()) integrators.emplace_back(entry.name, entry.integrator);
@@ -48,8 +48,12 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, float& exposureS
         ->check(CLI::Range(0, 1024))->capture_default_str();
     app.add_option("--seed", settings.seed, "random seed; renders with different seeds are independent")
         ->capture_default_str();
-    app.add_option("--exposure", exposureStops, "exposure in stops applied before tone mapping")
+    app.add_option("--exposure", display.exposureStops, "exposure in stops applied before tone mapping")
         ->check(CLI::Range(-20.0f, 20.0f))->capture_default_str();
+    std::vector<std::pair<std::string, ToneMapper>> toneMappers;
+    for (const ToneMapperName& entry : toneMapperNames()) toneMappers.emplace_back(entry.name, entry.toneMapper);
+    addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMappers)
+        ->default_str(toneMapperName(display.toneMapper));
 }
 
 const CLI::Validator kImageSize(
@@ -72,10 +76,14 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     ViewerOptions& viewer = out.viewer;
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
     app.add_option("scene", viewer.scenePath, "scene JSON to open")->capture_default_str();
-    addRenderSettings(app, viewer.settings, viewer.exposureStops);
+    addRenderSettings(app, viewer.settings, viewer.display);
     app.add_option("--frames", viewer.frames, "render this many frames, save --screenshot and exit")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
+    app.add_option("--script", viewer.scriptPath, "run viewer commands from FILE (docs/viewer-script.md)")
+        ->check(CLI::ExistingFile);
+    app.add_option("--shader-dir", viewer.shaderDir, "compile (and hot-reload) the GLSL in this directory")
+        ->check(CLI::ExistingDirectory)->capture_default_str();
     std::vector<std::pair<std::string, Warp>> warpNames;
     for (const WarpInfo& info : warpInfos()) warpNames.emplace_back(info.name, info.warp);
     addNamedOption(app, "--warp", viewer.warp.warp, "warp", warpNames)
@@ -91,7 +99,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::Range(1, 1 << 24))->capture_default_str();
     renderCommand->add_option("--size", sizeText, "image size WxH (default: the scene's resolution)")
         ->check(kImageSize);
-    addRenderSettings(*renderCommand, render.settings, render.exposureStops);
+    addRenderSettings(*renderCommand, render.settings, render.display);
 
     WarpOptions& warp = out.warp;
     float coneAngleDeg = 60.0f;

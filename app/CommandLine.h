@@ -21,16 +21,18 @@ struct RenderOptions {
     int samplesPerPixel = 256;
     std::optional<glm::ivec2> size; // default: the scene camera's resolution
     RenderSettings settings;
-    float exposureStops = 0.0f;
+    DisplaySettings display;
 };
 
 struct ViewerOptions {
     std::string scenePath;
     RenderSettings settings;
-    float exposureStops = 0.0f;
+    DisplaySettings display;
     int frames = 0;              // > 0: render this many frames, save the screenshot, exit
     std::string screenshotPath;
     bool showWarp = false;       // open in the warp visualizer
+    std::string scriptPath;      // commands to run in the viewer (docs/viewer-script.md)
+    std::string shaderDir = PTVIEW_SHADER_DIR; // GLSL to compile and watch for hot reload
     WarpRequest warp{Warp::CosineHemisphere, SamplerMode::Random, 1024};
 };
 

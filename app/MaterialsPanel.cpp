@@ -1,7 +1,6 @@
 #include "MaterialsPanel.h"
 
 #include "MaterialSchema.h"
-#include "SceneWriter.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -12,7 +11,6 @@
 namespace ptview {
 namespace {
 
-constexpr float kPanelWidth = 320.0f;
 constexpr float kDefaultStrength = 10.0f; // a surface turned emitter lights the Cornell box
 constexpr float kDefaultRoughness = 0.2f; // visibly rough, so metal and plastic differ from mirror
 // What the loader gives a type that does not have the parameter, so that an edited model equals
@@ -50,6 +48,19 @@ Material retyped(const Material& material, MaterialType type, const glm::vec3& s
     return result;
 }
 
+} // namespace
+
+Material retypedMaterial(const Material& material, MaterialType type) {
+    glm::vec3 shownColor = material.color;
+    if (material.type == MaterialType::Emitter) {
+        float strength = std::max(material.radiance.r, std::max(material.radiance.g, material.radiance.b));
+        shownColor = strength > 0.0f ? material.radiance / strength : glm::vec3(1.0f);
+    }
+    return retyped(material, type, shownColor);
+}
+
+namespace {
+
 void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
@@ -70,37 +81,25 @@ const char* colorTooltip(MaterialType type) {
 
 } // namespace
 
-MaterialsPanel::MaterialsPanel(const Scene& scene) : savePath_(scene.path.string()) {}
-
-bool MaterialsPanel::draw(Scene& scene) {
+void MaterialsPanel::draw(ViewerSession& session) {
+    Scene& scene = session.model().scene;
     emitters_.resize(scene.materials.size());
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(std::max(10.0f, io.DisplaySize.x - kPanelWidth - 10.0f), 10.0f),
-                            ImGuiCond_FirstUseEver);
-    // As wide as the labels need, as tall as the open headers need, up to the window's height.
-    ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f),
-                                        ImVec2(kPanelWidth, std::max(100.0f, io.DisplaySize.y - 20.0f)));
-    ImGui::SetNextWindowBgAlpha(0.8f);
     bool changed = false;
-    if (ImGui::Begin("Materials", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        if (scene.materials.empty()) ImGui::TextDisabled("the scene has no materials");
-        ImGui::PushItemWidth(-110.0f); // room for the labels
-        for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-            Material& material = scene.materials[i];
-            // "###" keeps the header's id (and open state) when its type changes.
-            std::string header = material.name + "  (" + materialSchema(material.type).name + ")###material" +
-                                 std::to_string(i);
-            if (!ImGui::CollapsingHeader(header.c_str())) continue;
-            ImGui::PushID(static_cast<int>(i));
-            changed |= drawMaterial(material, emitters_[i]);
-            ImGui::PopID();
-        }
-        ImGui::PopItemWidth();
-        ImGui::Separator();
-        save(scene);
+    if (scene.materials.empty()) ImGui::TextDisabled("the scene has no materials");
+    ImGui::PushItemWidth(-110.0f); // room for the labels
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        Material& material = scene.materials[i];
+        // "###" keeps the node's id (and open state) when its type changes.
+        std::string label = material.name + "  (" + materialSchema(material.type).name + ")###material" +
+                            std::to_string(i);
+        if (!ImGui::TreeNode(label.c_str())) continue;
+        changed |= drawMaterial(material, emitters_[i]);
+        ImGui::TreePop();
     }
-    ImGui::End();
-    return changed;
+    ImGui::PopItemWidth();
+    if (changed) session.model().pendingChanges |= ViewerModel::kMaterialsChanged;
+    ImGui::Separator();
+    save(session);
 }
 
 bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) {
@@ -167,7 +166,8 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
     return changed;
 }
 
-void MaterialsPanel::save(Scene& scene) {
+void MaterialsPanel::save(ViewerSession& session) {
+    if (savePath_.empty()) savePath_ = session.model().scene.path.string();
     ImGui::TextUnformatted("Save scene as");
     ImGui::SetNextItemWidth(-60.0f);
     bool submitted = ImGui::InputText("##path", &savePath_, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -179,8 +179,7 @@ void MaterialsPanel::save(Scene& scene) {
             saveStatus_ = "enter a file name";
         } else {
             try {
-                saveScene(scene, savePath_);
-                scene.path = savePath_;
+                session.saveSceneAs(savePath_);
                 saveFailed_ = false;
                 saveStatus_ = "saved " + savePath_;
             } catch (const std::exception& error) {

@@ -1,10 +1,10 @@
 #pragma once
-// The viewer's "Materials" panel: every material of the scene under its own collapsing header,
+// The viewer's "Materials" panel: every material of the scene under its own tree node,
 // with its type, colour and the parameters its type has, edited live; and "Save scene as".
-// It edits the scene model only; the viewer re-sends the materials to the renderer when it
-// reports a change (PathTracer::setMaterials, which recompiles nothing).
+// It edits the session's scene model and flags the change; the session re-sends the materials to
+// the renderer (PathTracer::setMaterials, which recompiles nothing).
 
-#include "Scene.h"
+#include "ViewerSession.h"
 
 #include <glm/glm.hpp>
 
@@ -13,13 +13,15 @@
 
 namespace ptview {
 
+// The material as another type, the way the panel's type combo changes it: colour, emission and
+// shared parameters carry over, a parameter new to the type gets a usable value.
+Material retypedMaterial(const Material& material, MaterialType type);
+
 class MaterialsPanel {
 public:
-    explicit MaterialsPanel(const Scene& scene);
-
-    // Draws the window (between ImGui::NewFrame and ImGui::Render). Returns whether a material of
-    // scene changed this frame. A successful save makes the saved file scene.path.
-    bool draw(Scene& scene);
+    // Draws the panel's controls into the current window (the viewer's sidebar); an edit flags
+    // ViewerModel::kMaterialsChanged. A successful save makes the saved file the scene's file.
+    void draw(ViewerSession& session);
 
 private:
     // An emitter's radiance shown as a colour in [0, 1] times a strength, since radiance goes
@@ -31,7 +33,7 @@ private:
     };
 
     bool drawMaterial(Material& material, EmitterControls& emitter);
-    void save(Scene& scene);
+    void save(ViewerSession& session);
 
     std::vector<EmitterControls> emitters_; // one per material, used by emitters only
     std::string savePath_;

@@ -97,7 +97,7 @@ int runRenderCommand(const RenderOptions& options) {
         double seconds = progress.elapsed();
 
         if (format == OutputFormat::Png)
-            writePng(options.outPath, tracer.readToneMapped(options.exposureStops));
+            writePng(options.outPath, tracer.readToneMapped(options.display));
         else
             writePfm(options.outPath, tracer.readMean());
 

@@ -1,1 +1,115 @@
 #include "SceneMerge.h"
+
+namespace ptview {
+namespace {
+
+// Named comparisons rather than operator==: Scene.h does not define equality (C++17 cannot
+// default it), and a private operator== here could clash with one added there later. Floats
+// compare exactly: every value is a copy of one read from a file, never recomputed.
+bool sameMaterial(const Material& a, const Material& b)
+{
+    return a.name == b.name && a.type == b.type && a.color == b.color && a.radiance == b.radiance &&
+           a.ior == b.ior && a.roughness == b.roughness;
+}
+
+bool sameLight(const Light& a, const Light& b)
+{
+    return a.name == b.name && a.type == b.type && a.position == b.position && a.intensity == b.intensity &&
+           a.direction == b.direction && a.innerAngleDeg == b.innerAngleDeg && a.outerAngleDeg == b.outerAngleDeg;
+}
+
+// The camera less its resolution, which is the output size and so always the file's.
+bool sameView(const CameraDesc& a, const CameraDesc& b)
+{
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.vfovDeg == b.vfovDeg;
+}
+
+// The environment settings are one item: a map and its intensity only make sense together.
+struct Environment {
+    glm::vec3 color;
+    std::filesystem::path map;
+    float intensity;
+    float rotationDeg;
+
+    static Environment of(const Scene& scene)
+    {
+        return {scene.environment, scene.environmentMap, scene.environmentIntensity, scene.environmentRotationDeg};
+    }
+    void applyTo(Scene& scene) const
+    {
+        scene.environment = color;
+        scene.environmentMap = map;
+        scene.environmentIntensity = intensity;
+        scene.environmentRotationDeg = rotationDeg;
+    }
+    bool operator==(const Environment& o) const
+    {
+        return color == o.color && map == o.map && intensity == o.intensity && rotationDeg == o.rotationDeg;
+    }
+};
+
+// The `occurrence`-th item called `name`, or null (light names need not be unique; material
+// names are). Const or not as `items` is.
+template <typename Items>
+auto findNamed(Items& items, const std::string& name, int occurrence) -> decltype(&items.front())
+{
+    for (auto& item : items)
+        if (item.name == name && occurrence-- == 0) return &item;
+    return nullptr;
+}
+
+// Merges the user's edits to named items into `merged` (a copy of the file's list), in place so
+// that the file's order, which shapes index, is kept.
+template <typename T, typename Same>
+void mergeNamed(const std::vector<T>& base, const std::vector<T>& edited, std::vector<T>& merged, Same same,
+                const char* kind, std::vector<std::string>& overridden)
+{
+    for (size_t i = 0; i < edited.size(); ++i) {
+        const T& mine = edited[i];
+        int occurrence = 0;
+        for (size_t j = 0; j < i; ++j) occurrence += edited[j].name == mine.name;
+
+        const T* original = findNamed(base, mine.name, occurrence);
+        if (!original || same(*original, mine)) continue; // not edited, or nothing to merge against
+        std::string label = std::string(kind) + " \"" + mine.name + "\"";
+        T* theirs = findNamed(merged, mine.name, occurrence);
+        if (!theirs)
+            overridden.push_back(label + " (removed from the file)");
+        else if (same(*theirs, *original))
+            *theirs = mine;
+        else if (!same(*theirs, mine)) // both changed it, differently: the file wins
+            overridden.push_back(label);
+    }
+}
+
+} // namespace
+
+SceneMergeResult mergeReloadedScene(const Scene& base, const Scene& edited, const Scene& reloaded)
+{
+    SceneMergeResult result{reloaded, {}};
+    Scene& merged = result.scene;
+
+    mergeNamed(base.materials, edited.materials, merged.materials, sameMaterial, "material", result.overridden);
+    mergeNamed(base.lights, edited.lights, merged.lights, sameLight, "light", result.overridden);
+
+    if (!sameView(edited.camera, base.camera)) {
+        if (sameView(reloaded.camera, base.camera)) {
+            merged.camera = edited.camera;
+            merged.camera.resolution = reloaded.camera.resolution;
+        } else if (!sameView(reloaded.camera, edited.camera)) {
+            result.overridden.push_back("camera");
+        }
+    }
+
+    Environment baseEnv = Environment::of(base), editedEnv = Environment::of(edited);
+    Environment reloadedEnv = Environment::of(reloaded);
+    if (!(editedEnv == baseEnv)) {
+        if (reloadedEnv == baseEnv)
+            editedEnv.applyTo(merged);
+        else if (!(reloadedEnv == editedEnv))
+            result.overridden.push_back("environment");
+    }
+    return result;
+}
+
+} // namespace ptview

@@ -1,12 +1,13 @@
 #include "Viewer.h"
 
-#include "EnvironmentMap.h"
+#include "CameraController.h"
 #include "ImageIO.h"
 #include "MaterialsPanel.h"
-#include "PathTracer.h"
+#include "Panels.h"
 #include "Readback.h"
-#include "Scene.h"
 #include "SceneInput.h"
+#include "ScriptRunner.h"
+#include "ViewerSession.h"
 #include "WarpVisualizer.h"
 
 #include <glad/gl.h>
@@ -21,37 +22,54 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <vector>
 
 namespace ptview {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Samples per displayed frame are added while the frame's GPU time stays under this budget, so
-// a fast GPU converges quickly and a slow one still redraws the UI.
-constexpr double kFrameBudgetSeconds = 0.016;
-constexpr int kMaxSamplesPerFrame = 64;
+constexpr float kSidebarWidth = 380.0f;        // at content scale 1
+constexpr float kDividerGrabPixels = 6.0f;     // how close to the divider a drag grabs it
+constexpr float kFastFlyFactor = 4.0f;         // with Shift held
 
-struct FrameStats {
-    double frameSeconds = 0.0; // smoothed time between displayed frames
-    double samplesPerSecond = 0.0;
+// What the window's callbacks saw since the last frame. Keys that trigger an action are queued
+// from the key callback, so a press shorter than a (slow) frame is never lost.
+struct InputEvents {
+    std::vector<int> pressedKeys;
+    double scrollSteps = 0.0;
+    float contentScale = 1.0f;
+    bool contentScaleChanged = false;
 };
 
-// Installed before ImGui's own callbacks, which chain to it.
+InputEvents& events(GLFWwindow* window) {
+    return *static_cast<InputEvents*>(glfwGetWindowUserPointer(window));
+}
+
+// Installed before ImGui's own callbacks, which chain to them.
 void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
-    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard)
-        glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (action == GLFW_PRESS) events(window).pressedKeys.push_back(key);
+}
+
+void onScroll(GLFWwindow* window, double /*x*/, double y) {
+    events(window).scrollSteps += y;
+}
+
+void onContentScale(GLFWwindow* window, float xScale, float /*yScale*/) {
+    events(window).contentScale = xScale;
+    events(window).contentScaleChanged = true;
 }
 
 void reportGlfwError(int code, const char* description) {
     std::fprintf(stderr, "ptview: GLFW error %d: %s\n", code, description);
 }
 
-glm::ivec2 initialWindowSize(glm::ivec2 resolution) {
-    // Small scene resolutions would give a window too small for the panel.
+glm::ivec2 initialWindowSize(glm::ivec2 resolution, float sidebarWidth) {
+    // Small scene resolutions would give an image too small to look at.
     int longest = std::max(resolution.x, resolution.y);
     float scale = longest < 768 ? 768.0f / static_cast<float>(longest) : 1.0f;
-    return glm::ivec2(glm::vec2(resolution) * scale);
+    glm::ivec2 image(glm::vec2(resolution) * scale);
+    return {image.x + static_cast<int>(sidebarWidth), image.y};
 }
 
 ImageRgba8 readWindow(glm::ivec2 size) {
@@ -62,41 +80,297 @@ ImageRgba8 readWindow(glm::ivec2 size) {
     return image;
 }
 
-void drawRenderPanel(const Scene& scene, PathTracer& tracer, RenderSettings& settings, float& exposureStops,
-                     const FrameStats& stats) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("Render", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::Text("%s", scene.path.filename().string().c_str());
-    ImGui::Text("%d x %d, %d spp", tracer.imageSize().x, tracer.imageSize().y, tracer.sampleCount());
-    ImGui::Text("%.1f ms per frame", stats.frameSeconds * 1e3);
-    ImGui::Text("%.2f M samples/s", stats.samplesPerSecond * 1e-6);
-    ImGui::Separator();
-    const IntegratorName* current = &integratorNames()[0];
-    for (const IntegratorName& entry : integratorNames())
-        if (entry.integrator == settings.integrator) current = &entry;
-    if (ImGui::BeginCombo("integrator", current->label)) {
-        for (const IntegratorName& entry : integratorNames())
-            if (ImGui::Selectable(entry.label, entry.integrator == settings.integrator)) settings.integrator = entry.integrator;
-        ImGui::EndCombo();
+// Fonts and widget sizes follow the monitor's content scale (HiDPI).
+void applyContentScale(float scale) {
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+    ImGui::GetIO().FontGlobalScale = scale;
+}
+
+// The window: a sidebar of panels on the left, the image on the right (all of it with the
+// sidebar hidden), the mouse and keyboard driving the camera over the image.
+class ViewerWindow {
+public:
+    ViewerWindow(GLFWwindow* window, ViewerSession& session, const ViewerOptions& options)
+        : window_(window), session_(session), options_(options), warpVisualizer_(options.warp) {
+        warpVisualizer_.setActive(options.showWarp);
     }
-    ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
-    if (ImGui::BeginCombo("sampler", samplerModeName(settings.sampler))) {
-        for (const SamplerModeName& entry : samplerModeNames())
-            if (ImGui::Selectable(entry.name, entry.mode == settings.sampler)) settings.sampler = entry.mode;
-        ImGui::EndCombo();
+
+    int run(std::optional<ScriptRunner>& script);
+
+private:
+    void handleKeys();
+    void handleMouseAndFlight(double seconds);
+    void layout();
+    void drawUi();
+    void drawSidebar();
+    void drawCompareLabels();
+
+    GLFWwindow* window_;
+    ViewerSession& session_;
+    const ViewerOptions& options_;
+    WarpVisualizer warpVisualizer_;
+    MaterialsPanel materialsPanel_;
+    PanelState panelState_;
+    bool sidebarVisible_ = true;
+    bool helpOpen_ = false;
+    float sidebarWidth_ = kSidebarWidth; // in window coordinates, as ImGui measures
+    glm::ivec2 framebufferSize_{0, 0};
+    glm::vec2 framebufferScale_{1.0f}; // framebuffer pixels per window coordinate
+    glm::dvec2 lastCursor_{0.0};
+    bool draggingDivider_ = false;
+    double frameSeconds_ = 0.0; // smoothed time between displayed frames
+};
+
+void ViewerWindow::handleKeys() {
+    std::vector<int> keys;
+    std::swap(keys, events(window_).pressedKeys);
+    if (ImGui::GetIO().WantCaptureKeyboard) return; // typing into a field
+    ViewerModel& model = session_.model();
+    for (int key : keys) {
+        switch (key) {
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
+        case GLFW_KEY_F12: saveScreenshots(session_, panelState_); break;
+        case GLFW_KEY_F1: helpOpen_ = !helpOpen_; break;
+        case GLFW_KEY_TAB: sidebarVisible_ = !sidebarVisible_; break;
+        case GLFW_KEY_SPACE: model.paused = !model.paused; break;
+        case GLFW_KEY_R: model.pendingChanges |= ViewerModel::kRestart; break;
+        case GLFW_KEY_C: model.compare.enabled = !model.compare.enabled; break;
+        case GLFW_KEY_F: session_.resetCamera(); break;
+        default: break;
+        }
     }
-    ImGui::SliderFloat("exposure (stops)", &exposureStops, -10.0f, 10.0f, "%.1f");
-    if (ImGui::Button("Restart")) tracer.restart();
+}
+
+void ViewerWindow::handleMouseAndFlight(double seconds) {
+    const ImGuiIO& io = ImGui::GetIO();
+    ViewerModel& model = session_.model();
+    CameraDesc camera = model.scene.camera;
+
+    glm::dvec2 cursor;
+    glfwGetCursorPos(window_, &cursor.x, &cursor.y);
+    glm::dvec2 delta = cursor - lastCursor_;
+    lastCursor_ = cursor;
+    double scroll = events(window_).scrollSteps;
+    events(window_).scrollSteps = 0.0;
+
+    bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                 glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    bool shift = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                 glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+    // The divider, in window coordinates.
+    float dividerX = static_cast<float>(session_.dividerX()) / framebufferScale_.x;
+    if (!left) draggingDivider_ = false;
+    if (!io.WantCaptureMouse) {
+        if (left && !draggingDivider_ && session_.comparing() && std::abs(cursor.x - delta.x - dividerX) < kDividerGrabPixels &&
+            ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+            draggingDivider_ = true;
+        PixelRect area = session_.imageArea();
+        float imageHeight = std::max(1.0f, static_cast<float>(area.size.y) / framebufferScale_.y);
+        if (draggingDivider_) {
+            float areaLeft = static_cast<float>(area.origin.x) / framebufferScale_.x;
+            float areaWidth = std::max(1.0f, static_cast<float>(area.size.x) / framebufferScale_.x);
+            model.compare.dividerFraction = std::clamp((static_cast<float>(cursor.x) - areaLeft) / areaWidth, 0.0f, 1.0f);
+        } else if (delta != glm::dvec2(0.0) && (right || (left && shift))) {
+            camera = panCamera(camera, static_cast<float>(-delta.x) / imageHeight, static_cast<float>(delta.y) / imageHeight);
+        } else if (delta != glm::dvec2(0.0) && left) {
+            camera = orbitCamera(camera, static_cast<float>(-delta.x) * kOrbitDegreesPerPixel,
+                                 static_cast<float>(delta.y) * kOrbitDegreesPerPixel);
+        }
+        if (scroll != 0.0) camera = zoomCamera(camera, zoomFactorForWheel(static_cast<float>(scroll)));
+    }
+    if (!io.WantCaptureKeyboard) {
+        glm::vec3 move(0.0f);
+        auto held = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+        move.z = held(GLFW_KEY_W) - held(GLFW_KEY_S);
+        move.x = held(GLFW_KEY_D) - held(GLFW_KEY_A);
+        move.y = held(GLFW_KEY_E) - held(GLFW_KEY_Q);
+        if (move != glm::vec3(0.0f)) {
+            // A slow frame must not fling the camera: cap the step at a tenth of a second.
+            float step = flyDistance(camera, static_cast<float>(std::min(seconds, 0.1))) * (shift ? kFastFlyFactor : 1.0f);
+            camera = flyCamera(camera, move, step);
+        }
+    }
+    const CameraDesc& before = model.scene.camera;
+    if (camera.eye != before.eye || camera.target != before.target) {
+        model.scene.camera = camera;
+        model.pendingChanges |= ViewerModel::kCameraChanged;
+    }
+}
+
+void ViewerWindow::layout() {
+    glm::ivec2 windowSize;
+    glfwGetWindowSize(window_, &windowSize.x, &windowSize.y);
+    framebufferScale_ = glm::vec2(framebufferSize_) / glm::max(glm::vec2(windowSize), glm::vec2(1.0f));
+    int sidebarPixels = sidebarVisible_ ? static_cast<int>(sidebarWidth_ * framebufferScale_.x) : 0;
+    sidebarPixels = std::min(sidebarPixels, framebufferSize_.x - 1); // keep a column of image
+    session_.setImageArea(PixelRect{{sidebarPixels, 0}, {framebufferSize_.x - sidebarPixels, framebufferSize_.y}});
+}
+
+void ViewerWindow::drawSidebar() {
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(sidebarWidth_, io.DisplaySize.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(200.0f, io.DisplaySize.y), ImVec2(io.DisplaySize.x * 0.8f, io.DisplaySize.y));
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar;
+    if (ImGui::Begin("ptview", nullptr, flags)) {
+        ViewerModel& model = session_.model();
+        ImGui::TextUnformatted(model.scene.path.filename().string().c_str());
+        ImGui::SameLine();
+        ImGui::TextDisabled("(F1: help, Tab: hide)");
+        ImGui::PushItemWidth(-150.0f * ImGui::GetIO().FontGlobalScale); // room for the labels
+        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
+        if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, frameSeconds_);
+        if (ImGui::CollapsingHeader("Scene")) drawScenePanel(session_, panelState_);
+        if (ImGui::CollapsingHeader("Environment")) drawEnvironmentPanel(session_, panelState_);
+        if (ImGui::CollapsingHeader("Materials")) materialsPanel_.draw(session_);
+        if (ImGui::CollapsingHeader("Lights")) drawLightsPanel(session_);
+        if (ImGui::CollapsingHeader("Camera")) drawCameraPanel(session_);
+        if (ImGui::CollapsingHeader("Help")) drawHelpPanel();
+        ImGui::SetNextItemOpen(warpVisualizer_.active(), ImGuiCond_Once);
+        if (ImGui::CollapsingHeader("Warp visualizer")) warpVisualizer_.drawControls();
+        // A load error must be seen even with the Scene panel closed.
+        if (!model.sceneError.empty()) {
+            ImGui::Separator();
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", model.sceneError.c_str());
+            ImGui::PopTextWrapPos();
+        }
+        ImGui::PopItemWidth();
+        sidebarWidth_ = ImGui::GetWindowWidth(); // the user may drag its right edge
+    }
     ImGui::End();
+}
+
+void ViewerWindow::drawCompareLabels() {
+    if (!session_.comparing()) return;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    PixelRect area = session_.imageArea();
+    float top = 8.0f;
+    auto label = [&](ViewerSession::Side side, float x, bool alignRight) {
+        const RenderSettings& settings = session_.settings(side);
+        ViewerSession::ViewStats stats = session_.stats(side);
+        char text[160];
+        char error[32] = "-";
+        if (stats.error.relativeError > 0.0) std::snprintf(error, sizeof(error), "%.2f%%", stats.error.relativeError * 100.0);
+        std::snprintf(text, sizeof(text), "%s / %s / depth %d\n%d spp, %.1f s, error ~%s", integratorName(settings.integrator),
+                      samplerModeName(settings.sampler), settings.maxDepth, stats.samples, stats.renderSeconds, error);
+        ImVec2 size = ImGui::CalcTextSize(text);
+        ImVec2 position(alignRight ? x - size.x - 10.0f : x + 10.0f, top);
+        draw->AddRectFilled(ImVec2(position.x - 4, position.y - 2), ImVec2(position.x + size.x + 4, position.y + size.y + 2),
+                            IM_COL32(0, 0, 0, 160), 3.0f);
+        draw->AddText(position, IM_COL32(255, 255, 255, 255), text);
+    };
+    float divider = static_cast<float>(session_.dividerX()) / framebufferScale_.x;
+    label(ViewerSession::Side::Left, divider, true);
+    label(ViewerSession::Side::Right, divider, false);
+    (void)area;
+}
+
+void ViewerWindow::drawUi() {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (sidebarVisible_) drawSidebar();
+    if (helpOpen_) {
+        ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+        if (ImGui::Begin("Help", &helpOpen_, ImGuiWindowFlags_AlwaysAutoResize)) drawHelpPanel();
+        ImGui::End();
+    }
+    drawCompareLabels();
+    if (warpVisualizer_.active()) warpVisualizer_.handleMouse();
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+int ViewerWindow::run(std::optional<ScriptRunner>& script) {
+    Clock::time_point lastFrame = Clock::now();
+    int frame = 0;
+    while (!glfwWindowShouldClose(window_)) {
+        // Idle (paused, target reached) the loop sleeps until input, but still checks files.
+        bool busy = session_.accumulating() || (script && !script->quitRequested());
+        if (busy) glfwPollEvents(); else glfwWaitEventsTimeout(0.25);
+
+        glfwGetFramebufferSize(window_, &framebufferSize_.x, &framebufferSize_.y);
+        if (framebufferSize_.x <= 0 || framebufferSize_.y <= 0) { // minimized
+            glfwWaitEvents();
+            continue;
+        }
+        if (events(window_).contentScaleChanged) {
+            applyContentScale(events(window_).contentScale);
+            sidebarWidth_ = kSidebarWidth * events(window_).contentScale;
+            events(window_).contentScaleChanged = false;
+        }
+        Clock::time_point now = Clock::now();
+        double seconds = std::chrono::duration<double>(now - lastFrame).count();
+        lastFrame = now;
+        frameSeconds_ = frameSeconds_ == 0.0 ? seconds : 0.9 * frameSeconds_ + 0.1 * seconds;
+
+        handleKeys();
+        if (!warpVisualizer_.active()) handleMouseAndFlight(seconds);
+        layout();
+        if (script) {
+            script->step(session_, panelState_);
+            if (script->quitRequested()) break;
+        }
+        session_.pollFiles();
+        try {
+            session_.update();
+        } catch (const ShaderError& e) { // the split view's second program
+            session_.model().shaderError = e.what();
+            session_.model().compare.enabled = false;
+        }
+
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, framebufferSize_.x, framebufferSize_.y);
+        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (warpVisualizer_.active()) {
+            warpVisualizer_.draw(framebufferSize_); // the path tracer pauses meanwhile
+        } else {
+            session_.renderFrame();
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            session_.display();
+        }
+        drawUi();
+
+        if (script) {
+            if (std::optional<std::filesystem::path> path = script->takeWindowScreenshot()) {
+                writePng(*path, readWindow(framebufferSize_));
+                std::fprintf(stderr, "ptview: wrote %s\n", path->string().c_str());
+            }
+            script->frameDisplayed();
+        }
+        ++frame;
+        if (options_.frames > 0 && frame >= options_.frames) {
+            writePng(options_.screenshotPath, readWindow(framebufferSize_));
+            std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp)\n", options_.screenshotPath.c_str(), frame,
+                         session_.stats(ViewerSession::Side::Left).samples);
+            break;
+        }
+        glfwSwapBuffers(window_);
+    }
+    return script ? script->exitCode() : 0;
 }
 
 } // namespace
 
 int runViewer(const ViewerOptions& options) {
+    std::optional<ScriptRunner> script;
+    if (!options.scriptPath.empty()) {
+        try {
+            script.emplace(loadViewerScript(options.scriptPath));
+        } catch (const ScriptError& e) {
+            std::cerr << "ptview: " << e.what() << "\n";
+            return kExitBadInput;
+        }
+    }
     std::optional<SceneInput> input = loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;
-    Scene scene = std::move(input->scene);
 
     glfwSetErrorCallback(reportGlfwError);
     if (!glfwInit()) {
@@ -107,7 +381,8 @@ int runViewer(const ViewerOptions& options) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE); // required on macOS
-    glm::ivec2 windowSize = initialWindowSize(scene.camera.resolution);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);      // HiDPI: window size in logical units
+    glm::ivec2 windowSize = initialWindowSize(input->scene.camera.resolution, kSidebarWidth);
     GLFWwindow* window = glfwCreateWindow(windowSize.x, windowSize.y, "ptview", nullptr, nullptr);
     if (!window) {
         std::cerr << "ptview: cannot create an OpenGL 4.1 core window\n";
@@ -122,7 +397,13 @@ int runViewer(const ViewerOptions& options) {
         return kExitRuntimeError;
     }
 
+    InputEvents inputEvents;
+    glfwSetWindowUserPointer(window, &inputEvents);
     glfwSetKeyCallback(window, onKey);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetWindowContentScaleCallback(window, onContentScale);
+    glfwGetWindowContentScale(window, &inputEvents.contentScale, nullptr);
+    inputEvents.contentScaleChanged = true;
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini litter in the user's directory
@@ -131,70 +412,9 @@ int runViewer(const ViewerOptions& options) {
 
     int exitCode = 0;
     try {
-        PathTracer tracer;
-        tracer.setScene(scene, input->environmentMapOrNull());
-        RenderSettings settings = options.settings;
-        float exposureStops = options.exposureStops;
-        FrameStats stats;
-        WarpVisualizer warpVisualizer(options.warp);
-        warpVisualizer.setActive(options.showWarp);
-        MaterialsPanel materialsPanel(scene);
-        Clock::time_point lastFrame = Clock::now();
-        int frame = 0;
-
-        while (!glfwWindowShouldClose(window)) {
-            glfwPollEvents();
-            glm::ivec2 framebufferSize;
-            glfwGetFramebufferSize(window, &framebufferSize.x, &framebufferSize.y);
-            if (framebufferSize.x <= 0 || framebufferSize.y <= 0) { // minimized
-                glfwWaitEvents();
-                continue;
-            }
-            tracer.setImageSize(framebufferSize);
-            tracer.setSettings(settings);
-
-            int samplesThisFrame = 0;
-            if (warpVisualizer.active()) {
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                warpVisualizer.draw(framebufferSize); // the path tracer pauses meanwhile
-            } else {
-                Clock::time_point renderStart = Clock::now();
-                do {
-                    tracer.renderSample();
-                    glFinish();
-                    ++samplesThisFrame;
-                } while (samplesThisFrame < kMaxSamplesPerFrame &&
-                         std::chrono::duration<double>(Clock::now() - renderStart).count() < kFrameBudgetSeconds);
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                tracer.display(framebufferSize, exposureStops);
-            }
-
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            if (materialsPanel.draw(scene)) tracer.setMaterials(scene.materials); // the next frame shows it
-            warpVisualizer.drawPanel();
-            drawRenderPanel(scene, tracer, settings, exposureStops, stats); // last: it starts focused
-            if (warpVisualizer.active()) warpVisualizer.handleMouse();
-            ImGui::Render();
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
-            ++frame;
-            if (options.frames > 0 && frame >= options.frames) {
-                writePng(options.screenshotPath, readWindow(framebufferSize));
-                std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp)\n", options.screenshotPath.c_str(),
-                             frame, tracer.sampleCount());
-                break;
-            }
-            glfwSwapBuffers(window);
-
-            Clock::time_point now = Clock::now();
-            double seconds = std::chrono::duration<double>(now - lastFrame).count();
-            lastFrame = now;
-            stats.frameSeconds = stats.frameSeconds == 0.0 ? seconds : 0.9 * stats.frameSeconds + 0.1 * seconds;
-            double samples = static_cast<double>(framebufferSize.x) * framebufferSize.y * samplesThisFrame;
-            stats.samplesPerSecond = samples / std::max(seconds, 1e-6);
-        }
+        ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir);
+        ViewerWindow viewer(window, session, options);
+        exitCode = viewer.run(script);
     } catch (const std::exception& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         exitCode = kExitRuntimeError;

@@ -10,11 +10,8 @@ WarpVisualizer::WarpVisualizer(const WarpRequest& initial)
     : request_(initial), camera_(defaultWarpCamera(warpInfo(initial.warp).domain)),
       coneAngleDeg_(glm::degrees(std::acos(initial.cosThetaMax))) {}
 
-void WarpVisualizer::drawPanel() {
-    ImGui::SetNextWindowPos(ImVec2(10, 230), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(!active_, ImGuiCond_FirstUseEver); // out of the way until wanted
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("Warp visualizer", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+void WarpVisualizer::drawControls() {
+    ImGui::PushID("warp");
     ImGui::Checkbox("show instead of the render", &active_);
 
     const WarpInfo& current = warpInfo(request_.warp);
@@ -47,7 +44,7 @@ void WarpVisualizer::drawPanel() {
         dirty_ = true;
     }
     ImGui::TextDisabled("drag: orbit, wheel: zoom; colour = (u.x, u.y)");
-    ImGui::End();
+    ImGui::PopID();
 }
 
 void WarpVisualizer::handleMouse() {

@@ -16,8 +16,9 @@ public:
     bool active() const { return active_; }
     void setActive(bool active) { active_ = active; }
 
-    // The panel, and the mouse when no panel wants it: drag to orbit, wheel to zoom.
-    void drawPanel();
+    // The controls (into the current window), and the mouse when no panel wants it: drag to
+    // orbit, wheel to zoom.
+    void drawControls();
     void handleMouse();
     void draw(glm::ivec2 viewportSize);
 

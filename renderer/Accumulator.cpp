@@ -50,7 +50,8 @@ void Accumulator::resize(glm::ivec2 size) {
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     size_ = size;
-    restart();
+    sampleCount_ = 0;
+    staleSampleCount_ = 0; // the new textures hold nothing worth showing
 }
 
 void Accumulator::beginPass(int firstUnit) const {
@@ -69,6 +70,7 @@ void Accumulator::endPass() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     writeIndex_ = 1 - writeIndex_;
     ++sampleCount_;
+    staleSampleCount_ = 0;
 }
 
 void Accumulator::bindLatest(int sumUnit, int compensationUnit) const {

@@ -28,7 +28,12 @@ public:
     // Reallocates (and restarts) only when the size changes. Throws std::invalid_argument for
     // sizes the GPU cannot hold.
     void resize(glm::ivec2 size);
-    void restart() { sampleCount_ = 0; }
+    // The next pass starts a new sum. Until it completes, displayedSampleCount() keeps describing
+    // the previous sums, so a viewer can keep showing the old image rather than black.
+    void restart() {
+        if (sampleCount_ > 0) staleSampleCount_ = sampleCount_;
+        sampleCount_ = 0;
+    }
 
     // Binds the target to draw into and the previous sums for reading; the caller then draws
     // one sample per pixel with a program that calls accumulateSample().
@@ -41,6 +46,9 @@ public:
     PixelStatistics readStatistics() const;
 
     int sampleCount() const { return sampleCount_; }
+    // The sample count of the sums bindLatest() binds: sampleCount(), or right after a restart
+    // the count of the sums still there (0 after a resize).
+    int displayedSampleCount() const { return sampleCount_ > 0 ? sampleCount_ : staleSampleCount_; }
     glm::ivec2 size() const { return size_; }
 
 private:
@@ -54,6 +62,7 @@ private:
     Target targets_[2];
     int writeIndex_ = 0;
     int sampleCount_ = 0;
+    int staleSampleCount_ = 0;
     glm::ivec2 size_{0, 0};
 };
 

@@ -26,7 +26,6 @@ const char* const GpuEnvironmentMap::kSamplerNames[kTextureCount] = {
     "uEnvironmentMap", "uEnvironmentMarginalCdf", "uEnvironmentConditionalCdf"};
 
 void GpuEnvironmentMap::attach(const GlProgram& program, int firstUnit) {
-    program_ = program.id();
     firstUnit_ = firstUnit;
     for (int i = 0; i < kTextureCount; ++i) program.bindSamplerUnit(kSamplerNames[i], firstUnit + i);
     hasMapLocation_ = program.uniformLocation("uHasEnvironmentMap");
@@ -63,13 +62,14 @@ void GpuEnvironmentMap::upload(const EnvironmentMap* map, float intensity, float
     // Reduced to [0, 360) here, where fmod is exact, so the shader's azimuth stays small.
     float degrees = std::fmod(rotationDeg, 360.0f);
     if (degrees < 0.0f) degrees += 360.0f;
-    glUseProgram(program_);
-    glUniform1i(hasMapLocation_, hasMap_ ? 1 : 0);
-    glUniform1f(intensityLocation_, intensity);
-    glUniform1f(rotationLocation_, degrees * 0.017453292519943295f);
+    intensity_ = intensity;
+    rotationRad_ = degrees * 0.017453292519943295f;
 }
 
 void GpuEnvironmentMap::bind() const {
+    glUniform1i(hasMapLocation_, hasMap_ ? 1 : 0);
+    glUniform1f(intensityLocation_, intensity_);
+    glUniform1f(rotationLocation_, rotationRad_);
     for (int i = 0; i < kTextureCount; ++i) {
         glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + firstUnit_ + i));
         glBindTexture(GL_TEXTURE_2D, textures_[i].id());

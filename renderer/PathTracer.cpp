@@ -29,35 +29,49 @@ void resetPassState() {
 
 } // namespace
 
-PathTracer::PathTracer(const std::filesystem::path& shaderDir) {
-    ShaderAssembler assembler(shaderDir);
+PathTracer::Programs PathTracer::buildPrograms() const {
+    ShaderAssembler assembler(shaderDir_);
     AssembledShader vertex = assembler.assemble("fullscreen.vert");
-    pathTraceProgram_ = std::make_unique<GlProgram>(vertex, assembler.assemble("pathtrace.frag"));
-    displayProgram_ = std::make_unique<GlProgram>(vertex, assembler.assemble("display.frag"));
+    Programs programs;
+    programs.pathTrace = std::make_unique<GlProgram>(vertex, assembler.assemble("pathtrace.frag"));
+    programs.display = std::make_unique<GlProgram>(vertex, assembler.assemble("display.frag"));
 
-    const GlProgram& trace = *pathTraceProgram_;
+    const GlProgram& trace = *programs.pathTrace;
     trace.bindUniformBlock("FrameBlock", kFrameBlockBinding);
     Accumulator::bindSamplers(trace, kAccumulationUnit);
     for (int i = 0; i < GpuScene::kTextureCount; ++i) trace.bindSamplerUnit(GpuScene::kSamplerNames[i], kSceneUnit + i);
-    sphereCountLocation_ = trace.uniformLocation("uSphereCount");
-    quadCountLocation_ = trace.uniformLocation("uQuadCount");
-    diskCountLocation_ = trace.uniformLocation("uDiskCount");
-    lightCountLocation_ = trace.uniformLocation("uLightCount");
-    environmentLightLocation_ = trace.uniformLocation("uEnvironmentLight");
-    environmentMap_.attach(trace, kEnvironmentUnit);
+    programs.sphereCount = trace.uniformLocation("uSphereCount");
+    programs.quadCount = trace.uniformLocation("uQuadCount");
+    programs.diskCount = trace.uniformLocation("uDiskCount");
+    programs.lightCount = trace.uniformLocation("uLightCount");
+    programs.environmentLight = trace.uniformLocation("uEnvironmentLight");
 
-    const GlProgram& show = *displayProgram_;
+    const GlProgram& show = *programs.display;
     show.bindSamplerUnit("uSum", 0);
     show.bindSamplerUnit("uCompensation", 1);
-    invSampleCountLocation_ = show.uniformLocation("uInvSampleCount");
-    exposureScaleLocation_ = show.uniformLocation("uExposureScale");
-    outputSizeLocation_ = show.uniformLocation("uOutputSize");
+    programs.invSampleCount = show.uniformLocation("uInvSampleCount");
+    programs.exposureScale = show.uniformLocation("uExposureScale");
+    programs.toneMapper = show.uniformLocation("uToneMapper");
+    programs.outputOrigin = show.uniformLocation("uOutputOrigin");
+    programs.outputSize = show.uniformLocation("uOutputSize");
+    return programs;
+}
 
+PathTracer::PathTracer(const std::filesystem::path& shaderDir) : shaderDir_(shaderDir) {
+    programs_ = buildPrograms();
+    environmentMap_.attach(*programs_.pathTrace, kEnvironmentUnit);
     emptyVertexArray_ = createVertexArray();
     frameUniformBuffer_ = createBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+void PathTracer::reloadShaders() {
+    Programs rebuilt = buildPrograms(); // throws before anything is replaced
+    programs_ = std::move(rebuilt);
+    environmentMap_.attach(*programs_.pathTrace, kEnvironmentUnit);
+    restart();
 }
 
 void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentMap) {
@@ -66,11 +80,6 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
     environmentMap_.upload(scene.environmentMap.empty() ? nullptr : environmentMap, scene.environmentIntensity,
                            scene.environmentRotationDeg);
     gpuScene_.upload(scene, environmentMap_.hasMap() ? std::optional<glm::vec3>(environmentMap_.meanRadiance()) : std::nullopt);
-    glUseProgram(pathTraceProgram_->id());
-    glUniform1i(sphereCountLocation_, gpuScene_.sphereCount());
-    glUniform1i(quadCountLocation_, gpuScene_.quadCount());
-    glUniform1i(diskCountLocation_, gpuScene_.diskCount());
-    setLightUniforms();
     camera_ = scene.camera;
     environmentRadiance_ = scene.environment;
     restart();
@@ -78,14 +87,20 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
 
 void PathTracer::setMaterials(const std::vector<Material>& materials) {
     gpuScene_.uploadMaterials(materials);
-    setLightUniforms();
     restart();
 }
 
-void PathTracer::setLightUniforms() {
-    glUseProgram(pathTraceProgram_->id());
-    glUniform1i(lightCountLocation_, gpuScene_.lightCount());
-    glUniform1i(environmentLightLocation_, gpuScene_.environmentLight());
+void PathTracer::setCamera(const CameraDesc& camera) {
+    glm::ivec2 resolution = camera_.resolution;
+    camera_ = camera;
+    camera_.resolution = resolution;
+    restart();
+}
+
+void PathTracer::restart() {
+    accumulator_.restart();
+    nextRow_ = 0;
+    ++restartCount_;
 }
 
 void PathTracer::setSettings(const RenderSettings& settings) {
@@ -95,7 +110,10 @@ void PathTracer::setSettings(const RenderSettings& settings) {
 }
 
 void PathTracer::setImageSize(glm::ivec2 size) {
+    if (size == accumulator_.size()) return;
     accumulator_.resize(size);
+    nextRow_ = 0;
+    ++restartCount_;
 }
 
 void PathTracer::updateFrameUniforms() {
@@ -123,39 +141,67 @@ void PathTracer::updateFrameUniforms() {
 }
 
 void PathTracer::renderSample() {
+    renderRows(accumulator_.size().y);
+}
+
+bool PathTracer::renderRows(int rowCount) {
+    glm::ivec2 size = accumulator_.size();
+    int endRow = std::min(size.y, nextRow_ + std::max(1, rowCount));
     updateFrameUniforms();
     resetPassState();
     accumulator_.beginPass(kAccumulationUnit);
-    glUseProgram(pathTraceProgram_->id());
+    if (nextRow_ > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, nextRow_, size.x, endRow - nextRow_);
+    }
+    glUseProgram(programs_.pathTrace->id());
+    glUniform1i(programs_.sphereCount, gpuScene_.sphereCount());
+    glUniform1i(programs_.quadCount, gpuScene_.quadCount());
+    glUniform1i(programs_.diskCount, gpuScene_.diskCount());
+    glUniform1i(programs_.lightCount, gpuScene_.lightCount());
+    glUniform1i(programs_.environmentLight, gpuScene_.environmentLight());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
     gpuScene_.bind(kSceneUnit);
     environmentMap_.bind();
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
+    if (endRow < size.y) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        nextRow_ = endRow;
+        return false;
+    }
     accumulator_.endPass();
+    nextRow_ = 0;
+    return true;
 }
 
-void PathTracer::display(glm::ivec2 viewportSize, float exposureStops) const {
+void PathTracer::display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const {
     resetPassState();
-    glViewport(0, 0, viewportSize.x, viewportSize.y);
-    glUseProgram(displayProgram_->id());
-    int samples = accumulator_.sampleCount();
-    glUniform1f(invSampleCountLocation_, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
-    glUniform1f(exposureScaleLocation_, std::exp2(exposureStops));
-    glUniform2f(outputSizeLocation_, static_cast<float>(viewportSize.x), static_cast<float>(viewportSize.y));
+    glViewport(target.origin.x, target.origin.y, target.size.x, target.size.y);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
+    glUseProgram(programs_.display->id());
+    int samples = accumulator_.displayedSampleCount();
+    glUniform1f(programs_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
+    glUniform1f(programs_.exposureScale, std::exp2(settings.exposureStops));
+    glUniform1ui(programs_.toneMapper, static_cast<GLuint>(settings.toneMapper));
+    glUniform2f(programs_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
+    glUniform2f(programs_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
     accumulator_.bindLatest(0, 1);
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 ImageRgbF PathTracer::readMean() const {
     return accumulator_.readStatistics().mean;
 }
 
-ImageRgba8 PathTracer::readToneMapped(float exposureStops) const {
-    return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) { display(size, exposureStops); });
+ImageRgba8 PathTracer::readToneMapped(const DisplaySettings& settings) const {
+    return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) { display(PixelRect{{0, 0}, size}, settings); });
 }
 
 } // namespace ptview

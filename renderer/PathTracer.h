@@ -13,6 +13,7 @@
 #include "Integrator.h"
 #include "SamplerMode.h"
 #include "Scene.h"
+#include "ToneMapper.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -36,10 +37,21 @@ struct RenderSettings {
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
 };
 
+// A rectangle of framebuffer pixels, origin at the lower left as OpenGL counts.
+struct PixelRect {
+    glm::ivec2 origin{0, 0};
+    glm::ivec2 size{0, 0};
+};
+
 class PathTracer {
 public:
-    // Compiles the programs. Throws ShaderError.
+    // Compiles the programs from the GLSL in shaderDir. Throws ShaderError.
     explicit PathTracer(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
+
+    // Recompiles the programs from shaderDir (after the files changed). Throws ShaderError and
+    // keeps the current programs when the new ones do not build; restarts accumulation when they do.
+    void reloadShaders();
+    const std::filesystem::path& shaderDir() const { return shaderDir_; }
 
     // Each of these restarts accumulation.
     // Reads scene.environmentMap unless the caller already has (environmentMap, to report a bad
@@ -50,35 +62,53 @@ public:
     void setMaterials(const std::vector<Material>& materials);
     void setSettings(const RenderSettings& settings); // restarts only when something changed
     void setImageSize(glm::ivec2 size);               // restarts only when the size changed
-    void restart() { accumulator_.restart(); }
+    void setCamera(const CameraDesc& camera);         // the camera's resolution is ignored
+    void restart();
 
+    // One sample per pixel over the whole image.
     void renderSample();
+    // Part of a sample: the next rowCount rows (or fewer, at the top) of the pass in progress, so
+    // that a slow GPU can spread one pass over several displayed frames. The new sums become
+    // visible (sampleCount() grows) when the pass's last row is done; returns whether it was.
+    bool renderRows(int rowCount);
+    int nextRow() const { return nextRow_; } // the first row of the pass not yet rendered
+    // Grows whenever accumulation starts over, so an observer can tell that it did.
+    int restartCount() const { return restartCount_; }
 
     int sampleCount() const { return accumulator_.sampleCount(); }
     glm::ivec2 imageSize() const { return accumulator_.size(); }
     const RenderSettings& settings() const { return settings_; }
 
-    // Draws the tone-mapped mean over the whole viewport of the bound draw framebuffer.
-    void display(glm::ivec2 viewportSize, float exposureStops) const;
+    // Draws the tone-mapped mean stretched over `target` of the bound draw framebuffer, touching
+    // only the pixels inside `clip` (the split view shows two renders side by side).
+    void display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const;
+    void display(PixelRect target, const DisplaySettings& settings) const { display(target, settings, target); }
 
     ImageRgbF readMean() const;
     PixelStatistics readStatistics() const { return accumulator_.readStatistics(); }
-    ImageRgba8 readToneMapped(float exposureStops) const;
+    ImageRgba8 readToneMapped(const DisplaySettings& settings) const;
 
 private:
+    // Both programs and the uniform locations found in them; rebuilt as a whole on reload.
+    struct Programs {
+        std::unique_ptr<GlProgram> pathTrace;
+        std::unique_ptr<GlProgram> display;
+        GLint sphereCount = -1;
+        GLint quadCount = -1;
+        GLint diskCount = -1;
+        GLint lightCount = -1;
+        GLint environmentLight = -1;
+        GLint invSampleCount = -1;
+        GLint exposureScale = -1;
+        GLint toneMapper = -1;
+        GLint outputOrigin = -1;
+        GLint outputSize = -1;
+    };
+    Programs buildPrograms() const;
     void updateFrameUniforms();
-    void setLightUniforms();
 
-    std::unique_ptr<GlProgram> pathTraceProgram_;
-    std::unique_ptr<GlProgram> displayProgram_;
-    GLint sphereCountLocation_ = -1;
-    GLint quadCountLocation_ = -1;
-    GLint diskCountLocation_ = -1;
-    GLint lightCountLocation_ = -1;
-    GLint environmentLightLocation_ = -1;
-    GLint invSampleCountLocation_ = -1;
-    GLint exposureScaleLocation_ = -1;
-    GLint outputSizeLocation_ = -1;
+    std::filesystem::path shaderDir_;
+    Programs programs_;
 
     GlVertexArray emptyVertexArray_; // core profile needs a VAO bound even without attributes
     GlBuffer frameUniformBuffer_;
@@ -89,6 +119,8 @@ private:
     CameraDesc camera_;
     glm::vec3 environmentRadiance_{0.0f};
     RenderSettings settings_;
+    int nextRow_ = 0;
+    int restartCount_ = 0;
 };
 
 } // namespace ptview

@@ -15,6 +15,13 @@ struct ToneMapperName {
     const char* label; // for the UI
 };
 
+// How the mean radiance becomes a displayed colour: scaled by 2^exposureStops, tone mapped, then
+// gamma 2.2.
+struct DisplaySettings {
+    float exposureStops = 0.0f;
+    ToneMapper toneMapper = ToneMapper::Reinhard;
+};
+
 inline const std::vector<ToneMapperName>& toneMapperNames() {
     static const std::vector<ToneMapperName> names = {
         {ToneMapper::Reinhard, "reinhard", "Reinhard (x / (1 + x))"},

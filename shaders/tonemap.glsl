@@ -1,12 +1,28 @@
-// Display transform: exposure, then Reinhard per channel, then gamma 2.2.
+// Display transform: exposure, then a tone mapper, then gamma 2.2. The tone mappers are numbered
+// as renderer/ToneMapper.h numbers them.
+const uint kToneMapperReinhard = 0u;
+const uint kToneMapperAces = 1u;
+const uint kToneMapperClamp = 2u;
+
 vec3 toneMapReinhard(vec3 radiance) {
     return radiance / (1.0 + radiance);
+}
+
+// Krzysztof Narkowicz's rational fit of the ACES reference rendering + output transforms: a
+// filmic toe and shoulder that keeps more contrast than Reinhard and reaches white at about 10.
+vec3 toneMapAces(vec3 radiance) {
+    vec3 x = radiance;
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 
 vec3 encodeGamma22(vec3 linear) {
     return pow(clamp(linear, 0.0, 1.0), vec3(1.0 / 2.2));
 }
 
-vec3 displayTransform(vec3 radiance, float exposureScale) {
-    return encodeGamma22(toneMapReinhard(max(radiance * exposureScale, vec3(0.0))));
+vec3 displayTransform(vec3 radiance, float exposureScale, uint toneMapper) {
+    vec3 exposed = max(radiance * exposureScale, vec3(0.0));
+    vec3 mapped = toneMapper == kToneMapperAces ? toneMapAces(exposed)
+                : toneMapper == kToneMapperClamp ? exposed
+                : toneMapReinhard(exposed);
+    return encodeGamma22(mapped);
 }

@@ -1,1 +1,303 @@
+#include "ViewerScript.h"
+
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace ptview;
+
+namespace {
+
+ViewerScript parse(const std::string& text) { return parseViewerScript(text, "s.txt"); }
+
+// The ScriptError message for text; fails the test when text parses.
+std::string errorOf(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const ScriptError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "parsed without an error:\n" << text;
+    return "";
+}
+
+std::vector<std::string> verbsOf(const ViewerScript& script) {
+    std::vector<std::string> verbs;
+    for (const ScriptCommand& command : script.commands) verbs.push_back(command.verb);
+    return verbs;
+}
+
+// The first word of each command line of the reference (field lines are indented).
+std::set<std::string> referenceVerbs() {
+    std::set<std::string> verbs;
+    std::istringstream lines(viewerScriptReference());
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty() && line[0] != ' ') verbs.insert(line.substr(0, line.find(' ')));
+    return verbs;
+}
+
+const char* kEveryVerb = R"(integrator mis
+sampler sobol
+depth 12
+seed 4294967295
+exposure -1.5
+tone-mapper aces
+resolution-scale 0.5
+samples-per-frame auto
+samples-per-frame 4
+pause
+resume
+target-spp 0
+set-material glass.ior 1.5
+set-light key.intensity 10 10 8
+environment assets/env/sky map.hdr
+environment none
+environment-intensity 2
+environment-rotation -90
+environment-color 0.1 0.2 0.3
+camera-orbit 30 -10
+camera-pan 0.1 -0.05
+camera-zoom 2
+camera-fov 45
+camera-reset
+load-scene assets/scenes/cornell.json
+reload
+compare on
+compare-integrator full
+compare-sampler stratified
+compare-depth 3
+divider 0.25
+frames 10
+wait-spp 64
+screenshot out/render.pfm
+screenshot-window out/window.png
+save-screenshots
+save-scene out/edited.json
+copy-file a.json b.json
+wait-reload
+status
+quit
+)";
+
+} // namespace
+
+TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
+    ViewerScript script = parse(kEveryVerb);
+    ASSERT_EQ(script.commands.size(), 41u);
+    EXPECT_EQ(script.path, "s.txt");
+
+    // The script must exercise every command the table has, so a new verb cannot go untested.
+    std::vector<std::string> verbs = verbsOf(script);
+    EXPECT_EQ(std::set<std::string>(verbs.begin(), verbs.end()), referenceVerbs());
+
+    for (std::size_t i = 0; i < script.commands.size(); ++i) EXPECT_EQ(script.commands[i].line, int(i) + 1);
+
+    const auto& c = script.commands;
+    EXPECT_EQ(c[0].verb, "integrator");
+    EXPECT_EQ(c[0].words, std::vector<std::string>{"mis"});
+    EXPECT_EQ(c[2].integer(0), 12);
+    EXPECT_EQ(c[3].unsignedInteger(0), 4294967295u);
+    EXPECT_FLOAT_EQ(c[4].number(0), -1.5f);
+    EXPECT_TRUE(c[7].isWord(0, "auto"));
+    EXPECT_FALSE(c[8].isWord(0, "auto"));
+    EXPECT_EQ(c[8].integer(0), 4);
+    EXPECT_TRUE(c[9].words.empty());
+
+    EXPECT_EQ(c[12].target, "glass");
+    EXPECT_EQ(c[12].field, "ior");
+    EXPECT_EQ(c[12].words, std::vector<std::string>{"1.5"});
+    EXPECT_EQ(c[13].target, "key");
+    EXPECT_EQ(c[13].field, "intensity");
+    EXPECT_EQ(c[13].vec3(0), glm::vec3(10.0f, 10.0f, 8.0f));
+
+    // A path is the rest of the line, spaces included.
+    EXPECT_EQ(c[14].words, std::vector<std::string>{"assets/env/sky map.hdr"});
+    EXPECT_TRUE(c[15].isWord(0, "none"));
+    EXPECT_EQ(c[18].vec3(0), glm::vec3(0.1f, 0.2f, 0.3f));
+    EXPECT_FLOAT_EQ(c[19].number(1), -10.0f);
+    EXPECT_EQ(c[26].words, std::vector<std::string>{"on"});
+    EXPECT_EQ(c[27].words, std::vector<std::string>{"full"});
+    EXPECT_EQ(c[33].words, std::vector<std::string>{"out/render.pfm"});
+    EXPECT_EQ(c[37].words, (std::vector<std::string>{"a.json", "b.json"}));
+    EXPECT_EQ(c[40].verb, "quit");
+}
+
+TEST(ViewerScript, CommentsAndBlankLinesAreSkippedButCountedAsLines) {
+    ViewerScript script = parse("# a demo\n"
+                                "\n"
+                                "   \t\n"
+                                "integrator full   # global illumination\n"
+                                "  # indented comment\n"
+                                "screenshot  out dir/my shot.png   # trailing comment\r\n"
+                                "quit");
+    ASSERT_EQ(script.commands.size(), 3u);
+    EXPECT_EQ(script.commands[0].line, 4);
+    EXPECT_EQ(script.commands[0].words, std::vector<std::string>{"full"});
+    EXPECT_EQ(script.commands[1].line, 6);
+    EXPECT_EQ(script.commands[1].words, std::vector<std::string>{"out dir/my shot.png"});
+    EXPECT_EQ(script.commands[2].line, 7); // no final newline
+    EXPECT_TRUE(parse("# only comments\n\n").commands.empty());
+}
+
+TEST(ViewerScript, MaterialNameWithDotsSplitsAtTheLastDot) {
+    ViewerScript script = parse("set-material glass.001.ior 1.45\nset-material light.bulb.emission 5 4 3\n");
+    EXPECT_EQ(script.commands[0].target, "glass.001");
+    EXPECT_EQ(script.commands[0].field, "ior");
+    EXPECT_FLOAT_EQ(script.commands[0].number(0), 1.45f);
+    EXPECT_EQ(script.commands[1].target, "light.bulb");
+    EXPECT_EQ(script.commands[1].field, "emission");
+    EXPECT_EQ(script.commands[1].vec3(0), glm::vec3(5.0f, 4.0f, 3.0f));
+}
+
+TEST(ViewerScript, UnknownCommandNamesItAndSuggestsTheNearest) {
+    EXPECT_EQ(errorOf("depth 3\nintegrater mis\n"), "s.txt:2: unknown command \"integrater\" (did you mean \"integrator\"?)");
+    EXPECT_EQ(errorOf("frobnicate\n"), "s.txt:1: unknown command \"frobnicate\" (see docs/viewer-script.md)");
+}
+
+TEST(ViewerScript, UnknownNamesListTheValidOnes) {
+    EXPECT_EQ(errorOf("# x\n\nintegrator foo\n"),
+              "s.txt:3: integrator: unknown integrator \"foo\" (valid: naive, direct, mis, full)");
+    EXPECT_EQ(errorOf("sampler halton"),
+              "s.txt:1: sampler: unknown sampler \"halton\" (valid: random, grid, stratified, sobol)");
+    EXPECT_EQ(errorOf("tone-mapper filmic"),
+              "s.txt:1: tone-mapper: unknown tone mapper \"filmic\" (valid: reinhard, aces, clamp)");
+    EXPECT_EQ(errorOf("compare yes"), "s.txt:1: compare: unknown value \"yes\" (valid: on, off)");
+    std::string type = errorOf("set-material m.type velvet");
+    EXPECT_NE(type.find("s.txt:1: set-material: type: unknown material type \"velvet\" (valid: diffuse, emitter,"),
+              std::string::npos)
+        << type;
+}
+
+TEST(ViewerScript, NumbersParseStrictly) {
+    EXPECT_EQ(errorOf("exposure 1.5x"), "s.txt:1: exposure: expected a number for F, got \"1.5x\"");
+    EXPECT_EQ(errorOf("depth 1.5"), "s.txt:1: depth: expected an integer for N, got \"1.5\"");
+    EXPECT_EQ(errorOf("depth 1e3"), "s.txt:1: depth: expected an integer for N, got \"1e3\"");
+    EXPECT_EQ(errorOf("camera-fov 0x10"), "s.txt:1: camera-fov: expected a number for DEG, got \"0x10\"");
+    EXPECT_EQ(errorOf("samples-per-frame fast"),
+              "s.txt:1: samples-per-frame: expected an integer or \"auto\" for N, got \"fast\"");
+    // A leading '+' is allowed, and so is a tiny value (it rounds to 0).
+    EXPECT_FLOAT_EQ(parse("camera-orbit +15 -5").commands[0].number(0), 15.0f);
+    EXPECT_EQ(parse("environment-rotation 1e-60").commands[0].number(0), 0.0f);
+}
+
+TEST(ViewerScript, NonFiniteNumbersAreRejected) {
+    EXPECT_EQ(errorOf("exposure nan"), "s.txt:1: exposure: F must be a finite number, got \"nan\"");
+    EXPECT_EQ(errorOf("environment-rotation -inf"),
+              "s.txt:1: environment-rotation: DEG must be a finite number, got \"-inf\"");
+    EXPECT_EQ(errorOf("camera-orbit 0 1e999"), "s.txt:1: camera-orbit: PITCH must be a finite number, got \"1e999\"");
+    EXPECT_EQ(errorOf("camera-pan 1e39 0"), "s.txt:1: camera-pan: RIGHT is too large for a float, got \"1e39\"");
+}
+
+TEST(ViewerScript, OutOfRangeValuesSayTheRange) {
+    EXPECT_EQ(errorOf("depth 2000"), "s.txt:1: depth: N must be in 0..1024, got 2000");
+    EXPECT_EQ(errorOf("depth 99999999999999999999999"),
+              "s.txt:1: depth: N must be in 0..1024, got 99999999999999999999999");
+    EXPECT_EQ(errorOf("seed -1"), "s.txt:1: seed: N must be in 0..4294967295, got -1");
+    EXPECT_EQ(errorOf("seed 4294967296"), "s.txt:1: seed: N must be in 0..4294967295, got 4294967296");
+    EXPECT_EQ(errorOf("exposure 21"), "s.txt:1: exposure: F must be in [-20, 20], got 21");
+    EXPECT_EQ(errorOf("resolution-scale 0.1"), "s.txt:1: resolution-scale: F must be in [0.125, 2], got 0.1");
+    EXPECT_EQ(errorOf("camera-zoom 0"), "s.txt:1: camera-zoom: FACTOR must be > 0, got 0");
+    EXPECT_EQ(errorOf("frames 0"), "s.txt:1: frames: N must be >= 1, got 0");
+    EXPECT_EQ(errorOf("target-spp -4"), "s.txt:1: target-spp: N must be >= 0, got -4");
+    EXPECT_EQ(errorOf("samples-per-frame 0"), "s.txt:1: samples-per-frame: N must be in 1..1024, got 0");
+    EXPECT_EQ(errorOf("divider 1.01"), "s.txt:1: divider: F must be in [0, 1], got 1.01");
+    EXPECT_EQ(errorOf("environment-color 0 -1 0"), "s.txt:1: environment-color: G must be >= 0, got -1");
+    EXPECT_EQ(errorOf("set-material m.color 0.5 1.5 0"), "s.txt:1: set-material: color: G must be in [0, 1], got 1.5");
+    EXPECT_EQ(errorOf("set-material m.ior 0.9"), "s.txt:1: set-material: ior: IOR must be in [1, 4], got 0.9");
+    EXPECT_EQ(errorOf("set-light l.outer-angle 190"),
+              "s.txt:1: set-light: outer-angle: DEG must be in [0, 180], got 190");
+    EXPECT_EQ(errorOf("set-light l.direction 0 0 0"), "s.txt:1: set-light: direction: must not be (0, 0, 0)");
+    // The bounds themselves are in range.
+    EXPECT_EQ(parse("depth 0\ndepth 1024\nresolution-scale 0.125\ncamera-fov 179\n").commands.size(), 4u);
+}
+
+TEST(ViewerScript, WrongArgumentCountSaysHowManyWereExpected) {
+    EXPECT_EQ(errorOf("depth 3 4"), "s.txt:1: depth: expected 1 argument (depth N), got 2");
+    EXPECT_EQ(errorOf("depth"), "s.txt:1: depth: expected 1 argument (depth N), got 0");
+    EXPECT_EQ(errorOf("pause now"), "s.txt:1: pause: expected no arguments (pause), got 1");
+    EXPECT_EQ(errorOf("camera-orbit 30"), "s.txt:1: camera-orbit: expected 2 arguments (camera-orbit YAW PITCH), got 1");
+    EXPECT_EQ(errorOf("screenshot   # where?"), "s.txt:1: screenshot: expected 1 argument (screenshot PATH), got 0");
+    EXPECT_EQ(errorOf("copy-file a b c"), "s.txt:1: copy-file: expected 2 arguments (copy-file SRC DST), got 3");
+    EXPECT_EQ(errorOf("set-material m.color 1 1"),
+              "s.txt:1: set-material: color: expected 3 values (set-material NAME.color R G B), got 2");
+}
+
+TEST(ViewerScript, OutputPathsNeedTheirExtension) {
+    EXPECT_EQ(errorOf("screenshot shot.jpg"), "s.txt:1: screenshot: PATH must end in .png or .pfm, got \"shot.jpg\"");
+    EXPECT_EQ(errorOf("screenshot-window w.pfm"), "s.txt:1: screenshot-window: PATH must end in .png, got \"w.pfm\"");
+    EXPECT_EQ(errorOf("save-scene edited.txt"), "s.txt:1: save-scene: PATH must end in .json, got \"edited.txt\"");
+    // The extension is compared as checkOutputPath does, ignoring case.
+    EXPECT_EQ(parse("screenshot SHOT.PNG").commands[0].words, std::vector<std::string>{"SHOT.PNG"});
+}
+
+TEST(ViewerScript, FieldEditsNeedNameDotKnownField) {
+    EXPECT_EQ(errorOf("set-material glass 1.5"),
+              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness), got \"glass\"");
+    EXPECT_EQ(errorOf("set-material glass. 1.5"),
+              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness), got \"glass.\"");
+    EXPECT_EQ(errorOf("set-material"),
+              "s.txt:1: set-material: expected NAME.FIELD and its values (FIELD: type, color, emission, ior, roughness)");
+    EXPECT_EQ(errorOf("set-material glass.colour 1 1 1"),
+              "s.txt:1: set-material: unknown field \"colour\" (valid: type, color, emission, ior, roughness)");
+    EXPECT_EQ(errorOf("set-light key.color 1 1 1"),
+              "s.txt:1: set-light: unknown field \"color\" (valid: intensity, position, direction, inner-angle, "
+              "outer-angle)");
+}
+
+TEST(ViewerScript, TheFirstBadLineStopsTheParse) {
+    EXPECT_EQ(errorOf("depth 3\n\n# fine so far\nexposure 1.5x\ndepth 9999\n"),
+              "s.txt:4: exposure: expected a number for F, got \"1.5x\"");
+}
+
+TEST(ViewerScript, LoadNamesAMissingFile) {
+    std::filesystem::path missing = std::filesystem::temp_directory_path() / "ptview-no-such-script.txt";
+    std::filesystem::remove(missing);
+    try {
+        loadViewerScript(missing);
+        FAIL() << "loaded a missing file";
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(missing.string() + ": cannot read", 0), 0u) << e.what();
+    }
+}
+
+TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
+    std::filesystem::path path = std::filesystem::temp_directory_path() / "ptview-viewer-script-test.txt";
+    {
+        std::ofstream file(path);
+        file << "# demo\nintegrator direct\nwait-spp 16\n";
+    }
+    ViewerScript script = loadViewerScript(path);
+    EXPECT_EQ(script.path, path);
+    EXPECT_EQ(verbsOf(script), (std::vector<std::string>{"integrator", "wait-spp"}));
+    EXPECT_EQ(script.commands[1].line, 3);
+
+    {
+        std::ofstream file(path);
+        file << "integrator direct\ndepth -1\n";
+    }
+    try {
+        loadViewerScript(path);
+        FAIL() << "loaded a bad script";
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()), path.string() + ":2: depth: N must be in 0..1024, got -1");
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
+    std::string reference = viewerScriptReference();
+    EXPECT_EQ(referenceVerbs().size(), 39u);
+    EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
+    EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
+    EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
+    EXPECT_NE(reference.find("N: integer in 1..1024, or auto"), std::string::npos) << reference;
+    EXPECT_NE(reference.find("    .color R G B"), std::string::npos);
+    EXPECT_NE(reference.find("R G B: number in [0, 1]"), std::string::npos) << reference;
+    EXPECT_NE(reference.find("    .outer-angle DEG"), std::string::npos);
+    EXPECT_NE(reference.find("PATH: ends in .png or .pfm"), std::string::npos);
+}

@@ -1,0 +1,44 @@
+#pragma once
+// The sections of the viewer's sidebar. Each draws its controls (inside the sidebar window,
+// under its own collapsing header drawn by the caller) and edits the session's model or calls
+// its actions; the session pushes the changes to the renderer. One file per panel.
+
+#include "ViewerSession.h"
+
+#include <string>
+
+namespace ptview {
+
+// Text the user is typing and choices that live between frames, one per viewer window.
+struct PanelState {
+    std::string scenePathInput;       // Scene panel: a path typed by the user
+    std::string environmentPathInput; // Environment panel: likewise, for an .hdr
+    std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
+    bool screenshotFailed = false;
+};
+
+// Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,
+// tone mapper, compare mode, screenshot button.
+void drawRenderPanel(ViewerSession& session, PanelState& state);
+// Open a scene from assets/scenes/ or a typed path; reload; load errors.
+void drawScenePanel(ViewerSession& session, PanelState& state);
+// Environment map from assets/ or a typed path, intensity, rotation, constant colour.
+void drawEnvironmentPanel(ViewerSession& session, PanelState& state);
+// Point and spot lights: intensity, colour, position, direction and cone; area lights listed
+// with their emission (edited in Materials).
+void drawLightsPanel(ViewerSession& session);
+// Field of view, eye, orbit target, reset.
+void drawCameraPanel(ViewerSession& session);
+// Samples per pixel, ms per frame, samples per second, elapsed time, error estimate and its plot,
+// for each view of a comparison.
+void drawStatsPanel(const ViewerSession& session, double frameSeconds);
+// Mouse and keyboard shortcuts.
+void drawHelpPanel();
+
+// Saves the screenshots (button and F12) and records the outcome in state.
+void saveScreenshots(ViewerSession& session, PanelState& state);
+
+// Where the viewer finds the scenes and maps it offers in its lists.
+inline const char* assetsDirectory() { return PTVIEW_ASSETS_DIR; }
+
+} // namespace ptview

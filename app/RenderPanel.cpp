@@ -1,0 +1,115 @@
+// The Render panel: how the image is computed and shown, the split view, and screenshots.
+#include "Panels.h"
+
+#include <imgui.h>
+
+#include <exception>
+
+namespace ptview {
+namespace {
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+void integratorCombo(const char* label, Integrator& integrator) {
+    const IntegratorName* current = &integratorNames()[0];
+    for (const IntegratorName& entry : integratorNames())
+        if (entry.integrator == integrator) current = &entry;
+    if (ImGui::BeginCombo(label, current->label)) {
+        for (const IntegratorName& entry : integratorNames())
+            if (ImGui::Selectable(entry.label, entry.integrator == integrator)) integrator = entry.integrator;
+        ImGui::EndCombo();
+    }
+}
+
+void samplerCombo(const char* label, SamplerMode& sampler) {
+    if (ImGui::BeginCombo(label, samplerModeName(sampler))) {
+        for (const SamplerModeName& entry : samplerModeNames())
+            if (ImGui::Selectable(entry.name, entry.mode == sampler)) sampler = entry.mode;
+        ImGui::EndCombo();
+    }
+}
+
+void toneMapperCombo(ToneMapper& toneMapper) {
+    const ToneMapperName* current = &toneMapperNames()[0];
+    for (const ToneMapperName& entry : toneMapperNames())
+        if (entry.toneMapper == toneMapper) current = &entry;
+    if (ImGui::BeginCombo("tone mapper", current->label)) {
+        for (const ToneMapperName& entry : toneMapperNames())
+            if (ImGui::Selectable(entry.label, entry.toneMapper == toneMapper)) toneMapper = entry.toneMapper;
+        ImGui::EndCombo();
+    }
+}
+
+} // namespace
+
+void saveScreenshots(ViewerSession& session, PanelState& state) {
+    try {
+        std::vector<std::filesystem::path> files = session.saveScreenshots("screenshots");
+        state.screenshotMessage = "saved";
+        for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + file.string();
+        state.screenshotFailed = false;
+    } catch (const std::exception& e) {
+        state.screenshotMessage = std::string("screenshot not saved: ") + e.what();
+        state.screenshotFailed = true;
+    }
+}
+
+void drawRenderPanel(ViewerSession& session, PanelState& state) {
+    ViewerModel& model = session.model();
+    RenderSettings& settings = model.settings;
+    integratorCombo(model.compare.enabled ? "integrator (left)" : "integrator", settings.integrator);
+    ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
+    tooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
+    samplerCombo(model.compare.enabled ? "sampler (left)" : "sampler", settings.sampler);
+
+    int perFrame = model.maxSamplesPerFrame;
+    if (ImGui::SliderInt("samples/frame", &perFrame, 0, 64, perFrame == 0 ? "auto" : "%d"))
+        model.maxSamplesPerFrame = perFrame;
+    tooltip("most samples per pixel per displayed frame; auto: as many as fit in 30 ms of GPU time.\n"
+            "A slow GPU renders a sample in tiles over several frames, so the window stays responsive.");
+    ImGui::SliderInt("target spp", &model.targetSamples, 0, 65536, model.targetSamples == 0 ? "none" : "%d",
+                     ImGuiSliderFlags_Logarithmic);
+    tooltip("stop accumulating at this many samples per pixel (grid and stratified samplers are fully\n"
+            "stratified there); 0: never stop");
+    if (ImGui::Button(model.paused ? "Resume" : "Pause")) model.paused = !model.paused;
+    ImGui::SameLine();
+    if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;
+    ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 1.0f, "%.3f x");
+    tooltip("render at this fraction of the window's pixels: faster, coarser");
+
+    ImGui::Separator();
+    ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");
+    toneMapperCombo(model.display.toneMapper);
+
+    ImGui::Separator();
+    ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
+    tooltip("two renders of the same scene side by side; drag the white divider (key C)");
+    if (model.compare.enabled) {
+        integratorCombo("integrator (right)", model.compare.right.integrator);
+        samplerCombo("sampler (right)", model.compare.right.sampler);
+        ImGui::SliderInt("MAX_DEPTH (right)", &model.compare.right.maxDepth, 0, 64);
+        ImGui::Checkbox("equal time", &model.compare.equalTime);
+        tooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
+                "off: both get the same number of samples per pixel");
+    }
+
+    ImGui::Separator();
+    if (ImGui::Button("Screenshot (F12)")) saveScreenshots(session, state);
+    tooltip("tone-mapped PNG and linear PFM of the image (each side in compare mode) into screenshots/");
+    if (!state.screenshotMessage.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(state.screenshotFailed ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f),
+                           "%s", state.screenshotMessage.c_str());
+        ImGui::PopTextWrapPos();
+    }
+    if (!model.shaderError.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "Shader reload failed (the last good shaders still run):\n%s",
+                           model.shaderError.c_str());
+        ImGui::PopTextWrapPos();
+    }
+}
+
+} // namespace ptview

@@ -1,0 +1,384 @@
+#include "ViewerSession.h"
+
+#include "ImageIO.h"
+#include "SceneMerge.h"
+#include "SceneWriter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kErrorEstimateIntervalSeconds = 1.0;
+constexpr size_t kErrorHistoryLength = 512;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::shared_ptr<const EnvironmentMap> shareMap(std::optional<EnvironmentMap>& map) {
+    return map ? std::make_shared<const EnvironmentMap>(std::move(*map)) : nullptr;
+}
+
+std::vector<std::filesystem::path> shaderFiles(const std::filesystem::path& directory) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+        std::string extension = entry.path().extension().string();
+        if (extension == ".glsl" || extension == ".frag" || extension == ".vert") files.push_back(entry.path());
+    }
+    return files;
+}
+
+// "cornell-20261123-071530": sorts by time and says what it shows.
+std::string screenshotStem(const Scene& scene) {
+    std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char time[32];
+    std::strftime(time, sizeof(time), "%Y%m%d-%H%M%S", &local);
+    std::string name = scene.path.empty() ? "scene" : scene.path.stem().string();
+    return name + "-" + time;
+}
+
+} // namespace
+
+ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, const DisplaySettings& display,
+                             std::filesystem::path shaderDir)
+    : shaderDir_(std::move(shaderDir)) {
+    model_.environmentMap = shareMap(input.environmentMap);
+    model_.scene = std::move(input.scene);
+    model_.fileScene = model_.scene;
+    model_.settings = settings;
+    model_.display = display;
+    model_.compare.right = settings;
+    left_.tracer = std::make_unique<PathTracer>(shaderDir_);
+    left_.tracer->setScene(model_.scene, model_.environmentMap.get());
+    watchFiles();
+}
+
+ViewerSession::~ViewerSession() = default;
+
+// ---- actions ---------------------------------------------------------------------------------
+
+void ViewerSession::applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map) {
+    model_.scene = std::move(scene);
+    model_.environmentMap = std::move(map);
+    model_.pendingChanges |= ViewerModel::kSceneChanged | ViewerModel::kCameraChanged;
+    model_.sceneError.clear();
+    watchFiles();
+}
+
+bool ViewerSession::openScene(const std::filesystem::path& path) {
+    ++reloadCount_;
+    try {
+        Scene scene = loadScene(path);
+        std::optional<EnvironmentMap> map;
+        if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
+        model_.fileScene = scene;
+        applyScene(std::move(scene), shareMap(map));
+        model_.notice = "opened " + path.string();
+        return true;
+    } catch (const std::exception& e) { // SceneError, EnvironmentMapError: both name the file
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+bool ViewerSession::reloadScene() {
+    ++reloadCount_;
+    try {
+        Scene reloaded = loadScene(model_.fileScene.path);
+        std::shared_ptr<const EnvironmentMap> map = model_.environmentMap;
+        SceneMergeResult merged = mergeReloadedScene(model_.fileScene, model_.scene, reloaded);
+        if (merged.scene.environmentMap != model_.scene.environmentMap || !map) {
+            std::optional<EnvironmentMap> loaded;
+            if (!merged.scene.environmentMap.empty()) loaded = loadEnvironmentMap(merged.scene.environmentMap);
+            map = shareMap(loaded);
+        }
+        model_.fileScene = std::move(reloaded);
+        applyScene(std::move(merged.scene), std::move(map));
+        model_.notice = "reloaded " + model_.fileScene.path.string();
+        for (const std::string& item : merged.overridden) model_.notice += "; the file replaced your edit of " + item;
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+bool ViewerSession::setEnvironmentMap(const std::filesystem::path& path) {
+    try {
+        std::shared_ptr<const EnvironmentMap> map;
+        if (!path.empty()) map = std::make_shared<const EnvironmentMap>(loadEnvironmentMap(path));
+        model_.scene.environmentMap = path;
+        model_.environmentMap = std::move(map);
+        model_.pendingChanges |= ViewerModel::kSceneChanged;
+        model_.sceneError.clear();
+        watchFiles();
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+void ViewerSession::resetCamera() {
+    model_.scene.camera = model_.fileScene.camera;
+    model_.pendingChanges |= ViewerModel::kCameraChanged;
+}
+
+void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
+    saveScene(model_.scene, path);
+    model_.scene.path = path;
+    model_.fileScene = model_.scene;
+    watchFiles();
+}
+
+void ViewerSession::writeImage(Side side, const std::filesystem::path& path) const {
+    const PathTracer& tracer = *view(side).tracer;
+    if (tracer.sampleCount() == 0) throw std::runtime_error("nothing rendered yet: wait for a sample");
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension == ".pfm")
+        writePfm(path, tracer.readMean());
+    else
+        writePng(path, tracer.readToneMapped(model_.display));
+}
+
+std::vector<std::filesystem::path> ViewerSession::saveScreenshots(const std::filesystem::path& directory) {
+    std::filesystem::create_directories(directory);
+    std::string stem = screenshotStem(model_.scene);
+    // Two saves within a second get distinct names.
+    for (int n = 2; std::filesystem::exists(directory / (stem + ".png")) ||
+                    std::filesystem::exists(directory / (stem + "-left.png"));
+         ++n)
+        stem = screenshotStem(model_.scene) + "-" + std::to_string(n);
+    std::vector<std::filesystem::path> written;
+    auto save = [&](Side side, const std::string& name) {
+        for (const char* extension : {".png", ".pfm"}) {
+            std::filesystem::path path = directory / (name + extension);
+            writeImage(side, path);
+            written.push_back(path);
+        }
+    };
+    if (comparing()) {
+        save(Side::Left, stem + "-left");
+        save(Side::Right, stem + "-right");
+    } else {
+        save(Side::Left, stem);
+    }
+    return written;
+}
+
+// ---- per frame -------------------------------------------------------------------------------
+
+void ViewerSession::watchFiles() {
+    std::vector<std::filesystem::path> files = shaderFiles(shaderDir_);
+    if (!model_.fileScene.path.empty()) files.push_back(model_.fileScene.path);
+    if (!model_.scene.environmentMap.empty()) files.push_back(model_.scene.environmentMap);
+    watcher_.watch(files);
+}
+
+void ViewerSession::pollFiles() {
+    std::vector<std::filesystem::path> changed = watcher_.poll();
+    if (changed.empty()) return;
+    bool sceneChanged = false, mapChanged = false, shaderChanged = false;
+    for (const std::filesystem::path& file : changed) {
+        if (file == model_.fileScene.path)
+            sceneChanged = true;
+        else if (file == model_.scene.environmentMap)
+            mapChanged = true;
+        else
+            shaderChanged = true;
+    }
+    if (sceneChanged)
+        reloadScene();
+    else if (mapChanged && setEnvironmentMap(model_.scene.environmentMap))
+        ++reloadCount_;
+    if (shaderChanged) reloadShaders();
+}
+
+void ViewerSession::reloadShaders() {
+    ++reloadCount_;
+    try {
+        left_.tracer->reloadShaders();
+        if (right_) right_->tracer->reloadShaders();
+        model_.shaderError.clear();
+        model_.notice = "shaders reloaded from " + shaderDir_.string();
+    } catch (const ShaderError& e) {
+        model_.shaderError = e.what();
+    }
+}
+
+void ViewerSession::setImageArea(PixelRect area) {
+    imageArea_ = area;
+}
+
+RenderSettings ViewerSession::effectiveSettings(const RenderSettings& settings) const {
+    RenderSettings effective = settings;
+    effective.seed = model_.settings.seed; // both sides of a comparison see the same random numbers
+    if (model_.targetSamples > 0) effective.sampleBudget = static_cast<std::uint32_t>(model_.targetSamples);
+    return effective;
+}
+
+void ViewerSession::syncView(View& view, const RenderSettings& settings, unsigned changes) {
+    PathTracer& tracer = *view.tracer;
+    if (changes & ViewerModel::kSceneChanged) {
+        tracer.setScene(model_.scene, model_.environmentMap.get());
+        view.cost.forget();
+    } else if (changes & ViewerModel::kMaterialsChanged) {
+        tracer.setMaterials(model_.scene.materials);
+    }
+    if (changes & ViewerModel::kCameraChanged) tracer.setCamera(model_.scene.camera);
+    if (changes & ViewerModel::kRestart) tracer.restart();
+    if (tracer.imageSize() != renderSize_) {
+        tracer.setImageSize(renderSize_);
+        view.cost.forget();
+    }
+    if (tracer.settings() != settings) view.cost.forget(); // another integrator costs differently
+    tracer.setSettings(settings);
+    trackRestart(view);
+}
+
+void ViewerSession::update() {
+    glm::vec2 scaled = glm::vec2(imageArea_.size) * model_.resolutionScale;
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    renderSize_ = glm::clamp(glm::ivec2(glm::round(scaled)), glm::ivec2(1), glm::ivec2(maxSize));
+
+    unsigned changes = model_.pendingChanges;
+    model_.pendingChanges = 0;
+    if (model_.compare.enabled && !right_) {
+        // A first comparison shows something worth comparing: MIS against what the left side has.
+        CompareSettings& compare = model_.compare;
+        if (compare.right == model_.settings)
+            compare.right.integrator = model_.settings.integrator == Integrator::Mis ? Integrator::Naive : Integrator::Mis;
+        right_ = std::make_unique<View>();
+        right_->tracer = std::make_unique<PathTracer>(shaderDir_);
+        right_->tracer->setScene(model_.scene, model_.environmentMap.get());
+        right_->tracer->setCamera(model_.scene.camera);
+    }
+    try {
+        syncView(left_, effectiveSettings(model_.settings), changes);
+        if (right_) syncView(*right_, effectiveSettings(model_.compare.right), changes);
+    } catch (const EnvironmentMapError& e) { // a map larger than this GPU's textures
+        model_.sceneError = e.what();
+        setEnvironmentMap({});
+    }
+}
+
+void ViewerSession::trackRestart(View& view) {
+    if (view.tracer->restartCount() == view.seenRestartCount) return;
+    view.seenRestartCount = view.tracer->restartCount();
+    view.renderSeconds = 0.0;
+    view.error = ErrorEstimate{};
+    view.estimatedSamples = 0;
+    view.errorHistory.clear();
+}
+
+bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
+    if (model_.paused) return false;
+    if (model_.targetSamples > 0 && view.tracer->sampleCount() >= model_.targetSamples) return false;
+    return model_.maxSamplesPerFrame <= 0 || passesThisFrame < model_.maxSamplesPerFrame;
+}
+
+bool ViewerSession::accumulating() const {
+    bool left = wantsSamples(left_, 0);
+    return comparing() ? left || wantsSamples(*right_, 0) : left;
+}
+
+void ViewerSession::renderFrame() {
+    View* views[2] = {&left_, comparing() ? right_.get() : nullptr};
+    int passes[2] = {0, 0};
+    Clock::time_point frameStart = Clock::now();
+    bool worked = false;
+    for (;;) {
+        // The view that is behind goes next: in GPU time, or in samples (with the pass in
+        // progress counted as a fraction).
+        int next = -1;
+        double behind = 0.0;
+        for (int i = 0; i < 2; ++i) {
+            if (!views[i] || !wantsSamples(*views[i], passes[i])) continue;
+            const PathTracer& tracer = *views[i]->tracer;
+            double progress = model_.compare.equalTime
+                                  ? views[i]->renderSeconds
+                                  : tracer.sampleCount() + double(tracer.nextRow()) / tracer.imageSize().y;
+            if (next < 0 || progress < behind) next = i, behind = progress;
+        }
+        if (next < 0) break;
+        double remaining = kFrameBudgetSeconds - secondsSince(frameStart);
+        View& chosen = *views[next];
+        if (worked && (remaining <= 0.0 || chosen.cost.rowOverruns(remaining))) break;
+        PathTracer& tracer = *chosen.tracer;
+        int rows = chosen.cost.rowsFitting(remaining, tracer.imageSize().y - tracer.nextRow());
+        Clock::time_point tileStart = Clock::now();
+        bool passDone = tracer.renderRows(rows);
+        glFinish(); // the time of this tile's GPU work, not of its submission
+        double seconds = secondsSince(tileStart);
+        chosen.cost.record(rows, seconds);
+        chosen.renderSeconds += seconds;
+        worked = true;
+        if (passDone) ++passes[next];
+    }
+    for (View* v : views)
+        if (v) updateErrorEstimate(*v);
+}
+
+void ViewerSession::updateErrorEstimate(View& view) {
+    int samples = view.tracer->sampleCount();
+    if (samples < 2 || samples == view.estimatedSamples) return;
+    if (secondsSince(view.lastEstimate) < kErrorEstimateIntervalSeconds) return;
+    view.lastEstimate = Clock::now();
+    view.estimatedSamples = samples;
+    view.error = estimateError(view.tracer->readStatistics());
+    if (view.errorHistory.size() == kErrorHistoryLength) view.errorHistory.erase(view.errorHistory.begin());
+    view.errorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.error.relativeError));
+}
+
+int ViewerSession::dividerX() const {
+    float fraction = std::clamp(model_.compare.dividerFraction, 0.0f, 1.0f);
+    return imageArea_.origin.x + static_cast<int>(std::round(fraction * static_cast<float>(imageArea_.size.x)));
+}
+
+void ViewerSession::display() const {
+    if (!comparing()) {
+        left_.tracer->display(imageArea_, model_.display);
+        return;
+    }
+    int divider = dividerX();
+    PixelRect leftClip{imageArea_.origin, {divider - imageArea_.origin.x, imageArea_.size.y}};
+    PixelRect rightClip{{divider, imageArea_.origin.y}, {imageArea_.origin.x + imageArea_.size.x - divider, imageArea_.size.y}};
+    if (leftClip.size.x > 0) left_.tracer->display(imageArea_, model_.display, leftClip);
+    if (rightClip.size.x > 0) right_->tracer->display(imageArea_, model_.display, rightClip);
+    // The divider: two pixels of white, drawn by clearing a scissored column.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(divider - 1, imageArea_.origin.y, 2, imageArea_.size.y);
+    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+ViewerSession::ViewStats ViewerSession::stats(Side side) const {
+    const View& v = view(side);
+    ViewStats stats;
+    stats.samples = v.tracer->sampleCount();
+    stats.renderSeconds = v.renderSeconds;
+    glm::ivec2 size = v.tracer->imageSize();
+    if (v.renderSeconds > 0.0)
+        stats.samplesPerSecond = double(size.x) * size.y * (stats.samples + double(v.tracer->nextRow()) / size.y) / v.renderSeconds;
+    stats.error = v.error;
+    stats.errorHistory = v.errorHistory;
+    return stats;
+}
+
+const RenderSettings& ViewerSession::settings(Side side) const {
+    return view(side).tracer->settings();
+}
+
+} // namespace ptview

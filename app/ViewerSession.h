@@ -1,0 +1,114 @@
+#pragma once
+// The viewer without its window: the model the user edits, the path tracer(s) that render it,
+// and the actions the panels, keys and scripts share (open, reload, screenshots). Each frame the
+// window calls pollFiles, update, renderFrame and display. It needs a current OpenGL context but
+// knows nothing about GLFW or ImGui, so tests can drive it headless.
+
+#include "ErrorEstimate.h"
+#include "FileWatcher.h"
+#include "PathTracer.h"
+#include "SceneInput.h"
+#include "TileCost.h"
+#include "ViewerModel.h"
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ptview {
+
+class ViewerSession {
+public:
+    // At most this much path tracing per displayed frame, so the UI stays responsive even on a
+    // software rasterizer (the rest of a frame, UI and display, takes a few ms).
+    static constexpr double kFrameBudgetSeconds = 0.030;
+
+    enum class Side { Left, Right }; // Left is the only view outside compare mode
+
+    // What the Stats panel shows for one view.
+    struct ViewStats {
+        int samples = 0;
+        double renderSeconds = 0.0; // GPU time spent on the current accumulation
+        double samplesPerSecond = 0.0;
+        ErrorEstimate error;
+        // (render seconds, relative error) once a second or so, for the error-vs-time plot.
+        std::vector<std::pair<float, float>> errorHistory;
+    };
+
+    // Compiles the programs from shaderDir (throws ShaderError).
+    ViewerSession(SceneInput input, const RenderSettings& settings, const DisplaySettings& display,
+                  std::filesystem::path shaderDir);
+    ~ViewerSession();
+
+    ViewerModel& model() { return model_; }
+    const ViewerModel& model() const { return model_; }
+
+    // Actions. A file that cannot be read sets model().sceneError and changes nothing else.
+    bool openScene(const std::filesystem::path& path);
+    bool reloadScene(); // merges the file's changes with the user's edits (SceneMerge.h)
+    bool setEnvironmentMap(const std::filesystem::path& path); // empty: none (the constant colour)
+    void resetCamera();                                          // to the scene file's camera
+    // Writes the scene with the user's edits (atomically) and makes that file the scene's file,
+    // the one hot reload watches. Throws SceneError naming the file when it cannot be written.
+    void saveSceneAs(const std::filesystem::path& path);
+    // Tone-mapped PNG and linear PFM of each view into directory, named after the scene and the
+    // time; returns the files written. Throws std::runtime_error when nothing is rendered yet or
+    // a file cannot be written.
+    std::vector<std::filesystem::path> saveScreenshots(const std::filesystem::path& directory);
+    // One image of a view: .png tone mapped as displayed, or .pfm linear. Throws as above.
+    void writeImage(Side side, const std::filesystem::path& path) const;
+
+    // Per frame, in this order.
+    void pollFiles();                   // hot reload of the scene, its environment map and the shaders
+    void setImageArea(PixelRect area);  // where the image goes in the window's framebuffer
+    void update();                      // pushes model changes to the renderer(s)
+    void renderFrame();                 // path traces for up to kFrameBudgetSeconds
+    void display() const;               // draws the view(s) into the image area
+
+    bool comparing() const { return model_.compare.enabled && right_ != nullptr; }
+    ViewStats stats(Side side) const;
+    const RenderSettings& settings(Side side) const;
+    glm::ivec2 renderSize() const { return renderSize_; }
+    PixelRect imageArea() const { return imageArea_; }
+    int dividerX() const; // framebuffer column of the split view's divider
+    // Reload attempts so far (scene, environment map or shaders, successful or not).
+    int reloadCount() const { return reloadCount_; }
+    // Whether the views still accumulate (not paused, target not reached).
+    bool accumulating() const;
+
+private:
+    struct View {
+        std::unique_ptr<PathTracer> tracer;
+        TileCost cost;
+        double renderSeconds = 0.0;
+        int seenRestartCount = -1; // the tracer's restartCount() when renderSeconds was zeroed
+        int estimatedSamples = 0;  // the sample count `error` was estimated at
+        ErrorEstimate error;
+        std::vector<std::pair<float, float>> errorHistory;
+        std::chrono::steady_clock::time_point lastEstimate{};
+    };
+
+    View& view(Side side) { return side == Side::Left ? left_ : *right_; }
+    const View& view(Side side) const { return side == Side::Left ? left_ : *right_; }
+    RenderSettings effectiveSettings(const RenderSettings& settings) const;
+    bool wantsSamples(const View& view, int passesThisFrame) const;
+    void syncView(View& view, const RenderSettings& settings, unsigned changes);
+    void trackRestart(View& view);
+    void updateErrorEstimate(View& view);
+    void watchFiles();
+    void reloadShaders();
+    void applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map);
+
+    ViewerModel model_;
+    std::filesystem::path shaderDir_;
+    View left_;
+    std::unique_ptr<View> right_; // created the first time compare mode is turned on
+    PixelRect imageArea_;
+    glm::ivec2 renderSize_{0, 0};
+    FileWatcher watcher_;
+    int reloadCount_ = 0;
+};
+
+} // namespace ptview
