@@ -13,7 +13,8 @@ struct Shortcut {
 
 constexpr Shortcut kShortcuts[] = {
     {"Left drag", "orbit"},
-    {"Right / middle drag, Shift+left drag", "pan"},
+    {"Right or middle drag", "pan"},
+    {"Shift+left drag", "pan"},
     {"Wheel", "zoom"},
     {"W A S D", "fly (Shift: faster)"},
     {"Q E", "down / up (Shift: faster)"},

@@ -45,7 +45,7 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     ImGui::Text("%d x %d pixels, %.1f ms/frame", size.x, size.y, frameSeconds * 1e3);
     ImGui::Text("%.2f M samples/s, %.1f s rendering", stats.samplesPerSecond * 1e-6, stats.renderSeconds);
     if (stats.error.relativeError > 0.0)
-        ImGui::Text("relative error %.3f %%", stats.error.relativeError * 100.0);
+        ImGui::Text("relative error %.3g %%", stats.error.relativeError * 100.0);
     else
         ImGui::TextUnformatted("relative error -");
     itemTooltip("RMS standard error of the mean relative to the image's average, estimated from each pixel's own "

@@ -124,5 +124,77 @@ TEST(PathTracer, ChangingSettingsOrSizeRestartsAccumulation) {
     EXPECT_THROW(tracer.setImageSize({1 << 20, 10}), std::invalid_argument);
 }
 
+// The viewer spreads a sample over several frames in row tiles; the sums must be exactly those of
+// whole passes, and the new sample must only show once its last row is done.
+TEST(PathTracer, RowTilesAccumulateExactlyLikeWholePasses) {
+    testing::glContext();
+    Scene scene = cornell();
+    RenderSettings settings{4, 11};
+    settings.sampler = SamplerMode::Sobol;
+    PathTracer whole, tiled;
+    for (PathTracer* tracer : {&whole, &tiled}) {
+        tracer->setScene(scene);
+        tracer->setImageSize(kSize);
+        tracer->setSettings(settings);
+    }
+    for (int i = 0; i < 3; ++i) whole.renderSample();
+    int passes = 0;
+    while (passes < 3) {
+        int before = tiled.sampleCount();
+        bool done = tiled.renderRows(7); // 48 rows: 6 full tiles and one of 6
+        EXPECT_EQ(tiled.sampleCount(), before + (done ? 1 : 0));
+        passes += done ? 1 : 0;
+    }
+    EXPECT_EQ(tiled.nextRow(), 0);
+    ImageRgbF a = whole.readMean(), b = tiled.readMean();
+    ASSERT_EQ(a.rgb.size(), b.rgb.size());
+    for (size_t i = 0; i < a.rgb.size(); ++i) ASSERT_EQ(a.rgb[i], b.rgb[i]) << "at float " << i;
+}
+
+TEST(PathTracer, RestartMidPassStartsTheNextPassAtRowZero) {
+    testing::glContext();
+    PathTracer tracer;
+    tracer.setScene(cornell());
+    tracer.setImageSize(kSize);
+    tracer.renderSample();
+    EXPECT_FALSE(tracer.renderRows(10));
+    EXPECT_EQ(tracer.nextRow(), 10);
+    int restarts = tracer.restartCount();
+    tracer.setCamera(cornell().camera);
+    EXPECT_EQ(tracer.restartCount(), restarts + 1);
+    EXPECT_EQ(tracer.nextRow(), 0);
+    EXPECT_EQ(tracer.sampleCount(), 0);
+    EXPECT_TRUE(tracer.renderRows(kSize.y));
+    EXPECT_EQ(tracer.sampleCount(), 1);
+}
+
+// A constant environment seen directly (depth 0): every pixel's mean is that radiance, so each
+// tone mapper's output is known in closed form.
+TEST(PathTracer, ToneMappersMatchTheirFormulas) {
+    testing::glContext();
+    Scene scene;
+    scene.camera.resolution = {8, 8};
+    scene.environment = glm::vec3(0.25f, 1.0f, 4.0f);
+    PathTracer tracer;
+    tracer.setScene(scene);
+    tracer.setImageSize({8, 8});
+    tracer.setSettings(RenderSettings{0, 1});
+    tracer.renderSample();
+    auto encode = [](double linear) { return std::pow(std::min(std::max(linear, 0.0), 1.0), 1.0 / 2.2) * 255.0; };
+    auto reinhard = [](double x) { return x / (1.0 + x); };
+    auto aces = [](double x) { return (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14); };
+    const float exposureStops = 1.0f; // doubles the radiance first
+    for (const ToneMapperName& entry : toneMapperNames()) {
+        ImageRgba8 image = tracer.readToneMapped(DisplaySettings{exposureStops, entry.toneMapper});
+        for (int c = 0; c < 3; ++c) {
+            double x = 2.0 * scene.environment[c];
+            double expected = entry.toneMapper == ToneMapper::Reinhard ? encode(reinhard(x))
+                            : entry.toneMapper == ToneMapper::Aces     ? encode(aces(x))
+                                                                       : encode(x);
+            EXPECT_NEAR(image.rgba[static_cast<size_t>(c)], expected, 1.0) << entry.name << " channel " << c;
+        }
+    }
+}
+
 } // namespace
 } // namespace ptview

@@ -1,0 +1,192 @@
+// The viewer's session headless: hot reload of the scene and the shaders keeps the last good
+// ones and the user's edits, the split view renders both sides, screenshots land where they say.
+#include "GlTestContext.h"
+#include "ImageIO.h"
+#include "SceneInput.h"
+#include "ViewerSession.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshDirectory(const std::string& name) {
+    fs::path directory = fs::temp_directory_path() / ("ptview_session_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+    return directory;
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+// Past the watcher's polling interval (250 ms), so the next pollFiles looks at the disk.
+void waitForWatcher() {
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+}
+
+const Material& material(const ViewerSession& session, const std::string& name) {
+    for (const Material& m : session.model().scene.materials)
+        if (m.name == name) return m;
+    throw std::runtime_error("no material " + name);
+}
+
+class ViewerSessionTest : public ::testing::Test {
+protected:
+    void SetUp() override { testing::glContext(); }
+
+    std::unique_ptr<ViewerSession> openSession(const fs::path& scenePath, const fs::path& shaderDir = PTVIEW_SHADER_DIR) {
+        std::optional<SceneInput> input = loadSceneInput(scenePath.string());
+        EXPECT_TRUE(input);
+        RenderSettings settings;
+        settings.maxDepth = 3;
+        auto session = std::make_unique<ViewerSession>(std::move(*input), settings, DisplaySettings{}, shaderDir);
+        session->setImageArea(PixelRect{{0, 0}, {24, 24}});
+        session->update();
+        return session;
+    }
+
+    static void renderSamples(ViewerSession& session, int samples) {
+        session.update();
+        while (session.stats(ViewerSession::Side::Left).samples < samples ||
+               (session.comparing() && session.stats(ViewerSession::Side::Right).samples < samples))
+            session.renderFrame();
+    }
+};
+
+TEST_F(ViewerSessionTest, BrokenSceneReloadKeepsTheSceneAndEditsThenAGoodOneMergesWithThem) {
+    fs::path directory = freshDirectory("reload");
+    fs::path scenePath = directory / "cornell.json";
+    const std::string original = readText(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    writeText(scenePath, original);
+    auto session = openSession(scenePath);
+    renderSamples(*session, 2);
+
+    // The user's edit in the UI.
+    for (Material& m : session->model().scene.materials)
+        if (m.name == "white") m.color = glm::vec3(0.2f, 0.7f, 0.2f);
+    session->model().pendingChanges |= ViewerModel::kMaterialsChanged;
+    renderSamples(*session, 2);
+
+    // A save that breaks the file: the error names it, the scene and the edit stay, and it renders on.
+    waitForWatcher();
+    writeText(scenePath, original.substr(0, original.size() / 2));
+    int reloads = session->reloadCount();
+    session->pollFiles();
+    EXPECT_EQ(session->reloadCount(), reloads + 1);
+    EXPECT_NE(session->model().sceneError.find(scenePath.string()), std::string::npos) << session->model().sceneError;
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f));
+    EXPECT_EQ(session->model().scene.shapes.size(), loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json").shapes.size());
+    int samples = session->stats(ViewerSession::Side::Left).samples;
+    renderSamples(*session, samples + 1);
+
+    // The file fixed, with a brighter light: the light comes from the file, the edit survives.
+    waitForWatcher();
+    writeText(scenePath, replaced(original, "[17.0, 12.0, 4.0]", "[34.0, 24.0, 8.0]"));
+    session->pollFiles();
+    EXPECT_EQ(session->model().sceneError, "");
+    EXPECT_EQ(material(*session, "light").radiance, glm::vec3(34.0f, 24.0f, 8.0f));
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f));
+    session->update();
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0) << "a reload restarts accumulation";
+    fs::remove_all(directory);
+}
+
+TEST_F(ViewerSessionTest, BrokenShaderReloadKeepsTheLastGoodProgram) {
+    fs::path directory = freshDirectory("shaders");
+    fs::copy(PTVIEW_SHADER_DIR, directory, fs::copy_options::recursive);
+    fs::path scenePath = fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json";
+    auto session = openSession(scenePath, directory);
+    renderSamples(*session, 1);
+
+    const std::string goodToneMap = readText(directory / "tonemap.glsl");
+    waitForWatcher();
+    writeText(directory / "tonemap.glsl", goodToneMap + "\nthis is not GLSL;\n");
+    session->pollFiles();
+    const std::string& error = session->model().shaderError;
+    EXPECT_NE(error.find("tonemap.glsl:"), std::string::npos) << "the error names the file and line: " << error;
+    int samples = session->stats(ViewerSession::Side::Left).samples;
+    renderSamples(*session, samples + 2); // the old program still renders
+
+    waitForWatcher();
+    writeText(directory / "tonemap.glsl", goodToneMap);
+    session->pollFiles();
+    EXPECT_EQ(session->model().shaderError, "");
+    EXPECT_NE(session->model().notice.find("shaders reloaded"), std::string::npos);
+    renderSamples(*session, 1);
+    fs::remove_all(directory);
+}
+
+TEST_F(ViewerSessionTest, SplitViewRendersBothSidesWithTheirOwnSettings) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    model.settings.integrator = Integrator::Naive;
+    model.compare.enabled = true;
+    model.compare.equalTime = false; // equal samples: both sides advance together
+    model.compare.right.integrator = Integrator::Mis;
+    renderSamples(*session, 3);
+    ASSERT_TRUE(session->comparing());
+    int left = session->stats(ViewerSession::Side::Left).samples;
+    int right = session->stats(ViewerSession::Side::Right).samples;
+    EXPECT_LE(std::abs(left - right), 1);
+    EXPECT_EQ(session->settings(ViewerSession::Side::Left).integrator, Integrator::Naive);
+    EXPECT_EQ(session->settings(ViewerSession::Side::Right).integrator, Integrator::Mis);
+
+    fs::path directory = freshDirectory("compare");
+    std::vector<fs::path> files = session->saveScreenshots(directory);
+    ASSERT_EQ(files.size(), 4u); // PNG and PFM of each side
+    ImageRgbF naive = readPfm(files[1]), mis = readPfm(files[3]);
+    EXPECT_NE(files[1].filename().string().find("cornell-"), std::string::npos);
+    EXPECT_NE(files[1].filename().string().find("-left.pfm"), std::string::npos);
+    EXPECT_NE(naive.rgb, mis.rgb) << "two integrators, two images";
+    fs::remove_all(directory);
+}
+
+TEST_F(ViewerSessionTest, TargetSamplesStopsAccumulationAtExactlyTheTarget) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    session->model().targetSamples = 5;
+    session->update();
+    for (int frame = 0; frame < 200 && session->accumulating(); ++frame) session->renderFrame();
+    EXPECT_FALSE(session->accumulating());
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 5);
+    session->renderFrame();
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 5);
+}
+
+TEST_F(ViewerSessionTest, UnreadableSceneOrMapLeavesTheCurrentSceneAlone) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    size_t shapes = session->model().scene.shapes.size();
+    EXPECT_FALSE(session->openScene("/nonexistent/scene.json"));
+    EXPECT_NE(session->model().sceneError.find("/nonexistent/scene.json"), std::string::npos);
+    EXPECT_FALSE(session->setEnvironmentMap("/nonexistent/sky.hdr"));
+    EXPECT_NE(session->model().sceneError.find("/nonexistent/sky.hdr"), std::string::npos);
+    EXPECT_EQ(session->model().scene.shapes.size(), shapes);
+    EXPECT_TRUE(session->model().scene.environmentMap.empty());
+    renderSamples(*session, 1);
+}
+
+} // namespace
+} // namespace ptview
