@@ -77,7 +77,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
     app.add_option("scene", viewer.scenePath, "scene JSON to open")->capture_default_str();
     addRenderSettings(app, viewer.settings, viewer.display);
-    app.add_option("--frames", viewer.frames, "render this many frames, save --screenshot and exit")
+    app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
     app.add_option("--script", viewer.scriptPath, "run viewer commands from FILE (docs/viewer-script.md)")

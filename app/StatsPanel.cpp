@@ -23,10 +23,11 @@ void drawErrorPlot(const ViewerSession::ViewStats& stats) {
         if (error > 0.0f && std::isfinite(error)) logErrors.push_back(std::log10(error));
     if (logErrors.size() < 2) return;
     char overlay[48];
-    std::snprintf(overlay, sizeof overlay, "log10 error %.2f", static_cast<double>(logErrors.back()));
+    std::snprintf(overlay, sizeof overlay, "%.3g %% (log scale)", 100.0 * stats.errorHistory.back().second);
+    // An explicit width: PlotLines in ImGui 1.86 does not take -1 to mean "to the right edge".
     ImGui::PlotLines("##error", logErrors.data(), static_cast<int>(logErrors.size()), 0, overlay, FLT_MAX, FLT_MAX,
-                     ImVec2(-1.0f, kPlotHeight));
-    itemTooltip("log10 of the relative error against render time, about once a second");
+                     ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
+    itemTooltip("log10 of the relative error, about once a second of rendering");
 }
 
 void drawViewStats(const ViewerSession& session, ViewerSession::Side side, double frameSeconds) {

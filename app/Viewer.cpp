@@ -346,7 +346,9 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
             script->frameDisplayed();
         }
         ++frame;
-        if (options_.frames > 0 && frame >= options_.frames) {
+        // A slow GPU spreads a sample over several frames: the screenshot waits for the first.
+        bool somethingShown = warpVisualizer_.active() || session_.stats(ViewerSession::Side::Left).samples > 0;
+        if (options_.frames > 0 && frame >= options_.frames && somethingShown) {
             writePng(options_.screenshotPath, readWindow(framebufferSize_));
             std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp)\n", options_.screenshotPath.c_str(), frame,
                          session_.stats(ViewerSession::Side::Left).samples);

@@ -1,0 +1,232 @@
+// The real viewer binary in a real window (Xvfb), driven by `--script` files: settings and edits
+// restart accumulation and change the image the way a headless render of the edited scene says,
+// the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots.
+#include "ImageIO.h"
+#include "RunCommand.h"
+#include "Scene.h"
+
+#include <stb_image.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kXvfb = "xvfb-run -a -s '-screen 0 1600x1000x24' ";
+const std::string kCornell = PTVIEW_ASSETS_DIR "/scenes/cornell.json";
+
+fs::path freshDirectory(const std::string& name) {
+    fs::path directory = fs::temp_directory_path() / ("ptview_scripted_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+    return directory;
+}
+
+testing::CommandResult runViewer(const fs::path& directory, const std::string& scene, const std::string& script,
+                                 const std::string& extraArguments = "") {
+    fs::path scriptPath = directory / "script.txt";
+    std::ofstream(scriptPath) << script;
+    return testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb + PTVIEW_BINARY + " " +
+                               testing::shellQuoted(scene) + " --script " + testing::shellQuoted(scriptPath.string()) +
+                               " " + extraArguments);
+}
+
+// The `status` lines a script printed, in order.
+std::vector<std::string> statusLines(const std::string& output) {
+    std::vector<std::string> lines;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("status ", 0) == 0) lines.push_back(line);
+    return lines;
+}
+
+std::string field(const std::string& statusLine, const std::string& name) {
+    std::smatch match;
+    std::regex pattern(" " + name + "=(\"[^\"]*\"|\\S+)");
+    return std::regex_search(statusLine, match, pattern) ? match[1].str() : "<missing " + name + ">";
+}
+
+glm::dvec3 regionMean(const ImageRgbF& image, int x0, int x1, int y0, int y1) {
+    glm::dvec3 sum(0.0);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) sum += glm::dvec3(image.at(x, y));
+    return sum / double((x1 - x0) * (y1 - y0));
+}
+
+class ScriptedViewer : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_EQ(testing::runCommand("command -v xvfb-run").exitCode, 0)
+            << "xvfb-run is missing: scripts/test installs the xvfb package";
+    }
+};
+
+// The strongest check that an edit restarts accumulation and is applied exactly: after it, the
+// viewer's image equals a headless render of the saved, edited scene with the same settings.
+TEST_F(ScriptedViewer, EditsRestartAccumulationAndMatchAHeadlessRenderOfTheEditedScene) {
+    fs::path directory = freshDirectory("edits");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(# 192x192 of the 768x768 image area
+resolution-scale 0.25
+seed 7
+sampler sobol
+depth 4
+target-spp 4
+wait-spp 4
+screenshot before.pfm
+status
+integrator mis
+status
+wait-spp 4
+status
+set-material red.color 0.1 0.1 0.9
+status
+wait-spp 4
+status
+screenshot after.pfm
+save-scene edited.json
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 5u) << result.output;
+    EXPECT_EQ(field(status[0], "spp"), "4");
+    EXPECT_EQ(field(status[0], "size"), "192x192");
+    EXPECT_EQ(field(status[1], "spp"), "0") << "changing the integrator restarts accumulation";
+    EXPECT_EQ(field(status[1], "integrator"), "mis");
+    EXPECT_EQ(field(status[2], "spp"), "4") << "and it stops again at the target";
+    EXPECT_EQ(field(status[3], "spp"), "0") << "editing a material restarts accumulation";
+    EXPECT_EQ(field(status[4], "spp"), "4");
+
+    Scene edited = loadScene(directory / "edited.json");
+    bool found = false;
+    for (const Material& m : edited.materials)
+        if (m.name == "red") {
+            found = true;
+            EXPECT_EQ(m.color, glm::vec3(0.1f, 0.1f, 0.9f));
+        }
+    EXPECT_TRUE(found);
+
+    testing::CommandResult render = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted((directory / "edited.json").string()) +
+        " --size 192x192 --spp 4 --seed 7 --sampler sobol --depth 4 --integrator mis --out " +
+        testing::shellQuoted((directory / "headless.pfm").string()));
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    ImageRgbF viewer = readPfm(directory / "after.pfm"), headless = readPfm(directory / "headless.pfm");
+    ASSERT_EQ(viewer.rgb.size(), headless.rgb.size());
+    for (size_t i = 0; i < viewer.rgb.size(); ++i)
+        ASSERT_NEAR(viewer.rgb[i], headless.rgb[i], 1e-5f * (1.0f + std::abs(headless.rgb[i]))) << "at float " << i;
+
+    // And the edit shows where it should: the left wall's albedo went from (0.63, 0.065, 0.05) to
+    // (0.1, 0.1, 0.9), so under the same (yellowish) light its red falls and its blue rises.
+    ImageRgbF before = readPfm(directory / "before.pfm");
+    glm::dvec3 wallBefore = regionMean(before, 4, 24, 60, 130), wallAfter = regionMean(viewer, 4, 24, 60, 130);
+    EXPECT_LT(wallAfter.r, wallBefore.r / 3.0);
+    EXPECT_GT(wallAfter.b, wallBefore.b * 5.0);
+    fs::remove_all(directory);
+}
+
+TEST_F(ScriptedViewer, SplitViewShowsTwoIntegratorsWithTheirSampleCountsAndADivider) {
+    fs::path directory = freshDirectory("compare");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.25
+integrator direct
+compare on
+compare-integrator naive
+target-spp 3
+wait-spp 3
+divider 0.3
+status
+screenshot-window window.png
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 1u) << result.output;
+    EXPECT_EQ(field(status[0], "compare"), "on");
+    EXPECT_EQ(field(status[0], "integrator"), "direct");
+    EXPECT_EQ(field(status[0], "right-integrator"), "naive");
+    EXPECT_EQ(field(status[0], "spp"), "3");
+    EXPECT_EQ(field(status[0], "right-spp"), "3");
+
+    // The divider: a white column 30% into the image area (which starts after the 380-pixel sidebar).
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load((directory / "window.png").string().c_str(), &width, &height, &channels, 3);
+    ASSERT_NE(pixels, nullptr);
+    int dividerX = 380 + static_cast<int>(std::round(0.3 * (width - 380)));
+    int white = 0;
+    for (int y = height / 4; y < height; ++y) { // below the labels
+        const unsigned char* p = pixels + 3 * (y * width + dividerX - 1);
+        if (p[0] == 255 && p[1] == 255 && p[2] == 255) ++white;
+    }
+    stbi_image_free(pixels);
+    EXPECT_EQ(white, height - height / 4);
+    fs::remove_all(directory);
+}
+
+TEST_F(ScriptedViewer, BrokenSceneOnDiskIsReportedAndTheSceneKeepsRendering) {
+    fs::path directory = freshDirectory("reload");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "broken.json") << "{ \"camera\": { \"eye\": [0, 1, ";
+    testing::CommandResult result = runViewer(directory, (directory / "scene.json").string(), R"(resolution-scale 0.25
+wait-spp 2
+copy-file broken.json scene.json
+wait-reload
+status
+wait-spp 4
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_NE(field(status[0], "scene-error").find("scene.json"), std::string::npos) << status[0];
+    EXPECT_EQ(field(status[1], "spp"), "4") << "the last good scene keeps rendering";
+    fs::remove_all(directory);
+}
+
+TEST_F(ScriptedViewer, ScriptErrorsNameFileAndLineBeforeAnyWindowOpens) {
+    fs::path directory = freshDirectory("bad");
+    fs::path script = directory / "bad.txt";
+    std::ofstream(script) << "frames 2\nintegrator fastest\n";
+    // No xvfb-run: the script is checked before a display is needed.
+    testing::CommandResult result = testing::runCommand(std::string(PTVIEW_BINARY) + " " + testing::shellQuoted(kCornell) +
+                                                        " --script " + testing::shellQuoted(script.string()));
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("bad.txt:2:"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("fastest"), std::string::npos) << result.output;
+
+    std::ofstream(script) << "set-material nosuch.ior 1.3\n";
+    result = runViewer(directory, kCornell, "set-material nosuch.ior 1.3\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:1: set-material: the scene has no material \"nosuch\""), std::string::npos)
+        << result.output;
+    fs::remove_all(directory);
+}
+
+// F12 as a user presses it (xdotool), in an interactive session without a script.
+TEST_F(ScriptedViewer, F12SavesPngAndPfmIntoScreenshots) {
+    fs::path directory = freshDirectory("f12");
+    testing::CommandResult result = testing::runCommand(
+        "cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb + "bash " + PTVIEW_TEST_SCRIPT_DIR +
+        "/window_keys.sh " + PTVIEW_BINARY + " " + testing::shellQuoted(kCornell));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    int png = 0, pfm = 0;
+    for (const auto& entry : fs::directory_iterator(directory / "screenshots")) {
+        std::string name = entry.path().filename().string();
+        EXPECT_EQ(name.rfind("cornell-", 0), 0u) << name;
+        png += entry.path().extension() == ".png";
+        pfm += entry.path().extension() == ".pfm";
+    }
+    EXPECT_EQ(png, 1);
+    EXPECT_EQ(pfm, 1);
+    fs::remove_all(directory);
+}
+
+} // namespace
+} // namespace ptview
