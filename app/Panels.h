@@ -6,6 +6,7 @@
 #include "ViewerSession.h"
 
 #include <string>
+#include <vector>
 
 namespace ptview {
 
@@ -15,6 +16,8 @@ struct PanelState {
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
+    // Panels to open on the next frame ("all" for every one), asked for by a script.
+    std::vector<std::string> panelsToOpen;
 };
 
 // Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,

@@ -76,8 +76,8 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     if (ImGui::Button(model.paused ? "Resume" : "Pause")) model.paused = !model.paused;
     ImGui::SameLine();
     if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;
-    ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 1.0f, "%.3f x");
-    tooltip("render at this fraction of the window's pixels: faster, coarser");
+    ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 2.0f, "%.3f x");
+    tooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");

@@ -37,6 +37,12 @@ std::string quoted(const std::string& text) {
     return out + "\"";
 }
 
+std::string vectorText(const glm::vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof(text), "%.6g,%.6g,%.6g", v.x, v.y, v.z);
+    return text;
+}
+
 void printStatus(const ViewerSession& session) {
     const ViewerModel& model = session.model();
     ViewerSession::ViewStats left = session.stats(ViewerSession::Side::Left);
@@ -45,7 +51,8 @@ void printStatus(const ViewerSession& session) {
                        std::to_string(session.renderSize().x) + "x" + std::to_string(session.renderSize().y) +
                        " integrator=" + integratorName(settings.integrator) + " sampler=" +
                        samplerModeName(settings.sampler) + " depth=" + std::to_string(settings.maxDepth) +
-                       " reloads=" + std::to_string(session.reloadCount()) + " compare=" +
+                       " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
+                       " compare=" +
                        (session.comparing() ? "on" : "off");
     if (session.comparing()) {
         const RenderSettings& right = session.settings(ViewerSession::Side::Right);
@@ -219,6 +226,8 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             saveScreenshots(session, panels);
             if (panels.screenshotFailed) fail(command, panels.screenshotMessage);
             else std::printf("%s\n", panels.screenshotMessage.c_str());
+        } else if (verb == "open-panel") {
+            panels.panelsToOpen.push_back(word);
         } else if (verb == "status") {
             session.update();
             printStatus(session);

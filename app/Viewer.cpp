@@ -65,9 +65,9 @@ void reportGlfwError(int code, const char* description) {
 }
 
 glm::ivec2 initialWindowSize(glm::ivec2 resolution, float sidebarWidth) {
-    // Small scene resolutions would give an image too small to look at.
-    int longest = std::max(resolution.x, resolution.y);
-    float scale = longest < 768 ? 768.0f / static_cast<float>(longest) : 1.0f;
+    // Small scene resolutions would give an image too small to look at, and a sidebar too short
+    // for its panels: at least 768 pixels high, in the scene's aspect ratio.
+    float scale = resolution.y < 768 ? 768.0f / static_cast<float>(resolution.y) : 1.0f;
     glm::ivec2 image(glm::vec2(resolution) * scale);
     return {image.x + static_cast<int>(sidebarWidth), image.y};
 }
@@ -222,14 +222,25 @@ void ViewerWindow::drawSidebar() {
         ImGui::SameLine();
         ImGui::TextDisabled("(F1: help, Tab: hide)");
         ImGui::PushItemWidth(-150.0f * ImGui::GetIO().FontGlobalScale); // room for the labels
-        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
-        if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, frameSeconds_);
-        if (ImGui::CollapsingHeader("Scene")) drawScenePanel(session_, panelState_);
-        if (ImGui::CollapsingHeader("Environment")) drawEnvironmentPanel(session_, panelState_);
-        if (ImGui::CollapsingHeader("Materials")) materialsPanel_.draw(session_);
-        if (ImGui::CollapsingHeader("Lights")) drawLightsPanel(session_);
-        if (ImGui::CollapsingHeader("Camera")) drawCameraPanel(session_);
-        if (ImGui::CollapsingHeader("Help")) drawHelpPanel();
+        std::vector<std::string> toOpen;
+        std::swap(toOpen, panelState_.panelsToOpen);
+        // A header, opened when a script asked for it.
+        auto header = [&](const char* label, ImGuiTreeNodeFlags flags = 0) {
+            std::string name = label;
+            std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+            if (std::find(toOpen.begin(), toOpen.end(), name) != toOpen.end() ||
+                std::find(toOpen.begin(), toOpen.end(), "all") != toOpen.end())
+                ImGui::SetNextItemOpen(true);
+            return ImGui::CollapsingHeader(label, flags);
+        };
+        if (header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
+        if (header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, frameSeconds_);
+        if (header("Scene")) drawScenePanel(session_, panelState_);
+        if (header("Environment")) drawEnvironmentPanel(session_, panelState_);
+        if (header("Materials")) materialsPanel_.draw(session_);
+        if (header("Lights")) drawLightsPanel(session_);
+        if (header("Camera")) drawCameraPanel(session_);
+        if (header("Help")) drawHelpPanel();
         ImGui::SetNextItemOpen(warpVisualizer_.active(), ImGuiCond_Once);
         if (ImGui::CollapsingHeader("Warp visualizer")) warpVisualizer_.drawControls();
         // A load error must be seen even with the Scene panel closed.

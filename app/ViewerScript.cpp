@@ -110,6 +110,9 @@ std::vector<std::string> materialTypeChoices() {
     return names;
 }
 std::vector<std::string> onOffChoices() { return {"on", "off"}; }
+std::vector<std::string> panelChoices() {
+    return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "help", "all"};
+}
 
 // =====================================================================================
 // The commands: the one table both the parser and viewerScriptReference() read
@@ -202,7 +205,9 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"screenshot", {pathArg({".png", ".pfm"})}, nullptr, "save the rendered image: tone-mapped PNG or linear PFM"},
         {"screenshot-window", {pathArg({".png"})}, nullptr, "save the whole window, panels included, as PNG"},
         {"save-screenshots", {}, nullptr, "what F12 does: timestamped files in screenshots/"},
-        {"status", {}, nullptr, "print the current settings and samples per pixel"},
+        {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,
+         "open a sidebar panel (and a materials panel's materials), or all of them"},
+        {"status", {}, nullptr, "print the current settings, samples per pixel and camera eye"},
         {"quit", {}, nullptr, "close the viewer"},
     };
     return specs;

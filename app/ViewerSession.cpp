@@ -268,8 +268,8 @@ void ViewerSession::update() {
         syncView(left_, effectiveSettings(model_.settings), changes);
         if (right_) syncView(*right_, effectiveSettings(model_.compare.right), changes);
     } catch (const EnvironmentMapError& e) { // a map larger than this GPU's textures
+        setEnvironmentMap({}); // the constant colour instead, and say why
         model_.sceneError = e.what();
-        setEnvironmentMap({});
     }
 }
 

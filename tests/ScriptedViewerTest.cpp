@@ -91,11 +91,13 @@ wait-spp 4
 status
 screenshot after.pfm
 save-scene edited.json
+camera-orbit 5 0
+status
 quit
 )");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
-    ASSERT_EQ(status.size(), 5u) << result.output;
+    ASSERT_EQ(status.size(), 6u) << result.output;
     EXPECT_EQ(field(status[0], "spp"), "4");
     EXPECT_EQ(field(status[0], "size"), "192x192");
     EXPECT_EQ(field(status[1], "spp"), "0") << "changing the integrator restarts accumulation";
@@ -103,6 +105,8 @@ quit
     EXPECT_EQ(field(status[2], "spp"), "4") << "and it stops again at the target";
     EXPECT_EQ(field(status[3], "spp"), "0") << "editing a material restarts accumulation";
     EXPECT_EQ(field(status[4], "spp"), "4");
+    EXPECT_EQ(field(status[5], "spp"), "0") << "moving the camera restarts accumulation";
+    EXPECT_NE(field(status[5], "eye"), field(status[4], "eye"));
 
     Scene edited = loadScene(directory / "edited.json");
     bool found = false;
@@ -225,6 +229,45 @@ TEST_F(ScriptedViewer, F12SavesPngAndPfmIntoScreenshots) {
     }
     EXPECT_EQ(png, 1);
     EXPECT_EQ(pfm, 1);
+    fs::remove_all(directory);
+}
+
+glm::vec3 eyeOf(const std::string& statusLine) {
+    glm::vec3 eye(NAN);
+    std::sscanf(field(statusLine, "eye").c_str(), "%f,%f,%f", &eye.x, &eye.y, &eye.z);
+    return eye;
+}
+
+// Real mouse and keyboard events (xdotool): a drag over the sidebar leaves the camera alone, a
+// drag over the image orbits it (keeping its distance to the target), W flies it forward.
+TEST_F(ScriptedViewer, MouseOrbitsOverTheImageOnlyAndWFliesForward) {
+    fs::path directory = freshDirectory("mouse");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
+wait-spp 1
+status
+wait-reload
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+quit
+)";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_mouse.sh " + PTVIEW_BINARY);
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 4u) << result.output;
+    glm::vec3 start = eyeOf(status[0]), afterSidebarDrag = eyeOf(status[1]), afterImageDrag = eyeOf(status[2]),
+              afterFlying = eyeOf(status[3]);
+    const glm::vec3 target = loadScene(kCornell).camera.target;
+    EXPECT_EQ(start, afterSidebarDrag) << "ImGui keeps the mouse over the sidebar";
+    EXPECT_GT(glm::length(afterImageDrag - start), 0.1f) << "a drag over the image orbits";
+    EXPECT_NEAR(glm::length(afterImageDrag - target), glm::length(start - target), 1e-3f) << "orbiting keeps the distance";
+    EXPECT_LT(glm::length(afterFlying - target), glm::length(afterImageDrag - target) - 0.05f) << "W flies toward the target";
     fs::remove_all(directory);
 }
 
