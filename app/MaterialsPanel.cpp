@@ -2,6 +2,8 @@
 
 #include "MaterialSchema.h"
 
+#include "PanelWidgets.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -60,10 +62,6 @@ Material retypedMaterial(const Material& material, MaterialType type) {
 }
 
 namespace {
-
-void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
 
 const char* colorTooltip(MaterialType type) {
     switch (type) {
@@ -130,10 +128,10 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
     constexpr ImGuiColorEditFlags kColorFlags = ImGuiColorEditFlags_Float;
     if (material.type == MaterialType::Emitter) {
         bool edited = ImGui::ColorEdit3("colour", &emitter.color.x, kColorFlags);
-        tooltip("radiance = colour x strength");
+        itemTooltip("radiance = colour x strength");
         edited |= ImGui::DragFloat("strength", &emitter.strength, 0.1f, 0.0f, 1e4f, "%.2f",
                                    ImGuiSliderFlags_AlwaysClamp);
-        tooltip("radiance of the front side, W sr^-1 m^-2, at colour 1");
+        itemTooltip("radiance of the front side, W sr^-1 m^-2, at colour 1");
         if (edited) {
             emitter.color = glm::clamp(emitter.color, 0.0f, 1.0f);
             material.radiance = emitter.color * emitter.strength;
@@ -146,21 +144,21 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
             material.color = glm::clamp(material.color, 0.0f, 1.0f); // the loader's range
             changed = true;
         }
-        tooltip(colorTooltip(material.type));
+        itemTooltip(colorTooltip(material.type));
     }
     if (material.type != MaterialType::Emitter) {
         if (ImGui::DragFloat3("emission", &material.radiance.x, 0.05f, 0.0f, 1e4f, "%.2f", ImGuiSliderFlags_AlwaysClamp))
             changed = true;
-        tooltip("radiance the surface emits from its front side, on top of what it reflects (W sr^-1 m^-2)");
+        itemTooltip("radiance the surface emits from its front side, on top of what it reflects (W sr^-1 m^-2)");
     }
     if (current.hasIor) {
         changed |= ImGui::SliderFloat("ior", &material.ior, 1.0f, 4.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        tooltip("index of refraction, inside / outside");
+        itemTooltip("index of refraction, inside / outside");
     }
     if (current.hasRoughness) {
         changed |= ImGui::SliderFloat("roughness", &material.roughness, 0.0f, 1.0f, "%.3f",
                                       ImGuiSliderFlags_AlwaysClamp);
-        tooltip("GGX alpha = roughness^2; 0 is perfectly smooth");
+        itemTooltip("GGX alpha = roughness^2; 0 is perfectly smooth");
         ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
     }
     return changed;

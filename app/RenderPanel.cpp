@@ -1,16 +1,14 @@
 // The Render panel: how the image is computed and shown, the split view, and screenshots.
 #include "Panels.h"
 
+#include "PanelWidgets.h"
+
 #include <imgui.h>
 
 #include <exception>
 
 namespace ptview {
 namespace {
-
-void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
 
 void integratorCombo(const char* label, Integrator& integrator) {
     const IntegratorName* current = &integratorNames()[0];
@@ -61,23 +59,23 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     RenderSettings& settings = model.settings;
     integratorCombo(model.compare.enabled ? "integrator (left)" : "integrator", settings.integrator);
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
-    tooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
+    itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
     samplerCombo(model.compare.enabled ? "sampler (left)" : "sampler", settings.sampler);
 
     int perFrame = model.maxSamplesPerFrame;
     if (ImGui::SliderInt("samples/frame", &perFrame, 0, 64, perFrame == 0 ? "auto" : "%d"))
         model.maxSamplesPerFrame = perFrame;
-    tooltip("most samples per pixel per displayed frame; auto: as many as fit in 30 ms of GPU time.\n"
+    itemTooltip("most samples per pixel per displayed frame; auto: as many as fit in 30 ms of GPU time.\n"
             "A slow GPU renders a sample in tiles over several frames, so the window stays responsive.");
     ImGui::SliderInt("target spp", &model.targetSamples, 0, 65536, model.targetSamples == 0 ? "none" : "%d",
                      ImGuiSliderFlags_Logarithmic);
-    tooltip("stop accumulating at this many samples per pixel (grid and stratified samplers are fully\n"
+    itemTooltip("stop accumulating at this many samples per pixel (grid and stratified samplers are fully\n"
             "stratified there); 0: never stop");
     if (ImGui::Button(model.paused ? "Resume" : "Pause")) model.paused = !model.paused;
     ImGui::SameLine();
     if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;
     ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 2.0f, "%.3f x");
-    tooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
+    itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");
@@ -85,19 +83,19 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
 
     ImGui::Separator();
     ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
-    tooltip("two renders of the same scene side by side; drag the white divider (key C)");
+    itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
     if (model.compare.enabled) {
         integratorCombo("integrator (right)", model.compare.right.integrator);
         samplerCombo("sampler (right)", model.compare.right.sampler);
         ImGui::SliderInt("MAX_DEPTH (right)", &model.compare.right.maxDepth, 0, 64);
         ImGui::Checkbox("equal time", &model.compare.equalTime);
-        tooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
+        itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
                 "off: both get the same number of samples per pixel");
     }
 
     ImGui::Separator();
     if (ImGui::Button("Screenshot (F12)")) saveScreenshots(session, state);
-    tooltip("tone-mapped PNG and linear PFM of the image (each side in compare mode) into screenshots/");
+    itemTooltip("tone-mapped PNG and linear PFM of the image (each side in compare mode) into screenshots/");
     if (!state.screenshotMessage.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(state.screenshotFailed ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f),

@@ -188,5 +188,44 @@ TEST_F(ViewerSessionTest, UnreadableSceneOrMapLeavesTheCurrentSceneAlone) {
     renderSamples(*session, 1);
 }
 
+double imageMean(const ImageRgbF& image) {
+    double sum = 0.0;
+    for (float v : image.rgb) sum += v;
+    return sum / static_cast<double>(image.rgb.size());
+}
+
+TEST_F(ViewerSessionTest, EnvironmentMapAndLightEditsReachTheRenderer) {
+    fs::path directory = freshDirectory("lights");
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/lights.json");
+    ViewerModel& model = session->model();
+    ASSERT_FALSE(model.scene.lights.empty());
+    model.settings.integrator = Integrator::Full; // naive never finds point and spot lights
+    auto meanAfter = [&](int samples) {
+        renderSamples(*session, samples);
+        session->writeImage(ViewerSession::Side::Left, directory / "image.pfm");
+        return imageMean(readPfm(directory / "image.pfm"));
+    };
+    double lit = meanAfter(8);
+
+    // Every point and spot light off: only the area lights remain, so the image darkens.
+    for (Light& light : model.scene.lights) light.intensity = glm::vec3(0.0f);
+    model.pendingChanges |= ViewerModel::kSceneChanged;
+    session->update();
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0);
+    double dimmed = meanAfter(8);
+    EXPECT_LT(dimmed, 0.9 * lit);
+
+    // An HDR map from assets/ adds its light; its intensity scales that contribution.
+    ASSERT_TRUE(session->setEnvironmentMap(fs::path(PTVIEW_ASSETS_DIR) / "hdr/studio_small_03_1k.hdr"));
+    EXPECT_EQ(model.sceneError, "");
+    double withMap = meanAfter(8);
+    EXPECT_GT(withMap, dimmed * 1.05);
+    model.scene.environmentIntensity = 0.0f;
+    model.pendingChanges |= ViewerModel::kSceneChanged;
+    double mapOff = meanAfter(8);
+    EXPECT_NEAR(mapOff, dimmed, 0.05 * dimmed);
+    fs::remove_all(directory);
+}
+
 } // namespace
 } // namespace ptview
