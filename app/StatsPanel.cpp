@@ -49,8 +49,8 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
         ImGui::Text("relative error %.3g %%", stats.error.relativeError * 100.0);
     else
         ImGui::TextUnformatted("relative error -");
-    itemTooltip("RMS standard error of the mean relative to the image's average, estimated from each pixel's own "
-                "samples; measures noise, not bias");
+    itemTooltip("each pixel's standard error relative to its value (RMS over the image), estimated from the "
+                "pixel's own samples;\nthe square root of the relative MSE; measures noise, not bias");
     if (stats.error.nonFinitePixels > 0)
         ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%lld NaN/Inf pixels", stats.error.nonFinitePixels);
     drawErrorPlot(stats);

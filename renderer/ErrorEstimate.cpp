@@ -6,7 +6,8 @@ namespace ptview {
 
 ErrorEstimate estimateError(const PixelStatistics& statistics) {
     ErrorEstimate estimate;
-    double sumVariance = 0.0, sumMean = 0.0;
+    constexpr double kDarkRadianceSquared = 1e-4;
+    double sumRelativeVariance = 0.0;
     long long finitePixels = 0;
     for (int y = 0; y < statistics.mean.height; ++y) {
         for (int x = 0; x < statistics.mean.width; ++x) {
@@ -18,14 +19,14 @@ ErrorEstimate estimateError(const PixelStatistics& statistics) {
                 ++estimate.nonFinitePixels;
                 continue;
             }
-            sumVariance += double(variance.r) + variance.g + variance.b;
-            sumMean += double(mean.r) + mean.g + mean.b;
+            double pixelMean = (double(mean.r) + mean.g + mean.b) / 3.0;
+            double pixelVariance = (double(variance.r) + variance.g + variance.b) / 3.0;
+            sumRelativeVariance += pixelVariance / (pixelMean * pixelMean + kDarkRadianceSquared);
             ++finitePixels;
         }
     }
-    if (statistics.sampleCount < 2 || finitePixels == 0 || sumMean <= 0.0) return estimate;
-    double count = 3.0 * static_cast<double>(finitePixels);
-    estimate.relativeError = std::sqrt(sumVariance / count) / (sumMean / count);
+    if (statistics.sampleCount < 2 || finitePixels == 0) return estimate;
+    estimate.relativeError = std::sqrt(sumRelativeVariance / static_cast<double>(finitePixels));
     return estimate;
 }
 

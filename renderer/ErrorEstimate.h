@@ -8,9 +8,10 @@
 namespace ptview {
 
 struct ErrorEstimate {
-    // sqrt(mean over pixels and channels of Var[mean]) / (mean over pixels and channels of the
-    // mean): the RMS standard error relative to the image's average value. Halves when the
-    // samples per pixel quadruple. 0 before two samples.
+    // sqrt(mean over pixels of Var[mean] / (mean^2 + 1e-4)), with each pixel's mean and variance
+    // averaged over its channels: the RMS of each pixel's standard error relative to its own
+    // value, the square root of the usual relative MSE. The 1e-4 (a radiance of 0.01 squared)
+    // keeps nearly black pixels from dominating. Halves when the samples quadruple; 0 before two.
     double relativeError = 0.0;
     long long nonFinitePixels = 0; // pixels whose mean is NaN or infinite (left out of the above)
 };
