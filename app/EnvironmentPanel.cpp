@@ -26,7 +26,7 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state) {
     Scene& scene = model.scene;
     bool hasMap = !scene.environmentMap.empty();
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("map: %s", hasMap ? scene.environmentMap.string().c_str() : "none (constant colour)");
+    ImGui::Text("map: %s", hasMap ? scene.environmentMap.lexically_normal().string().c_str() : "none (constant colour)");
     ImGui::PopTextWrapPos();
 
     ImGui::PushID("environment");

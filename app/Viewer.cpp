@@ -32,6 +32,10 @@ using Clock = std::chrono::steady_clock;
 constexpr float kSidebarWidth = 380.0f;        // at content scale 1
 constexpr float kDividerGrabPixels = 6.0f;     // how close to the divider a drag grabs it
 constexpr float kFastFlyFactor = 4.0f;         // with Shift held
+// A displayed frame takes about this long: path tracing gets what the display pass, the UI and
+// the buffer swap leave of it, so the window stays responsive even on a software rasterizer.
+constexpr double kFrameSeconds = 0.033;
+constexpr double kMinTracingSeconds = 0.004;
 
 // What the window's callbacks saw since the last frame. Keys that trigger an action are queued
 // from the key callback, so a press shorter than a (slow) frame is never lost.
@@ -121,7 +125,9 @@ private:
     glm::vec2 framebufferScale_{1.0f}; // framebuffer pixels per window coordinate
     glm::dvec2 lastCursor_{0.0};
     bool draggingDivider_ = false;
-    double frameSeconds_ = 0.0; // smoothed time between displayed frames
+    double frameSeconds_ = 0.0;    // smoothed time between displayed frames
+    double overheadSeconds_ = 0.0; // smoothed part of a frame that is not path tracing
+    double lastTracingSeconds_ = 0.0;
 };
 
 void ViewerWindow::handleKeys() {
@@ -300,6 +306,7 @@ void ViewerWindow::drawUi() {
 
 int ViewerWindow::run(std::optional<ScriptRunner>& script) {
     Clock::time_point lastFrame = Clock::now();
+    const Clock::time_point start = lastFrame;
     int frame = 0;
     while (!glfwWindowShouldClose(window_)) {
         // Idle (paused, target reached) the loop sleeps until input, but still checks files.
@@ -320,6 +327,11 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
         double seconds = std::chrono::duration<double>(now - lastFrame).count();
         lastFrame = now;
         frameSeconds_ = frameSeconds_ == 0.0 ? seconds : 0.9 * frameSeconds_ + 0.1 * seconds;
+        if (lastTracingSeconds_ > 0.0) { // an idle frame's wait for events is no overhead
+            double overhead = std::max(0.0, seconds - lastTracingSeconds_);
+            overheadSeconds_ = overheadSeconds_ == 0.0 ? overhead : 0.9 * overheadSeconds_ + 0.1 * overhead;
+        }
+        lastTracingSeconds_ = 0.0;
 
         handleKeys();
         if (!warpVisualizer_.active()) handleMouseAndFlight(seconds);
@@ -343,7 +355,8 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
         if (warpVisualizer_.active()) {
             warpVisualizer_.draw(framebufferSize_); // the path tracer pauses meanwhile
         } else {
-            session_.renderFrame();
+            if (session_.accumulating())
+                lastTracingSeconds_ = session_.renderFrame(std::max(kMinTracingSeconds, kFrameSeconds - overheadSeconds_));
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             session_.display();
         }
@@ -361,8 +374,10 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
         bool somethingShown = warpVisualizer_.active() || session_.stats(ViewerSession::Side::Left).samples > 0;
         if (options_.frames > 0 && frame >= options_.frames && somethingShown) {
             writePng(options_.screenshotPath, readWindow(framebufferSize_));
-            std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp)\n", options_.screenshotPath.c_str(), frame,
-                         session_.stats(ViewerSession::Side::Left).samples);
+            double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+            std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp) in %.2f s, %.1f ms per frame\n",
+                         options_.screenshotPath.c_str(), frame, session_.stats(ViewerSession::Side::Left).samples,
+                         elapsed, elapsed / frame * 1e3);
             break;
         }
         glfwSwapBuffers(window_);

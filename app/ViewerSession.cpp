@@ -293,7 +293,7 @@ bool ViewerSession::accumulating() const {
     return comparing() ? left || wantsSamples(*right_, 0) : left;
 }
 
-void ViewerSession::renderFrame() {
+double ViewerSession::renderFrame(double budgetSeconds) {
     View* views[2] = {&left_, comparing() ? right_.get() : nullptr};
     int passes[2] = {0, 0};
     Clock::time_point frameStart = Clock::now();
@@ -312,7 +312,7 @@ void ViewerSession::renderFrame() {
             if (next < 0 || progress < behind) next = i, behind = progress;
         }
         if (next < 0) break;
-        double remaining = kFrameBudgetSeconds - secondsSince(frameStart);
+        double remaining = budgetSeconds - secondsSince(frameStart);
         View& chosen = *views[next];
         if (worked && (remaining <= 0.0 || chosen.cost.rowOverruns(remaining))) break;
         PathTracer& tracer = *chosen.tracer;
@@ -326,8 +326,10 @@ void ViewerSession::renderFrame() {
         worked = true;
         if (passDone) ++passes[next];
     }
+    double seconds = secondsSince(frameStart);
     for (View* v : views)
         if (v) updateErrorEstimate(*v);
+    return seconds;
 }
 
 void ViewerSession::updateErrorEstimate(View& view) {

@@ -21,9 +21,9 @@ namespace ptview {
 
 class ViewerSession {
 public:
-    // At most this much path tracing per displayed frame, so the UI stays responsive even on a
-    // software rasterizer (the rest of a frame, UI and display, takes a few ms).
-    static constexpr double kFrameBudgetSeconds = 0.030;
+    // Path tracing per displayed frame when the caller does not say: the viewer passes what is
+    // left of its ~33 ms frame after the display pass and the UI.
+    static constexpr double kDefaultTracingSeconds = 0.030;
 
     enum class Side { Left, Right }; // Left is the only view outside compare mode
 
@@ -64,7 +64,9 @@ public:
     void pollFiles();                   // hot reload of the scene, its environment map and the shaders
     void setImageArea(PixelRect area);  // where the image goes in the window's framebuffer
     void update();                      // pushes model changes to the renderer(s)
-    void renderFrame();                 // path traces for up to kFrameBudgetSeconds
+    // Path traces for up to budgetSeconds (at least one tile of one row, so a frame always
+    // progresses), measured with glFinish after each tile; returns the seconds spent.
+    double renderFrame(double budgetSeconds = kDefaultTracingSeconds);
     void display() const;               // draws the view(s) into the image area
 
     bool comparing() const { return model_.compare.enabled && right_ != nullptr; }
