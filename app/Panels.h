@@ -13,6 +13,7 @@ namespace ptview {
 // Text the user is typing and choices that live between frames, one per viewer window.
 struct PanelState {
     std::string scenePathInput;       // Scene panel: a path typed by the user
+    std::string sceneToOpen;          // Scene panel: waiting for "discard your edits?"
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;

@@ -19,8 +19,27 @@ void drawScenePanel(ViewerSession& session, PanelState& state) {
     ImGui::PushID("scene");
     std::optional<std::filesystem::path> picked =
         fileCombo("scenes", std::filesystem::path(assetsDirectory()) / "scenes", ".json", file);
-    if (picked) session.openScene(*picked);
-    if (pathField("Open", state.scenePathInput)) session.openScene(state.scenePathInput);
+    if (pathField("Open", state.scenePathInput)) picked = state.scenePathInput;
+    if (picked) {
+        if (session.hasUnsavedEdits()) {
+            state.sceneToOpen = picked->string();
+            ImGui::OpenPopup("Unsaved edits");
+        } else {
+            session.openScene(*picked);
+        }
+    }
+    // Nothing the user made is lost without asking.
+    if (ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("The scene has edits that are not saved.\nOpen %s and lose them?", state.sceneToOpen.c_str());
+        ImGui::TextDisabled("(Materials > Save scene as keeps them.)");
+        if (ImGui::Button("Discard edits and open")) {
+            session.openScene(state.sceneToOpen);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
     ImGui::PopID();
 
     ImGui::BeginDisabled(file.empty());

@@ -133,6 +133,16 @@ void ViewerSession::resetCamera() {
     model_.pendingChanges |= ViewerModel::kCameraChanged;
 }
 
+bool ViewerSession::hasUnsavedEdits() const {
+    Scene edited = model_.scene;
+    edited.camera = model_.fileScene.camera;
+    try {
+        return sceneToJson(edited) != sceneToJson(model_.fileScene);
+    } catch (const std::exception&) { // a model no file can hold is certainly not the file's
+        return true;
+    }
+}
+
 void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
     saveScene(model_.scene, path);
     model_.scene.path = path;

@@ -50,6 +50,9 @@ public:
     bool reloadScene(); // merges the file's changes with the user's edits (SceneMerge.h)
     bool setEnvironmentMap(const std::filesystem::path& path); // empty: none (the constant colour)
     void resetCamera();                                          // to the scene file's camera
+    // Whether the scene differs from its file in anything but the camera (which moves all the
+    // time): what opening another scene would throw away.
+    bool hasUnsavedEdits() const;
     // Writes the scene with the user's edits (atomically) and makes that file the scene's file,
     // the one hot reload watches. Throws SceneError naming the file when it cannot be written.
     void saveSceneAs(const std::filesystem::path& path);

@@ -227,5 +227,29 @@ TEST_F(ViewerSessionTest, EnvironmentMapAndLightEditsReachTheRenderer) {
     fs::remove_all(directory);
 }
 
+TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneWatched) {
+    fs::path directory = freshDirectory("unsaved");
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    EXPECT_FALSE(session->hasUnsavedEdits());
+    model.scene.camera.eye.x += 0.5f; // looking around is not an edit worth a warning
+    EXPECT_FALSE(session->hasUnsavedEdits());
+    model.scene.materials[0].color *= 0.5f;
+    EXPECT_TRUE(session->hasUnsavedEdits());
+
+    fs::path saved = directory / "mine.json";
+    session->saveSceneAs(saved);
+    EXPECT_FALSE(session->hasUnsavedEdits());
+    EXPECT_EQ(model.fileScene.path, saved);
+    // An edit of the saved file on disk now reloads, merged with the scene as saved.
+    waitForWatcher();
+    writeText(saved, replaced(readText(saved), "[17, 12, 4]", "[1, 1, 1]")); // the light's radiance
+    session->pollFiles();
+    EXPECT_EQ(model.sceneError, "");
+    EXPECT_EQ(material(*session, "light").radiance, glm::vec3(1.0f));
+    EXPECT_EQ(model.scene.materials[0].color, model.fileScene.materials[0].color);
+    fs::remove_all(directory);
+}
+
 } // namespace
 } // namespace ptview

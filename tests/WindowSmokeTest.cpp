@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <unistd.h>
 
@@ -19,10 +20,13 @@ TEST(WindowSmoke, ViewerRendersCornellBoxWithPanel) {
     ASSERT_EQ(testing::runCommand("command -v xvfb-run").exitCode, 0)
         << "xvfb-run is missing: scripts/test installs the xvfb package";
     fs::path screenshot = fs::temp_directory_path() / ("ptview_window_" + std::to_string(::getpid()) + ".png");
+    fs::path script = fs::temp_directory_path() / ("ptview_window_" + std::to_string(::getpid()) + ".txt");
+    // Waiting for samples, not frames: how many samples a frame holds depends on the machine's load.
+    std::ofstream(script) << "target-spp 4\nwait-spp 4\nscreenshot-window " << screenshot.string() << "\nquit\n";
     testing::CommandResult result = testing::runCommand(
-        "xvfb-run -a -s '-screen 0 1024x800x24' " + std::string(PTVIEW_BINARY) + " " +
-        testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") + " --frames 120 --screenshot " +
-        testing::shellQuoted(screenshot.string()));
+        "xvfb-run -a -s '-screen 0 1600x1000x24' " + std::string(PTVIEW_BINARY) + " " +
+        testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") + " --script " + testing::shellQuoted(script.string()));
+    fs::remove(script);
     ASSERT_EQ(result.exitCode, 0) << result.output;
 
     int width = 0, height = 0, channels = 0;
