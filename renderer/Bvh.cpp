@@ -1,0 +1,1 @@
+#include "Bvh.h"

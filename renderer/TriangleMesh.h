@@ -1,0 +1,46 @@
+#pragma once
+// A triangle mesh as read from a file, in its own object space: the data that instances of it
+// share. Attributes are indexed per corner, as OBJ indexes them, so a vertex can have different
+// normals or texture coordinates in different faces (a crease, a UV seam).
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ptview {
+
+struct MeshTriangle {
+    std::array<std::uint32_t, 3> position;  // indices into TriangleMesh::positions
+    std::array<std::int32_t, 3> normal;     // into TriangleMesh::normals; -1: none (flat shading)
+    std::array<std::int32_t, 3> texcoord;   // into TriangleMesh::texcoords; -1: none
+    std::int32_t materialSlot = 0;          // into TriangleMesh::materialSlots
+};
+
+// A material the mesh's own file describes (an MTL entry), in the terms of its file.
+struct MeshMaterial {
+    std::string name;
+    glm::vec3 diffuse{0.8f};      // Kd
+    glm::vec3 specular{0.0f};     // Ks
+    glm::vec3 emission{0.0f};     // Ke
+    float shininess = 0.0f;       // Ns
+    float ior = 1.5f;             // Ni
+    float dissolve = 1.0f;        // d (1 - Tr): below 1, the surface lets light through
+    int illum = 2;                // illumination model
+};
+
+struct TriangleMesh {
+    std::string source; // the file it came from, for messages
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;   // unit
+    std::vector<glm::vec2> texcoords;
+    std::vector<MeshTriangle> triangles;
+    // The material names faces use (OBJ `usemtl`), in order of first use; slot 0 is "" for faces
+    // before any usemtl. A scene maps each slot to one of its materials.
+    std::vector<std::string> materialSlots;
+    std::vector<MeshMaterial> fileMaterials; // from the MTL files the OBJ names, when found
+};
+
+} // namespace ptview
