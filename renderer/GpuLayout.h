@@ -52,35 +52,38 @@ struct GpuDisk {
 };
 static_assert(sizeof(GpuDisk) == 32, "two RGBA32F texels");
 
-// Per primitive (RG32I): its material and, when it emits, its light index (else -1).
+// Per primitive (RG32I): its material and, when it emits, its light index (else -1). The
+// spheres', quads' and disks' ids share one buffer, in that order.
 struct GpuPrimitiveIds {
     std::int32_t material;
     std::int32_t light;
 };
 static_assert(sizeof(GpuPrimitiveIds) == 8, "one RG32I texel");
 
-// shaders/lights.glsl: four RGBA32F texels per light; kind and primitive are stored as the bits
-// of unsigned integers (read back with floatBitsToUint).
+// shaders/lights.glsl: four RGBA32F texels per light. The first holds the kind and primitive as
+// the bits of unsigned integers (read back with floatBitsToUint) and the light's cumulative
+// selection probability (the table is searched by it); the other three depend on the kind:
+//   point, spot: (position, cosInner), (unit direction, cosOuter), (intensity W sr^-1, -)
+//   triangle:    (v0, -), (v1, -), (v2, -) in world space; front side along cross(v1 - v0, v2 - v0)
+//   quad, sphere, disk, environment: unused (the primitive's own data is read instead)
 struct GpuLight {
     std::uint32_t kind;      // LightKind
-    std::uint32_t primitive; // index among the quads, spheres or disks; unused otherwise
-    std::uint32_t pad0;
-    std::uint32_t pad1;
-    glm::vec3 position;      // point and spot
-    float cosInner;          // spot: full intensity where cos(angle to axis) >= cosInner
-    glm::vec3 direction;     // spot: unit axis
-    float cosOuter;          // spot: nothing where cos(angle to axis) <= cosOuter
-    glm::vec3 intensity;     // point and spot: W sr^-1
-    float pad2;
+    std::uint32_t primitive; // quad, sphere or disk: its index; triangle: its material
+    float cdf;               // selection probability of this light and all before it
+    std::uint32_t pad;
+    glm::vec4 texels[3];
 };
 static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
 
-struct GpuMaterialParams {
+// shaders/scene_data.glsl: three RGBA32F texels per material; the type as uint bits.
+struct GpuMaterial {
     glm::vec3 color;
     float ior;
     glm::vec3 radiance;
     float roughness;
+    std::uint32_t type; // MaterialType
+    std::uint32_t pad[3];
 };
-static_assert(sizeof(GpuMaterialParams) == 32, "two RGBA32F texels");
+static_assert(sizeof(GpuMaterial) == 48, "three RGBA32F texels");
 
 } // namespace ptview

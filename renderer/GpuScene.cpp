@@ -72,11 +72,15 @@ ScenePrimitives flattenScene(const Scene& scene) {
 }
 
 void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out) {
-    out.materialParams.clear();
-    out.materialTypes.clear();
+    out.materials.clear();
     for (const Material& material : materials) {
-        out.materialParams.push_back(GpuMaterialParams{material.color, material.ior, material.radiance, material.roughness});
-        out.materialTypes.push_back(static_cast<std::uint32_t>(material.type));
+        GpuMaterial gpu{};
+        gpu.color = material.color;
+        gpu.ior = material.ior;
+        gpu.radiance = material.radiance;
+        gpu.roughness = material.roughness;
+        gpu.type = static_cast<std::uint32_t>(material.type);
+        out.materials.push_back(gpu);
     }
 }
 
@@ -126,18 +130,19 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 
     for (const Light& source : geometry.lights) {
         GpuLight light{};
-        light.position = source.position;
-        light.intensity = source.intensity;
+        light.texels[2] = glm::vec4(source.intensity, 0.0f);
         if (source.type == LightType::Point) {
             light.kind = static_cast<std::uint32_t>(LightKind::Point);
+            light.texels[0] = glm::vec4(source.position, 0.0f);
             power.push_back(4.0 * glm::pi<double>() * luminance(source.intensity));
         } else {
             light.kind = static_cast<std::uint32_t>(LightKind::Spot);
-            light.direction = glm::normalize(source.direction);
-            light.cosInner = std::cos(glm::radians(source.innerAngleDeg));
-            light.cosOuter = std::cos(glm::radians(source.outerAngleDeg));
+            float cosInner = std::cos(glm::radians(source.innerAngleDeg));
+            float cosOuter = std::cos(glm::radians(source.outerAngleDeg));
+            light.texels[0] = glm::vec4(source.position, cosInner);
+            light.texels[1] = glm::vec4(glm::normalize(source.direction), cosOuter);
             // The solid angle of the cone, counting the falloff band half.
-            double cosMiddle = 0.5 * (light.cosInner + light.cosOuter);
+            double cosMiddle = 0.5 * (double(cosInner) + cosOuter);
             power.push_back(2.0 * glm::pi<double>() * (1.0 - cosMiddle) * luminance(source.intensity));
         }
         table.lights.push_back(light);
@@ -172,17 +177,16 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
     double total = 0.0;
     for (double p : power) total += p;
     double running = 0.0;
-    for (double p : power) {
-        running += p;
-        table.cdf.push_back(static_cast<float>(total > 0.0 ? running / total : 1.0));
+    for (size_t i = 0; i < power.size(); ++i) {
+        running += power[i];
+        table.lights[i].cdf = static_cast<float>(total > 0.0 ? running / total : 1.0);
     }
-    if (!table.cdf.empty()) table.cdf.back() = 1.0f; // no light unreachable through rounding
+    if (!table.lights.empty()) table.lights.back().cdf = 1.0f; // no light unreachable through rounding
     return table;
 }
 
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
-    "uSpheres", "uSphereIds", "uQuads", "uQuadIds", "uDisks", "uDiskIds",
-    "uMaterialParams", "uMaterialTypes", "uLights", "uLightCdf"};
+    "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights"};
 
 void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMeanRadiance) {
     for (BufferTexture& slot : textures_) {
@@ -193,8 +197,8 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
     }
     geometry_ = flattenScene(scene);
     fillBufferTexture(textures_[0].buffer.id(), textures_[0].texture.id(), GL_RGBA32F, geometry_.spheres);
-    fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, geometry_.quads);
-    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, geometry_.disks);
+    fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_RGBA32F, geometry_.quads);
+    fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, geometry_.disks);
     environmentRadiance_ = environmentMeanRadiance.value_or(scene.environment);
     uploadMaterials(scene.materials);
 }
@@ -202,14 +206,14 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);
-    fillBufferTexture(textures_[6].buffer.id(), textures_[6].texture.id(), GL_RGBA32F, primitives.materialParams);
-    fillBufferTexture(textures_[7].buffer.id(), textures_[7].texture.id(), GL_R32UI, primitives.materialTypes);
+    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, primitives.materials);
     lights_ = buildLightTable(geometry_, materials, environmentRadiance_);
-    fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_RG32I, lights_.sphereIds);
-    fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_RG32I, lights_.quadIds);
-    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_RG32I, lights_.diskIds);
-    fillBufferTexture(textures_[8].buffer.id(), textures_[8].texture.id(), GL_RGBA32F, lights_.lights);
-    fillBufferTexture(textures_[9].buffer.id(), textures_[9].texture.id(), GL_R32F, lights_.cdf);
+    // One id buffer: spheres, then quads, then disks (scene_data.glsl adds the offsets).
+    std::vector<GpuPrimitiveIds> ids = lights_.sphereIds;
+    ids.insert(ids.end(), lights_.quadIds.begin(), lights_.quadIds.end());
+    ids.insert(ids.end(), lights_.diskIds.begin(), lights_.diskIds.end());
+    fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_RG32I, ids);
+    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_RGBA32F, lights_.lights);
 }
 
 void GpuScene::bind(int firstUnit) const {

@@ -20,17 +20,15 @@ struct ScenePrimitives {
     std::vector<GpuDisk> disks;
     std::vector<std::int32_t> diskMaterials;
     std::vector<Light> lights; // point and spot
-    std::vector<GpuMaterialParams> materialParams;
-    std::vector<std::uint32_t> materialTypes;
+    std::vector<GpuMaterial> materials;
 };
 
 // Values match the kLight* constants of shaders/lights.glsl.
-enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5 };
+enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5, Triangle = 6 };
 
 // Every light the integrators can sample, chosen in proportion to its emitted power.
 struct LightTable {
-    std::vector<GpuLight> lights;
-    std::vector<float> cdf; // cumulative selection probability; the last is 1
+    std::vector<GpuLight> lights; // each with its cumulative selection probability; the last's is 1
     std::vector<GpuPrimitiveIds> sphereIds, quadIds, diskIds;
     std::int32_t environmentLight = -1;
 };
@@ -44,7 +42,7 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 
 class GpuScene {
 public:
-    static constexpr int kTextureCount = 10;
+    static constexpr int kTextureCount = 6;
     // The sampler uniforms of shaders/scene_data.glsl, in the order bind() uses units.
     static const char* const kSamplerNames[kTextureCount];
 

@@ -81,14 +81,14 @@ bool intersectScene(Ray ray, out Hit hit) {
     if (sphereHit >= 0) {
         vec4 sphere = texelFetch(uSpheres, sphereHit);
         hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
-        ids = texelFetch(uSphereIds, sphereHit).rg;
+        ids = sphereIds(sphereHit);
     } else if (quadHit >= 0) {
         hit.normalGeom = normalize(cross(texelFetch(uQuads, 4 * quadHit + 1).xyz,
                                          texelFetch(uQuads, 4 * quadHit + 2).xyz));
-        ids = texelFetch(uQuadIds, quadHit).rg;
+        ids = quadIds(quadHit);
     } else {
         hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
-        ids = texelFetch(uDiskIds, diskHit).rg;
+        ids = diskIds(diskHit);
     }
     hit.material = ids.x;
     hit.light = ids.y;

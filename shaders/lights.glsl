@@ -8,8 +8,8 @@
 // direction, no density; BSDF sampling never finds them, so they never take part in MIS). Area
 // lights radiate from their front side only. Densities are in solid angle at the shading point.
 //
-// uLights holds four texels per light: (kind, primitive, -, -) as uint bits, (position,
-// cosInner), (direction, cosOuter), (intensity, -); see GpuLight in renderer/GpuLayout.h.
+// uLights holds four texels per light: (kind, primitive as uint bits, cumulative selection
+// probability, -), then three that depend on the kind; see GpuLight in renderer/GpuLayout.h.
 #include "constants.glsl"
 #include "intersect.glsl"
 #include "emission.glsl"
@@ -37,9 +37,13 @@ LightSample failedLightSample() {
     return LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, false);
 }
 
+float lightCdf(int light) {
+    return texelFetch(uLights, 4 * light).z;
+}
+
 float lightSelectionProbability(int light) {
-    float below = light > 0 ? texelFetch(uLightCdf, light - 1).r : 0.0;
-    return texelFetch(uLightCdf, light).r - below;
+    float below = light > 0 ? lightCdf(light - 1) : 0.0;
+    return lightCdf(light) - below;
 }
 
 // The light whose CDF interval holds u (binary search).
@@ -48,7 +52,7 @@ int chooseLight(float u) {
     int high = uLightCount - 1;
     while (low < high) {
         int middle = (low + high) / 2;
-        if (u < texelFetch(uLightCdf, middle).r) high = middle; else low = middle + 1;
+        if (u < lightCdf(middle)) high = middle; else low = middle + 1;
     }
     return low;
 }
@@ -102,7 +106,7 @@ LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
         vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
         vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
         vec3 point = center + (2.0 * u.x - 1.0) * edgeU + (2.0 * u.y - 1.0) * edgeV;
-        Material material = fetchMaterial(texelFetch(uQuadIds, primitive).r);
+        Material material = fetchMaterial(quadIds(primitive).x);
         return areaLightSample(posWorld, point, normalize(cross(edgeU, edgeV)), 4.0 * length(cross(edgeU, edgeV)), material);
     }
     if (kind == kLightDisk) {
@@ -111,12 +115,12 @@ LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
         ShadingFrame frame = makeShadingFrame(normal);
         vec2 onDisk = centerAndRadius.w * sampleUniformDiskConcentric(u);
         vec3 point = centerAndRadius.xyz + onDisk.x * frame.tangent + onDisk.y * frame.bitangent;
-        Material material = fetchMaterial(texelFetch(uDiskIds, primitive).r);
+        Material material = fetchMaterial(diskIds(primitive).x);
         return areaLightSample(posWorld, point, normal, kPi * centerAndRadius.w * centerAndRadius.w, material);
     }
     // Sphere.
     vec4 sphere = texelFetch(uSpheres, primitive);
-    Material material = fetchMaterial(texelFetch(uSphereIds, primitive).r);
+    Material material = fetchMaterial(sphereIds(primitive).x);
     vec3 toCenter = sphere.xyz - posWorld;
     float centerDistance2 = dot(toCenter, toCenter);
     float radius2 = sphere.w * sphere.w;
