@@ -42,6 +42,13 @@ Bounds sceneBounds(const Scene& scene) {
             bounds.extend(shape.center, halfExtent);
             break;
         }
+        case ShapeType::Mesh: {
+            // Every vertex, transformed: exact, and only done on a click.
+            const TriangleMesh& mesh = *scene.meshes[static_cast<std::size_t>(shape.mesh)].data;
+            glm::mat4 objectToWorld = shape.transform.objectToWorld();
+            for (const glm::vec3& p : mesh.positions) bounds.extend(glm::vec3(objectToWorld * glm::vec4(p, 1.0f)), glm::vec3(0.0f));
+            break;
+        }
         }
     }
     return bounds;

@@ -4,12 +4,13 @@
 //
 // The flattened tree is what the GPU traverses from a buffer texture, so its layout is a contract
 // with the GLSL traversal:
-//   - nodes[0] is the root; an empty input gives no nodes at all (not a root with an empty box:
-//     the sign-selecting slab test would accept an inverted box), so the GPU checks the count.
+//   - nodes[0] is the root. An empty input gives no nodes at all, so the GPU checks the count
+//     (a root with an inverted box is no safe stand-in: a slab test that orders its two plane
+//     distances with min/max accepts one).
 //   - Depth-first order: an interior node's left child is the node right after it (index + 1),
 //     its right child is at `firstOrRight`. Every node has exactly one parent.
 //   - A leaf covers primitiveOrder[firstOrRight, firstOrRight + primitiveCount): leaves own
-//     disjoint ranges, and the ranges appear in node order.
+//     disjoint ranges that together cover it, in node order.
 //   - At most kMaxBvhDepth levels (a root-only tree has depth 1), so a traversal stack of
 //     kMaxBvhDepth entries never overflows; a leaf holds 1..kMaxBvhLeafSize primitives.
 
@@ -52,9 +53,12 @@ struct Aabb {
     }
 };
 
-// One node: two RGBA32F texels on the GPU, read as
-//   texel 2i:     xyz = boundsMin, w = floatBitsToUint -> firstOrRight
-//   texel 2i + 1: xyz = boundsMax, w = floatBitsToUint -> primitiveCount
+// One node: two 16-byte texels of a buffer texture, node i at texels 2i and 2i + 1:
+//   texel 2i:     xyz = boundsMin (float), w = firstOrRight (uint bits)
+//   texel 2i + 1: xyz = boundsMax (float), w = primitiveCount (uint bits)
+// The uints are stored as raw bits. Read through an RGBA32F view they are denormal floats, which
+// floatBitsToUint recovers only if nothing flushed them; a second, RGBA32UI view of the same
+// buffer (usamplerBuffer) reads them as integers for certain.
 struct BvhNode {
     glm::vec3 boundsMin;
     std::uint32_t firstOrRight;   // leaf: first index into primitiveOrder; interior: right child
@@ -87,7 +91,7 @@ struct BvhBuildOptions {
 // intersecting them all is no dearer than splitting. Ranges whose centroids all coincide are
 // split in the middle of the range; where an SAH split could push the tree past kMaxBvhDepth,
 // the builder takes a median split instead, which halves the range and so keeps the guarantee.
-// Throws std::invalid_argument when the inputs' sizes differ or exceed 2^32 - 1.
+// Throws std::invalid_argument when the inputs' sizes differ or reach 2^32 - 1.
 Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const std::vector<glm::vec3>& centroids,
              const BvhBuildOptions& options = {});
 

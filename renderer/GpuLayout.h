@@ -1,5 +1,10 @@
 #pragma once
 // C++ mirrors of GPU data layouts. Each must match its GLSL declaration byte for byte.
+//
+// Integers inside float texels (kinds, indices) are stored as float VALUES, not bit patterns: the
+// bits of a small integer read as a float are a denormal, which a GPU may flush to zero on the
+// way through an RGBA32F texture. A float holds every integer up to 2^24 exactly, which bounds
+// what such a field may count (16.7 million triangles, nodes, lights).
 
 #include <glm/glm.hpp>
 
@@ -60,29 +65,29 @@ struct GpuPrimitiveIds {
 };
 static_assert(sizeof(GpuPrimitiveIds) == 8, "one RG32I texel");
 
-// shaders/lights.glsl: four RGBA32F texels per light. The first holds the kind and primitive as
-// the bits of unsigned integers (read back with floatBitsToUint) and the light's cumulative
-// selection probability (the table is searched by it); the other three depend on the kind:
+// shaders/lights.glsl: four RGBA32F texels per light. The first holds the kind, the primitive and
+// the light's cumulative selection probability (the table is searched by it); the other three
+// depend on the kind:
 //   point, spot: (position, cosInner), (unit direction, cosOuter), (intensity W sr^-1, -)
 //   triangle:    (v0, -), (v1, -), (v2, -) in world space; front side along cross(v1 - v0, v2 - v0)
 //   quad, sphere, disk, environment: unused (the primitive's own data is read instead)
 struct GpuLight {
-    std::uint32_t kind;      // LightKind
-    std::uint32_t primitive; // quad, sphere or disk: its index; triangle: its material
-    float cdf;               // selection probability of this light and all before it
-    std::uint32_t pad;
+    float kind;      // LightKind
+    float primitive; // quad, sphere or disk: its index; triangle: its material
+    float cdf;       // selection probability of this light and all before it
+    float pad;
     glm::vec4 texels[3];
 };
 static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
 
-// shaders/scene_data.glsl: three RGBA32F texels per material; the type as uint bits.
+// shaders/scene_data.glsl: three RGBA32F texels per material.
 struct GpuMaterial {
     glm::vec3 color;
     float ior;
     glm::vec3 radiance;
     float roughness;
-    std::uint32_t type; // MaterialType
-    std::uint32_t pad[3];
+    float type; // MaterialType
+    float pad[3];
 };
 static_assert(sizeof(GpuMaterial) == 48, "three RGBA32F texels");
 

@@ -30,19 +30,6 @@ void appendBox(const Shape& box, ScenePrimitives& out) {
     }
 }
 
-template <typename T>
-void fillBufferTexture(GLuint buffer, GLuint texture, GLenum format, const std::vector<T>& data) {
-    // An empty buffer texture is not portable, so upload one zero element; counts stay 0.
-    static const T zero{};
-    const void* bytes = data.empty() ? static_cast<const void*>(&zero) : static_cast<const void*>(data.data());
-    size_t size = data.empty() ? sizeof(T) : data.size() * sizeof(T);
-    glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(size), bytes, GL_STATIC_DRAW);
-    glBindTexture(GL_TEXTURE_BUFFER, texture);
-    glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
-}
-
 } // namespace
 
 ScenePrimitives flattenScene(const Scene& scene) {
@@ -64,6 +51,8 @@ ScenePrimitives flattenScene(const Scene& scene) {
             out.disks.push_back(GpuDisk{shape.center, shape.radius, glm::normalize(shape.normal), 0.0f});
             out.diskMaterials.push_back(shape.material);
             break;
+        case ShapeType::Mesh: // GpuMeshes
+            break;
         }
     }
     out.lights = scene.lights;
@@ -79,7 +68,7 @@ void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& o
         gpu.ior = material.ior;
         gpu.radiance = material.radiance;
         gpu.roughness = material.roughness;
-        gpu.type = static_cast<std::uint32_t>(material.type);
+        gpu.type = static_cast<float>(material.type);
         out.materials.push_back(gpu);
     }
 }
@@ -105,8 +94,8 @@ void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<s
         }
         ids.push_back({material, static_cast<std::int32_t>(table.lights.size())});
         GpuLight light{};
-        light.kind = static_cast<std::uint32_t>(kind);
-        light.primitive = static_cast<std::uint32_t>(i);
+        light.kind = static_cast<float>(kind);
+        light.primitive = static_cast<float>(i);
         table.lights.push_back(light);
         power.push_back(area(primitives[i]) * glm::pi<double>() * emitted); // one-sided Lambertian emitter
     }
@@ -115,7 +104,8 @@ void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<s
 } // namespace
 
 LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
-                           glm::vec3 environmentRadiance) {
+                           glm::vec3 environmentRadiance, const std::vector<MeshInstance>& meshInstances,
+                           const Aabb& meshBounds) {
     LightTable table;
     std::vector<double> power;
     addAreaLights(geometry.quads, geometry.quadMaterials, materials, LightKind::Quad,
@@ -128,15 +118,43 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
                   [](const GpuDisk& d) { return glm::pi<double>() * d.radius * d.radius; },
                   table, table.diskIds, power);
 
+    for (const MeshInstance& instance : meshInstances) {
+        bool emits = false;
+        for (int material : instance.slotMaterials)
+            emits = emits || luminance(materials[static_cast<size_t>(material)].radiance) > 0.0f;
+        if (!emits) {
+            table.meshInstanceLightBase.push_back(-1);
+            continue;
+        }
+        // Every triangle gets its entry (those that do not emit have no power, so they are never
+        // chosen), keeping the hit-to-light mapping a simple offset.
+        table.meshInstanceLightBase.push_back(static_cast<std::int32_t>(table.lights.size()));
+        for (const GpuTriangle& triangle : *instance.triangles) {
+            int material = instance.slotMaterials[triangle.materialSlot];
+            GpuLight light{};
+            light.kind = static_cast<float>(LightKind::Triangle);
+            light.primitive = static_cast<float>(material);
+            glm::vec3 p0 = glm::vec3(instance.objectToWorld * glm::vec4(triangle.p0, 1.0f));
+            glm::vec3 p1 = glm::vec3(instance.objectToWorld * glm::vec4(triangle.p1, 1.0f));
+            glm::vec3 p2 = glm::vec3(instance.objectToWorld * glm::vec4(triangle.p2, 1.0f));
+            light.texels[0] = glm::vec4(p0, 0.0f);
+            light.texels[1] = glm::vec4(p1, 0.0f);
+            light.texels[2] = glm::vec4(p2, 0.0f);
+            table.lights.push_back(light);
+            double area = 0.5 * glm::length(glm::cross(glm::dvec3(p1 - p0), glm::dvec3(p2 - p0)));
+            power.push_back(area * glm::pi<double>() * luminance(materials[static_cast<size_t>(material)].radiance));
+        }
+    }
+
     for (const Light& source : geometry.lights) {
         GpuLight light{};
         light.texels[2] = glm::vec4(source.intensity, 0.0f);
         if (source.type == LightType::Point) {
-            light.kind = static_cast<std::uint32_t>(LightKind::Point);
+            light.kind = static_cast<float>(LightKind::Point);
             light.texels[0] = glm::vec4(source.position, 0.0f);
             power.push_back(4.0 * glm::pi<double>() * luminance(source.intensity));
         } else {
-            light.kind = static_cast<std::uint32_t>(LightKind::Spot);
+            light.kind = static_cast<float>(LightKind::Spot);
             float cosInner = std::cos(glm::radians(source.innerAngleDeg));
             float cosOuter = std::cos(glm::radians(source.outerAngleDeg));
             light.texels[0] = glm::vec4(source.position, cosInner);
@@ -166,10 +184,14 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
             boundsMin = glm::min(boundsMin, disk.center - disk.radius);
             boundsMax = glm::max(boundsMax, disk.center + disk.radius);
         }
+        if (!meshBounds.empty()) {
+            boundsMin = glm::min(boundsMin, meshBounds.min);
+            boundsMax = glm::max(boundsMax, meshBounds.max);
+        }
         double radius = boundsMin.x <= boundsMax.x ? std::max(0.5 * glm::length(boundsMax - boundsMin), 1e-3) : 1.0;
         table.environmentLight = static_cast<std::int32_t>(table.lights.size());
         GpuLight light{};
-        light.kind = static_cast<std::uint32_t>(LightKind::Environment);
+        light.kind = static_cast<float>(LightKind::Environment);
         table.lights.push_back(light);
         power.push_back(glm::pi<double>() * radius * radius * glm::pi<double>() * environment);
     }
@@ -186,19 +208,15 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 }
 
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
-    "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights"};
+    "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights",
+    GpuMeshes::kSamplerNames[0], GpuMeshes::kSamplerNames[1], GpuMeshes::kSamplerNames[2]};
 
 void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMeanRadiance) {
-    for (BufferTexture& slot : textures_) {
-        if (slot.buffer.id() == 0) {
-            slot.buffer = createBuffer();
-            slot.texture = createTexture();
-        }
-    }
     geometry_ = flattenScene(scene);
-    fillBufferTexture(textures_[0].buffer.id(), textures_[0].texture.id(), GL_RGBA32F, geometry_.spheres);
-    fillBufferTexture(textures_[1].buffer.id(), textures_[1].texture.id(), GL_RGBA32F, geometry_.quads);
-    fillBufferTexture(textures_[2].buffer.id(), textures_[2].texture.id(), GL_RGBA32F, geometry_.disks);
+    textures_[0].fill(GL_RGBA32F, 16, geometry_.spheres);
+    textures_[1].fill(GL_RGBA32F, 16, geometry_.quads);
+    textures_[2].fill(GL_RGBA32F, 16, geometry_.disks);
+    meshes_.upload(scene);
     environmentRadiance_ = environmentMeanRadiance.value_or(scene.environment);
     uploadMaterials(scene.materials);
 }
@@ -206,22 +224,20 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);
-    fillBufferTexture(textures_[4].buffer.id(), textures_[4].texture.id(), GL_RGBA32F, primitives.materials);
-    lights_ = buildLightTable(geometry_, materials, environmentRadiance_);
+    textures_[4].fill(GL_RGBA32F, 16, primitives.materials);
+    lights_ = buildLightTable(geometry_, materials, environmentRadiance_, meshes_.instances(), meshes_.worldBounds());
     // One id buffer: spheres, then quads, then disks (scene_data.glsl adds the offsets).
     std::vector<GpuPrimitiveIds> ids = lights_.sphereIds;
     ids.insert(ids.end(), lights_.quadIds.begin(), lights_.quadIds.end());
     ids.insert(ids.end(), lights_.diskIds.begin(), lights_.diskIds.end());
-    fillBufferTexture(textures_[3].buffer.id(), textures_[3].texture.id(), GL_RG32I, ids);
-    fillBufferTexture(textures_[5].buffer.id(), textures_[5].texture.id(), GL_RGBA32F, lights_.lights);
+    textures_[3].fill(GL_RG32I, 8, ids);
+    textures_[5].fill(GL_RGBA32F, 16, lights_.lights);
+    meshes_.uploadInstances(lights_.meshInstanceLightBase);
 }
 
 void GpuScene::bind(int firstUnit) const {
-    for (int i = 0; i < kTextureCount; ++i) {
-        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + firstUnit + i));
-        glBindTexture(GL_TEXTURE_BUFFER, textures_[i].texture.id());
-    }
-    glActiveTexture(GL_TEXTURE0);
+    for (int i = 0; i < kOwnTextureCount; ++i) textures_[i].bind(firstUnit + i);
+    meshes_.bind(firstUnit + kOwnTextureCount);
 }
 
 } // namespace ptview

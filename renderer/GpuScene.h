@@ -2,8 +2,9 @@
 // The scene as GPU primitives: boxes become six quads, emitters and point/spot lights become a
 // light table, and everything goes into buffer textures that shaders/scene_data.glsl reads.
 
-#include "GlObjects.h"
+#include "BufferTexture.h"
 #include "GpuLayout.h"
+#include "GpuMeshes.h"
 #include "Scene.h"
 
 #include <cstdint>
@@ -30,6 +31,7 @@ enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environme
 struct LightTable {
     std::vector<GpuLight> lights; // each with its cumulative selection probability; the last's is 1
     std::vector<GpuPrimitiveIds> sphereIds, quadIds, diskIds;
+    std::vector<std::int32_t> meshInstanceLightBase; // per mesh instance: its first light, or -1
     std::int32_t environmentLight = -1;
 };
 
@@ -37,12 +39,16 @@ struct LightTable {
 ScenePrimitives flattenScene(const Scene& scene);
 void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out);
 // The environment's share is its power through a disk as large as the scene's bounding sphere.
+// An emitting mesh instance gets one light per triangle (in its leaf order), so that a hit's light
+// index is the instance's first plus the triangle's place.
 LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
-                           glm::vec3 environmentRadiance);
+                           glm::vec3 environmentRadiance, const std::vector<MeshInstance>& meshInstances = {},
+                           const Aabb& meshBounds = {});
 
 class GpuScene {
 public:
-    static constexpr int kTextureCount = 6;
+    static constexpr int kOwnTextureCount = 6;
+    static constexpr int kTextureCount = kOwnTextureCount + GpuMeshes::kTextureCount;
     // The sampler uniforms of shaders/scene_data.glsl, in the order bind() uses units.
     static const char* const kSamplerNames[kTextureCount];
 
@@ -59,13 +65,11 @@ public:
     int diskCount() const { return static_cast<int>(geometry_.disks.size()); }
     int lightCount() const { return static_cast<int>(lights_.lights.size()); }
     int environmentLight() const { return lights_.environmentLight; }
+    const GpuMeshes& meshes() const { return meshes_; }
 
 private:
-    struct BufferTexture {
-        GlBuffer buffer;
-        GlTexture texture;
-    };
-    BufferTexture textures_[kTextureCount];
+    BufferTexture textures_[kOwnTextureCount];
+    GpuMeshes meshes_;
     ScenePrimitives geometry_; // kept to rebuild the light table on material edits
     glm::vec3 environmentRadiance_{0.0f};
     LightTable lights_;

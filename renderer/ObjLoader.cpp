@@ -1,1 +1,569 @@
 #include "ObjLoader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <glm/glm.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <map>
+#include <streambuf>
+#include <string_view>
+#include <system_error>
+#include <unordered_map>
+#include <utility>
+
+// tinyobjloader's streaming reader (LoadObjWithCallback) is used rather than tinyobj::ObjReader,
+// which does its own checking and gets three things wrong for us (2.0.0rc10):
+//   - a `usemtl` name that no MTL entry defines becomes material -1, so with a missing MTL file
+//     every face loses its slot name;
+//   - an index past the end is only a warning, carrying the number of the file's LAST line, and the
+//     face is kept with the bad index (a quad with one is dropped without a count);
+//   - like every tinyobjloader reader it reads "nan", "inf" or a missing field as 0.
+// The streaming reader hands over each record as it reads it, with the raw indices and the usemtl
+// name, so the checks below see exactly what the file says and can name the line.
+
+namespace ptview {
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+bool isLineEnd(char c) { return c == '\n' || c == '\r'; }
+
+template <int N>
+bool isFinite(const glm::vec<N, float>& v) {
+    for (int i = 0; i < N; ++i)
+        if (!std::isfinite(v[i])) return false;
+    return true;
+}
+
+std::string counted(std::size_t count, const char* noun) {
+    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
+// --- Bytes and lines --------------------------------------------------------------------------
+
+std::string readFile(const std::filesystem::path& path) {
+    auto cannotOpen = [&path](int error) {
+        return MeshError(path.string() + ": cannot open mesh file: " + std::strerror(error));
+    };
+    std::error_code ignored;
+    // Opening a directory succeeds and only the read fails, with a less helpful errno.
+    if (std::filesystem::is_directory(path, ignored)) throw cannotOpen(EISDIR);
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw cannotOpen(errno);
+    file.seekg(0, std::ios::end);
+    const std::streamoff size = file.tellg();
+    file.seekg(0, std::ios::beg);
+    if (!file || size < 0) throw cannotOpen(errno);
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    file.read(bytes.data(), size);
+    if (file.bad()) throw cannotOpen(errno);
+    bytes.resize(static_cast<std::size_t>(file.gcount())); // a file that shrank meanwhile: what is there
+    return bytes;
+}
+
+// An input stream over bytes already in memory (std::istringstream would copy 80 MB) that also
+// says how far reading has got. tinyobjloader calls back as soon as it has read a record's line,
+// so at a callback that position is the end of the record's line.
+class MemoryBuffer : public std::streambuf {
+public:
+    explicit MemoryBuffer(std::string& bytes) {
+        setg(bytes.data(), bytes.data(), bytes.data() + bytes.size());
+    }
+    std::size_t consumed() const { return static_cast<std::size_t>(gptr() - eback()); }
+};
+
+// The text of the line whose end (just past its line break, or the end of the file) is `end`.
+// Line breaks are \n, \r\n or a lone \r, as tinyobjloader reads them.
+std::string_view lineEndingAt(std::string_view bytes, std::size_t end) {
+    std::size_t textEnd = end;
+    if (textEnd > 0 && bytes[textEnd - 1] == '\n') --textEnd;
+    if (textEnd > 0 && bytes[textEnd - 1] == '\r') --textEnd;
+    std::size_t begin = textEnd;
+    while (begin > 0 && !isLineEnd(bytes[begin - 1])) --begin;
+    return bytes.substr(begin, textEnd - begin);
+}
+
+// The 1-based number of the line that ends at `end`. Only messages need it, so counting from the
+// start of the file each time costs nothing on the way that succeeds.
+std::size_t lineNumberEndingAt(std::string_view bytes, std::size_t end) {
+    const std::size_t begin = static_cast<std::size_t>(lineEndingAt(bytes, end).data() - bytes.data());
+    std::size_t line = 1;
+    for (std::size_t i = 0; i < begin; ++i) {
+        if (bytes[i] == '\n') {
+            ++line;
+        } else if (bytes[i] == '\r') {
+            if (i + 1 < begin && bytes[i + 1] == '\n') ++i;
+            ++line;
+        }
+    }
+    return line;
+}
+
+// How many records start with `keyword` (a one-letter one: `l` or `p`). The streaming reader skips
+// them without a callback; the letters are rare in OBJ text, so memchr visits few candidates.
+std::size_t countRecords(std::string_view bytes, char keyword) {
+    const char* begin = bytes.data();
+    const char* end = begin + bytes.size();
+    std::size_t count = 0;
+    for (const char* at = begin;
+         (at = static_cast<const char*>(std::memchr(at, keyword, static_cast<std::size_t>(end - at))));
+         ++at) {
+        if (at + 1 == end || !isBlank(at[1])) continue;
+        const char* before = at;
+        while (before > begin && isBlank(before[-1])) --before;
+        if (before == begin || isLineEnd(before[-1])) ++count;
+    }
+    return count;
+}
+
+// Whether a record's first `required` fields after its keyword, and any present up to `most`,
+// are numbers. tinyobjloader reads anything else as 0 without a word ("nan", "inf", a field lost
+// where a file was cut short), which would put a vertex at the origin instead of leaving it out.
+// A '#' ends the fields: some exporters put a comment after the numbers.
+bool fieldsAreNumbers(std::string_view line, int required, int most) {
+    std::size_t at = 0;
+    auto skipBlanks = [&] {
+        while (at < line.size() && isBlank(line[at])) ++at;
+    };
+    skipBlanks();
+    while (at < line.size() && !isBlank(line[at])) ++at; // the keyword
+    for (int field = 0; field < most; ++field) {
+        skipBlanks();
+        if (at == line.size() || line[at] == '#') return field >= required;
+        bool digit = false;
+        for (; at < line.size() && !isBlank(line[at]); ++at) {
+            const char c = line[at];
+            if (c >= '0' && c <= '9')
+                digit = true;
+            else if (c != '+' && c != '-' && c != '.' && c != 'e' && c != 'E')
+                return false;
+        }
+        if (!digit) return false;
+    }
+    return true;
+}
+
+// The text of corner `corner` (0-based) of a face record, split the way tinyobjloader splits it
+// (its reader reads "1/2/3/4" as the corner "1/2/3" and then a corner "/4"), for messages.
+std::string_view cornerText(std::string_view line, int corner) {
+    std::size_t at = 0;
+    auto inside = [&] { return at < line.size() && line[at] != '\0'; };
+    auto skipBlanks = [&] {
+        while (inside() && isBlank(line[at])) ++at;
+    };
+    auto skipNumber = [&] {
+        while (inside() && !isBlank(line[at]) && line[at] != '/') ++at;
+    };
+    skipBlanks();
+    at += 1; // the keyword `f`
+    skipBlanks();
+    for (int k = 0; inside(); ++k) {
+        const std::size_t begin = at;
+        skipNumber();
+        if (inside() && line[at] == '/') {
+            ++at;
+            if (inside() && line[at] == '/') {
+                ++at;
+                skipNumber();
+            } else {
+                skipNumber();
+                if (inside() && line[at] == '/') {
+                    ++at;
+                    skipNumber();
+                }
+            }
+        }
+        if (k == corner) return line.substr(begin, at - begin);
+        skipBlanks();
+    }
+    return {};
+}
+
+// tinyobjloader's messages, one per line, each given our file name.
+void appendMessages(const std::string& file, const std::string& messages, std::vector<std::string>& out) {
+    std::size_t begin = 0;
+    while (begin < messages.size()) {
+        std::size_t end = messages.find('\n', begin);
+        if (end == std::string::npos) end = messages.size();
+        std::string_view line(messages.data() + begin, end - begin);
+        while (!line.empty() && (isBlank(line.back()) || line.back() == '\r' || line.back() == '.'))
+            line.remove_suffix(1);
+        while (!line.empty() && (isBlank(line.front()) || line.front() == '.')) line.remove_prefix(1);
+        if (!line.empty()) out.push_back(file + ": " + std::string(line));
+        begin = end + 1;
+    }
+}
+
+// --- Materials --------------------------------------------------------------------------------
+
+MeshMaterial toMeshMaterial(const tinyobj::material_t& entry) {
+    MeshMaterial material;
+    material.name = entry.name;
+    material.diffuse = {entry.diffuse[0], entry.diffuse[1], entry.diffuse[2]};
+    material.specular = {entry.specular[0], entry.specular[1], entry.specular[2]};
+    material.emission = {entry.emission[0], entry.emission[1], entry.emission[2]};
+    material.shininess = entry.shininess;
+    material.ior = entry.ior;
+    material.dissolve = entry.dissolve; // tinyobjloader has already turned Tr into 1 - Tr, and lets d win
+    material.illum = entry.illum;
+    return material;
+}
+
+// Looks for each `mtllib` file in the OBJ's directory (tinyobjloader's own file reader splits its
+// search path at ':' and, for an OBJ path without a directory, looks nowhere), and words what
+// happens in our terms, naming the MTL file.
+class MtlReader : public tinyobj::MaterialReader {
+public:
+    MtlReader(std::filesystem::path directory, std::string objFile, TriangleMesh& mesh,
+              std::vector<std::string>& warnings)
+        : directory_(std::move(directory)), objFile_(std::move(objFile)), mesh_(mesh), warnings_(warnings) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* nameToIndex, std::string* /*warn*/,
+                    std::string* /*err*/) override {
+        const std::filesystem::path path = directory_ / name;
+        std::error_code ignored;
+        std::ifstream in;
+        if (!std::filesystem::is_directory(path, ignored)) in.open(path, std::ios::binary);
+        if (!in.is_open()) {
+            warnings_.push_back(objFile_ + ": material library " + name + " not found (looked for " +
+                                path.string() + "); its faces keep their material names");
+            return false;
+        }
+        const std::size_t before = materials->size();
+        std::string mtlWarnings, mtlErrors;
+        tinyobj::LoadMtl(nameToIndex, materials, &in, &mtlWarnings, &mtlErrors);
+        appendMessages(path.string(), mtlWarnings + mtlErrors, warnings_);
+        if (materials->size() == before) warnings_.push_back(path.string() + ": defines no materials");
+        for (std::size_t i = before; i < materials->size(); ++i)
+            mesh_.fileMaterials.push_back(toMeshMaterial((*materials)[i]));
+        return true;
+    }
+
+private:
+    std::filesystem::path directory_;
+    std::string objFile_;
+    TriangleMesh& mesh_;
+    std::vector<std::string>& warnings_;
+};
+
+// --- Records to triangles ---------------------------------------------------------------------
+
+// Builds the mesh from tinyobjloader's callbacks. Triangles are first stored with the file's own
+// (0-based) indices; what needs the whole file (forward references, which vertices are usable) is
+// settled in finish(). Every per-record step is constant work, so loading stays linear.
+class ObjBuilder {
+public:
+    ObjBuilder(std::string file, std::string_view bytes, const MemoryBuffer& stream, TriangleMesh& mesh)
+        : file_(std::move(file)), bytes_(bytes), stream_(stream), mesh_(mesh) {
+        mesh_.materialSlots.assign(1, "");
+        slotOfName_.emplace("", 0);
+    }
+
+    tinyobj::callback_t callbacks() {
+        tinyobj::callback_t calls;
+        calls.vertex_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z,
+                             tinyobj::real_t) { static_cast<ObjBuilder*>(self)->addPosition(x, y, z); };
+        calls.normal_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
+            static_cast<ObjBuilder*>(self)->addNormal(x, y, z);
+        };
+        calls.texcoord_cb = [](void* self, tinyobj::real_t u, tinyobj::real_t v, tinyobj::real_t) {
+            static_cast<ObjBuilder*>(self)->addTexcoord(u, v);
+        };
+        calls.index_cb = [](void* self, tinyobj::index_t* corners, int count) {
+            static_cast<ObjBuilder*>(self)->addFace(corners, count);
+        };
+        calls.usemtl_cb = [](void* self, const char* name, int) {
+            static_cast<ObjBuilder*>(self)->useMaterial(name);
+        };
+        return calls;
+    }
+
+    // Settles indices, drops what cannot be drawn and reports it. Throws MeshError.
+    void finish(std::size_t polylines, std::size_t points, std::vector<std::string>& warnings);
+
+    // The first error met while reading, if any: tinyobjloader reads on after a callback, so
+    // callbacks note it here instead of throwing through the library.
+    const std::string& error() const { return error_; }
+
+private:
+    // Where a record's line ends, for line numbers in messages.
+    std::size_t here() const { return stream_.consumed(); }
+    std::string at(std::size_t end) const {
+        return file_ + ":" + std::to_string(lineNumberEndingAt(bytes_, end));
+    }
+    // "FILE:LINE: face N, corner K ("1/2/3")": the corner quoted as written, since an index that
+    // does not fit an int reaches us as some other number.
+    std::string cornerPlace(std::size_t end, std::size_t face, int corner) const {
+        return at(end) + ": face " + std::to_string(face) + ", corner " + std::to_string(corner + 1) +
+               " (\"" + std::string(cornerText(lineEndingAt(bytes_, end), corner)) + "\")";
+    }
+    void fail(int corner, const std::string& reason) {
+        if (error_.empty()) error_ = cornerPlace(here(), faces_, corner) + ": " + reason;
+    }
+
+    // One attribute kind's indices (positions, normals or texture coordinates): for each record in
+    // the file, its index among the usable ones we keep, or -1 if it is not usable.
+    struct Attribute {
+        const char* noun;
+        std::vector<std::int32_t> kept;
+        std::size_t unusable = 0;
+        std::size_t firstUnusableEnd = 0; // where its line ends
+        std::int64_t largestUsed = -1;    // the largest index a face uses, and where
+        std::size_t largestUsedFace = 0;
+        int largestUsedCorner = 0;
+        std::size_t largestUsedEnd = 0;
+
+        void add(bool usable, std::size_t keptCount, std::size_t end) {
+            if (usable) {
+                kept.push_back(static_cast<std::int32_t>(keptCount));
+            } else {
+                if (unusable++ == 0) firstUnusableEnd = end;
+                kept.push_back(-1);
+            }
+        }
+    };
+
+    void addPosition(float x, float y, float z) {
+        const glm::vec3 p(x, y, z);
+        const bool usable = isFinite(p) && fieldsAreNumbers(record(), 3, 3);
+        positions_.add(usable, mesh_.positions.size(), here());
+        if (usable) mesh_.positions.push_back(p);
+    }
+
+    void addNormal(float x, float y, float z) {
+        const glm::vec3 n(x, y, z);
+        const float length = glm::length(n);
+        const glm::vec3 unit = n / length;
+        const bool usable = length > 0.0f && isFinite(unit) && fieldsAreNumbers(record(), 3, 3);
+        normals_.add(usable, mesh_.normals.size(), here());
+        if (usable) mesh_.normals.push_back(unit);
+    }
+
+    void addTexcoord(float u, float v) {
+        const glm::vec2 uv(u, v);
+        const bool usable = isFinite(uv) && fieldsAreNumbers(record(), 1, 2);
+        texcoords_.add(usable, mesh_.texcoords.size(), here());
+        if (usable) mesh_.texcoords.push_back(uv);
+    }
+
+    std::string_view record() const { return lineEndingAt(bytes_, here()); }
+
+    // An OBJ index as the streaming reader passes it (1-based, negative counting back from the last
+    // one defined so far, 0 for none given) made 0-based; -1 for none. Past-the-end indices are
+    // only noted here, since the vertex may still come (a forward reference).
+    std::int64_t resolve(int index, Attribute& attribute, int corner) {
+        if (index == 0) return -1;
+        std::int64_t resolved =
+            index > 0 ? std::int64_t(index) - 1 : std::int64_t(attribute.kept.size()) + index;
+        if (resolved < 0) {
+            fail(corner, std::string(attribute.noun) + " index " + std::to_string(index) +
+                             " reaches back past the first " + attribute.noun + " (" +
+                             std::to_string(attribute.kept.size()) + " defined before this face)");
+            return -1;
+        }
+        if (resolved > attribute.largestUsed) {
+            attribute.largestUsed = resolved;
+            attribute.largestUsedFace = faces_;
+            attribute.largestUsedCorner = corner;
+            attribute.largestUsedEnd = here();
+        }
+        return resolved;
+    }
+
+    void addFace(const tinyobj::index_t* corners, int count) {
+        ++faces_;
+        if (!error_.empty()) return;
+        if (count < 3) {
+            if (shortFaces_++ == 0) firstShortFaceEnd_ = here();
+            return;
+        }
+        // Corner 0 and its attributes, then a fan: OBJ polygons are convex and planar, and a fan
+        // from any corner covers such a polygon exactly.
+        std::int64_t position[3], normal[3], texcoord[3];
+        for (int k = 0; k < count; ++k) {
+            if (corners[k].vertex_index == 0) {
+                // The reader takes a comment after a face's corners for more corners (with index 0).
+                if (cornerText(record(), k).substr(0, 1) == "#") {
+                    if (k < 3 && shortFaces_++ == 0) firstShortFaceEnd_ = here();
+                    return;
+                }
+                fail(k, "no position index (OBJ counts from 1)");
+                return;
+            }
+            const int slot = k < 2 ? k : 2;
+            position[slot] = resolve(corners[k].vertex_index, positions_, k);
+            normal[slot] = resolve(corners[k].normal_index, normals_, k);
+            texcoord[slot] = resolve(corners[k].texcoord_index, texcoords_, k);
+            if (!error_.empty()) return;
+            if (k < 2) continue;
+            MeshTriangle triangle;
+            for (int c = 0; c < 3; ++c) {
+                triangle.position[c] = static_cast<std::uint32_t>(position[c]);
+                triangle.normal[c] = static_cast<std::int32_t>(normal[c]);
+                triangle.texcoord[c] = static_cast<std::int32_t>(texcoord[c]);
+            }
+            triangle.materialSlot = slot_;
+            mesh_.triangles.push_back(triangle);
+            // The next triangle of the fan shares corner 0 and this triangle's last corner.
+            position[1] = position[2];
+            normal[1] = normal[2];
+            texcoord[1] = texcoord[2];
+        }
+    }
+
+    void useMaterial(const char* text) {
+        std::string_view name(text);
+        while (!name.empty() && (isBlank(name.back()) || name.back() == '\r')) name.remove_suffix(1);
+        while (!name.empty() && isBlank(name.front())) name.remove_prefix(1);
+        auto [entry, added] = slotOfName_.emplace(std::string(name), int(mesh_.materialSlots.size()));
+        if (added) mesh_.materialSlots.push_back(entry->first);
+        slot_ = entry->second;
+    }
+
+    void checkRange(const Attribute& attribute) const {
+        if (attribute.largestUsed < std::int64_t(attribute.kept.size())) return;
+        throw MeshError(
+            cornerPlace(attribute.largestUsedEnd, attribute.largestUsedFace, attribute.largestUsedCorner) +
+            ": " + attribute.noun + " index " + std::to_string(attribute.largestUsed + 1) +
+            " is out of range (the file defines " + counted(attribute.kept.size(), attribute.noun) + ")");
+    }
+
+    std::string file_;
+    std::string_view bytes_;
+    const MemoryBuffer& stream_;
+    TriangleMesh& mesh_;
+    std::string error_;
+
+    Attribute positions_{"position", {}};
+    Attribute normals_{"normal", {}};
+    Attribute texcoords_{"texture coordinate", {}};
+    std::size_t faces_ = 0;
+    std::size_t shortFaces_ = 0;
+    std::size_t firstShortFaceEnd_ = 0;
+    std::unordered_map<std::string, int> slotOfName_;
+    int slot_ = 0;
+};
+
+void ObjBuilder::finish(std::size_t polylines, std::size_t points, std::vector<std::string>& warnings) {
+    if (!error_.empty()) throw MeshError(error_);
+    checkRange(positions_);
+    checkRange(normals_);
+    checkRange(texcoords_);
+
+    // Tallies of what is dropped, for one warning each instead of one per triangle.
+    std::size_t unusableVertex = 0, zeroArea = 0, flatCorners = 0, bareCorners = 0;
+    std::size_t kept = 0;
+    for (MeshTriangle triangle : mesh_.triangles) {
+        std::int32_t p[3];
+        for (int c = 0; c < 3; ++c) p[c] = positions_.kept[triangle.position[c]];
+        if (p[0] < 0 || p[1] < 0 || p[2] < 0) {
+            ++unusableVertex;
+            continue;
+        }
+        // A zero-area triangle covers no surface, so leaving it out cannot open a hole in a closed
+        // mesh; kept, it would give the BVH and the shading a normal made from 0/0. Only exact
+        // zeros count: a sliver of a finely tessellated mesh is real surface.
+        const glm::vec3 a = mesh_.positions[p[0]];
+        const glm::vec3 b = mesh_.positions[p[1]];
+        const glm::vec3 c = mesh_.positions[p[2]];
+        if (p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || glm::cross(b - a, c - a) == glm::vec3(0.0f)) {
+            ++zeroArea;
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) {
+            triangle.position[k] = static_cast<std::uint32_t>(p[k]);
+            if (triangle.normal[k] >= 0) {
+                triangle.normal[k] = normals_.kept[triangle.normal[k]];
+                if (triangle.normal[k] < 0) ++flatCorners;
+            }
+            if (triangle.texcoord[k] >= 0) {
+                triangle.texcoord[k] = texcoords_.kept[triangle.texcoord[k]];
+                if (triangle.texcoord[k] < 0) ++bareCorners;
+            }
+        }
+        mesh_.triangles[kept++] = triangle;
+    }
+    const std::size_t fanned = mesh_.triangles.size();
+    mesh_.triangles.resize(kept);
+    mesh_.triangles.shrink_to_fit();
+
+    auto warn = [&](const std::string& text) { warnings.push_back(file_ + ": " + text); };
+    if (polylines > 0 && points > 0)
+        warn("skipped " + counted(polylines, "polyline record") + " (l) and " +
+             counted(points, "point record") + " (p)");
+    else if (polylines > 0)
+        warn("skipped " + counted(polylines, "polyline record") + " (l)");
+    else if (points > 0)
+        warn("skipped " + counted(points, "point record") + " (p)");
+    if (shortFaces_ > 0)
+        warn("skipped " + counted(shortFaces_, "face") + " with fewer than 3 corners (the first at line " +
+             std::to_string(lineNumberEndingAt(bytes_, firstShortFaceEnd_)) + ")");
+    if (zeroArea > 0) warn("dropped " + counted(zeroArea, "degenerate triangle") + " (zero area)");
+    if (unusableVertex > 0)
+        warn("dropped " + counted(unusableVertex, "triangle") +
+             " using a vertex whose coordinates are not finite numbers (the first such vertex at line " +
+             std::to_string(lineNumberEndingAt(bytes_, positions_.firstUnusableEnd)) + ")");
+    if (flatCorners > 0)
+        warn(counted(flatCorners, "triangle corner") +
+             " use a normal that is not finite or has zero length (the first at line " +
+             std::to_string(lineNumberEndingAt(bytes_, normals_.firstUnusableEnd)) + "); they shade flat");
+    if (bareCorners > 0)
+        warn(counted(bareCorners, "triangle corner") +
+             " use a texture coordinate that is not a finite number (the first at line " +
+             std::to_string(lineNumberEndingAt(bytes_, texcoords_.firstUnusableEnd)) + "); they have none");
+
+    if (mesh_.triangles.empty()) {
+        if (fanned == 0)
+            throw MeshError(file_ + ": no triangles (" +
+                            (faces_ == 0 ? std::string("the file has no faces")
+                                         : "none of its " + counted(faces_, "face") + " has 3 corners") +
+                            ")");
+        throw MeshError(file_ + ": no triangles left: of " + std::to_string(fanned) + ", " +
+                        std::to_string(zeroArea) + " have zero area and " + std::to_string(unusableVertex) +
+                        " use a vertex that is not a finite number");
+    }
+}
+
+} // namespace
+
+TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report) {
+    MeshLoadReport unread;
+    std::vector<std::string>& warnings = (report ? *report : unread).warnings;
+    const std::string file = path.string();
+
+    std::string bytes = readFile(path);
+    MemoryBuffer buffer(bytes);
+    std::istream stream(&buffer);
+
+    TriangleMesh mesh;
+    mesh.source = file;
+    ObjBuilder builder(file, bytes, buffer, mesh);
+    MtlReader mtlReader(path.parent_path(), file, mesh, warnings);
+    std::string libraryWarnings, libraryErrors;
+    const bool read = tinyobj::LoadObjWithCallback(stream, builder.callbacks(), &builder, &mtlReader,
+                                                   &libraryWarnings, &libraryErrors);
+    if (!builder.error().empty()) throw MeshError(builder.error());
+    if (!read || !libraryErrors.empty()) {
+        std::vector<std::string> errors;
+        appendMessages(file, libraryErrors, errors);
+        throw MeshError(errors.empty() ? file + ": tinyobjloader could not read it" : errors.front());
+    }
+    // MtlReader has already said, naming the file, which library is missing; this is the same news.
+    std::vector<std::string> messages;
+    appendMessages(file, libraryWarnings, messages);
+    for (std::string& message : messages)
+        if (message.find("Failed to load material file") == std::string::npos)
+            warnings.push_back(std::move(message));
+
+    builder.finish(countRecords(bytes, 'l'), countRecords(bytes, 'p'), warnings);
+    return mesh;
+}
+
+} // namespace ptview

@@ -13,8 +13,8 @@ namespace {
 
 constexpr GLuint kFrameBlockBinding = 0;
 constexpr int kAccumulationUnit = 0;                             // units 0..2
-constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..12
-constexpr int kEnvironmentUnit = 13; // units 13..15: the last that OpenGL 4.1 guarantees (16)
+constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..11
+constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // units 12..14
 static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
 static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
 
@@ -45,6 +45,8 @@ PathTracer::Programs PathTracer::buildPrograms() const {
     programs.diskCount = trace.uniformLocation("uDiskCount");
     programs.lightCount = trace.uniformLocation("uLightCount");
     programs.environmentLight = trace.uniformLocation("uEnvironmentLight");
+    programs.meshInstanceCount = trace.uniformLocation("uMeshInstanceCount");
+    programs.topLevelRoot = trace.uniformLocation("uTopLevelRoot");
 
     const GlProgram& show = *programs.display;
     show.bindSamplerUnit("uSum", 0);
@@ -160,6 +162,8 @@ bool PathTracer::renderRows(int rowCount) {
     glUniform1i(programs_.diskCount, gpuScene_.diskCount());
     glUniform1i(programs_.lightCount, gpuScene_.lightCount());
     glUniform1i(programs_.environmentLight, gpuScene_.environmentLight());
+    glUniform1i(programs_.meshInstanceCount, gpuScene_.meshes().instanceCount());
+    glUniform1i(programs_.topLevelRoot, gpuScene_.meshes().topLevelRoot());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
     gpuScene_.bind(kSceneUnit);
     environmentMap_.bind();

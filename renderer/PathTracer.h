@@ -98,6 +98,8 @@ private:
         GLint diskCount = -1;
         GLint lightCount = -1;
         GLint environmentLight = -1;
+        GLint meshInstanceCount = -1;
+        GLint topLevelRoot = -1;
         GLint invSampleCount = -1;
         GLint exposureScale = -1;
         GLint toneMapper = -1;

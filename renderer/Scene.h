@@ -2,9 +2,12 @@
 // The scene model: what a scene file describes, validated and in world units (metres, Y up).
 // The UI edits this model and the renderer uploads it; neither knows about JSON.
 
+#include "TriangleMesh.h"
+
 #include <glm/glm.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,7 +39,19 @@ struct Material {
     float roughness = 0.0f;   // Metal, Plastic (coat): in [0, 1], GGX alpha = roughness^2; 0 = smooth
 };
 
-enum class ShapeType { Sphere, Quad, Box, Disk };
+enum class ShapeType { Sphere, Quad, Box, Disk, Mesh };
+
+// Places an object: scale (per axis, about the origin), then rotate, then translate. The
+// loader bakes transforms of analytic shapes into their parameters; a mesh keeps its own, so
+// that its instances share one copy of the triangles.
+struct Transform {
+    glm::vec3 translate{0.0f};
+    glm::vec3 rotationAxis{0.0f, 1.0f, 0.0f}; // right-hand rule
+    float rotationDeg = 0.0f;
+    glm::vec3 scale{1.0f};                    // nonzero components
+
+    glm::mat4 objectToWorld() const;
+};
 
 struct Shape {
     std::string name;
@@ -50,6 +65,18 @@ struct Shape {
     glm::vec3 halfSize{0.5f};             // Box: half extents in its local frame
     glm::vec3 rotationAxis{0.0f, 1.0f, 0.0f}; // Box: local-to-world rotation, right-hand rule
     float rotationDeg = 0.0f;
+    // Mesh: an instance of Scene::meshes[mesh], placed by transform, with one scene material per
+    // material slot of the mesh (slotMaterials[slot]; `material` is unused).
+    int mesh = -1;
+    Transform transform;
+    std::vector<int> slotMaterials;
+};
+
+// A mesh file the scene uses, loaded once however many shapes instance it.
+struct SceneMesh {
+    std::string name; // the key in the file's "meshes"
+    std::filesystem::path file;
+    std::shared_ptr<const TriangleMesh> data;
 };
 
 // Lights that are points rather than surfaces (delta lights: only light sampling reaches them).
@@ -77,8 +104,12 @@ struct Scene {
     float environmentIntensity = 1.0f;   // >= 0
     float environmentRotationDeg = 0.0f; // about +Y, right-hand rule
     std::vector<Material> materials;
+    std::vector<SceneMesh> meshes;
     std::vector<Shape> shapes;
     std::vector<Light> lights;
+    // What loading repaired or skipped (a mesh's degenerate triangles, polylines), one line each
+    // naming the file; the scene is usable, but the user should hear about it.
+    std::vector<std::string> warnings;
 };
 
 // A scene file that cannot be used. what() reads "FILE: /json/pointer: reason" or, for
@@ -95,5 +126,7 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
 
 // The rotation of a box as a matrix (local to world).
 glm::mat3 boxRotation(const Shape& box);
+// Rodrigues' rotation about axis (any length; zero: none) by degrees.
+glm::mat3 rotationMatrix(glm::vec3 axis, float degrees);
 
 } // namespace ptview

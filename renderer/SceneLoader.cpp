@@ -6,6 +6,7 @@
 // default radius and a puzzling image instead of a message.
 
 #include "MaterialSchema.h"
+#include "ObjLoader.h"
 #include "Scene.h"
 
 #include <nlohmann/json.hpp>
@@ -25,7 +26,11 @@
 #include <string>
 #include <system_error>
 #include <utility>
+#include <map>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 namespace ptview {
 namespace {
@@ -455,32 +460,146 @@ int findMaterial(const std::vector<Material>& materials, const std::string& name
     return it == materials.end() ? -1 : static_cast<int>(std::distance(materials.begin(), it));
 }
 
+// "rotation": {"axis": [x, y, z], "degrees": d}, as boxes and transforms write it.
+void readRotation(const Json& value, const Pointer& at, glm::vec3& axis, float& degrees) {
+    requireObject(value, at);
+    checkKeys(value, at, {"axis", "degrees"});
+    axis = readNonzeroVec3(requireKey(value, at, "axis"), at / "axis");
+    degrees = readNumber(requireKey(value, at, "degrees"), at / "degrees");
+}
+
+Transform readTransform(const Json& value, const Pointer& at) {
+    requireObject(value, at);
+    checkKeys(value, at, {"translate", "rotation", "scale"});
+    Transform transform;
+    if (const Json* translate = optionalKey(value, "translate"))
+        transform.translate = readVec3(*translate, at / "translate");
+    if (const Json* rotation = optionalKey(value, "rotation"))
+        readRotation(*rotation, at / "rotation", transform.rotationAxis, transform.rotationDeg);
+    if (const Json* scale = optionalKey(value, "scale")) {
+        // One number scales uniformly; zero would flatten the object to nothing.
+        transform.scale = scale->is_number() ? glm::vec3(readNumber(*scale, at / "scale"))
+                                             : readVec3(*scale, at / "scale", [](float c) { return c != 0.0f; },
+                                                        "a nonzero number");
+        if (transform.scale.x == 0.0f) fail(at / "scale", "expected a nonzero number");
+    }
+    return transform;
+}
+
+bool isUniform(const glm::vec3& scale) {
+    return std::abs(scale.x) == std::abs(scale.y) && std::abs(scale.y) == std::abs(scale.z);
+}
+
+// Bakes a transform into an analytic shape's parameters. Spheres, disks and rotated boxes stay
+// what they are only under a uniform scale, so anything else is an error, not a silent change.
+void applyTransform(Shape& shape, const Transform& transform, const Pointer& at) {
+    glm::mat3 rotation = rotationMatrix(transform.rotationAxis, transform.rotationDeg);
+    glm::mat3 linear = rotation * glm::mat3(glm::scale(glm::mat4(1.0f), transform.scale));
+    auto place = [&](glm::vec3 point) { return linear * point + transform.translate; };
+    float uniformScale = std::abs(transform.scale.x);
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        if (!isUniform(transform.scale)) fail(at / "scale", "a sphere takes only a uniform scale");
+        shape.center = place(shape.center);
+        shape.radius *= uniformScale;
+        break;
+    case ShapeType::Quad:
+        shape.center = place(shape.center);
+        shape.u = linear * shape.u;
+        shape.v = linear * shape.v;
+        break;
+    case ShapeType::Disk:
+        if (!isUniform(transform.scale)) fail(at / "scale", "a disk takes only a uniform scale");
+        shape.center = place(shape.center);
+        shape.normal = glm::normalize(glm::transpose(glm::inverse(linear)) * shape.normal);
+        shape.radius *= uniformScale;
+        break;
+    case ShapeType::Box: {
+        bool rotated = shape.rotationDeg != 0.0f;
+        if (!isUniform(transform.scale) && rotated)
+            fail(at / "scale", "a rotated box takes only a uniform scale (a sheared box is not a box)");
+        if (transform.scale.x < 0.0f || transform.scale.y < 0.0f || transform.scale.z < 0.0f)
+            fail(at / "scale", "a box takes only a positive scale");
+        shape.center = place(shape.center);
+        shape.halfSize *= glm::abs(transform.scale);
+        // Compose the rotations and store the result as axis and angle again.
+        glm::quat combined = glm::quat_cast(rotation * boxRotation(shape));
+        float angle = glm::angle(combined);
+        glm::vec3 axis = glm::axis(combined);
+        shape.rotationDeg = glm::degrees(angle);
+        shape.rotationAxis = glm::length(axis) > 0.0f && angle != 0.0f ? axis : glm::vec3(0.0f, 1.0f, 0.0f);
+        break;
+    }
+    case ShapeType::Mesh:
+        break;
+    }
+}
+
+// How a mesh shape named its materials; resolved once the mesh file is read.
+struct MeshMaterialRequest {
+    std::size_t shape;
+    Pointer at;
+    std::optional<std::string> material;             // "material": every slot not named below
+    std::vector<std::pair<std::string, std::string>> bySlot; // "materials": OBJ name -> scene material
+};
+
 Shape readShape(const Json& value, const Pointer& at, std::size_t index,
-                const std::vector<Material>& materials) {
+                const std::vector<Material>& materials, const std::map<std::string, int>& meshes,
+                std::vector<MeshMaterialRequest>& meshRequests) {
     requireObject(value, at);
     Shape shape;
     requireType(value, at,
                 {"name", "type", "material", "center", "radius", "u", "v", "half_size",
-                 "rotation", "normal"});
+                 "rotation", "normal", "mesh", "materials", "transform"});
     std::string type = readString(value.at("type"), at / "type");
     if (type == "sphere") {
         shape.type = ShapeType::Sphere;
-        checkKeys(value, at, {"name", "type", "material", "center", "radius"});
+        checkKeys(value, at, {"name", "type", "material", "center", "radius", "transform"});
     } else if (type == "quad") {
         shape.type = ShapeType::Quad;
-        checkKeys(value, at, {"name", "type", "material", "center", "u", "v"});
+        checkKeys(value, at, {"name", "type", "material", "center", "u", "v", "transform"});
     } else if (type == "box") {
         shape.type = ShapeType::Box;
-        checkKeys(value, at, {"name", "type", "material", "center", "half_size", "rotation"});
+        checkKeys(value, at, {"name", "type", "material", "center", "half_size", "rotation", "transform"});
     } else if (type == "disk") {
         shape.type = ShapeType::Disk;
-        checkKeys(value, at, {"name", "type", "material", "center", "normal", "radius"});
+        checkKeys(value, at, {"name", "type", "material", "center", "normal", "radius", "transform"});
+    } else if (type == "mesh") {
+        shape.type = ShapeType::Mesh;
+        checkKeys(value, at, {"name", "type", "mesh", "material", "materials", "transform"});
     } else {
-        fail(at / "type", "unknown shape type \"" + type + "\" (expected sphere, quad, box or disk)");
+        fail(at / "type", "unknown shape type \"" + type + "\" (expected sphere, quad, box, disk or mesh)");
     }
 
     const Json* name = optionalKey(value, "name");
     shape.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
+    const Json* transform = optionalKey(value, "transform");
+    if (transform) shape.transform = readTransform(*transform, at / "transform");
+
+    if (shape.type == ShapeType::Mesh) {
+        std::string meshName = readString(requireKey(value, at, "mesh"), at / "mesh");
+        auto mesh = meshes.find(meshName);
+        if (mesh == meshes.end()) fail(at / "mesh", "unknown mesh \"" + meshName + "\" (declare it under \"meshes\")");
+        shape.mesh = mesh->second;
+        MeshMaterialRequest request{index, at, std::nullopt, {}};
+        if (const Json* material = optionalKey(value, "material")) {
+            request.material = readString(*material, at / "material");
+            if (findMaterial(materials, *request.material) < 0)
+                fail(at / "material", "unknown material \"" + *request.material + "\"");
+        }
+        if (const Json* bySlot = optionalKey(value, "materials")) {
+            requireObject(*bySlot, at / "materials");
+            for (auto it = bySlot->begin(); it != bySlot->end(); ++it) {
+                std::string target = readString(it.value(), at / "materials" / it.key());
+                if (findMaterial(materials, target) < 0)
+                    fail(at / "materials" / it.key(), "unknown material \"" + target + "\"");
+                request.bySlot.emplace_back(it.key(), target);
+            }
+        }
+        meshRequests.push_back(std::move(request));
+        return shape;
+    }
+
     std::string materialName = readString(requireKey(value, at, "material"), at / "material");
     shape.material = findMaterial(materials, materialName);
     if (shape.material < 0)
@@ -501,20 +620,19 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     case ShapeType::Box:
         shape.halfSize = readVec3(requireKey(value, at, "half_size"), at / "half_size",
                                   [](float c) { return c > 0.0f; }, "a positive number");
-        if (const Json* rotation = optionalKey(value, "rotation")) {
-            Pointer rotationAt = at / "rotation";
-            requireObject(*rotation, rotationAt);
-            checkKeys(*rotation, rotationAt, {"axis", "degrees"});
-            shape.rotationAxis =
-                readNonzeroVec3(requireKey(*rotation, rotationAt, "axis"), rotationAt / "axis");
-            shape.rotationDeg =
-                readNumber(requireKey(*rotation, rotationAt, "degrees"), rotationAt / "degrees");
-        }
+        if (const Json* rotation = optionalKey(value, "rotation"))
+            readRotation(*rotation, at / "rotation", shape.rotationAxis, shape.rotationDeg);
         break;
     case ShapeType::Disk:
         shape.normal = readDirection(requireKey(value, at, "normal"), at / "normal");
         shape.radius = readPositive(requireKey(value, at, "radius"), at / "radius");
         break;
+    case ShapeType::Mesh:
+        break;
+    }
+    if (transform) {
+        applyTransform(shape, shape.transform, at / "transform");
+        shape.transform = Transform{};
     }
     return shape;
 }
@@ -572,13 +690,21 @@ Light readLight(const Json& value, const Pointer& at, std::size_t index) {
     return light;
 }
 
-Scene readScene(const Json& root) {
+// The scene as read from JSON, before its mesh files are: what parseScene still has to resolve.
+struct SceneDraft {
+    Scene scene;
+    std::vector<Pointer> meshPlaces; // where each of scene.meshes was declared
+    std::vector<MeshMaterialRequest> meshRequests;
+};
+
+SceneDraft readScene(const Json& root) {
     const Pointer top;
     if (!root.is_object())
         fail(top, "expected an object at the top level, got " + describe(root));
-    checkKeys(root, top, {"camera", "environment", "materials", "shapes", "lights"});
+    checkKeys(root, top, {"camera", "environment", "materials", "meshes", "shapes", "lights"});
 
-    Scene scene;
+    SceneDraft draft;
+    Scene& scene = draft.scene;
     scene.camera = readCamera(requireKey(root, top, "camera"), top / "camera");
     if (const Json* environment = optionalKey(root, "environment"))
         readEnvironment(*environment, top / "environment", scene);
@@ -588,12 +714,28 @@ Scene readScene(const Json& root) {
     for (auto it = materials.begin(); it != materials.end(); ++it)
         scene.materials.push_back(readMaterial(it.key(), it.value(), materialsAt / it.key()));
 
+    std::map<std::string, int> meshIndex;
+    if (const Json* meshes = optionalKey(root, "meshes")) {
+        const Pointer meshesAt = top / "meshes";
+        requireObject(*meshes, meshesAt);
+        for (auto it = meshes->begin(); it != meshes->end(); ++it) {
+            Pointer at = meshesAt / it.key();
+            requireObject(it.value(), at);
+            checkKeys(it.value(), at, {"file"});
+            std::string file = readString(requireKey(it.value(), at, "file"), at / "file");
+            if (file.empty()) fail(at / "file", "expected a file name, got an empty string");
+            meshIndex[it.key()] = static_cast<int>(scene.meshes.size());
+            scene.meshes.push_back(SceneMesh{it.key(), std::filesystem::u8path(file), nullptr});
+            draft.meshPlaces.push_back(at / "file");
+        }
+    }
+
     const Pointer shapesAt = top / "shapes";
     const Json& shapes = requireKey(root, top, "shapes");
     if (!shapes.is_array())
         fail(shapesAt, "expected an array, got " + describe(shapes));
     for (std::size_t i = 0; i < shapes.size(); ++i)
-        scene.shapes.push_back(readShape(shapes[i], shapesAt / i, i, scene.materials));
+        scene.shapes.push_back(readShape(shapes[i], shapesAt / i, i, scene.materials, meshIndex, draft.meshRequests));
 
     if (const Json* lights = optionalKey(root, "lights")) {
         const Pointer lightsAt = top / "lights";
@@ -602,7 +744,97 @@ Scene readScene(const Json& root) {
         for (std::size_t i = 0; i < lights->size(); ++i)
             scene.lights.push_back(readLight((*lights)[i], lightsAt / i, i));
     }
-    return scene;
+    return draft;
+}
+
+// A scene material made from a mesh file's own (MTL) material, for slots the scene file does
+// not map: the closest of our models, named "MESH/NAME" so it shows as the mesh's.
+Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& source) {
+    Material material;
+    material.name = meshName + "/" + source.name;
+    glm::vec3 diffuse = glm::clamp(source.diffuse, 0.0f, 1.0f);
+    glm::vec3 specular = glm::clamp(source.specular, 0.0f, 1.0f);
+    float specularLevel = std::max(specular.r, std::max(specular.g, specular.b));
+    float diffuseLevel = std::max(diffuse.r, std::max(diffuse.g, diffuse.b));
+    // Phong exponent to roughness: alpha = sqrt(2 / (Ns + 2)) and alpha = roughness^2.
+    float roughness = std::sqrt(std::sqrt(2.0f / (std::max(source.shininess, 0.0f) + 2.0f)));
+    if (source.dissolve < 1.0f || source.illum == 4 || source.illum == 6 || source.illum == 7) {
+        material.type = MaterialType::Glass;
+        material.color = glm::vec3(1.0f);
+        material.ior = std::clamp(source.ior, 1.0f, 4.0f);
+    } else if (specularLevel > 0.0f && diffuseLevel <= 0.01f) {
+        material.type = MaterialType::Metal;
+        material.color = specular;
+        material.roughness = roughness;
+    } else if (specularLevel > 0.0f) {
+        material.type = MaterialType::Plastic;
+        material.color = diffuse;
+        material.ior = 1.5f;
+        material.roughness = roughness;
+    } else {
+        material.type = MaterialType::Diffuse;
+        material.color = diffuse;
+    }
+    material.radiance = glm::max(source.emission, glm::vec3(0.0f));
+    return material;
+}
+
+// Reads each mesh file once and gives every slot of every mesh shape a scene material: the
+// shape's "materials" entry for it, else its "material", else the scene material of the same
+// name, else one made from the mesh file's own definition.
+void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
+    Scene& scene = draft.scene;
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        SceneMesh& mesh = scene.meshes[m];
+        if (mesh.file.is_relative()) mesh.file = sceneFile.parent_path() / mesh.file;
+        MeshLoadReport report;
+        try {
+            mesh.data = std::make_shared<const TriangleMesh>(loadObjMesh(mesh.file, &report));
+        } catch (const MeshError& error) {
+            // The mesh's own error names its file and line; say which scene entry wanted it.
+            fail(draft.meshPlaces[m], error.what());
+        }
+        scene.warnings.insert(scene.warnings.end(), report.warnings.begin(), report.warnings.end());
+    }
+    for (const MeshMaterialRequest& request : draft.meshRequests) {
+        Shape& shape = scene.shapes[request.shape];
+        const SceneMesh& mesh = scene.meshes[static_cast<std::size_t>(shape.mesh)];
+        const TriangleMesh& data = *mesh.data;
+        std::vector<bool> slotUsed(data.materialSlots.size(), false);
+        for (const MeshTriangle& triangle : data.triangles) slotUsed[static_cast<std::size_t>(triangle.materialSlot)] = true;
+        for (const auto& [slotName, target] : request.bySlot) {
+            if (std::find(data.materialSlots.begin(), data.materialSlots.end(), slotName) == data.materialSlots.end())
+                fail(request.at / "materials" / slotName,
+                     "the mesh \"" + mesh.name + "\" has no material slot \"" + slotName + "\" (no usemtl of that name)");
+        }
+        shape.slotMaterials.assign(data.materialSlots.size(), -1);
+        for (std::size_t slot = 0; slot < data.materialSlots.size(); ++slot) {
+            const std::string& slotName = data.materialSlots[slot];
+            int material = -1;
+            for (const auto& [name, target] : request.bySlot)
+                if (name == slotName) material = findMaterial(scene.materials, target);
+            if (material < 0 && request.material) material = findMaterial(scene.materials, *request.material);
+            if (material < 0 && !slotName.empty()) material = findMaterial(scene.materials, slotName);
+            if (material < 0 && !slotName.empty()) {
+                auto own = std::find_if(data.fileMaterials.begin(), data.fileMaterials.end(),
+                                        [&](const MeshMaterial& candidate) { return candidate.name == slotName; });
+                if (own != data.fileMaterials.end()) {
+                    Material made = materialFromMeshFile(mesh.name, *own);
+                    material = findMaterial(scene.materials, made.name);
+                    if (material < 0) {
+                        material = static_cast<int>(scene.materials.size());
+                        scene.materials.push_back(made);
+                    }
+                }
+            }
+            if (material < 0 && slotUsed[slot])
+                fail(request.at / "material",
+                     slotName.empty() ? "missing: the mesh \"" + mesh.name + "\" has faces without a material (usemtl)"
+                                      : "missing: nothing gives a material for the mesh's \"" + slotName +
+                                            "\" faces (add \"materials\": {\"" + slotName + "\": ...})");
+            shape.slotMaterials[slot] = std::max(material, 0);
+        }
+    }
 }
 
 } // namespace
@@ -630,7 +862,9 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
     try {
         DocumentBuilder builder;
         Json::sax_parse(jsonText, &builder, Json::input_format_t::json, /*strict=*/true);
-        Scene scene = readScene(builder.root);
+        SceneDraft draft = readScene(builder.root);
+        resolveMeshes(draft, sourceName);
+        Scene scene = std::move(draft.scene);
         scene.path = sourceName;
         // Relative to the scene file, as people write them; not normalised, so that ".." means
         // what the file system says even through symbolic links.
@@ -649,12 +883,22 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
 }
 
 glm::mat3 boxRotation(const Shape& box) {
-    float axisLength = glm::length(box.rotationAxis);
+    return rotationMatrix(box.rotationAxis, box.rotationDeg);
+}
+
+glm::mat4 Transform::objectToWorld() const {
+    glm::mat4 matrix(rotationMatrix(rotationAxis, rotationDeg) * glm::mat3(glm::scale(glm::mat4(1.0f), scale)));
+    matrix[3] = glm::vec4(translate, 1.0f);
+    return matrix;
+}
+
+glm::mat3 rotationMatrix(glm::vec3 axis, float degrees) {
+    float axisLength = glm::length(axis);
     // Only scenes built in code can get here with a zero axis; no rotation beats NaNs.
     if (!(axisLength > 0.0f))
         return glm::mat3(1.0f);
-    glm::vec3 k = box.rotationAxis / axisLength;
-    float angle = glm::radians(box.rotationDeg);
+    glm::vec3 k = axis / axisLength;
+    float angle = glm::radians(degrees);
     float c = std::cos(angle);
     float s = std::sin(angle);
     // Rodrigues: R = c I + s [k]x + (1 - c) k k^T. glm takes columns, so [k]x reads transposed.

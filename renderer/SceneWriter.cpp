@@ -170,7 +170,48 @@ Json materialJson(const Material& material) {
     return json;
 }
 
-Json shapeJson(const Shape& shape, const std::vector<Material>& materials, const std::string& pointer) {
+Json materialName(const std::vector<Material>& materials, int index, const std::string& pointer) {
+    if (index < 0 || static_cast<std::size_t>(index) >= materials.size())
+        fail(pointer, "material index " + std::to_string(index) + " is out of range");
+    return materials[static_cast<std::size_t>(index)].name;
+}
+
+Json transformJson(const Transform& transform) {
+    Json json = Json::object();
+    if (transform.translate != glm::vec3(0.0f)) json["translate"] = vec3(transform.translate);
+    if (transform.rotationDeg != 0.0f)
+        json["rotation"] = Json{{"axis", vec3(transform.rotationAxis)}, {"degrees", number(transform.rotationDeg)}};
+    if (transform.scale != glm::vec3(1.0f)) json["scale"] = vec3(transform.scale);
+    return json;
+}
+
+// Every slot named, so the file reads back to the same materials whatever the mesh's MTL says.
+Json meshShapeJson(const Shape& shape, const Scene& scene, const std::string& pointer) {
+    Json json;
+    json["name"] = shape.name;
+    json["type"] = "mesh";
+    if (shape.mesh < 0 || static_cast<std::size_t>(shape.mesh) >= scene.meshes.size())
+        fail(pointer + "/mesh", "mesh index " + std::to_string(shape.mesh) + " is out of range");
+    const SceneMesh& mesh = scene.meshes[static_cast<std::size_t>(shape.mesh)];
+    json["mesh"] = mesh.name;
+    const std::vector<std::string>& slots = mesh.data->materialSlots;
+    Json bySlot = Json::object();
+    for (std::size_t slot = 0; slot < slots.size() && slot < shape.slotMaterials.size(); ++slot) {
+        Json name = materialName(scene.materials, shape.slotMaterials[slot], pointer + "/materials");
+        if (slots[slot].empty())
+            json["material"] = name; // faces without usemtl
+        else
+            bySlot[slots[slot]] = name;
+    }
+    if (!bySlot.empty()) json["materials"] = std::move(bySlot);
+    Json transform = transformJson(shape.transform);
+    if (!transform.empty()) json["transform"] = std::move(transform);
+    return json;
+}
+
+Json shapeJson(const Shape& shape, const Scene& scene, const std::string& pointer) {
+    if (shape.type == ShapeType::Mesh) return meshShapeJson(shape, scene, pointer);
+    const std::vector<Material>& materials = scene.materials;
     Json json;
     json["name"] = shape.name;
     switch (shape.type) {
@@ -198,10 +239,10 @@ Json shapeJson(const Shape& shape, const std::vector<Material>& materials, const
         json["normal"] = vec3(shape.normal);
         json["radius"] = number(shape.radius);
         break;
+    case ShapeType::Mesh:
+        break;
     }
-    if (shape.material < 0 || static_cast<std::size_t>(shape.material) >= materials.size())
-        fail(pointer + "/material", "material index " + std::to_string(shape.material) + " is out of range");
-    json["material"] = materials[static_cast<std::size_t>(shape.material)].name;
+    json["material"] = materialName(materials, shape.material, pointer + "/material");
     return json;
 }
 
@@ -219,10 +260,10 @@ Json lightJson(const Light& light) {
     return json;
 }
 
-// The map's path as the loader resolves it: relative to the directory the scene file is read
+// A file's path (an environment map, a mesh) as the loader resolves it: relative to the directory the scene file is read
 // from, or absolute when the two share nothing below the root (a relative path would then climb
 // all the way up).
-std::string environmentMapText(const std::filesystem::path& map, const std::filesystem::path& fileDirectory) {
+std::string relativePathText(const std::filesystem::path& map, const std::filesystem::path& fileDirectory) {
     namespace fs = std::filesystem;
     fs::path target = fs::absolute(map).lexically_normal();
     fs::path base = fs::absolute(fileDirectory.empty() ? fs::path(".") : fileDirectory).lexically_normal();
@@ -235,7 +276,7 @@ std::string environmentMapText(const std::filesystem::path& map, const std::file
 
 Json environmentJson(const Scene& scene) {
     if (scene.environmentMap.empty()) return Json{{"color", vec3(scene.environment)}};
-    return Json{{"map", environmentMapText(scene.environmentMap, scene.path.parent_path())},
+    return Json{{"map", relativePathText(scene.environmentMap, scene.path.parent_path())},
                 {"intensity", number(scene.environmentIntensity)},
                 {"rotation_deg", number(scene.environmentRotationDeg)}};
 }
@@ -256,9 +297,16 @@ std::string sceneToJson(const Scene& scene) {
     }
     root["materials"] = std::move(materials);
 
+    if (!scene.meshes.empty()) {
+        Json meshes = Json::object();
+        for (const SceneMesh& mesh : scene.meshes)
+            meshes[mesh.name] = Json{{"file", relativePathText(mesh.file, scene.path.parent_path())}};
+        root["meshes"] = std::move(meshes);
+    }
+
     Json shapes = Json::array();
     for (std::size_t i = 0; i < scene.shapes.size(); ++i)
-        shapes.push_back(shapeJson(scene.shapes[i], scene.materials, "/shapes/" + std::to_string(i)));
+        shapes.push_back(shapeJson(scene.shapes[i], scene, "/shapes/" + std::to_string(i)));
     root["shapes"] = std::move(shapes);
 
     if (!scene.lights.empty()) {

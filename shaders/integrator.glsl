@@ -27,6 +27,16 @@ const uint kIntegratorFull = 3u;
 
 const int kRussianRouletteStart = 3; // bounces before roulette may end a path
 
+// Shading normals bend the hemisphere a BSDF sees away from the true surface. A pair of directions
+// is used only when it is on the same sides of the surface for both normals; otherwise light
+// would leak through (or be reflected by) the geometry, so such a sample counts as failed.
+bool consistentSides(vec3 woWorld, vec3 wiWorld, Hit hit) {
+    if (hit.normalShading == hit.normalGeom) return true;
+    bool reflectGeom = dot(woWorld, hit.normalGeom) * dot(wiWorld, hit.normalGeom) > 0.0;
+    bool reflectShading = dot(woWorld, hit.normalShading) * dot(wiWorld, hit.normalShading) > 0.0;
+    return reflectGeom == reflectShading;
+}
+
 float powerHeuristic(float pdfChosen, float pdfOther) {
     float a = pdfChosen * pdfChosen;
     float b = pdfOther * pdfOther;
@@ -43,6 +53,7 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     LightSample ls = sampleLight(light, hit.posWorld, samplerGet2D(sampler, lightPositionDimension(bounce)));
     if (ls.pdfSolidAngle <= 0.0 || selection <= 0.0 || all(equal(ls.radiance, vec3(0.0)))) return vec3(0.0);
     vec3 wiLocal = toLocal(frame, ls.wi);
+    if (!consistentSides(toWorld(frame, woLocal), ls.wi, hit)) return vec3(0.0);
     vec3 f = bsdfF(material, woLocal, wiLocal);
     if (all(equal(f, vec3(0.0)))) return vec3(0.0);
     if (occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light)) return vec3(0.0);
@@ -97,7 +108,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         }
         if (bounce == lastBounce || material.type == kMaterialEmitter) break; // emitters reflect nothing
 
-        ShadingFrame frame = makeShadingFrame(hit.normalGeom); // BSDFs handle either side themselves
+        ShadingFrame frame = makeShadingFrame(hit.normalShading); // BSDFs handle either side themselves
         vec3 woLocal = toLocal(frame, -ray.direction);
 
         // ---- Next-event estimation --------------------------------------------------------------
@@ -108,12 +119,14 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
                                    samplerGet2D(sampler, bsdfDimension(bounce)));
         if (bs.pdfSolidAngle == 0.0) break;
+        vec3 wiWorld = toWorld(frame, bs.wiLocal);
+        if (!consistentSides(-ray.direction, wiWorld, hit)) break;
         throughput *= bs.weight; // weight already holds f*|cos|/pdf
         if (all(equal(throughput, vec3(0.0)))) break;
         previousPos = hit.posWorld;
         previousPdf = bs.pdfSolidAngle;
         previousDelta = bs.isDelta;
-        ray = spawnRay(hit.posWorld, hit.normalGeom, toWorld(frame, bs.wiLocal));
+        ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
 
         // ---- Russian roulette: survive with the throughput's largest component ------------------
         if (uIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {

@@ -2,13 +2,17 @@
 #include "constants.glsl"
 #include "ray.glsl"
 #include "scene_data.glsl"
+#include "mesh_intersect.glsl"
 
 struct Hit {
     float t;
     vec3 posWorld;
-    vec3 normalGeom; // unit, outward for spheres and along cross(u, v) for quads: the emitting side
+    vec3 normalGeom;    // unit, outward for spheres, along cross(u, v) for quads and along a
+                        // triangle's winding: the emitting side
+    vec3 normalShading; // unit, on normalGeom's side: what BSDFs are oriented by (a mesh's
+                        // interpolated vertex normal; normalGeom elsewhere)
     int material;
-    int light;       // light index of the surface hit, or -1
+    int light;          // light index of the surface hit, or -1
 };
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
@@ -74,9 +78,15 @@ bool intersectScene(Ray ray, out Hit hit) {
         float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
         if (t < hit.t) { hit.t = t; diskHit = i; quadHit = -1; sphereHit = -1; }
     }
+    MeshHit meshHit;
+    bool onMesh = traverseMeshes(ray, hit.t, meshHit, false, -1);
     if (hit.t == kInfinity) return false;
 
     hit.posWorld = ray.origin + hit.t * ray.direction;
+    if (onMesh) {
+        meshSurface(meshHit, hit.normalGeom, hit.normalShading, hit.material, hit.light);
+        return true;
+    }
     ivec2 ids;
     if (sphereHit >= 0) {
         vec4 sphere = texelFetch(uSpheres, sphereHit);
@@ -90,17 +100,32 @@ bool intersectScene(Ray ray, out Hit hit) {
         hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
         ids = diskIds(diskHit);
     }
+    hit.normalShading = hit.normalGeom;
     hit.material = ids.x;
     hit.light = ids.y;
     return true;
 }
 
-// Whether something other than `light` itself lies on the ray closer than maxDistance. Checking
-// the light's identity, not a shortened distance, keeps the test exact for points close to the
-// light, where the ray's offset origin can be nearer to it than the sampled distance says.
+// Whether something other than `light` itself lies on the ray closer than maxDistance, stopping
+// at the first such thing. Checking the light's identity, not a shortened distance, keeps the
+// test exact for points close to the light, where the ray's offset origin can be nearer to it
+// than the sampled distance says.
 bool occluded(Ray ray, float maxDistance, int light) {
-    Hit hit;
-    return intersectScene(ray, hit) && hit.light != light && hit.t < maxDistance;
+    for (int i = 0; i < uSphereCount; ++i)
+        if (intersectSphere(ray, texelFetch(uSpheres, i)) < maxDistance && sphereIds(i).y != light) return true;
+    for (int i = 0; i < uQuadCount; ++i) {
+        float t = intersectQuad(ray, texelFetch(uQuads, 4 * i).xyz, texelFetch(uQuads, 4 * i + 1).xyz,
+                                texelFetch(uQuads, 4 * i + 2).xyz, texelFetch(uQuads, 4 * i + 3).xyz);
+        if (t < maxDistance && quadIds(i).y != light) return true;
+    }
+    for (int i = 0; i < uDiskCount; ++i) {
+        vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
+        float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
+        if (t < maxDistance && diskIds(i).y != light) return true;
+    }
+    float tMax = maxDistance;
+    MeshHit ignored;
+    return traverseMeshes(ray, tMax, ignored, true, light);
 }
 
 // A ray leaving a surface point, pushed off the surface along the geometric normal on the side it

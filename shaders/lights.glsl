@@ -1,15 +1,15 @@
 // Light sampling: choosing a light in proportion to its power, sampling a direction toward it,
 // and the density of that strategy for a direction found otherwise (for MIS).
 //
-// Kinds: emissive quads and disks (sampled uniformly by area), emissive spheres (sampled within
+// Kinds: emissive quads, disks and mesh triangles (sampled uniformly by area), emissive spheres (sampled within
 // the cone of directions they subtend when seen from outside, which wastes no sample on the
 // hidden half; by area from inside), the environment (by luminance for a map, uniform over the
 // sphere for a constant colour: environment_map.glsl), and point and spot lights (delta: one
 // direction, no density; BSDF sampling never finds them, so they never take part in MIS). Area
 // lights radiate from their front side only. Densities are in solid angle at the shading point.
 //
-// uLights holds four texels per light: (kind, primitive as uint bits, cumulative selection
-// probability, -), then three that depend on the kind; see GpuLight in renderer/GpuLayout.h.
+// uLights holds four texels per light: (kind, primitive, cumulative selection probability, -),
+// then three that depend on the kind; see GpuLight in renderer/GpuLayout.h.
 #include "constants.glsl"
 #include "intersect.glsl"
 #include "emission.glsl"
@@ -23,6 +23,7 @@ const uint kLightDisk = 2u;
 const uint kLightEnvironment = 3u;
 const uint kLightPoint = 4u;
 const uint kLightSpot = 5u;
+const uint kLightTriangle = 6u;
 
 struct LightSample {
     vec3 wi;             // unit, from the shading point toward the light
@@ -58,7 +59,7 @@ int chooseLight(float u) {
 }
 
 uvec2 lightKindAndPrimitive(int light) {
-    return floatBitsToUint(texelFetch(uLights, 4 * light).xy);
+    return uvec2(texelFetch(uLights, 4 * light).xy); // exact small integers, stored as float values
 }
 
 // An area light's point: radiance toward the shading point and the solid-angle density of having
@@ -108,6 +109,18 @@ LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
         vec3 point = center + (2.0 * u.x - 1.0) * edgeU + (2.0 * u.y - 1.0) * edgeV;
         Material material = fetchMaterial(quadIds(primitive).x);
         return areaLightSample(posWorld, point, normalize(cross(edgeU, edgeV)), 4.0 * length(cross(edgeU, edgeV)), material);
+    }
+    if (kind == kLightTriangle) {
+        // World-space corners; the primitive is the material.
+        vec3 p0 = texelFetch(uLights, 4 * light + 1).xyz;
+        vec3 p1 = texelFetch(uLights, 4 * light + 2).xyz;
+        vec3 p2 = texelFetch(uLights, 4 * light + 3).xyz;
+        vec2 b = sampleUniformTriangle(u);
+        vec3 point = b.x * p0 + b.y * p1 + (1.0 - b.x - b.y) * p2;
+        vec3 crossEdges = cross(p1 - p0, p2 - p0);
+        float doubleArea = length(crossEdges);
+        if (doubleArea == 0.0) return failedLightSample();
+        return areaLightSample(posWorld, point, crossEdges / doubleArea, 0.5 * doubleArea, fetchMaterial(primitive));
     }
     if (kind == kLightDisk) {
         vec4 centerAndRadius = texelFetch(uDisks, 2 * primitive);
@@ -164,6 +177,11 @@ float lightPdf(int light, vec3 posWorld, vec3 wi, float hitDistance, vec3 hitNor
     if (kind == kLightDisk) {
         float radius = texelFetch(uDisks, 2 * primitive).w;
         return distance2 / (cosLight * kPi * radius * radius);
+    }
+    if (kind == kLightTriangle) {
+        vec3 p0 = texelFetch(uLights, 4 * light + 1).xyz;
+        float area = 0.5 * length(cross(texelFetch(uLights, 4 * light + 2).xyz - p0, texelFetch(uLights, 4 * light + 3).xyz - p0));
+        return area > 0.0 ? distance2 / (cosLight * area) : 0.0;
     }
     vec4 sphere = texelFetch(uSpheres, primitive);
     vec3 toCenter = sphere.xyz - posWorld;

@@ -7,7 +7,7 @@ uniform samplerBuffer uSpheres;        // per sphere: (center.xyz, radius)
 uniform samplerBuffer uQuads;          // per quad: center, u, v, dual = cross(u, v) / |cross(u, v)|^2
 uniform samplerBuffer uDisks;          // per disk: (center, radius), (unit normal, -)
 uniform isamplerBuffer uPrimitiveIds;  // per sphere, then quad, then disk: (material, light index or -1)
-uniform samplerBuffer uMaterials;      // per material: (color, ior), (radiance, roughness), (type bits, -)
+uniform samplerBuffer uMaterials;      // per material: (color, ior), (radiance, roughness), (type, -)
 uniform samplerBuffer uLights;         // per light: 4 texels, see lights.glsl
 uniform int uSphereCount;
 uniform int uQuadCount;
@@ -18,7 +18,7 @@ uniform int uEnvironmentLight;         // light index of the environment, or -1 
 Material fetchMaterial(int index) {
     vec4 colorAndIor = texelFetch(uMaterials, 3 * index);
     vec4 radianceAndRoughness = texelFetch(uMaterials, 3 * index + 1);
-    return Material(floatBitsToUint(texelFetch(uMaterials, 3 * index + 2).x), colorAndIor.rgb, colorAndIor.a,
+    return Material(uint(texelFetch(uMaterials, 3 * index + 2).x), colorAndIor.rgb, colorAndIor.a,
                     radianceAndRoughness.rgb, radianceAndRoughness.a);
 }
 

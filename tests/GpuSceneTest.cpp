@@ -49,7 +49,7 @@ TEST(FlattenScene, KeepsMaterialsAndSphereRecords) {
     EXPECT_EQ(primitives.spheres[0].radius, 0.25f);
     EXPECT_EQ(primitives.sphereMaterials[0], 1);
     ASSERT_EQ(primitives.materials.size(), 2u);
-    EXPECT_EQ(primitives.materials[1].type, static_cast<std::uint32_t>(MaterialType::Emitter));
+    EXPECT_EQ(primitives.materials[1].type, static_cast<float>(MaterialType::Emitter));
     EXPECT_EQ(glm::vec3(primitives.materials[1].radiance), glm::vec3(17, 12, 4));
 }
 

@@ -1,1 +1,369 @@
+// OBJ loading: small hand-written files pin down each rule (triangulation, attributes, materials,
+// what is skipped or dropped and the warning that says so, what is refused and the message that
+// names the file), and the project's meshes load with their known triangle counts.
+
+#include "ObjLoader.h"
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test, removed afterwards, for the files each test writes.
+class ObjFiles {
+public:
+    ObjFiles() {
+        const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("ptview_obj_" + std::to_string(::getpid()) + "_" + test->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    ~ObjFiles() {
+        std::error_code ignored;
+        fs::remove_all(dir_, ignored);
+    }
+
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+
+private:
+    fs::path dir_;
+};
+
+// The message of the MeshError that loading throws, or a note that it threw none.
+std::string errorFrom(const fs::path& path) {
+    try {
+        loadObjMesh(path);
+    } catch (const MeshError& error) {
+        return error.what();
+    }
+    return "(no MeshError thrown)";
+}
+
+// The one warning that contains `part`; fails the test unless there is exactly one.
+std::string warningWith(const MeshLoadReport& report, const std::string& part) {
+    std::vector<std::string> found;
+    for (const std::string& warning : report.warnings)
+        if (warning.find(part) != std::string::npos) found.push_back(warning);
+    EXPECT_EQ(found.size(), 1u) << "warnings containing \"" << part << "\": " << found.size();
+    return found.empty() ? std::string() : found.front();
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+constexpr float kEps = 1e-6f;
+
+const char* const kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST(ObjLoader, QuadBecomesTwoTrianglesSharingCornerZero) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("quad.obj", std::string(kSquare) + "f 1 2 3 4\n"), &report);
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.triangles[0].position, (std::array<std::uint32_t, 3>{0, 1, 2}));
+    EXPECT_EQ(mesh.triangles[1].position, (std::array<std::uint32_t, 3>{0, 2, 3}));
+    EXPECT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[2], glm::vec3(1, 1, 0));
+    EXPECT_EQ(mesh.triangles[0].normal, (std::array<std::int32_t, 3>{-1, -1, -1}));
+    EXPECT_EQ(mesh.triangles[0].texcoord, (std::array<std::int32_t, 3>{-1, -1, -1}));
+    EXPECT_TRUE(report.warnings.empty()) << report.warnings.front();
+    EXPECT_TRUE(contains(mesh.source, "quad.obj"));
+}
+
+TEST(ObjLoader, CommentAfterAFaceIsNotMoreCorners) {
+    ObjFiles files;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("comment.obj", std::string(kSquare) + "f 1 2 3 4 # a quad\n"));
+    EXPECT_EQ(mesh.triangles.size(), 2u);
+}
+
+TEST(ObjLoader, PentagonBecomesAFanOfThree) {
+    ObjFiles files;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("pentagon.obj", std::string(kSquare) + "v 0.5 1.5 0\nf 1 2 3 5 4\n"));
+    ASSERT_EQ(mesh.triangles.size(), 3u);
+    EXPECT_EQ(mesh.triangles[0].position, (std::array<std::uint32_t, 3>{0, 1, 2}));
+    EXPECT_EQ(mesh.triangles[1].position, (std::array<std::uint32_t, 3>{0, 2, 4}));
+    EXPECT_EQ(mesh.triangles[2].position, (std::array<std::uint32_t, 3>{0, 4, 3}));
+}
+
+TEST(ObjLoader, NormalsAndTexcoordsArePerCornerAndNormalsUnit) {
+    ObjFiles files;
+    const TriangleMesh mesh = loadObjMesh(
+        files.write("attributes.obj", std::string(kSquare) + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0.25 0.75\n"
+                                                             "vn 0 0 2\nvn 3 4 0\n"
+                                                             "f 1/1/1 2/2/1 3/3/2\n"
+                                                             "f 1//2 3//1 4//2\n"
+                                                             "f -4/-1 -2/-2 -1/-3\n"));
+    ASSERT_EQ(mesh.triangles.size(), 3u);
+    ASSERT_EQ(mesh.normals.size(), 2u);
+    EXPECT_NEAR(glm::length(mesh.normals[0] - glm::vec3(0, 0, 1)), 0.0f, kEps);
+    EXPECT_NEAR(glm::length(mesh.normals[1] - glm::vec3(0.6f, 0.8f, 0)), 0.0f, kEps);
+    EXPECT_EQ(mesh.triangles[0].normal, (std::array<std::int32_t, 3>{0, 0, 1}));
+    EXPECT_EQ(mesh.triangles[0].texcoord, (std::array<std::int32_t, 3>{0, 1, 2}));
+    EXPECT_EQ(mesh.triangles[1].normal, (std::array<std::int32_t, 3>{1, 0, 1}));
+    EXPECT_EQ(mesh.triangles[1].texcoord, (std::array<std::int32_t, 3>{-1, -1, -1}));
+    // Negative indices count back from the last one defined before the face.
+    EXPECT_EQ(mesh.triangles[2].position, (std::array<std::uint32_t, 3>{0, 2, 3}));
+    EXPECT_EQ(mesh.triangles[2].texcoord, (std::array<std::int32_t, 3>{3, 2, 1}));
+    ASSERT_EQ(mesh.texcoords.size(), 4u);
+    EXPECT_EQ(mesh.texcoords[3], glm::vec2(0.25f, 0.75f));
+}
+
+TEST(ObjLoader, UsemtlSlotsAndMtlValues) {
+    ObjFiles files;
+    files.write("materials.mtl",
+                "newmtl red\nKd 0.8 0.1 0.1\nKs 0.2 0.3 0.4\nNs 50\nNi 1.33\nd 0.5\nillum 4\n"
+                "newmtl lamp\nKd 0 0 0\nKe 10 9 8\nTr 0.25\nillum 2\n");
+    MeshLoadReport report;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("materials.obj", "mtllib materials.mtl\n" + std::string(kSquare) +
+                                                     "f 1 2 3\n"
+                                                     "usemtl lamp\nf 1 3 4\n"
+                                                     "usemtl red\nf 2 3 4\n"
+                                                     "usemtl lamp\nf 1 2 4\n"),
+                    &report);
+    EXPECT_TRUE(report.warnings.empty()) << report.warnings.front();
+    EXPECT_EQ(mesh.materialSlots, (std::vector<std::string>{"", "lamp", "red"}));
+    ASSERT_EQ(mesh.triangles.size(), 4u);
+    EXPECT_EQ(mesh.triangles[0].materialSlot, 0);
+    EXPECT_EQ(mesh.triangles[1].materialSlot, 1);
+    EXPECT_EQ(mesh.triangles[2].materialSlot, 2);
+    EXPECT_EQ(mesh.triangles[3].materialSlot, 1);
+
+    ASSERT_EQ(mesh.fileMaterials.size(), 2u);
+    const MeshMaterial& red = mesh.fileMaterials[0];
+    EXPECT_EQ(red.name, "red");
+    EXPECT_EQ(red.diffuse, glm::vec3(0.8f, 0.1f, 0.1f));
+    EXPECT_EQ(red.specular, glm::vec3(0.2f, 0.3f, 0.4f));
+    EXPECT_FLOAT_EQ(red.shininess, 50.0f);
+    EXPECT_FLOAT_EQ(red.ior, 1.33f);
+    EXPECT_FLOAT_EQ(red.dissolve, 0.5f);
+    EXPECT_EQ(red.illum, 4);
+    const MeshMaterial& lamp = mesh.fileMaterials[1];
+    EXPECT_EQ(lamp.name, "lamp");
+    EXPECT_EQ(lamp.emission, glm::vec3(10, 9, 8));
+    EXPECT_FLOAT_EQ(lamp.dissolve, 0.75f); // 1 - Tr
+    EXPECT_EQ(lamp.illum, 2);
+}
+
+TEST(ObjLoader, MissingMtlIsAWarningAndFacesKeepTheirSlotNames) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("nomtl.obj", "mtllib gone.mtl\n" + std::string(kSquare) +
+                                                 "usemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\n"),
+                    &report);
+    EXPECT_EQ(mesh.materialSlots, (std::vector<std::string>{"", "red", "blue"}));
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.triangles[0].materialSlot, 1);
+    EXPECT_EQ(mesh.triangles[1].materialSlot, 2);
+    EXPECT_TRUE(mesh.fileMaterials.empty());
+    ASSERT_EQ(report.warnings.size(), 1u) << report.warnings.back();
+    EXPECT_EQ(report.warnings[0].rfind(mesh.source + ": ", 0), 0u) << report.warnings[0];
+    EXPECT_TRUE(contains(report.warnings[0], "gone.mtl")) << report.warnings[0];
+}
+
+TEST(ObjLoader, PolylinesAndPointsAreSkippedWithOneWarning) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(
+        files.write("lines.obj",
+                    std::string(kSquare) + "l 1 2\nf 1 2 3\n  l 2 3 4\nl 3 4\np 1\n# l 1 2 (a comment)\n"),
+        &report);
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_TRUE(
+        contains(report.warnings[0], "lines.obj: skipped 3 polyline records (l) and 1 point record (p)"))
+        << report.warnings[0];
+}
+
+TEST(ObjLoader, DegenerateTrianglesAreDroppedWithACount) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(
+        files.write("degenerate.obj", std::string(kSquare) + "v 2 0 0\nv 1 0 0\n"
+                                                             "f 1 2 3\n"
+                                                             "f 1 1 2\n"   // a repeated index
+                                                             "f 1 2 5\n"   // three points on a line
+                                                             "f 1 2 6\n"), // two at the same place
+        &report);
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0].position, (std::array<std::uint32_t, 3>{0, 1, 2}));
+    EXPECT_TRUE(contains(warningWith(report, "degenerate"), "dropped 3 degenerate triangles"));
+}
+
+TEST(ObjLoader, NonFiniteVertexDropsTheTrianglesUsingIt) {
+    ObjFiles files;
+    MeshLoadReport report;
+    // "nan" would read as 0 in tinyobjloader; 1e39 overflows a float; CRLF line ends must not
+    // confuse which line is which.
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("nan.obj", "v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\n"
+                                           "v nan 0 0\r\nv 0 1e39 0\r\n"
+                                           "f 1 2 3\r\nf 1 2 5\r\nf 5 3 4\r\nf 1 6 2\r\nf 1 3 4\r\n"),
+                    &report);
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.positions.size(), 4u); // the unusable ones are not kept
+    for (const glm::vec3& p : mesh.positions)
+        EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    EXPECT_EQ(mesh.triangles[1].position, (std::array<std::uint32_t, 3>{0, 2, 3}));
+    const std::string warning = warningWith(report, "not finite");
+    EXPECT_TRUE(contains(warning, "nan.obj: dropped 3 triangles")) << warning;
+    EXPECT_TRUE(contains(warning, "line 5")) << warning;
+}
+
+TEST(ObjLoader, ZeroLengthOrNanNormalShadesFlat) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(
+        files.write("badnormal.obj", std::string(kSquare) + "vn 0 0 1\nvn 0 0 0\nvn nan 0 1\n"
+                                                            "f 1//1 2//2 3//1\nf 1//3 3//1 4//2\n"),
+        &report);
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    ASSERT_EQ(mesh.normals.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0].normal, (std::array<std::int32_t, 3>{0, -1, 0}));
+    EXPECT_EQ(mesh.triangles[1].normal, (std::array<std::int32_t, 3>{-1, 0, -1}));
+    const std::string warning = warningWith(report, "normal");
+    EXPECT_TRUE(contains(warning, "badnormal.obj: 3 triangle corners")) << warning;
+    EXPECT_TRUE(contains(warning, "line 6")) << warning;
+}
+
+TEST(ObjLoader, IndexOutOfRangeIsAnErrorNamingFileLineAndFace) {
+    ObjFiles files;
+    const std::string message =
+        errorFrom(files.write("range.obj", std::string(kSquare) + "f 1 2 3\nf 1 2 9\nf 1 2 4\n"));
+    EXPECT_TRUE(contains(message, "range.obj:6: face 2, corner 3 (\"9\"): position index 9 is out of range"))
+        << message;
+    EXPECT_TRUE(contains(message, "4 positions")) << message;
+
+    const std::string normal =
+        errorFrom(files.write("normal.obj", std::string(kSquare) + "vn 0 0 1\nf 1//1 2//2 3//1\n"));
+    EXPECT_TRUE(contains(normal, "normal.obj:6: face 1, corner 2 (\"2//2\"): normal index 2 is out of range"))
+        << normal;
+
+    const std::string backwards = errorFrom(files.write("back.obj", std::string(kSquare) + "f -1 -2 -5\n"));
+    EXPECT_TRUE(contains(backwards, "back.obj:5: face 1, corner 3 (\"-5\"): position index -5 reaches back"))
+        << backwards;
+
+    const std::string zero =
+        errorFrom(files.write("zero.obj", std::string(kSquare) + "f 1 2 3\n\nf 0 1 2\n"));
+    EXPECT_TRUE(contains(zero, "zero.obj:7: face 2, corner 1 (\"0\"): no position index")) << zero;
+
+    // Too large for an int: the reader hands over some other number, so the message quotes the text.
+    const std::string huge = errorFrom(files.write("huge.obj", std::string(kSquare) + "f 1 2 99999999999\n"));
+    EXPECT_TRUE(contains(huge, "huge.obj:5: face 1, corner 3 (\"99999999999\"): position index")) << huge;
+}
+
+TEST(ObjLoader, FacesMayComeBeforeTheirVertices) {
+    ObjFiles files;
+    const TriangleMesh mesh = loadObjMesh(files.write("forward.obj", "f 1 2 3\n" + std::string(kSquare)));
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0].position, (std::array<std::uint32_t, 3>{0, 1, 2}));
+}
+
+TEST(ObjLoader, MissingFileIsAnErrorNamingIt) {
+    ObjFiles files;
+    const fs::path missing = files.write("present.obj", "").parent_path() / "absent.obj";
+    const std::string message = errorFrom(missing);
+    EXPECT_EQ(message.rfind(missing.string() + ": cannot open", 0), 0u) << message;
+    const std::string directory = errorFrom(missing.parent_path());
+    EXPECT_TRUE(contains(directory, "Is a directory")) << directory;
+}
+
+// A file cut off in the middle of its last face loads the complete faces before it and says what
+// it skipped; a vertex cut short is unusable rather than padded with zeros.
+TEST(ObjLoader, TruncatedFileLoadsWhatIsComplete) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("cut.obj", std::string(kSquare) + "f 1 2 3\nf 1 3 4\nf 1 2"), &report);
+    EXPECT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_TRUE(contains(warningWith(report, "fewer than 3"),
+                         "cut.obj: skipped 1 face with fewer than 3 corners (the first at line 7)"));
+
+    MeshLoadReport cutVertex;
+    const TriangleMesh partial = loadObjMesh(
+        files.write("cutv.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nf 1 3 4\nv 0 1"), &cutVertex);
+    EXPECT_EQ(partial.triangles.size(), 1u);
+    EXPECT_TRUE(contains(warningWith(cutVertex, "not finite"), "line 6"));
+}
+
+TEST(ObjLoader, FileWithoutFacesIsAnError) {
+    ObjFiles files;
+    const std::string empty = errorFrom(files.write("empty.obj", ""));
+    EXPECT_TRUE(contains(empty, "empty.obj: no triangles")) << empty;
+    const std::string linesOnly = errorFrom(files.write("linesonly.obj", std::string(kSquare) + "l 1 2 3\n"));
+    EXPECT_TRUE(contains(linesOnly, "linesonly.obj: no triangles")) << linesOnly;
+    const std::string allDegenerate = errorFrom(files.write("flat.obj", std::string(kSquare) + "f 1 1 2\n"));
+    EXPECT_TRUE(contains(allDegenerate, "flat.obj: no triangles left")) << allDegenerate;
+}
+
+// --- The project's meshes ---------------------------------------------------------------------
+
+fs::path meshAsset(const std::string& name) {
+    const fs::path inRepository = fs::path(PTVIEW_ASSETS_DIR) / "meshes" / name;
+    if (fs::exists(inRepository)) return inRepository;
+    return fs::path("/work/shared/assets/meshes") / name; // until the meshes are copied into assets/
+}
+
+TriangleMesh loadAsset(const std::string& name, MeshLoadReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    TriangleMesh mesh = loadObjMesh(meshAsset(name), &report);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %zu triangles in %.3f s\n", name.c_str(), mesh.triangles.size(), seconds);
+    return mesh;
+}
+
+TEST(ObjLoader, ProjectMeshesLoadWithTheirTriangleCounts) {
+    struct Expected {
+        const char* name;
+        std::size_t triangles;
+        bool normals, texcoords;
+    };
+    for (const Expected& expected :
+         {Expected{"spot.obj", 5856, false, true}, Expected{"teapot.obj", 25200, true, true},
+          Expected{"stanford-bunny.obj", 69451, false, false}}) {
+        MeshLoadReport report;
+        const TriangleMesh mesh = loadAsset(expected.name, report);
+        EXPECT_EQ(mesh.triangles.size(), expected.triangles) << expected.name;
+        EXPECT_TRUE(report.warnings.empty()) << expected.name << ": " << report.warnings.front();
+        EXPECT_EQ(!mesh.normals.empty(), expected.normals) << expected.name;
+        EXPECT_EQ(!mesh.texcoords.empty(), expected.texcoords) << expected.name;
+    }
+}
+
+TEST(ObjLoader, DragonLoadsAndReportsItsPolylines) {
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadAsset("dragon.obj", report);
+    EXPECT_EQ(mesh.triangles.size(), 74816u);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_TRUE(contains(report.warnings[0], "dragon.obj: skipped 35 polyline records (l)"))
+        << report.warnings[0];
+    // Every corner has a unit normal: the file gives one per face.
+    for (const MeshTriangle& triangle : mesh.triangles)
+        for (std::int32_t n : triangle.normal) ASSERT_GE(n, 0);
+    for (const glm::vec3& n : mesh.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
+}
+
+} // namespace
+} // namespace ptview

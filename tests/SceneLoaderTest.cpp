@@ -350,7 +350,7 @@ TEST(SceneLoader, RejectsWrongTypes) {
 TEST(SceneLoader, RejectsUnknownShapeType) {
     std::string message = errorFrom(validSceneWith("\"type\": \"sphere\"", "\"type\": \"cone\""));
     EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/type: unknown shape type \"cone\" "
-                                              "(expected sphere, quad, box or disk)");
+                                              "(expected sphere, quad, box, disk or mesh)");
 }
 
 TEST(SceneLoader, RejectsUnknownMaterialReference) {
@@ -594,7 +594,7 @@ TEST(SceneLoader, RejectsBadDisk) {
         "/shapes/3/radius", "missing required key");
     expectPlaceError(errorFrom(validSceneWithDisk(
                          R"("type": "disk", "center": [0, 0, 0], "u": [1, 0, 0], "radius": 1, "material": "white")")),
-                     "/shapes/3/u", "unknown key (expected one of: name, type, material, center, normal, radius)");
+                     "/shapes/3/u", "unknown key (expected one of: name, type, material, center, normal, radius, transform)");
     // Only disks take a normal.
     expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 0.3, \"normal\": [0, 1, 0]")),
                      "/shapes/1/normal", "unknown key");

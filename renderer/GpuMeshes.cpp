@@ -1,0 +1,175 @@
+#include "GpuMeshes.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace ptview {
+namespace {
+
+// Exact in a float up to 2^24: more is refused rather than silently rounded.
+float exactFloat(std::size_t value) {
+    if (value >= (std::size_t(1) << 24))
+        throw std::runtime_error("the meshes need index " + std::to_string(value) +
+                                 ", beyond the 2^24 a float stores exactly (too many triangles)");
+    return static_cast<float>(value);
+}
+
+// A node as it goes into the shared node buffer: children and primitive ranges made absolute.
+GpuBvhNode placed(const BvhNode& node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
+    std::uint32_t firstOrRight = node.firstOrRight + (node.isLeaf() ? primitiveOffset : nodeOffset);
+    return GpuBvhNode{node.boundsMin, exactFloat(firstOrRight), node.boundsMax, static_cast<float>(node.primitiveCount)};
+}
+
+Aabb transformedBounds(const Aabb& bounds, const glm::mat4& objectToWorld) {
+    Aabb world;
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                    (corner & 4) ? bounds.max.z : bounds.min.z);
+        world.extend(glm::vec3(objectToWorld * glm::vec4(p, 1.0f)));
+    }
+    return world;
+}
+
+// Rows of the upper 3x4 of a matrix: row r holds (m[0][r], m[1][r], m[2][r], m[3][r]), so that
+// dot(row, vec4(p, 1)) is the r-th coordinate of m * p.
+void appendRows(const glm::mat4& m, std::vector<glm::vec4>& out) {
+    for (int r = 0; r < 3; ++r) out.emplace_back(m[0][r], m[1][r], m[2][r], m[3][r]);
+}
+
+} // namespace
+
+const char* const GpuMeshes::kSamplerNames[kTextureCount] = {"uMeshNodes", "uMeshTriangles", "uMeshInstances"};
+
+GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh) {
+    std::vector<Aabb> bounds(mesh.triangles.size());
+    std::vector<glm::vec3> centroids(mesh.triangles.size());
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        for (std::uint32_t index : mesh.triangles[i].position) bounds[i].extend(mesh.positions[index]);
+        centroids[i] = bounds[i].centroid();
+    }
+    BuiltMesh built;
+    built.bvh = buildBvh(bounds, centroids);
+    built.triangles.reserve(mesh.triangles.size());
+    for (std::uint32_t original : built.bvh.primitiveOrder) {
+        const MeshTriangle& source = mesh.triangles[original];
+        GpuTriangle triangle{};
+        triangle.p0 = mesh.positions[source.position[0]];
+        triangle.p1 = mesh.positions[source.position[1]];
+        triangle.p2 = mesh.positions[source.position[2]];
+        triangle.materialSlot = static_cast<float>(source.materialSlot);
+        glm::vec3 normal[3];
+        glm::vec2 uv[3];
+        for (int corner = 0; corner < 3; ++corner) {
+            normal[corner] = source.normal[corner] >= 0 ? mesh.normals[static_cast<std::size_t>(source.normal[corner])] : glm::vec3(0.0f);
+            uv[corner] = source.texcoord[corner] >= 0 ? mesh.texcoords[static_cast<std::size_t>(source.texcoord[corner])] : glm::vec2(0.0f);
+        }
+        // A triangle with any corner lacking a normal is shaded flat, not with a half-made one.
+        if (normal[0] == glm::vec3(0.0f) || normal[1] == glm::vec3(0.0f) || normal[2] == glm::vec3(0.0f))
+            normal[0] = normal[1] = normal[2] = glm::vec3(0.0f);
+        triangle.n0AndU0 = glm::vec4(normal[0], uv[0].x);
+        triangle.n1AndV0 = glm::vec4(normal[1], uv[0].y);
+        triangle.n2AndU1 = glm::vec4(normal[2], uv[1].x);
+        triangle.v1U2V2 = glm::vec4(uv[1].y, uv[2].x, uv[2].y, 0.0f);
+        built.triangles.push_back(triangle);
+        built.bounds.extend(bounds[original]);
+    }
+    return built;
+}
+
+void GpuMeshes::upload(const Scene& scene) {
+    auto start = std::chrono::steady_clock::now();
+    std::map<const TriangleMesh*, std::shared_ptr<BuiltMesh>> stillUsed;
+    std::vector<std::shared_ptr<const TriangleMesh>> keepAlive;
+    for (const Shape& shape : scene.shapes) {
+        if (shape.type != ShapeType::Mesh) continue;
+        const std::shared_ptr<const TriangleMesh>& data = scene.meshes[static_cast<std::size_t>(shape.mesh)].data;
+        if (stillUsed.count(data.get())) continue;
+        auto known = built_.find(data.get());
+        stillUsed[data.get()] = known != built_.end() ? known->second : std::make_shared<BuiltMesh>(buildMesh(*data));
+        keepAlive.push_back(data);
+    }
+    built_ = std::move(stillUsed);
+    keepAlive_ = std::move(keepAlive);
+
+    // Bottom levels, one after another, then the top level.
+    std::vector<GpuBvhNode> nodes;
+    std::vector<GpuTriangle> triangles;
+    std::map<const BuiltMesh*, std::pair<std::uint32_t, std::uint32_t>> placement; // root node, first triangle
+    for (const auto& [data, built] : built_) {
+        auto nodeOffset = static_cast<std::uint32_t>(nodes.size());
+        auto triangleOffset = static_cast<std::uint32_t>(triangles.size());
+        placement[built.get()] = {nodeOffset, triangleOffset};
+        for (const BvhNode& node : built->bvh.nodes) nodes.push_back(placed(node, nodeOffset, triangleOffset));
+        triangles.insert(triangles.end(), built->triangles.begin(), built->triangles.end());
+    }
+
+    struct Candidate {
+        MeshInstance instance;
+        std::uint32_t root;
+        Aabb worldBounds;
+    };
+    std::vector<Candidate> candidates;
+    for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+        const Shape& shape = scene.shapes[s];
+        if (shape.type != ShapeType::Mesh) continue;
+        const BuiltMesh& built = *built_.at(scene.meshes[static_cast<std::size_t>(shape.mesh)].data.get());
+        if (built.bvh.nodes.empty()) continue; // nothing to hit
+        glm::mat4 objectToWorld = shape.transform.objectToWorld();
+        auto [root, firstTriangle] = placement.at(&built);
+        candidates.push_back(Candidate{MeshInstance{static_cast<int>(s), objectToWorld, &built.triangles, firstTriangle,
+                                                    shape.slotMaterials},
+                                       root, transformedBounds(built.bounds, objectToWorld)});
+    }
+
+    std::vector<Aabb> bounds;
+    std::vector<glm::vec3> centroids;
+    worldBounds_ = Aabb{};
+    for (const Candidate& candidate : candidates) {
+        bounds.push_back(candidate.worldBounds);
+        centroids.push_back(candidate.worldBounds.centroid());
+        worldBounds_.extend(candidate.worldBounds);
+    }
+    Bvh topLevel = buildBvh(bounds, centroids, BvhBuildOptions{1});
+    topLevelRoot_ = topLevel.nodes.empty() ? -1 : static_cast<int>(nodes.size());
+    // Instances go in the top level's leaf order, so a leaf's range indexes them directly.
+    for (const BvhNode& node : topLevel.nodes) nodes.push_back(placed(node, static_cast<std::uint32_t>(topLevelRoot_), 0));
+    instances_.clear();
+    instanceRoots_.clear();
+    for (std::uint32_t original : topLevel.primitiveOrder) {
+        instances_.push_back(candidates[original].instance);
+        instanceRoots_.push_back(candidates[original].root);
+    }
+    triangleCount_ = triangles.size();
+    lastBuildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    textures_[0].fill(GL_RGBA32F, 16, nodes);
+    textures_[1].fill(GL_RGBA32F, 16, triangles);
+    gpuBytes_ = textures_[0].bytes() + textures_[1].bytes();
+}
+
+void GpuMeshes::uploadInstances(const std::vector<std::int32_t>& lightBase) {
+    // Per instance: world-to-object rows, object-to-world rows, (bottom root, first triangle,
+    // material table offset, first light or -1), and a spare texel; then the material tables, one
+    // material index per texel.
+    std::vector<glm::vec4> texels;
+    std::vector<float> tables;
+    for (std::size_t i = 0; i < instances_.size(); ++i) {
+        const MeshInstance& instance = instances_[i];
+        appendRows(glm::inverse(instance.objectToWorld), texels);
+        appendRows(instance.objectToWorld, texels);
+        std::int32_t light = i < lightBase.size() ? lightBase[i] : -1;
+        texels.emplace_back(exactFloat(instanceRoots_[i]), exactFloat(instance.triangleOffset), exactFloat(tables.size()),
+                            light < 0 ? -1.0f : exactFloat(static_cast<std::size_t>(light)));
+        texels.emplace_back(0.0f);
+        for (int material : instance.slotMaterials) tables.push_back(exactFloat(static_cast<std::size_t>(material)));
+    }
+    for (float entry : tables) texels.emplace_back(entry, 0.0f, 0.0f, 0.0f);
+    textures_[2].fill(GL_RGBA32F, 16, texels);
+}
+
+void GpuMeshes::bind(int firstUnit) const {
+    for (int i = 0; i < kTextureCount; ++i) textures_[i].bind(firstUnit + i);
+}
+
+} // namespace ptview

@@ -1,0 +1,246 @@
+// Rays against the scene's triangle meshes: a two-level BVH (renderer/GpuMeshes.h) read from
+// buffer textures. The top level holds the instances by their world bounds; at an instance the ray
+// moves into the mesh's object space (its direction is not renormalized, so t stays the world t)
+// and descends that mesh's own tree. Both traversals are ordered (nearer child first) with a
+// short explicit stack; shadow rays stop at the first hit.
+#include "constants.glsl"
+#include "ray.glsl"
+
+uniform samplerBuffer uMeshNodes;     // per node: (boundsMin, firstOrRight), (boundsMax, primitive count)
+uniform samplerBuffer uMeshTriangles; // per triangle: 7 texels, see GpuTriangle
+uniform samplerBuffer uMeshInstances; // per instance: 8 texels, then the material tables
+uniform int uMeshInstanceCount;
+uniform int uTopLevelRoot;            // -1: no meshes
+
+const int kBvhStackSize = 64; // renderer/Bvh.h: kMaxBvhDepth, so the stack never overflows
+const int kTriangleTexels = 7;
+const int kInstanceTexels = 8;
+
+struct MeshHit {
+    int instance;
+    int triangle;      // in the triangle buffer
+    vec3 barycentric;  // weights of p0, p1, p2
+};
+
+// Per-ray constants of the watertight triangle test, and the slab test's reciprocal direction.
+struct MeshRay {
+    vec3 origin;
+    vec3 direction;
+    vec3 invDirection;
+    int kx, ky, kz;
+    vec3 shear; // sx, sy, sz
+};
+
+MeshRay makeMeshRay(vec3 origin, vec3 direction) {
+    MeshRay ray;
+    ray.origin = origin;
+    ray.direction = direction;
+    ray.invDirection = 1.0 / direction; // IEEE: a zero component gives an infinity, as the slab test wants
+    vec3 a = abs(direction);
+    ray.kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    ray.kx = ray.kz == 2 ? 0 : ray.kz + 1;
+    ray.ky = ray.kx == 2 ? 0 : ray.kx + 1;
+    // Swapping keeps the winding, hence the sign of U, V, W, whatever the sign of d[kz].
+    if (direction[ray.kz] < 0.0) { int swap = ray.kx; ray.kx = ray.ky; ray.ky = swap; }
+    ray.shear = vec3(direction[ray.kx] / direction[ray.kz], direction[ray.ky] / direction[ray.kz], 1.0 / direction[ray.kz]);
+    return ray;
+}
+
+// Woop, Benthin and Wald's watertight test (JCGT 2013), line for line as
+// renderer/TriangleIntersect.h but without its double-precision retry. `precise` keeps a driver
+// from fusing a product into an FMA on one triangle and not on its neighbour, which would break
+// the exact antisymmetry of shared edges that makes the test watertight.
+bool intersectTriangle(MeshRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, out float t, out vec3 barycentric) {
+    vec3 a = p0 - ray.origin;
+    vec3 b = p1 - ray.origin;
+    vec3 c = p2 - ray.origin;
+    precise float ax = a[ray.kx] - ray.shear.x * a[ray.kz];
+    precise float ay = a[ray.ky] - ray.shear.y * a[ray.kz];
+    precise float bx = b[ray.kx] - ray.shear.x * b[ray.kz];
+    precise float by = b[ray.ky] - ray.shear.y * b[ray.kz];
+    precise float cx = c[ray.kx] - ray.shear.x * c[ray.kz];
+    precise float cy = c[ray.ky] - ray.shear.y * c[ray.kz];
+    precise float u = cx * by - cy * bx;
+    precise float v = ax * cy - ay * cx;
+    precise float w = bx * ay - by * ax;
+    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;
+    float det = u + v + w;
+    if (det == 0.0) return false;
+    float tScaled = u * (ray.shear.z * a[ray.kz]) + v * (ray.shear.z * b[ray.kz]) + w * (ray.shear.z * c[ray.kz]);
+    if ((tScaled <= 0.0 && det > 0.0) || (tScaled >= 0.0 && det < 0.0)) return false;
+    float invDet = 1.0 / det;
+    t = tScaled * invDet;
+    if (!(t > 0.0 && t < tMax)) return false;
+    barycentric = vec3(u, v, w) * invDet;
+    return true;
+}
+
+// Entry distance into node's box, or kInfinity when the ray misses it before tMax. The exit is
+// pushed out by 1 + 2 gamma(3) (Ize, "Robust BVH Ray Traversal", JCGT 2013) so that rounding
+// never drops a box the ray grazes.
+float enterNode(MeshRay ray, int node, float tMax) {
+    vec3 boundsMin = texelFetch(uMeshNodes, 2 * node).xyz;
+    vec3 boundsMax = texelFetch(uMeshNodes, 2 * node + 1).xyz;
+    vec3 t0 = (boundsMin - ray.origin) * ray.invDirection;
+    vec3 t1 = (boundsMax - ray.origin) * ray.invDirection;
+    vec3 tNear = min(t0, t1);
+    vec3 tFar = max(t0, t1);
+    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+    float exit = min(min(tFar.x, tFar.y), min(tFar.z, tMax)) * 1.0000004;
+    return enter <= exit ? enter : kInfinity;
+}
+
+// Integers are stored as float values, exact below 2^24 (see renderer/GpuLayout.h).
+int nodeFirstOrRight(int node) { return int(texelFetch(uMeshNodes, 2 * node).w); }
+int nodeCount(int node) { return int(texelFetch(uMeshNodes, 2 * node + 1).w); }
+
+vec4 instanceTexel(int instance, int texel) { return texelFetch(uMeshInstances, kInstanceTexels * instance + texel); }
+
+// (bottom-level root, first triangle, material table offset, first light or -1)
+ivec4 instanceIds(int instance) { return ivec4(instanceTexel(instance, 6)); }
+
+vec3 instanceToObject(int instance, vec4 p) {
+    return vec3(dot(instanceTexel(instance, 0), p), dot(instanceTexel(instance, 1), p), dot(instanceTexel(instance, 2), p));
+}
+
+vec3 instanceToWorld(int instance, vec4 p) {
+    return vec3(dot(instanceTexel(instance, 3), p), dot(instanceTexel(instance, 4), p), dot(instanceTexel(instance, 5), p));
+}
+
+// The instance's light index for a triangle, or -1 when the instance emits nothing.
+int triangleLight(int instance, int triangle) {
+    ivec4 ids = instanceIds(instance);
+    return ids.w < 0 ? -1 : ids.w + (triangle - ids.y);
+}
+
+int triangleMaterial(int instance, int triangle) {
+    int slot = int(texelFetch(uMeshTriangles, kTriangleTexels * triangle).w);
+    return int(texelFetch(uMeshInstances, kInstanceTexels * uMeshInstanceCount + instanceIds(instance).z + slot).x);
+}
+
+// The nearest triangle of one instance closer than tBest (which it lowers), or, for anyHit, any
+// triangle closer than tBest that is not light `excludedLight`. Returns whether it found one.
+bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
+    MeshRay ray = makeMeshRay(instanceToObject(instance, vec4(worldRay.origin, 1.0)), instanceToObject(instance, vec4(worldRay.direction, 0.0)));
+    int stack[kBvhStackSize];
+    int stackSize = 0;
+    int node = instanceIds(instance).x;
+    bool found = false;
+    if (enterNode(ray, node, tBest) == kInfinity) return false;
+    for (;;) {
+        int count = nodeCount(node);
+        if (count > 0) {
+            int first = nodeFirstOrRight(node);
+            for (int i = first; i < first + count; ++i) {
+                float t;
+                vec3 barycentric;
+                vec3 p0 = texelFetch(uMeshTriangles, kTriangleTexels * i).xyz;
+                vec3 p1 = texelFetch(uMeshTriangles, kTriangleTexels * i + 1).xyz;
+                vec3 p2 = texelFetch(uMeshTriangles, kTriangleTexels * i + 2).xyz;
+                if (!intersectTriangle(ray, p0, p1, p2, tBest, t, barycentric)) continue;
+                if (anyHit) {
+                    if (excludedLight >= 0 && triangleLight(instance, i) == excludedLight) continue;
+                    tBest = t;
+                    return true;
+                }
+                tBest = t;
+                best = MeshHit(instance, i, barycentric);
+                found = true;
+            }
+        } else {
+            int left = node + 1;
+            int right = nodeFirstOrRight(node);
+            float tLeft = enterNode(ray, left, tBest);
+            float tRight = enterNode(ray, right, tBest);
+            if (tLeft != kInfinity && tRight != kInfinity) {
+                bool leftFirst = tLeft <= tRight;
+                stack[stackSize++] = leftFirst ? right : left;
+                node = leftFirst ? left : right;
+                continue;
+            }
+            if (tLeft != kInfinity) { node = left; continue; }
+            if (tRight != kInfinity) { node = right; continue; }
+        }
+        // Pop, skipping nodes that a hit found meanwhile has put out of reach.
+        node = -1;
+        while (stackSize > 0) {
+            int candidate = stack[--stackSize];
+            if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; break; }
+        }
+        if (node < 0) return found;
+    }
+    return found;
+}
+
+// The top level: instances in the order their boxes are entered.
+bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
+    if (uTopLevelRoot < 0) return false;
+    MeshRay ray = makeMeshRay(worldRay.origin, worldRay.direction);
+    int stack[kBvhStackSize];
+    int stackSize = 0;
+    int node = uTopLevelRoot;
+    bool found = false;
+    if (enterNode(ray, node, tBest) == kInfinity) return false;
+    for (;;) {
+        int count = nodeCount(node);
+        if (count > 0) {
+            int first = nodeFirstOrRight(node);
+            for (int instance = first; instance < first + count; ++instance) {
+                if (traverseInstance(instance, worldRay, tBest, best, anyHit, excludedLight)) {
+                    if (anyHit) return true;
+                    found = true;
+                }
+            }
+        } else {
+            int left = node + 1;
+            int right = nodeFirstOrRight(node);
+            float tLeft = enterNode(ray, left, tBest);
+            float tRight = enterNode(ray, right, tBest);
+            if (tLeft != kInfinity && tRight != kInfinity) {
+                bool leftFirst = tLeft <= tRight;
+                stack[stackSize++] = leftFirst ? right : left;
+                node = leftFirst ? left : right;
+                continue;
+            }
+            if (tLeft != kInfinity) { node = left; continue; }
+            if (tRight != kInfinity) { node = right; continue; }
+        }
+        node = -1;
+        while (stackSize > 0) {
+            int candidate = stack[--stackSize];
+            if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; break; }
+        }
+        if (node < 0) return found;
+    }
+    return found;
+}
+
+// A mesh hit's surface in world space: the geometric normal from the world-space edges (its side
+// is the triangle's winding: the emitting side), the shading normal interpolated from the
+// vertex normals and turned to the geometric normal's side, or the geometric one without them.
+void meshSurface(MeshHit hit, out vec3 normalGeom, out vec3 normalShading, out int material, out int light) {
+    int base = kTriangleTexels * hit.triangle;
+    vec3 p0 = texelFetch(uMeshTriangles, base).xyz;
+    vec3 p1 = texelFetch(uMeshTriangles, base + 1).xyz;
+    vec3 p2 = texelFetch(uMeshTriangles, base + 2).xyz;
+    vec3 edge1 = instanceToWorld(hit.instance, vec4(p1 - p0, 0.0));
+    vec3 edge2 = instanceToWorld(hit.instance, vec4(p2 - p0, 0.0));
+    normalGeom = normalize(cross(edge1, edge2));
+    vec3 n0 = texelFetch(uMeshTriangles, base + 3).xyz;
+    vec3 n1 = texelFetch(uMeshTriangles, base + 4).xyz;
+    vec3 n2 = texelFetch(uMeshTriangles, base + 5).xyz;
+    vec3 interpolated = hit.barycentric.x * n0 + hit.barycentric.y * n1 + hit.barycentric.z * n2;
+    normalShading = normalGeom;
+    if (dot(interpolated, interpolated) > 0.0) {
+        // Normals transform by the inverse transpose: the transpose of world-to-object.
+        vec3 worldNormal = vec3(dot(vec3(instanceTexel(hit.instance, 0).x, instanceTexel(hit.instance, 1).x, instanceTexel(hit.instance, 2).x), interpolated),
+                                dot(vec3(instanceTexel(hit.instance, 0).y, instanceTexel(hit.instance, 1).y, instanceTexel(hit.instance, 2).y), interpolated),
+                                dot(vec3(instanceTexel(hit.instance, 0).z, instanceTexel(hit.instance, 1).z, instanceTexel(hit.instance, 2).z), interpolated));
+        if (dot(worldNormal, worldNormal) > 0.0) {
+            normalShading = normalize(worldNormal);
+            if (dot(normalShading, normalGeom) < 0.0) normalShading = -normalShading;
+        }
+    }
+    material = triangleMaterial(hit.instance, hit.triangle);
+    light = triangleLight(hit.instance, hit.triangle);
+}
