@@ -235,9 +235,28 @@ void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     meshes_.uploadInstances(lights_.meshInstanceLightBase);
 }
 
-void GpuScene::bind(int firstUnit) const {
-    for (int i = 0; i < kOwnTextureCount; ++i) textures_[i].bind(firstUnit + i);
-    meshes_.bind(firstUnit + kOwnTextureCount);
+void GpuScene::attach(const GlProgram& program, int firstUnit) {
+    firstUnit_ = firstUnit;
+    for (int i = 0; i < kTextureCount; ++i) program.bindSamplerUnit(kSamplerNames[i], firstUnit + i);
+    sphereCountLocation_ = program.uniformLocation("uSphereCount");
+    quadCountLocation_ = program.uniformLocation("uQuadCount");
+    diskCountLocation_ = program.uniformLocation("uDiskCount");
+    lightCountLocation_ = program.uniformLocation("uLightCount");
+    environmentLightLocation_ = program.uniformLocation("uEnvironmentLight");
+    meshInstanceCountLocation_ = program.uniformLocation("uMeshInstanceCount");
+    topLevelRootLocation_ = program.uniformLocation("uTopLevelRoot");
+}
+
+void GpuScene::bind() const {
+    for (int i = 0; i < kOwnTextureCount; ++i) textures_[i].bind(firstUnit_ + i);
+    meshes_.bind(firstUnit_ + kOwnTextureCount);
+    glUniform1i(sphereCountLocation_, sphereCount());
+    glUniform1i(quadCountLocation_, quadCount());
+    glUniform1i(diskCountLocation_, diskCount());
+    glUniform1i(lightCountLocation_, lightCount());
+    glUniform1i(environmentLightLocation_, environmentLight());
+    glUniform1i(meshInstanceCountLocation_, meshes_.instanceCount());
+    glUniform1i(topLevelRootLocation_, meshes_.topLevelRoot());
 }
 
 } // namespace ptview

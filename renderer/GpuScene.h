@@ -4,6 +4,7 @@
 
 #include "BufferTexture.h"
 #include "GpuLayout.h"
+#include "GlProgram.h"
 #include "GpuMeshes.h"
 #include "Scene.h"
 
@@ -52,13 +53,19 @@ public:
     // The sampler uniforms of shaders/scene_data.glsl, in the order bind() uses units.
     static const char* const kSamplerNames[kTextureCount];
 
+    // Points program's samplers at units firstUnit .. firstUnit + kTextureCount - 1 and finds its
+    // scene uniforms (counts, the environment's light, the meshes' top-level root); again
+    // whenever the program is rebuilt.
+    void attach(const GlProgram& program, int firstUnit);
+
     // environmentMeanRadiance: the environment's radiance averaged over all directions, which sets
     // its share of light samples; by default scene.environment (an environment map's mean instead).
     void upload(const Scene& scene, std::optional<glm::vec3> environmentMeanRadiance = std::nullopt);
     // Material edits only: no geometry is re-sent and nothing is recompiled. The light table is
     // rebuilt, since an edit can make a surface an emitter or change its power.
     void uploadMaterials(const std::vector<Material>& materials);
-    void bind(int firstUnit) const;
+    // Binds the textures and sets the uniforms of the attached program, which must be in use.
+    void bind() const;
 
     int sphereCount() const { return static_cast<int>(geometry_.spheres.size()); }
     int quadCount() const { return static_cast<int>(geometry_.quads.size()); }
@@ -70,6 +77,14 @@ public:
 private:
     BufferTexture textures_[kOwnTextureCount];
     GpuMeshes meshes_;
+    int firstUnit_ = 0;
+    GLint sphereCountLocation_ = -1;
+    GLint quadCountLocation_ = -1;
+    GLint diskCountLocation_ = -1;
+    GLint lightCountLocation_ = -1;
+    GLint environmentLightLocation_ = -1;
+    GLint meshInstanceCountLocation_ = -1;
+    GLint topLevelRootLocation_ = -1;
     ScenePrimitives geometry_; // kept to rebuild the light table on material edits
     glm::vec3 environmentRadiance_{0.0f};
     LightTable lights_;

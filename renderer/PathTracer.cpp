@@ -39,14 +39,6 @@ PathTracer::Programs PathTracer::buildPrograms() const {
     const GlProgram& trace = *programs.pathTrace;
     trace.bindUniformBlock("FrameBlock", kFrameBlockBinding);
     Accumulator::bindSamplers(trace, kAccumulationUnit);
-    for (int i = 0; i < GpuScene::kTextureCount; ++i) trace.bindSamplerUnit(GpuScene::kSamplerNames[i], kSceneUnit + i);
-    programs.sphereCount = trace.uniformLocation("uSphereCount");
-    programs.quadCount = trace.uniformLocation("uQuadCount");
-    programs.diskCount = trace.uniformLocation("uDiskCount");
-    programs.lightCount = trace.uniformLocation("uLightCount");
-    programs.environmentLight = trace.uniformLocation("uEnvironmentLight");
-    programs.meshInstanceCount = trace.uniformLocation("uMeshInstanceCount");
-    programs.topLevelRoot = trace.uniformLocation("uTopLevelRoot");
 
     const GlProgram& show = *programs.display;
     show.bindSamplerUnit("uSum", 0);
@@ -61,6 +53,7 @@ PathTracer::Programs PathTracer::buildPrograms() const {
 
 PathTracer::PathTracer(const std::filesystem::path& shaderDir) : shaderDir_(shaderDir) {
     programs_ = buildPrograms();
+    gpuScene_.attach(*programs_.pathTrace, kSceneUnit);
     environmentMap_.attach(*programs_.pathTrace, kEnvironmentUnit);
     emptyVertexArray_ = createVertexArray();
     frameUniformBuffer_ = createBuffer();
@@ -72,6 +65,7 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir) : shaderDir_(shad
 void PathTracer::reloadShaders() {
     Programs rebuilt = buildPrograms(); // throws before anything is replaced
     programs_ = std::move(rebuilt);
+    gpuScene_.attach(*programs_.pathTrace, kSceneUnit);
     environmentMap_.attach(*programs_.pathTrace, kEnvironmentUnit);
     restart();
 }
@@ -157,15 +151,8 @@ bool PathTracer::renderRows(int rowCount) {
         glScissor(0, nextRow_, size.x, endRow - nextRow_);
     }
     glUseProgram(programs_.pathTrace->id());
-    glUniform1i(programs_.sphereCount, gpuScene_.sphereCount());
-    glUniform1i(programs_.quadCount, gpuScene_.quadCount());
-    glUniform1i(programs_.diskCount, gpuScene_.diskCount());
-    glUniform1i(programs_.lightCount, gpuScene_.lightCount());
-    glUniform1i(programs_.environmentLight, gpuScene_.environmentLight());
-    glUniform1i(programs_.meshInstanceCount, gpuScene_.meshes().instanceCount());
-    glUniform1i(programs_.topLevelRoot, gpuScene_.meshes().topLevelRoot());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
-    gpuScene_.bind(kSceneUnit);
+    gpuScene_.bind();
     environmentMap_.bind();
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -89,17 +89,10 @@ public:
     ImageRgba8 readToneMapped(const DisplaySettings& settings) const;
 
 private:
-    // Both programs and the uniform locations found in them; rebuilt as a whole on reload.
+    // Both programs and the display pass's uniform locations; rebuilt as a whole on reload.
     struct Programs {
         std::unique_ptr<GlProgram> pathTrace;
         std::unique_ptr<GlProgram> display;
-        GLint sphereCount = -1;
-        GLint quadCount = -1;
-        GLint diskCount = -1;
-        GLint lightCount = -1;
-        GLint environmentLight = -1;
-        GLint meshInstanceCount = -1;
-        GLint topLevelRoot = -1;
         GLint invSampleCount = -1;
         GLint exposureScale = -1;
         GLint toneMapper = -1;

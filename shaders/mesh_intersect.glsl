@@ -35,7 +35,12 @@ MeshRay makeMeshRay(vec3 origin, vec3 direction) {
     MeshRay ray;
     ray.origin = origin;
     ray.direction = direction;
-    ray.invDirection = 1.0 / direction; // IEEE: a zero component gives an infinity, as the slab test wants
+    // A zero component gets a huge finite reciprocal, not an infinity: 0 * inf is NaN, and a ray
+    // with its origin on a box's plane (axis-aligned rays through a symmetric mesh's middle) would
+    // then miss the box. With 1e30 that slab gives 0 at the plane and a huge distance elsewhere.
+    ray.invDirection = vec3(direction.x != 0.0 ? 1.0 / direction.x : 1e30,
+                            direction.y != 0.0 ? 1.0 / direction.y : 1e30,
+                            direction.z != 0.0 ? 1.0 / direction.z : 1e30);
     vec3 a = abs(direction);
     ray.kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     ray.kx = ray.kz == 2 ? 0 : ray.kz + 1;
