@@ -101,6 +101,17 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(kImageSize);
     addRenderSettings(*renderCommand, render.settings, render.display);
 
+    BenchOptions& bench = out.bench;
+    bench.settings.integrator = Integrator::Full;
+    std::string benchSizeText;
+    DisplaySettings unusedDisplay;
+    CLI::App* benchCommand = app.add_subcommand("bench", "time loading, BVH builds and path tracing of scenes (headless)");
+    benchCommand->add_option("scenes", bench.scenePaths, "scene files (default: cornell, cornell_bunny, meshes, dragon, cornell_bunny_1m)");
+    benchCommand->add_option("--size", benchSizeText, "image size WxH (default: each scene's resolution)")->check(kImageSize);
+    benchCommand->add_option("--seconds", bench.seconds, "rendering time per scene, at least")
+        ->check(CLI::Range(0.1, 600.0))->capture_default_str();
+    addRenderSettings(*benchCommand, bench.settings, unusedDisplay);
+
     WarpOptions& warp = out.warp;
     float coneAngleDeg = 60.0f;
     CLI::App* warpCommand = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
@@ -134,6 +145,16 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     if (*warpCommand) {
         out.mode = CommandLine::Mode::Warp;
         warp.request.cosThetaMax = std::cos(coneAngleDeg * 3.14159265358979f / 180.0f);
+    }
+    if (*benchCommand) {
+        out.mode = CommandLine::Mode::Bench;
+        if (bench.scenePaths.empty())
+            for (const char* name : {"cornell", "cornell_bunny", "meshes", "dragon", "cornell_bunny_1m"})
+                bench.scenePaths.push_back(std::string(PTVIEW_ASSETS_DIR) + "/scenes/" + name + ".json");
+        if (!benchSizeText.empty()) {
+            size_t x = benchSizeText.find('x');
+            bench.size = glm::ivec2(std::stoi(benchSizeText.substr(0, x)), std::stoi(benchSizeText.substr(x + 1)));
+        }
     }
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;

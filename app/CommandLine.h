@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ptview {
 
@@ -36,6 +37,13 @@ struct ViewerOptions {
     WarpRequest warp{Warp::CosineHemisphere, SamplerMode::Random, 1024};
 };
 
+struct BenchOptions {
+    std::vector<std::string> scenePaths; // default: the mesh scenes and the empty Cornell box
+    std::optional<glm::ivec2> size;      // default: each scene's resolution
+    RenderSettings settings;             // full integrator, depth 8 unless told otherwise
+    double seconds = 3.0;                // of rendering per scene, at least
+};
+
 struct WarpOptions {
     WarpRequest request;   // count, warp, sampler, seed, cone angle
     std::string outPath;   // .png
@@ -43,8 +51,9 @@ struct WarpOptions {
 };
 
 struct CommandLine {
-    enum class Mode { Viewer, Render, Warp } mode = Mode::Viewer;
+    enum class Mode { Viewer, Render, Warp, Bench } mode = Mode::Viewer;
     RenderOptions render;
+    BenchOptions bench;
     ViewerOptions viewer;
     WarpOptions warp;
 };

@@ -1,4 +1,6 @@
-// ptview: open the viewer, render headless with `ptview render`, or draw a warp with `ptview warp`.
+// ptview: open the viewer, render headless with `ptview render`, draw a warp with `ptview warp`,
+// or time scenes with `ptview bench`.
+#include "BenchCommand.h"
 #include "CommandLine.h"
 #include "RenderCommand.h"
 #include "Viewer.h"
@@ -9,5 +11,6 @@ int main(int argc, char** argv) {
     if (auto exitCode = ptview::parseCommandLine(argc, argv, commandLine)) return *exitCode;
     if (commandLine.mode == ptview::CommandLine::Mode::Render) return ptview::runRenderCommand(commandLine.render);
     if (commandLine.mode == ptview::CommandLine::Mode::Warp) return ptview::runWarpCommand(commandLine.warp);
+    if (commandLine.mode == ptview::CommandLine::Mode::Bench) return ptview::runBenchCommand(commandLine.bench);
     return ptview::runViewer(commandLine.viewer);
 }

@@ -78,6 +78,7 @@ public:
     int sampleCount() const { return accumulator_.sampleCount(); }
     glm::ivec2 imageSize() const { return accumulator_.size(); }
     const RenderSettings& settings() const { return settings_; }
+    const GpuScene& gpuScene() const { return gpuScene_; }
 
     // Draws the tone-mapped mean stretched over `target` of the bound draw framebuffer, touching
     // only the pixels inside `clip` (the split view shows two renders side by side).

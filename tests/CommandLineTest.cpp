@@ -202,5 +202,24 @@ TEST_F(CommandLineTest, WarpDrawsItsPointsInsideTheDomainOutline) {
     EXPECT_EQ(outside, 0);
 }
 
+// `ptview bench` prints one Markdown table row per scene, with the mesh's triangle count.
+TEST_F(CommandLineTest, BenchReportsEachSceneAsATableRow) {
+    testing::CommandResult result = runCommand(kBinary + " bench " + shellQuoted(kCornell) + " " +
+                                               shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell_bunny.json") +
+                                               " --seconds 0.2 --size 16x16 --depth 2");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::smatch row;
+    ASSERT_TRUE(std::regex_search(result.output, row, std::regex(R"(\| cornell_bunny \| 69451 \| [0-9.]+ \| ([0-9.]+) \| ([0-9.]+) \| 16x16 \| ([0-9]+) \| ([0-9.]+) \|)")))
+        << result.output;
+    EXPECT_GT(std::stod(row[2]), 1.0) << "a 69k-triangle BVH takes megabytes";
+    EXPECT_GE(std::stoi(row[3]), 1);
+    EXPECT_GT(std::stod(row[4]), 0.0);
+    EXPECT_NE(result.output.find("| cornell | 0 |"), std::string::npos) << result.output;
+
+    testing::CommandResult bad = runCommand(kBinary + " bench " + shellQuoted(path("absent.json")) + " --seconds 0.1");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("absent.json"), std::string::npos) << bad.output;
+}
+
 } // namespace
 } // namespace ptview
