@@ -81,8 +81,9 @@ bool ViewerSession::openScene(const std::filesystem::path& path) {
         std::optional<EnvironmentMap> map;
         if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
         model_.fileScene = scene;
-        applyScene(std::move(scene), shareMap(map));
         model_.notice = "opened " + path.string();
+        for (const std::string& warning : scene.warnings) model_.notice += "\nwarning: " + warning;
+        applyScene(std::move(scene), shareMap(map));
         return true;
     } catch (const std::exception& e) { // SceneError, EnvironmentMapError: both name the file
         model_.sceneError = e.what();

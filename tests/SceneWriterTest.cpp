@@ -67,6 +67,12 @@ void expectSameScene(const Scene& expected, const Scene& actual) {
         expectVec3Eq(e.halfSize, a.halfSize, what + " halfSize");
         expectVec3Eq(e.rotationAxis, a.rotationAxis, what + " rotationAxis");
         EXPECT_EQ(e.rotationDeg, a.rotationDeg) << what;
+        EXPECT_EQ(e.mesh, a.mesh) << what;
+        EXPECT_EQ(e.slotMaterials, a.slotMaterials) << what;
+        expectVec3Eq(e.transform.translate, a.transform.translate, what + " translate");
+        expectVec3Eq(e.transform.rotationAxis, a.transform.rotationAxis, what + " transform axis");
+        EXPECT_EQ(e.transform.rotationDeg, a.transform.rotationDeg) << what;
+        expectVec3Eq(e.transform.scale, a.transform.scale, what + " scale");
         expectVec3Eq(e.normal, a.normal, what + " normal");
     }
 
@@ -85,10 +91,12 @@ void expectSameScene(const Scene& expected, const Scene& actual) {
     }
 }
 
+// Read back as if written beside the original: file paths in it (maps, meshes) are relative to
+// the scene's directory, and mesh files are read while parsing.
 Scene roundTrip(const Scene& scene) {
     std::string text = sceneToJson(scene);
     try {
-        return parseScene(text, "written.json");
+        return parseScene(text, scene.path.empty() ? fs::path("written.json") : scene.path.parent_path() / "written.json");
     } catch (const SceneError& error) {
         ADD_FAILURE() << error.what() << "\n" << text;
         return {};
