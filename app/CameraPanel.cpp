@@ -77,9 +77,9 @@ void drawCameraPanel(ViewerSession& session) {
     if (ImGui::Button("Reset camera")) session.resetCamera();
     itemTooltip("back to the scene file's camera (F)");
     ImGui::SameLine();
-    Bounds bounds = sceneBounds(model.scene);
-    ImGui::BeginDisabled(bounds.empty());
+    ImGui::BeginDisabled(model.scene.shapes.empty());
     if (ImGui::Button("Target scene centre")) {
+        Bounds bounds = sceneBounds(model.scene); // on the click only: a big mesh has many vertices
         edited.target = 0.5f * (bounds.lower + bounds.upper);
         changed = true;
     }
