@@ -54,6 +54,24 @@ void Accumulator::resize(glm::ivec2 size) {
     staleSampleCount_ = 0; // the new textures hold nothing worth showing
 }
 
+void Accumulator::bindImages(const GlProgram& program, int firstImageUnit) {
+    program.bindSamplerUnit("uNextSum", firstImageUnit); // an image uniform holds its unit the same way
+    program.bindSamplerUnit("uNextCompensation", firstImageUnit + 1);
+    program.bindSamplerUnit("uNextSumSquares", firstImageUnit + 2);
+}
+
+void Accumulator::beginComputePass(int firstUnit, int firstImageUnit) const {
+    if (size_.x == 0) throw std::logic_error("Accumulator::beginComputePass before resize");
+    const Target& previous = latest();
+    for (int i = 0; i < kTextureCount; ++i) {
+        glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + firstUnit + i));
+        glBindTexture(GL_TEXTURE_2D, previous.textures[i].id());
+        glBindImageTexture(static_cast<GLuint>(firstImageUnit + i), targets_[writeIndex_].textures[i].id(), 0, GL_FALSE, 0,
+                           GL_WRITE_ONLY, GL_RGBA32F);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
 void Accumulator::beginPass(int firstUnit) const {
     if (size_.x == 0) throw std::logic_error("Accumulator::beginPass before resize");
     const Target& previous = latest();

@@ -35,9 +35,14 @@ public:
         sampleCount_ = 0;
     }
 
+    // Points a compute program's accumulate_image.glsl images at image units firstImageUnit .. + 2.
+    static void bindImages(const GlProgram& program, int firstImageUnit);
+
     // Binds the target to draw into and the previous sums for reading; the caller then draws
     // one sample per pixel with a program that calls accumulateSample().
     void beginPass(int firstUnit) const;
+    // The same for a compute dispatch: the target's textures become images to store into.
+    void beginComputePass(int firstUnit, int firstImageUnit) const;
     void endPass();
 
     // Binds the latest sum and compensation for display.

@@ -1,5 +1,7 @@
 #include "BsdfProbe.h"
 
+#include "ShaderFeatures.h"
+
 #include "ProbePass.h"
 
 #include <stdexcept>
@@ -21,6 +23,7 @@ ProbeData directionsCycled(const std::vector<glm::vec3>& directions, size_t coun
 
 BsdfProbe::BsdfProbe(const std::filesystem::path& shaderDir) {
     ShaderAssembler assembler(shaderDir);
+    specializeBsdfs(assembler, ShaderFeatures::all());
     program_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("bsdf_probe.frag"));
     program_->bindSamplerUnit("uWo", 0);
     program_->bindSamplerUnit("uWi", 1);

@@ -41,12 +41,19 @@ GlProgram::GlProgram(const AssembledShader& vertex, const AssembledShader& fragm
         glDeleteShader(vertexId);
         throw;
     }
+    link({vertexId, fragmentId}, fragment);
+}
+
+GlProgram::GlProgram(const AssembledShader& compute) {
+    link({compileStage(GL_COMPUTE_SHADER, compute)}, compute);
+}
+
+void GlProgram::link(std::initializer_list<GLuint> stages, const AssembledShader& main) {
     handle_ = GlProgramHandle(glCreateProgram());
-    glAttachShader(id(), vertexId);
-    glAttachShader(id(), fragmentId);
+    for (GLuint stage : stages) glAttachShader(id(), stage);
     glLinkProgram(id());
-    glDeleteShader(vertexId);
-    glDeleteShader(fragmentId);
+    for (GLuint stage : stages) glDeleteShader(stage);
+    const AssembledShader& fragment = main;
     GLint ok = GL_FALSE;
     glGetProgramiv(id(), GL_LINK_STATUS, &ok);
     if (!ok) {

@@ -4,12 +4,16 @@
 #include "GlObjects.h"
 #include "ShaderAssembler.h"
 
+#include <initializer_list>
+
 namespace ptview {
 
 class GlProgram {
 public:
     // Throws ShaderError with the driver's log mapped to file:line.
     GlProgram(const AssembledShader& vertex, const AssembledShader& fragment);
+    // A compute program (OpenGL 4.3). Throws ShaderError.
+    explicit GlProgram(const AssembledShader& compute);
 
     GLuint id() const { return handle_.id(); }
     // Looked up once at set-up time; -1 when the compiler removed an unused uniform.
@@ -19,6 +23,8 @@ public:
     void bindUniformBlock(const char* name, GLuint bindingPoint) const;
 
 private:
+    void link(std::initializer_list<GLuint> stages, const AssembledShader& main);
+
     GlProgramHandle handle_;
 };
 

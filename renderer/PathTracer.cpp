@@ -4,6 +4,8 @@
 #include "Readback.h"
 
 #include <algorithm>
+#include <chrono>
+#include <tuple>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -29,44 +31,130 @@ void resetPassState() {
 
 } // namespace
 
-PathTracer::Programs PathTracer::buildPrograms() const {
-    ShaderAssembler assembler(shaderDir_);
-    AssembledShader vertex = assembler.assemble("fullscreen.vert");
-    Programs programs;
-    programs.pathTrace = std::make_unique<GlProgram>(vertex, assembler.assemble("pathtrace.frag"));
-    programs.display = std::make_unique<GlProgram>(vertex, assembler.assemble("display.frag"));
-
-    const GlProgram& trace = *programs.pathTrace;
-    trace.bindUniformBlock("FrameBlock", kFrameBlockBinding);
-    Accumulator::bindSamplers(trace, kAccumulationUnit);
-
-    const GlProgram& show = *programs.display;
-    show.bindSamplerUnit("uSum", 0);
-    show.bindSamplerUnit("uCompensation", 1);
-    programs.invSampleCount = show.uniformLocation("uInvSampleCount");
-    programs.exposureScale = show.uniformLocation("uExposureScale");
-    programs.toneMapper = show.uniformLocation("uToneMapper");
-    programs.outputOrigin = show.uniformLocation("uOutputOrigin");
-    programs.outputSize = show.uniformLocation("uOutputSize");
-    return programs;
+bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
+    if (features != other.features) return features < other.features;
+    return std::tie(integrator, sampler, backend) < std::tie(other.integrator, other.sampler, other.backend);
 }
 
-PathTracer::PathTracer(const std::filesystem::path& shaderDir) : shaderDir_(shaderDir) {
-    programs_ = buildPrograms();
-    gpuScene_.attach(*programs_.pathTrace, kSceneUnit);
-    environmentMap_.attach(*programs_.pathTrace, kEnvironmentUnit);
+PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
+    ShaderAssembler assembler(shaderDir_);
+    DisplayProgram display;
+    display.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("display.frag"));
+    const GlProgram& show = *display.program;
+    show.bindSamplerUnit("uSum", 0);
+    show.bindSamplerUnit("uCompensation", 1);
+    display.invSampleCount = show.uniformLocation("uInvSampleCount");
+    display.exposureScale = show.uniformLocation("uExposureScale");
+    display.toneMapper = show.uniformLocation("uToneMapper");
+    display.outputOrigin = show.uniformLocation("uOutputOrigin");
+    display.outputSize = show.uniformLocation("uOutputSize");
+    return display;
+}
+
+PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) const {
+    ShaderAssembler assembler(shaderDir_);
+    specializeShaders(assembler, key.features, key.integrator, key.sampler);
+    TraceProgram trace;
+    if (key.backend == Backend::Compute) {
+        trace.source = assembler.assemble("pathtrace.comp");
+        trace.program = std::make_unique<GlProgram>(trace.source);
+        Accumulator::bindImages(*trace.program, 0);
+        trace.tileOrigin = trace.program->uniformLocation("uTileOrigin");
+        trace.tileEnd = trace.program->uniformLocation("uTileEnd");
+    } else {
+        trace.source = assembler.assemble("pathtrace.frag");
+        trace.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), trace.source);
+    }
+    trace.program->bindUniformBlock("FrameBlock", kFrameBlockBinding);
+    Accumulator::bindSamplers(*trace.program, kAccumulationUnit);
+    return trace;
+}
+
+PathTracer::TraceProgram& PathTracer::useTraceProgram() {
+    auto found = tracePrograms_.find(programKey_);
+    if (found == tracePrograms_.end()) {
+        found = tracePrograms_.emplace(programKey_, buildTraceProgram(programKey_)).first;
+        ++programsCompiled_;
+    }
+    TraceProgram& trace = found->second;
+    if (attached_ != &trace) { // uniform locations differ between programs
+        gpuScene_.attach(*trace.program, kSceneUnit);
+        environmentMap_.attach(*trace.program, kEnvironmentUnit);
+        attached_ = &trace;
+    }
+    return trace;
+}
+
+void PathTracer::updateProgramKey() {
+    programKey_.features = options_.allFeatures ? ShaderFeatures::all() : sceneFeatures(scene_);
+    programKey_.integrator = settings_.integrator;
+    programKey_.sampler = settings_.sampler;
+    programKey_.backend = backend_;
+}
+
+const AssembledShader& PathTracer::pathTraceSource() {
+    return useTraceProgram().source;
+}
+
+bool PathTracer::computeSupported() {
+    return GLAD_GL_VERSION_4_3 != 0;
+}
+
+void PathTracer::setBackend(Backend backend) {
+    if (backend == Backend::Compute && !computeSupported())
+        throw std::runtime_error("the compute backend needs OpenGL 4.3; this context has " +
+                                 std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))));
+    if (backend == backend_) return;
+    backend_ = backend;
+    updateProgramKey();
+    restart();
+}
+
+Backend PathTracer::chooseBackend() {
+    if (!computeSupported()) {
+        setBackend(Backend::Fragment);
+        return backend_;
+    }
+    // A small image keeps this quick; a warm-up pass keeps compilation and first-use costs out.
+    glm::ivec2 size = accumulator_.size();
+    double seconds[2] = {0.0, 0.0};
+    for (Backend candidate : {Backend::Fragment, Backend::Compute}) {
+        setBackend(candidate);
+        setImageSize({128, 128});
+        renderSample();
+        glFinish();
+        auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < 3; ++i) renderSample();
+        glFinish();
+        seconds[static_cast<int>(candidate)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    setBackend(seconds[1] < seconds[0] ? Backend::Compute : Backend::Fragment);
+    if (size.x > 0) setImageSize(size);
+    restart();
+    return backend_;
+}
+
+PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions options)
+    : shaderDir_(shaderDir), options_(options) {
+    display_ = buildDisplayProgram();
+    if (options_.backend) setBackend(*options_.backend);
     emptyVertexArray_ = createVertexArray();
     frameUniformBuffer_ = createBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    updateProgramKey();
 }
 
 void PathTracer::reloadShaders() {
-    Programs rebuilt = buildPrograms(); // throws before anything is replaced
-    programs_ = std::move(rebuilt);
-    gpuScene_.attach(*programs_.pathTrace, kSceneUnit);
-    environmentMap_.attach(*programs_.pathTrace, kEnvironmentUnit);
+    // Everything is built before anything is replaced: a failure leaves the old programs running.
+    DisplayProgram display = buildDisplayProgram();
+    TraceProgram trace = buildTraceProgram(programKey_);
+    display_ = std::move(display);
+    tracePrograms_.clear();
+    attached_ = nullptr;
+    tracePrograms_.emplace(programKey_, std::move(trace));
+    ++programsCompiled_;
     restart();
 }
 
@@ -76,6 +164,8 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
     environmentMap_.upload(scene.environmentMap.empty() ? nullptr : environmentMap, scene.environmentIntensity,
                            scene.environmentRotationDeg);
     gpuScene_.upload(scene, environmentMap_.hasMap() ? std::optional<glm::vec3>(environmentMap_.meanRadiance()) : std::nullopt);
+    scene_ = scene;
+    updateProgramKey();
     camera_ = scene.camera;
     environmentRadiance_ = scene.environment;
     restart();
@@ -83,6 +173,8 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
 
 void PathTracer::setMaterials(const std::vector<Material>& materials) {
     gpuScene_.uploadMaterials(materials);
+    scene_.materials = materials;
+    updateProgramKey(); // a model the scene did not use before needs a program that has it
     restart();
 }
 
@@ -102,6 +194,7 @@ void PathTracer::restart() {
 void PathTracer::setSettings(const RenderSettings& settings) {
     if (settings == settings_) return;
     settings_ = settings;
+    updateProgramKey();
     restart();
 }
 
@@ -143,21 +236,31 @@ void PathTracer::renderSample() {
 bool PathTracer::renderRows(int rowCount) {
     glm::ivec2 size = accumulator_.size();
     int endRow = std::min(size.y, nextRow_ + std::max(1, rowCount));
+    const TraceProgram& trace = useTraceProgram();
     updateFrameUniforms();
     resetPassState();
-    accumulator_.beginPass(kAccumulationUnit);
-    if (nextRow_ > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(0, nextRow_, size.x, endRow - nextRow_);
-    }
-    glUseProgram(programs_.pathTrace->id());
+    glUseProgram(trace.program->id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
     gpuScene_.bind();
     environmentMap_.bind();
-    glBindVertexArray(emptyVertexArray_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glDisable(GL_SCISSOR_TEST);
+    if (backend_ == Backend::Compute) {
+        accumulator_.beginComputePass(kAccumulationUnit, 0);
+        glUniform2i(trace.tileOrigin, 0, nextRow_);
+        glUniform2i(trace.tileEnd, size.x, endRow);
+        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((endRow - nextRow_ + 7) / 8), 1);
+        // Later passes read these texels as textures, the display and read-backs as attachments.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    } else {
+        accumulator_.beginPass(kAccumulationUnit);
+        if (nextRow_ > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, nextRow_, size.x, endRow - nextRow_);
+        }
+        glBindVertexArray(emptyVertexArray_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glDisable(GL_SCISSOR_TEST);
+    }
     if (endRow < size.y) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         nextRow_ = endRow;
@@ -173,13 +276,13 @@ void PathTracer::display(PixelRect target, const DisplaySettings& settings, Pixe
     glViewport(target.origin.x, target.origin.y, target.size.x, target.size.y);
     glEnable(GL_SCISSOR_TEST);
     glScissor(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
-    glUseProgram(programs_.display->id());
+    glUseProgram(display_.program->id());
     int samples = accumulator_.displayedSampleCount();
-    glUniform1f(programs_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
-    glUniform1f(programs_.exposureScale, std::exp2(settings.exposureStops));
-    glUniform1ui(programs_.toneMapper, static_cast<GLuint>(settings.toneMapper));
-    glUniform2f(programs_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
-    glUniform2f(programs_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
+    glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
+    glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
+    glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
+    glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
+    glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
     accumulator_.bindLatest(0, 1);
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

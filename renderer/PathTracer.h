@@ -4,6 +4,7 @@
 // headless renderer and the viewer; it needs a current OpenGL 4.1+ core context.
 
 #include "Accumulator.h"
+#include "Backend.h"
 #include "GlObjects.h"
 #include "EnvironmentMap.h"
 #include "GlProgram.h"
@@ -13,10 +14,12 @@
 #include "Integrator.h"
 #include "SamplerMode.h"
 #include "Scene.h"
+#include "ShaderFeatures.h"
 #include "ToneMapper.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 namespace ptview {
@@ -43,15 +46,37 @@ struct PixelRect {
     glm::ivec2 size{0, 0};
 };
 
+struct PathTracerOptions {
+    bool allFeatures = false; // the uber-shader: every material model, the map and mesh code
+    // nullopt: compute where the context has it (OpenGL 4.3) and it measures faster on this scene
+    // than the fragment stage (see chooseBackend), else fragment.
+    std::optional<Backend> backend;
+};
+
 class PathTracer {
 public:
-    // Compiles the programs from the GLSL in shaderDir. Throws ShaderError.
-    explicit PathTracer(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
+    // Compiles the display program from the GLSL in shaderDir; path-tracing programs are compiled
+    // when a scene and settings first need them. Throws ShaderError.
+    explicit PathTracer(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR, PathTracerOptions options = {});
 
     // Recompiles the programs from shaderDir (after the files changed). Throws ShaderError and
     // keeps the current programs when the new ones do not build; restarts accumulation when they do.
     void reloadShaders();
     const std::filesystem::path& shaderDir() const { return shaderDir_; }
+
+    // The program in use is specialized to the scene's features, the integrator, the sampler and
+    // the backend; every program compiled is kept, so going back to a combination costs nothing.
+    const ShaderFeatures& features() const { return programKey_.features; }
+    const AssembledShader& pathTraceSource(); // the exact GLSL of the program in use
+    int programsCompiled() const { return programsCompiled_; }
+    Backend backend() const { return backend_; }
+    // Changes the backend (restarts accumulation). Throws std::runtime_error for compute where
+    // the context lacks OpenGL 4.3.
+    void setBackend(Backend backend);
+    static bool computeSupported();
+    // Renders a few passes of the current scene at a small size with each backend and keeps the
+    // faster: what the device measures, not what its OpenGL version suggests. Returns it.
+    Backend chooseBackend();
 
     // Each of these restarts accumulation.
     // Reads scene.environmentMap unless the caller already has (environmentMap, to report a bad
@@ -90,21 +115,43 @@ public:
     ImageRgba8 readToneMapped(const DisplaySettings& settings) const;
 
 private:
-    // Both programs and the display pass's uniform locations; rebuilt as a whole on reload.
-    struct Programs {
-        std::unique_ptr<GlProgram> pathTrace;
-        std::unique_ptr<GlProgram> display;
+    struct DisplayProgram {
+        std::unique_ptr<GlProgram> program;
         GLint invSampleCount = -1;
         GLint exposureScale = -1;
         GLint toneMapper = -1;
         GLint outputOrigin = -1;
         GLint outputSize = -1;
     };
-    Programs buildPrograms() const;
+    struct ProgramKey {
+        ShaderFeatures features;
+        Integrator integrator = Integrator::Naive;
+        SamplerMode sampler = SamplerMode::Random;
+        Backend backend = Backend::Fragment;
+        bool operator<(const ProgramKey& other) const;
+    };
+    struct TraceProgram {
+        std::unique_ptr<GlProgram> program;
+        AssembledShader source;
+        GLint tileOrigin = -1; // compute only
+        GLint tileEnd = -1;
+    };
+
+    DisplayProgram buildDisplayProgram() const;
+    TraceProgram buildTraceProgram(const ProgramKey& key) const;
+    TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
+    void updateProgramKey();
     void updateFrameUniforms();
 
     std::filesystem::path shaderDir_;
-    Programs programs_;
+    PathTracerOptions options_;
+    DisplayProgram display_;
+    std::map<ProgramKey, TraceProgram> tracePrograms_;
+    ProgramKey programKey_;
+    const TraceProgram* attached_ = nullptr; // the program the scene's uniforms were last found in
+    int programsCompiled_ = 0;
+    Backend backend_ = Backend::Fragment;
+    Scene scene_; // shapes and materials: which features the materials call for
 
     GlVertexArray emptyVertexArray_; // core profile needs a VAO bound even without attributes
     GlBuffer frameUniformBuffer_;

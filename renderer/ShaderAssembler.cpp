@@ -1,6 +1,7 @@
 #include "ShaderAssembler.h"
 
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -18,16 +19,34 @@ std::string readText(const std::filesystem::path& path) {
 
 struct Expander {
     const std::filesystem::path& includeDir;
+    const std::map<std::string, ShaderAssembler::Replacement>& replacements;
     AssembledShader& out;
-    std::set<std::filesystem::path> included;
+    std::set<std::string> included;
 
     void expand(const std::filesystem::path& path, const std::string& displayName) {
         std::filesystem::path canonical = std::filesystem::weakly_canonical(path);
-        if (!included.insert(canonical).second) return;
+        if (included.count(canonical.string())) return;
         std::ifstream probe(path);
         if (!probe) throw ShaderError(displayName + ": cannot open shader file");
-        std::string text = readText(path);
+        expandText(readText(path), displayName, canonical.string());
+    }
 
+    // An include's name may stand for another file or for generated text (ShaderAssembler::replace).
+    void expandInclude(const std::string& name, const std::string& from, int lineNumber) {
+        auto replacement = replacements.find(name);
+        if (replacement != replacements.end() && replacement->second.isGenerated) {
+            expandText(replacement->second.text, name + " (generated)", "generated:" + name);
+            return;
+        }
+        std::string file = replacement != replacements.end() ? replacement->second.text : name;
+        std::filesystem::path target = includeDir / file;
+        if (!std::filesystem::is_regular_file(target))
+            throw ShaderError(from + ":" + std::to_string(lineNumber) + ": cannot find include \"" + file + "\"");
+        expand(target, file);
+    }
+
+    void expandText(const std::string& text, const std::string& displayName, const std::string& key) {
+        if (!included.insert(key).second) return;
         int fileId = static_cast<int>(out.files.size());
         out.files.push_back(displayName);
         static const std::regex includeLine(R"re(^\s*#\s*include\s*"([^"]+)"\s*$)re");
@@ -51,11 +70,7 @@ struct Expander {
                 continue;
             }
             if (std::regex_match(line, match, includeLine)) {
-                std::filesystem::path target = includeDir / match[1].str();
-                if (!std::filesystem::is_regular_file(target))
-                    throw ShaderError(displayName + ":" + std::to_string(lineNumber) +
-                                      ": cannot find include \"" + match[1].str() + "\"");
-                expand(target, match[1].str());
+                expandInclude(match[1].str(), displayName, lineNumber);
                 needsLineDirective = true;
                 continue;
             }
@@ -72,9 +87,17 @@ struct Expander {
 
 ShaderAssembler::ShaderAssembler(std::filesystem::path includeDir) : includeDir_(std::move(includeDir)) {}
 
+void ShaderAssembler::replaceWithFile(const std::string& include, const std::string& file) {
+    replacements_[include] = Replacement{false, file};
+}
+
+void ShaderAssembler::replaceWithText(const std::string& include, const std::string& text) {
+    replacements_[include] = Replacement{true, text};
+}
+
 AssembledShader ShaderAssembler::assemble(const std::filesystem::path& entry) const {
     AssembledShader shader;
-    Expander expander{includeDir_, shader, {}};
+    Expander expander{includeDir_, replacements_, shader, {}};
     std::filesystem::path path = entry.is_absolute() ? entry : includeDir_ / entry;
     expander.expand(path, entry.is_absolute() ? entry.string() : entry.generic_string());
     return shader;

@@ -4,6 +4,7 @@
 // file and line it came from (GLSL #line takes a source-string number, not a name).
 
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,8 +35,19 @@ public:
 
     const std::filesystem::path& includeDir() const { return includeDir_; }
 
+    // What specialization uses: `#include "include"` reads `file` from the include directory
+    // instead, or the generated `text` (shown in messages as "include (generated)").
+    void replaceWithFile(const std::string& include, const std::string& file);
+    void replaceWithText(const std::string& include, const std::string& text);
+
+    struct Replacement {
+        bool isGenerated;
+        std::string text; // a file name, or the generated source
+    };
+
 private:
     std::filesystem::path includeDir_;
+    std::map<std::string, Replacement> replacements_;
 };
 
 } // namespace ptview

@@ -1,4 +1,4 @@
-// The four integrators, chosen at run time by uIntegrator (no recompilation):
+// The four integrators, chosen by kIntegrator (specialization.glsl: a constant per program):
 //
 //   naive   BSDF sampling only; emission counts when a path happens to hit it.
 //   direct  emission seen directly, plus one bounce of light sampling (next-event estimation)
@@ -12,13 +12,14 @@
 //
 // uMaxDepth bounds the number of scattering events of every path, for all four.
 #include "frame_uniforms.glsl"
+#include "specialization.glsl"
 #include "sampler.glsl"
 #include "intersect.glsl"
 #include "bsdf.glsl"
 #include "shading_frame.glsl"
 #include "emission.glsl"
 #include "lights.glsl"
-#include "environment_map.glsl"
+#include "environment.glsl"
 
 const uint kIntegratorNaive = 0u;
 const uint kIntegratorDirect = 1u;
@@ -71,10 +72,10 @@ float emissionWeight(int light, vec3 previousPos, vec3 wi, float hitDistance, ve
 }
 
 vec3 estimateRadiance(Ray ray, Sampler sampler) {
-    bool lightSampling = uIntegrator != kIntegratorNaive;
-    bool mis = uIntegrator == kIntegratorMis || uIntegrator == kIntegratorFull;
+    bool lightSampling = kIntegrator != kIntegratorNaive;
+    bool mis = kIntegrator == kIntegratorMis || kIntegrator == kIntegratorFull;
     // Direct and DirectMIS stop after the first surface's direct lighting.
-    int lastBounce = uIntegrator == kIntegratorFull || uIntegrator == kIntegratorNaive ? uMaxDepth : min(uMaxDepth, 1);
+    int lastBounce = kIntegrator == kIntegratorFull || kIntegrator == kIntegratorNaive ? uMaxDepth : min(uMaxDepth, 1);
 
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
@@ -113,7 +114,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
 
         // ---- Next-event estimation --------------------------------------------------------------
         if (lightSampling) radiance += throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis);
-        if (uIntegrator == kIntegratorDirect) break;
+        if (kIntegrator == kIntegratorDirect) break;
 
         // ---- BSDF sampling -----------------------------------------------------------------------
         BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
@@ -129,7 +130,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
 
         // ---- Russian roulette: survive with the throughput's largest component ------------------
-        if (uIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
+        if (kIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
             float survival = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
             if (samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival) break;
             throughput /= survival; // unbiased: no clamp on 1/survival

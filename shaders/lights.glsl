@@ -15,7 +15,7 @@
 #include "emission.glsl"
 #include "warps.glsl"
 #include "shading_frame.glsl"
-#include "environment_map.glsl"
+#include "environment.glsl"
 
 const uint kLightQuad = 0u;
 const uint kLightSphere = 1u;

@@ -1,15 +1,8 @@
 #version 410 core
-// One sample per pixel per pass: trace a camera path, add its radiance to the accumulation.
-#include "frame_uniforms.glsl"
-#include "constants.glsl"
-#include "sampler.glsl"
-#include "camera.glsl"
-#include "integrator.glsl"
+// Fragment entry: a full-screen triangle, one fragment per pixel, one sample per pass.
 #include "accumulate.glsl"
+#include "pathtrace_sample.glsl"
 
 void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    Sampler sampler = createSampler(uvec2(pixel), uFrameIndex, uSeed, uSamplerMode, uSampleBudget);
-    vec2 filmPos = vec2(pixel) + samplerGet2D(sampler, kDimensionCamera); // box filter one pixel wide
-    accumulateSample(pixel, estimateRadiance(generateCameraRay(filmPos), sampler));
+    traceSample(ivec2(gl_FragCoord.xy));
 }

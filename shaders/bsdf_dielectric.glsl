@@ -1,13 +1,7 @@
-// Perfectly smooth models: mirror, specular transmission and glass. All delta: f and pdf are 0
-// for any given direction; only sampling finds their one or two directions.
+// Smooth dielectrics: specular transmission and glass. Both delta: f and pdf are 0 for any given
+// direction; only sampling finds their one or two directions.
 #include "bsdf_common.glsl"
 #include "fresnel.glsl"
-
-// Perfect mirror, no Fresnel: a constant reflectance on either side.
-BsdfSample sampleMirror(vec3 reflectance, vec3 woLocal) {
-    if (woLocal.z == 0.0) return failedBsdfSample();
-    return BsdfSample(reflectLocal(woLocal), reflectance, 1.0, true);
-}
 
 // Always refracts (no Fresnel reflection). Under total internal reflection nothing is
 // transmitted and the sample fails.

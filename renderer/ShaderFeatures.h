@@ -1,0 +1,49 @@
+#pragma once
+// Simulate only what the scene calls for: the features a scene uses (material models, lights,
+// environment map, meshes) and the GLSL specialization that compiles in those and nothing else.
+// Whole functions are chosen: the BSDF dispatch is generated with a case for each model used and
+// only those models' files, and the environment and mesh queries come from a full or an empty
+// variant of the same functions. The integrator and sampler become constants of the program.
+
+#include "Integrator.h"
+#include "SamplerMode.h"
+#include "Scene.h"
+#include "ShaderAssembler.h"
+
+#include <cstdint>
+#include <string>
+
+namespace ptview {
+
+struct ShaderFeatures {
+    std::uint32_t materialModels = 0; // bit (1 << MaterialType) for each model a shape uses
+    bool areaLights = false;          // emitting surfaces (shapes or mesh triangles)
+    bool pointLights = false;
+    bool spotLights = false;
+    bool environmentMap = false;      // else the constant colour
+    bool meshes = false;
+
+    static ShaderFeatures all(); // the uber-shader: every model, map and meshes
+
+    bool usesModel(MaterialType type) const { return (materialModels >> static_cast<int>(type)) & 1u; }
+    bool transmission() const;
+    // Whether every feature of `other` is compiled into a program for these features.
+    bool covers(const ShaderFeatures& other) const;
+    bool operator==(const ShaderFeatures& other) const;
+    bool operator!=(const ShaderFeatures& other) const { return !(*this == other); }
+    bool operator<(const ShaderFeatures& other) const; // for use as a cache key
+
+    // One line a feature: "materials: diffuse emitter", "lights: area point", ...
+    std::string describe() const;
+};
+
+ShaderFeatures sceneFeatures(const Scene& scene);
+
+// Makes `assembler` build the path-tracing program for these features, integrator and sampler:
+// generated bsdf.glsl and specialization.glsl, and the environment and mesh variants.
+void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
+                       SamplerMode sampler);
+// The BSDF dispatch alone (probes that run BSDFs without a scene use every model).
+void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features);
+
+} // namespace ptview
