@@ -56,6 +56,16 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
         ->default_str(toneMapperName(display.toneMapper));
 }
 
+void addProgramOptions(CLI::App& app, ProgramOptions& program) {
+    app.add_flag("--all-features", program.allFeatures,
+                 "compile every material model, the environment map and mesh code, whatever the scene uses");
+    std::vector<std::pair<std::string, std::optional<Backend>>> backends = {{"auto", std::nullopt}};
+    for (const BackendName& entry : backendNames()) backends.emplace_back(entry.name, entry.backend);
+    addNamedOption(app, "--backend", program.backend, "backend", backends)
+        ->description("backend: auto (the faster on this device, measured), fragment or compute (OpenGL 4.3)")
+        ->default_str("auto");
+}
+
 const CLI::Validator kImageSize(
     [](std::string& text) -> std::string {
         static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
@@ -77,6 +87,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
     app.add_option("scene", viewer.scenePath, "scene JSON to open")->capture_default_str();
     addRenderSettings(app, viewer.settings, viewer.display);
+    addProgramOptions(app, viewer.program);
     app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
@@ -94,12 +105,15 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     std::string sizeText;
     CLI::App* renderCommand = app.add_subcommand("render", "render a scene headless (EGL, no window) to a file");
     renderCommand->add_option("scene", render.scenePath, "scene JSON")->required();
-    renderCommand->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)")->required();
+    renderCommand->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)");
     renderCommand->add_option("--spp", render.samplesPerPixel, "samples per pixel")
         ->check(CLI::Range(1, 1 << 24))->capture_default_str();
     renderCommand->add_option("--size", sizeText, "image size WxH (default: the scene's resolution)")
         ->check(kImageSize);
     addRenderSettings(*renderCommand, render.settings, render.display);
+    addProgramOptions(*renderCommand, render.program);
+    renderCommand->add_option("--dump-shader", render.dumpShaderPath, "write the exact GLSL of the path-tracing program to FILE");
+    renderCommand->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
 
     BenchOptions& bench = out.bench;
     bench.settings.integrator = Integrator::Full;
@@ -111,6 +125,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     benchCommand->add_option("--seconds", bench.seconds, "rendering time per scene, at least")
         ->check(CLI::Range(0.1, 600.0))->capture_default_str();
     addRenderSettings(*benchCommand, bench.settings, unusedDisplay);
+    addProgramOptions(*benchCommand, bench.program);
 
     WarpOptions& warp = out.warp;
     float coneAngleDeg = 60.0f;
@@ -158,6 +173,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     }
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;
+        if (render.outPath.empty() && render.dumpShaderPath.empty() && !render.printFeatures) {
+            std::cerr << "ptview: render: --out is required (see ptview render --help)\n";
+            return kExitBadInput;
+        }
         if (!sizeText.empty()) {
             size_t x = sizeText.find('x');
             render.size = glm::ivec2(std::stoi(sizeText.substr(0, x)), std::stoi(sizeText.substr(x + 1)));

@@ -1,6 +1,7 @@
 #pragma once
 // What the user asked for on the command line.
 
+#include "Backend.h"
 #include "PathTracer.h"
 #include "WarpProbe.h"
 
@@ -16,6 +17,12 @@ namespace ptview {
 constexpr int kExitRuntimeError = 1;
 constexpr int kExitBadInput = 2;
 
+// How the path-tracing program is built: shared by the viewer, `render` and `bench`.
+struct ProgramOptions {
+    bool allFeatures = false;       // --all-features: the uber-shader
+    std::optional<Backend> backend; // --backend; nullopt ("auto"): measured per device
+};
+
 struct RenderOptions {
     std::string scenePath;
     std::string outPath;            // .png (tone mapped, 8-bit sRGB-like gamma 2.2) or .pfm (linear)
@@ -23,12 +30,16 @@ struct RenderOptions {
     std::optional<glm::ivec2> size; // default: the scene camera's resolution
     RenderSettings settings;
     DisplaySettings display;
+    ProgramOptions program;
+    std::string dumpShaderPath; // --dump-shader: the exact GLSL compiled
+    bool printFeatures = false; // --print-features
 };
 
 struct ViewerOptions {
     std::string scenePath;
     RenderSettings settings;
     DisplaySettings display;
+    ProgramOptions program;
     int frames = 0;              // > 0: render this many frames, save the screenshot, exit
     std::string screenshotPath;
     bool showWarp = false;       // open in the warp visualizer
@@ -41,6 +52,7 @@ struct BenchOptions {
     std::vector<std::string> scenePaths; // default: the mesh scenes and the empty Cornell box
     std::optional<glm::ivec2> size;      // default: each scene's resolution
     RenderSettings settings;             // full integrator, depth 8 unless told otherwise
+    ProgramOptions program;
     double seconds = 3.0;                // of rendering per scene, at least
 };
 

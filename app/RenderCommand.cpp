@@ -64,9 +64,14 @@ private:
 
 int runRenderCommand(const RenderOptions& options) {
     // Everything the user typed is checked before any GPU work, and no file is written on error.
-    std::optional<std::string> extension = checkOutputPath(options.outPath, {".png", ".pfm"});
-    if (!extension) return kExitBadInput;
-    OutputFormat format = *extension == ".png" ? OutputFormat::Png : OutputFormat::Pfm;
+    std::optional<std::string> extension;
+    if (!options.outPath.empty()) {
+        extension = checkOutputPath(options.outPath, {".png", ".pfm"});
+        if (!extension) return kExitBadInput;
+    }
+    if (!options.dumpShaderPath.empty() && !checkOutputPath(options.dumpShaderPath, {".glsl", ".comp", ".frag", ".txt"}))
+        return kExitBadInput;
+    OutputFormat format = extension == ".png" ? OutputFormat::Png : OutputFormat::Pfm;
 
     std::optional<SceneInput> input = loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;
@@ -75,12 +80,20 @@ int runRenderCommand(const RenderOptions& options) {
 
     try {
         HeadlessContext context;
-        PathTracer tracer;
+        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{options.program.allFeatures, options.program.backend});
         tracer.setScene(scene, input->environmentMapOrNull());
-        tracer.setImageSize(size);
+        if (options.printFeatures) std::printf("%s", tracer.features().describe().c_str());
         RenderSettings settings = options.settings;
         settings.sampleBudget = static_cast<std::uint32_t>(options.samplesPerPixel); // fully stratified at the end
         tracer.setSettings(settings);
+        if (!options.dumpShaderPath.empty()) {
+            writeFileAtomically(options.dumpShaderPath, tracer.pathTraceSource().source);
+            std::fprintf(stderr, "ptview: wrote %s (the %s program's GLSL)\n", options.dumpShaderPath.c_str(),
+                         backendName(tracer.backend()));
+        }
+        if (options.outPath.empty()) return 0; // only the features or the shader were asked for
+        tracer.setImageSize(size);
+        if (!options.program.backend) tracer.chooseBackend();
 
         // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample.
         ProgressReporter progress(options.scenePath, options.samplesPerPixel);
@@ -102,10 +115,10 @@ int runRenderCommand(const RenderOptions& options) {
             writePfm(options.outPath, tracer.readMean());
 
         double samples = static_cast<double>(size.x) * size.y * options.samplesPerPixel;
-        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s) on %s\n",
+        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s, %s backend) on %s\n",
                      options.outPath.c_str(), size.x, size.y, options.samplesPerPixel, options.settings.maxDepth,
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
-                     seconds, samples / seconds * 1e-6, context.description().c_str());
+                     seconds, samples / seconds * 1e-6, backendName(tracer.backend()), context.description().c_str());
     } catch (const std::invalid_argument& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;

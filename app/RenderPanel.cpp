@@ -74,6 +74,19 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     if (ImGui::Button(model.paused ? "Resume" : "Pause")) model.paused = !model.paused;
     ImGui::SameLine();
     if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;
+    // The backend, where there is a choice; the program is specialized to the scene either way.
+    ImGui::BeginDisabled(!PathTracer::computeSupported());
+    if (ImGui::BeginCombo("backend", backendName(model.backend))) {
+        for (const BackendName& entry : backendNames())
+            if (ImGui::Selectable(entry.name, entry.backend == model.backend)) model.backend = entry.backend;
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
+    itemTooltip("fragment: a full-screen triangle (OpenGL 4.1); compute: a dispatch (OpenGL 4.3), which uses all of a\n"
+                "data-centre GPU's cores. At start the viewer measured both on this scene and took the faster.");
+    const PathTracer& tracer = session.tracer(ViewerSession::Side::Left);
+    ImGui::TextDisabled("%d programs compiled (hover: this scene's features)", tracer.programsCompiled());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tracer.features().describe().c_str());
     ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 2.0f, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 

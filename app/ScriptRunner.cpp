@@ -51,6 +51,7 @@ void printStatus(const ViewerSession& session) {
                        std::to_string(session.renderSize().x) + "x" + std::to_string(session.renderSize().y) +
                        " integrator=" + integratorName(settings.integrator) + " sampler=" +
                        samplerModeName(settings.sampler) + " depth=" + std::to_string(settings.maxDepth) +
+                       " backend=" + backendName(session.tracer(ViewerSession::Side::Left).backend()) +
                        " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
                        " compare=" +
                        (session.comparing() ? "on" : "off");

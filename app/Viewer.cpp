@@ -440,7 +440,8 @@ int runViewer(const ViewerOptions& options) {
 
     int exitCode = 0;
     try {
-        ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir);
+        ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
+                              PathTracerOptions{options.program.allFeatures, options.program.backend});
         ViewerWindow viewer(window, session, options);
         exitCode = viewer.run(script);
     } catch (const std::exception& e) {

@@ -49,16 +49,18 @@ std::string screenshotStem(const Scene& scene) {
 } // namespace
 
 ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, const DisplaySettings& display,
-                             std::filesystem::path shaderDir)
-    : shaderDir_(std::move(shaderDir)) {
+                             std::filesystem::path shaderDir, PathTracerOptions program)
+    : shaderDir_(std::move(shaderDir)), programOptions_(program) {
     model_.environmentMap = shareMap(input.environmentMap);
     model_.scene = std::move(input.scene);
     model_.fileScene = model_.scene;
     model_.settings = settings;
     model_.display = display;
     model_.compare.right = settings;
-    left_.tracer = std::make_unique<PathTracer>(shaderDir_);
+    left_.tracer = std::make_unique<PathTracer>(shaderDir_, programOptions_);
     left_.tracer->setScene(model_.scene, model_.environmentMap.get());
+    left_.tracer->setSettings(settings);
+    model_.backend = program.backend ? *program.backend : left_.tracer->chooseBackend();
     watchFiles();
 }
 
@@ -252,8 +254,9 @@ void ViewerSession::syncView(View& view, const RenderSettings& settings, unsigne
         tracer.setImageSize(renderSize_);
         view.cost.forget();
     }
-    if (tracer.settings() != settings) view.cost.forget(); // another integrator costs differently
+    if (tracer.settings() != settings || tracer.backend() != model_.backend) view.cost.forget(); // costs differ
     tracer.setSettings(settings);
+    tracer.setBackend(model_.backend);
     trackRestart(view);
 }
 
@@ -271,7 +274,7 @@ void ViewerSession::update() {
         if (compare.right == model_.settings)
             compare.right.integrator = model_.settings.integrator == Integrator::Mis ? Integrator::Naive : Integrator::Mis;
         right_ = std::make_unique<View>();
-        right_->tracer = std::make_unique<PathTracer>(shaderDir_);
+        right_->tracer = std::make_unique<PathTracer>(shaderDir_, PathTracerOptions{programOptions_.allFeatures, model_.backend});
         right_->tracer->setScene(model_.scene, model_.environmentMap.get());
         right_->tracer->setCamera(model_.scene.camera);
     }

@@ -37,9 +37,10 @@ public:
         std::vector<std::pair<float, float>> errorHistory;
     };
 
-    // Compiles the programs from shaderDir (throws ShaderError).
+    // Compiles the programs from shaderDir (throws ShaderError). Without a backend in `program`,
+    // the tracer measures which is faster on this device (PathTracer::chooseBackend).
     ViewerSession(SceneInput input, const RenderSettings& settings, const DisplaySettings& display,
-                  std::filesystem::path shaderDir);
+                  std::filesystem::path shaderDir, PathTracerOptions program = {});
     ~ViewerSession();
 
     ViewerModel& model() { return model_; }
@@ -73,6 +74,7 @@ public:
     void display() const;               // draws the view(s) into the image area
 
     bool comparing() const { return model_.compare.enabled && right_ != nullptr; }
+    const PathTracer& tracer(Side side) const { return *view(side).tracer; }
     ViewStats stats(Side side) const;
     const RenderSettings& settings(Side side) const;
     glm::ivec2 renderSize() const { return renderSize_; }
@@ -108,6 +110,7 @@ private:
 
     ViewerModel model_;
     std::filesystem::path shaderDir_;
+    PathTracerOptions programOptions_;
     View left_;
     std::unique_ptr<View> right_; // created the first time compare mode is turned on
     PixelRect imageArea_;
