@@ -1,0 +1,216 @@
+// Simulate only what the scene calls for: each scene's program holds the code of its features and
+// no other, specialized and uber programs render the same image, the fragment and compute
+// backends agree, and the program cache compiles each combination once.
+#include "GlTestContext.h"
+#include "PathTracer.h"
+#include "RunCommand.h"
+#include "ShaderFeatures.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+Scene shippedScene(const std::string& name) {
+    return loadScene(std::string(PTVIEW_ASSETS_DIR) + "/scenes/" + name + ".json");
+}
+
+std::string programSource(const Scene& scene, PathTracerOptions options = {}) {
+    testing::glContext();
+    PathTracer tracer(PTVIEW_SHADER_DIR, options);
+    tracer.setScene(scene);
+    return tracer.pathTraceSource().source;
+}
+
+bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+// Names that only each feature's code defines.
+const char* const kDielectricCode = "BsdfSample sampleGlass(";
+const char* const kMicrofacetCode = "float ggxD(";
+const char* const kEnvironmentMapCode = "float environmentMapPdf(";
+const char* const kBvhCode = "bool traverseInstance(";
+
+TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode) {
+    Scene cornell = shippedScene("cornell");
+    ShaderFeatures features = sceneFeatures(cornell);
+    EXPECT_TRUE(features.usesModel(MaterialType::Diffuse));
+    EXPECT_TRUE(features.usesModel(MaterialType::Emitter));
+    EXPECT_FALSE(features.usesModel(MaterialType::Glass));
+    EXPECT_FALSE(features.environmentMap);
+    EXPECT_FALSE(features.meshes);
+    std::string source = programSource(cornell);
+    EXPECT_TRUE(contains(source, "vec3 lambertianReflectionF(")) << "the diffuse model is there";
+    for (const char* absent : {kDielectricCode, "float fresnelDielectric(", kMicrofacetCode, kEnvironmentMapCode,
+                               "uEnvironmentMap", kBvhCode, "uMeshNodes"})
+        EXPECT_FALSE(contains(source, absent)) << absent;
+
+    // The uber-shader has all of it, for the same scene.
+    std::string uber = programSource(cornell, PathTracerOptions{true, std::nullopt});
+    for (const char* present : {kDielectricCode, kMicrofacetCode, kEnvironmentMapCode, kBvhCode})
+        EXPECT_TRUE(contains(uber, present)) << present;
+}
+
+TEST(Specialization, EachFeatureBringsItsCode) {
+    std::string materials = programSource(shippedScene("materials")); // glass, metal, plastic
+    EXPECT_TRUE(contains(materials, kDielectricCode));
+    EXPECT_TRUE(contains(materials, kMicrofacetCode));
+    EXPECT_FALSE(contains(materials, kEnvironmentMapCode));
+    EXPECT_FALSE(contains(materials, kBvhCode));
+
+    std::string hdr = programSource(shippedScene("hdr")); // an environment map
+    EXPECT_TRUE(contains(hdr, kEnvironmentMapCode));
+    EXPECT_FALSE(contains(hdr, kBvhCode));
+
+    std::string meshes = programSource(shippedScene("meshes")); // meshes, and a map
+    EXPECT_TRUE(contains(meshes, kBvhCode));
+    EXPECT_TRUE(contains(meshes, kEnvironmentMapCode));
+
+    // Mirror alone does not pull in the dielectrics it once shared a file with.
+    Scene mirrorOnly = shippedScene("cornell");
+    mirrorOnly.materials[0].type = MaterialType::Mirror;
+    std::string mirror = programSource(mirrorOnly);
+    EXPECT_TRUE(contains(mirror, "BsdfSample sampleMirror("));
+    EXPECT_FALSE(contains(mirror, kDielectricCode));
+}
+
+struct Render {
+    PixelStatistics statistics;
+    int programsCompiled;
+};
+
+Render render(const Scene& scene, PathTracerOptions options, Integrator integrator, int samples, glm::ivec2 size = {32, 32}) {
+    testing::glContext();
+    PathTracer tracer(PTVIEW_SHADER_DIR, options);
+    tracer.setScene(scene);
+    tracer.setImageSize(size);
+    RenderSettings settings;
+    settings.integrator = integrator;
+    settings.maxDepth = 4;
+    settings.seed = 9;
+    tracer.setSettings(settings);
+    for (int i = 0; i < samples; ++i) tracer.renderSample();
+    return Render{tracer.readStatistics(), tracer.programsCompiled()};
+}
+
+// Same seed, same random numbers: only the compiler's freedom with different code can move a
+// pixel, by float rounding. The image means must agree within their noise (5 sigma) and each
+// pixel within a small relative difference.
+void expectSameImage(const PixelStatistics& a, const PixelStatistics& b, float pixelTolerance) {
+    ASSERT_EQ(a.mean.rgb.size(), b.mean.rgb.size());
+    double sumA = 0.0, sumB = 0.0, variance = 0.0;
+    int farPixels = 0;
+    for (std::size_t i = 0; i < a.mean.rgb.size(); ++i) {
+        sumA += a.mean.rgb[i];
+        sumB += b.mean.rgb[i];
+        variance += a.varianceOfMean.rgb[i] + b.varianceOfMean.rgb[i];
+        farPixels += std::abs(a.mean.rgb[i] - b.mean.rgb[i]) > pixelTolerance * (1.0f + std::abs(a.mean.rgb[i]));
+    }
+    double n = double(a.mean.rgb.size());
+    EXPECT_LT(std::abs(sumA - sumB) / n, 5.0 * std::sqrt(variance) / n);
+    EXPECT_GT(sumA, 0.0);
+    // A path whose float rounding tips one comparison goes elsewhere: rare, never systematic.
+    EXPECT_LE(farPixels, int(n / 200)) << farPixels << " of " << n;
+}
+
+TEST(Specialization, SpecializedAndUberProgramsRenderTheSameImage) {
+    for (const char* name : {"cornell", "materials", "meshes"}) {
+        SCOPED_TRACE(name);
+        Scene scene = shippedScene(name);
+        Render specialized = render(scene, PathTracerOptions{false, Backend::Fragment}, Integrator::Full, 16);
+        Render uber = render(scene, PathTracerOptions{true, Backend::Fragment}, Integrator::Full, 16);
+        expectSameImage(specialized.statistics, uber.statistics, 1e-3f);
+    }
+}
+
+TEST(Specialization, FragmentAndComputeBackendsAgree) {
+    if (!PathTracer::computeSupported()) GTEST_SKIP() << "this context has no OpenGL 4.3";
+    for (const char* name : {"cornell", "hdr", "cornell_bunny"}) {
+        SCOPED_TRACE(name);
+        Scene scene = shippedScene(name);
+        // 37 x 23: not a multiple of the compute shader's 8 x 8 groups, so the edges are covered.
+        Render fragment = render(scene, PathTracerOptions{false, Backend::Fragment}, Integrator::Mis, 8, {37, 23});
+        Render compute = render(scene, PathTracerOptions{false, Backend::Compute}, Integrator::Mis, 8, {37, 23});
+        expectSameImage(fragment.statistics, compute.statistics, 1e-4f);
+    }
+}
+
+TEST(Specialization, ComputeTilesAccumulateLikeWholePasses) {
+    if (!PathTracer::computeSupported()) GTEST_SKIP() << "this context has no OpenGL 4.3";
+    testing::glContext();
+    Scene scene = shippedScene("cornell");
+    PathTracer whole(PTVIEW_SHADER_DIR, PathTracerOptions{false, Backend::Compute});
+    PathTracer tiled(PTVIEW_SHADER_DIR, PathTracerOptions{false, Backend::Compute});
+    for (PathTracer* tracer : {&whole, &tiled}) {
+        tracer->setScene(scene);
+        tracer->setImageSize({24, 20});
+    }
+    for (int i = 0; i < 2; ++i) whole.renderSample();
+    int passes = 0;
+    while (passes < 2) passes += tiled.renderRows(3) ? 1 : 0;
+    ImageRgbF a = whole.readMean(), b = tiled.readMean();
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) ASSERT_EQ(a.rgb[i], b.rgb[i]) << "at float " << i;
+}
+
+TEST(Specialization, ProgramCacheCompilesEachCombinationOnce) {
+    testing::glContext();
+    Scene scene = shippedScene("cornell");
+    PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{false, Backend::Fragment});
+    tracer.setScene(scene);
+    tracer.setImageSize({8, 8});
+    RenderSettings settings;
+    auto renderWith = [&](Integrator integrator, SamplerMode sampler) {
+        settings.integrator = integrator;
+        settings.sampler = sampler;
+        tracer.setSettings(settings);
+        tracer.renderSample();
+    };
+    renderWith(Integrator::Naive, SamplerMode::Random);
+    renderWith(Integrator::Mis, SamplerMode::Random);
+    renderWith(Integrator::Mis, SamplerMode::Sobol);
+    EXPECT_EQ(tracer.programsCompiled(), 3);
+    renderWith(Integrator::Naive, SamplerMode::Random); // back and forth: all cached
+    renderWith(Integrator::Mis, SamplerMode::Sobol);
+    EXPECT_EQ(tracer.programsCompiled(), 3);
+
+    // Editing a material within its model compiles nothing...
+    std::vector<Material> materials = scene.materials;
+    materials[0].color = glm::vec3(0.2f);
+    tracer.setMaterials(materials);
+    tracer.renderSample();
+    EXPECT_EQ(tracer.programsCompiled(), 3);
+    // ...a model the scene did not use compiles once, and keeps the settings.
+    materials[0].type = MaterialType::Glass;
+    tracer.setMaterials(materials);
+    tracer.renderSample();
+    EXPECT_EQ(tracer.programsCompiled(), 4);
+    EXPECT_TRUE(tracer.features().usesModel(MaterialType::Glass));
+    EXPECT_EQ(tracer.settings().sampler, SamplerMode::Sobol);
+    EXPECT_EQ(tracer.settings().integrator, Integrator::Mis);
+    EXPECT_EQ(tracer.sampleCount(), 1);
+}
+
+TEST(Specialization, CommandLineDumpsTheShaderAndPrintsTheFeatures) {
+    std::filesystem::path dump = std::filesystem::temp_directory_path() / ("ptview_dump_" + std::to_string(::getpid()) + ".glsl");
+    testing::CommandResult result = testing::runCommand(std::string(PTVIEW_BINARY) + " render " +
+                                                        testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/hdr.json") +
+                                                        " --print-features --dump-shader " + testing::shellQuoted(dump.string()));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(contains(result.output, "environment: map")) << result.output;
+    EXPECT_TRUE(contains(result.output, "materials: diffuse glass metal plastic\n")) << result.output;
+    EXPECT_TRUE(contains(result.output, "meshes: no\n")) << result.output;
+    std::ifstream in(dump);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_TRUE(contains(text.str(), "#version 410 core"));
+    EXPECT_TRUE(contains(text.str(), kEnvironmentMapCode));
+    EXPECT_FALSE(contains(text.str(), kBvhCode));
+    std::filesystem::remove(dump);
+}
+
+} // namespace
+} // namespace ptview
