@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <vector>
 
 namespace ptview {
 namespace {
@@ -20,6 +21,8 @@ double secondsSince(Clock::time_point start) {
 }
 
 struct BenchResult {
+    Backend backend = Backend::Fragment;
+    double compileSeconds = 0.0;
     double loadSeconds = 0.0;
     double buildSeconds = 0.0;
     std::size_t triangles = 0;
@@ -32,14 +35,14 @@ struct BenchResult {
 
 // Renders whole passes until `seconds` have gone by, timing with glFinish so the GPU's work is
 // what is measured; one untimed pass first, so shader compilation and first-use costs stay out.
-BenchResult bench(const std::string& scenePath, const BenchOptions& options) {
+BenchResult bench(const std::string& scenePath, const BenchOptions& options, const ProgramOptions& program) {
     BenchResult result;
     Clock::time_point loadStart = Clock::now();
     std::optional<SceneInput> input = loadSceneInput(scenePath);
     if (!input) throw std::invalid_argument(scenePath + ": cannot be read (see above)");
     result.loadSeconds = secondsSince(loadStart);
 
-    PathTracer tracer;
+    PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{program.allFeatures, program.backend});
     tracer.setScene(input->scene, input->environmentMapOrNull());
     const GpuMeshes& meshes = tracer.gpuScene().meshes();
     result.buildSeconds = meshes.lastBuildSeconds();
@@ -50,6 +53,17 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options) {
     tracer.setImageSize(size);
     RenderSettings settings = options.settings;
     tracer.setSettings(settings);
+    if (!program.backend) tracer.chooseBackend();
+    result.backend = tracer.backend();
+    // Assembling, compiling and linking the program (a driver that defers work to the first draw
+    // shows it in the untimed pass below instead).
+    PathTracer timed(PTVIEW_SHADER_DIR, PathTracerOptions{program.allFeatures, result.backend});
+    timed.setScene(input->scene, input->environmentMapOrNull());
+    timed.setSettings(settings);
+    Clock::time_point compileStart = Clock::now();
+    timed.pathTraceSource();
+    glFinish();
+    result.compileSeconds = secondsSince(compileStart);
     tracer.renderSample();
     glFinish();
     tracer.restart();
@@ -72,16 +86,26 @@ int runBenchCommand(const BenchOptions& options) {
         std::printf("ptview bench on %s; %s integrator, depth %d, %s sampler, at least %.1f s per scene\n\n",
                     context.description().c_str(), integratorName(options.settings.integrator),
                     options.settings.maxDepth, samplerModeName(options.settings.sampler), options.seconds);
-        std::printf("| scene | triangles | load s | BVH build s | BVH + triangles MB | size | spp | M samples/s |\n");
-        std::printf("|---|---:|---:|---:|---:|---|---:|---:|\n");
+        std::printf("| scene | program | backend | compile s | triangles | load s | BVH build s | BVH + triangles MB | size | spp | M samples/s |\n");
+        std::printf("|---|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
         std::fflush(stdout);
+        std::vector<ProgramOptions> programs = {options.program};
+        if (options.variants) {
+            programs.clear();
+            for (Backend backend : {Backend::Fragment, Backend::Compute}) {
+                if (backend == Backend::Compute && !PathTracer::computeSupported()) continue;
+                for (bool allFeatures : {false, true}) programs.push_back(ProgramOptions{allFeatures, backend});
+            }
+        }
         for (const std::string& scene : options.scenePaths) {
-            BenchResult r = bench(scene, options);
-            std::printf("| %s | %zu | %.3f | %.3f | %.1f | %dx%d | %d | %.2f |\n",
-                        std::filesystem::path(scene).stem().string().c_str(), r.triangles, r.loadSeconds,
-                        r.buildSeconds, double(r.meshBytes) / (1024.0 * 1024.0), r.size.x, r.size.y, r.samples,
-                        r.samplesPerSecond * 1e-6);
-            std::fflush(stdout);
+            for (const ProgramOptions& program : programs) {
+                BenchResult r = bench(scene, options, program);
+                std::printf("| %s | %s | %s | %.3f | %zu | %.3f | %.3f | %.1f | %dx%d | %d | %.2f |\n",
+                            std::filesystem::path(scene).stem().string().c_str(), program.allFeatures ? "uber" : "specialized",
+                            backendName(r.backend), r.compileSeconds, r.triangles, r.loadSeconds, r.buildSeconds,
+                            double(r.meshBytes) / (1024.0 * 1024.0), r.size.x, r.size.y, r.samples, r.samplesPerSecond * 1e-6);
+                std::fflush(stdout);
+            }
         }
     } catch (const std::invalid_argument& e) {
         std::cerr << "ptview: " << e.what() << "\n";

@@ -126,6 +126,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::Range(0.1, 600.0))->capture_default_str();
     addRenderSettings(*benchCommand, bench.settings, unusedDisplay);
     addProgramOptions(*benchCommand, bench.program);
+    benchCommand->add_flag("--variants", bench.variants,
+                           "run each scene with every program: specialized and uber, fragment and compute");
 
     WarpOptions& warp = out.warp;
     float coneAngleDeg = 60.0f;

@@ -53,6 +53,7 @@ struct BenchOptions {
     std::optional<glm::ivec2> size;      // default: each scene's resolution
     RenderSettings settings;             // full integrator, depth 8 unless told otherwise
     ProgramOptions program;
+    bool variants = false;               // every (specialized, uber) x (fragment, compute) program
     double seconds = 3.0;                // of rendering per scene, at least
 };
 
