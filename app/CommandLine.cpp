@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "ConvergeCommand.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -129,6 +131,29 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     benchCommand->add_flag("--variants", bench.variants,
                            "run each scene with every program: specialized and uber, fragment and compute");
 
+    ConvergeOptions& converge = out.converge;
+    std::string convergeSizeText, configsText = "naive/random/8,mis/random/8,full/random/8,full/sobol/8";
+    std::string convergeOut;
+    CLI::App* convergeCommand =
+        app.add_subcommand("converge", "measure error against time for integrators, samplers and depths (headless)");
+    convergeCommand->add_option("scene", converge.scenePath, "scene JSON")->required();
+    convergeCommand->add_option("--out,-o", convergeOut, "output directory (convergence.csv, convergence.png, summary.md)")
+        ->required();
+    convergeCommand->add_option("--reference", converge.referencePath, "reference image (.pfm, linear); its size is used")
+        ->check(CLI::ExistingFile);
+    convergeCommand->add_option("--reference-spp", converge.referenceSpp,
+                                "samples per pixel of the reference ptview renders when none is given (another seed)")
+        ->check(CLI::Range(1, 1 << 24))->capture_default_str();
+    convergeCommand->add_option("--configs", configsText, "INTEGRATOR/SAMPLER/DEPTH, comma-separated")->capture_default_str();
+    convergeCommand->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
+        ->check(CLI::Range(0.01, 86400.0))->capture_default_str();
+    convergeCommand->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")
+        ->check(CLI::Range(1, 1 << 24))->capture_default_str();
+    convergeCommand->add_option("--size", convergeSizeText, "image size WxH (default: the scene's resolution)")->check(kImageSize);
+    convergeCommand->add_option("--seed", converge.seed, "seed of the runs (the reference uses another)")->capture_default_str();
+    ProgramOptions convergeProgram;
+    addProgramOptions(*convergeCommand, convergeProgram);
+
     WarpOptions& warp = out.warp;
     float coneAngleDeg = 60.0f;
     CLI::App* warpCommand = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
@@ -162,6 +187,22 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     if (*warpCommand) {
         out.mode = CommandLine::Mode::Warp;
         warp.request.cosThetaMax = std::cos(coneAngleDeg * 3.14159265358979f / 180.0f);
+    }
+    if (*convergeCommand) {
+        out.mode = CommandLine::Mode::Converge;
+        std::string error;
+        std::optional<std::vector<ConvergeConfig>> configs = parseConvergeConfigs(configsText, error);
+        if (!configs) {
+            std::cerr << "ptview: converge: --configs: " << error << "\n";
+            return kExitBadInput;
+        }
+        converge.configs = *configs;
+        converge.outDir = convergeOut;
+        converge.backend = convergeProgram.backend;
+        if (!convergeSizeText.empty()) {
+            size_t x = convergeSizeText.find('x');
+            converge.size = glm::ivec2(std::stoi(convergeSizeText.substr(0, x)), std::stoi(convergeSizeText.substr(x + 1)));
+        }
     }
     if (*benchCommand) {
         out.mode = CommandLine::Mode::Bench;

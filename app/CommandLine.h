@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,6 +58,25 @@ struct BenchOptions {
     double seconds = 3.0;                // of rendering per scene, at least
 };
 
+struct ConvergeConfig {
+    Integrator integrator = Integrator::Full;
+    SamplerMode sampler = SamplerMode::Random;
+    int maxDepth = 8;
+};
+
+struct ConvergeOptions {
+    std::string scenePath;
+    std::filesystem::path outDir;
+    std::string referencePath;  // a PFM; empty: render one (--reference-spp, another seed)
+    int referenceSpp = 1024;
+    std::vector<ConvergeConfig> configs;
+    double timeBudgetSeconds = 10.0; // per configuration
+    int maxSpp = 1 << 16;
+    std::optional<glm::ivec2> size;
+    std::uint32_t seed = 1;
+    std::optional<Backend> backend;
+};
+
 struct WarpOptions {
     WarpRequest request;   // count, warp, sampler, seed, cone angle
     std::string outPath;   // .png
@@ -64,7 +84,8 @@ struct WarpOptions {
 };
 
 struct CommandLine {
-    enum class Mode { Viewer, Render, Warp, Bench } mode = Mode::Viewer;
+    enum class Mode { Viewer, Render, Warp, Bench, Converge } mode = Mode::Viewer;
+    ConvergeOptions converge;
     RenderOptions render;
     BenchOptions bench;
     ViewerOptions viewer;

@@ -1,0 +1,291 @@
+#include "ConvergeCommand.h"
+
+#include "ErrorMetrics.h"
+#include "HeadlessContext.h"
+#include "ImageIO.h"
+#include "PathTracer.h"
+#include "SceneInput.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// A reference rendered by ptview must not share its random numbers with the runs it judges, or
+// their errors would be correlated with its own and look smaller than they are.
+constexpr std::uint32_t kReferenceSeedOffset = 0x9E3779B9u;
+
+struct Checkpoint {
+    int spp;
+    double seconds;
+    ErrorMetrics error;
+};
+
+struct ConfigResult {
+    ConvergeConfig config;
+    std::vector<Checkpoint> checkpoints;
+};
+
+std::string configName(const ConvergeConfig& config) {
+    return std::string(integratorName(config.integrator)) + "/" + samplerModeName(config.sampler) + "/" +
+           std::to_string(config.maxDepth);
+}
+
+// Relative MSE the reference itself still carries (its own variance of the mean, relative as in
+// compareToReference): errors below this floor cannot be told apart.
+double referenceNoiseFloor(const PixelStatistics& statistics) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < statistics.mean.rgb.size(); ++i) {
+        double value = statistics.mean.rgb[i];
+        if (!std::isfinite(value) || !std::isfinite(statistics.varianceOfMean.rgb[i])) continue;
+        sum += statistics.varianceOfMean.rgb[i] / (value * value + 1e-2);
+        ++count;
+    }
+    return count ? sum / double(count) : 0.0;
+}
+
+// Progressive render with checkpoints at 1, 2, 4, ... samples per pixel until the budget is spent.
+ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const ConvergeOptions& options,
+                      const ImageRgbF& reference) {
+    ConfigResult result{config, {}};
+    RenderSettings settings;
+    settings.integrator = config.integrator;
+    settings.sampler = config.sampler;
+    settings.maxDepth = config.maxDepth;
+    settings.seed = options.seed;
+    settings.sampleBudget = static_cast<std::uint32_t>(options.maxSpp); // patterns complete at the last checkpoint
+    tracer.setSettings(settings);
+    tracer.restart();
+    tracer.renderSample(); // compiles the program and warms up; not timed, not kept
+    glFinish();
+    tracer.restart();
+    double seconds = 0.0;
+    for (int target = 1; target <= options.maxSpp; target *= 2) {
+        Clock::time_point start = Clock::now();
+        while (tracer.sampleCount() < target) tracer.renderSample();
+        glFinish();
+        seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        result.checkpoints.push_back(Checkpoint{target, seconds, compareToReference(tracer.readMean(), reference)});
+        std::fprintf(stderr, "ptview: %s: %d spp, %.2f s, relMSE %.3g\n", configName(config).c_str(), target, seconds,
+                     result.checkpoints.back().error.relativeMse);
+        if (seconds >= options.timeBudgetSeconds) break;
+    }
+    return result;
+}
+
+// Slope of log(relMSE) against log(spp) over the later half of the checkpoints: -1 for an
+// unbiased estimator far above the reference's noise, near 0 where bias (or that noise) dominates.
+double lateSlope(const std::vector<Checkpoint>& checkpoints) {
+    std::size_t first = checkpoints.size() / 2;
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = first; i < checkpoints.size(); ++i) {
+        if (!(checkpoints[i].error.relativeMse > 0.0)) continue;
+        double x = std::log(double(checkpoints[i].spp)), y = std::log(checkpoints[i].error.relativeMse);
+        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    double denominator = n * sxx - sx * sx;
+    return n >= 2 && denominator > 0 ? (n * sxy - sx * sy) / denominator : 0.0;
+}
+
+// Seconds until relMSE first fell to `target`, interpolated log-log between checkpoints.
+std::optional<double> timeToReach(const std::vector<Checkpoint>& checkpoints, double target) {
+    for (std::size_t i = 0; i < checkpoints.size(); ++i) {
+        if (checkpoints[i].error.relativeMse > target) continue;
+        if (i == 0) return checkpoints[0].seconds;
+        const Checkpoint& a = checkpoints[i - 1];
+        const Checkpoint& b = checkpoints[i];
+        double t = (std::log(target) - std::log(a.error.relativeMse)) /
+                   (std::log(b.error.relativeMse) - std::log(a.error.relativeMse));
+        return std::exp(std::log(a.seconds) + t * (std::log(b.seconds) - std::log(a.seconds)));
+    }
+    return std::nullopt;
+}
+
+std::string number(double value, const char* format = "%.3g") {
+    char text[64];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// Bias shows as an error that stops falling while still well above what the reference can tell.
+bool looksBiased(const ConfigResult& result, double floor) {
+    const Checkpoint& last = result.checkpoints.back();
+    return result.checkpoints.size() >= 4 && lateSlope(result.checkpoints) > -0.5 && last.error.relativeMse > 4.0 * floor;
+}
+
+std::string summary(const std::string& scene, const std::vector<ConfigResult>& results, const std::string& referenceText,
+                    double floor) {
+    std::ostringstream out;
+    out << "# Convergence of " << scene << "\n\n"
+        << "Reference: " << referenceText << "; its own noise floor is relMSE " << number(floor)
+        << " (errors below it cannot be measured). Errors are against that reference: relative MSE = mean of "
+           "(x - ref)^2 / (ref^2 + 0.01); time is GPU time (glFinish after each checkpoint); efficiency = "
+           "1 / (relMSE x seconds) at the last checkpoint, higher is better.\n\n"
+        << "| configuration | spp | seconds | RMSE | relMSE | bias R, G, B | NaN/Inf share | efficiency | "
+           "time to relMSE 0.1 | 0.01 | 0.001 | late slope | verdict |\n"
+        << "|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
+    auto time = [](std::optional<double> seconds) { return seconds ? number(*seconds, "%.3g s") : std::string("not reached"); };
+    const ConfigResult* best = nullptr;
+    double bestEfficiency = 0.0;
+    for (const ConfigResult& result : results) {
+        const Checkpoint& last = result.checkpoints.back();
+        double efficiency = last.error.relativeMse > 0 ? 1.0 / (last.error.relativeMse * last.seconds) : 0.0;
+        bool biased = looksBiased(result, floor);
+        if (!biased && efficiency > bestEfficiency) best = &result, bestEfficiency = efficiency;
+        double slope = lateSlope(result.checkpoints);
+        out << "| " << configName(result.config) << " | " << last.spp << " | " << number(last.seconds) << " | "
+            << number(last.error.rmse) << " | " << number(last.error.relativeMse) << " | "
+            << number(last.error.meanBias.r, "%+.2g") << ", " << number(last.error.meanBias.g, "%+.2g") << ", "
+            << number(last.error.meanBias.b, "%+.2g") << " | " << number(last.error.nonFiniteShare) << " | "
+            << number(efficiency) << " | " << time(timeToReach(result.checkpoints, 0.1)) << " | "
+            << time(timeToReach(result.checkpoints, 0.01)) << " | " << time(timeToReach(result.checkpoints, 0.001))
+            << " | " << number(slope, "%.2f") << " | "
+            << (biased ? "**biased**: the error stops falling at relMSE " + number(last.error.relativeMse)
+                       : slope < -0.75 ? std::string("converging (error ~ 1/spp)") : std::string("converging slowly, or near the floor"))
+            << " |\n";
+    }
+    if (best)
+        out << "\nMost efficient unbiased-looking configuration: **" << configName(best->config)
+            << "**. A slope near -1 means the MSE halves with each doubling of samples; a biased configuration "
+               "(too few bounces, an integrator that leaves out light) levels off however long it runs.\n";
+    return out.str();
+}
+
+std::string pythonForPlots() {
+    // Debian's python has matplotlib; a `python3` earlier on PATH may be another install without it.
+    return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+} // namespace
+
+std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::string& text, std::string& error) {
+    std::vector<ConvergeConfig> configs;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        std::stringstream parts(item);
+        std::string integrator, sampler, depth;
+        std::getline(parts, integrator, '/');
+        std::getline(parts, sampler, '/');
+        std::getline(parts, depth, '/');
+        ConvergeConfig config;
+        bool knownIntegrator = false;
+        for (const IntegratorName& entry : integratorNames())
+            if (integrator == entry.name) config.integrator = entry.integrator, knownIntegrator = true;
+        std::optional<SamplerMode> mode = parseSamplerMode(sampler);
+        char* end = nullptr;
+        long maxDepth = depth.empty() ? -1 : std::strtol(depth.c_str(), &end, 10);
+        if (!knownIntegrator || !mode || depth.empty() || *end != '\0' || maxDepth < 0 || maxDepth > 1024) {
+            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH, e.g. mis/sobol/8";
+            return std::nullopt;
+        }
+        config.sampler = *mode;
+        config.maxDepth = static_cast<int>(maxDepth);
+        configs.push_back(config);
+    }
+    if (configs.empty()) {
+        error = "no configuration given";
+        return std::nullopt;
+    }
+    return configs;
+}
+
+int runConvergeCommand(const ConvergeOptions& options) {
+    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    if (!input) return kExitBadInput;
+    std::optional<ImageRgbF> referenceFile;
+    if (!options.referencePath.empty()) {
+        try {
+            referenceFile = readPfm(options.referencePath);
+        } catch (const std::exception& e) {
+            std::cerr << "ptview: " << e.what() << "\n";
+            return kExitBadInput;
+        }
+    }
+    glm::ivec2 size = referenceFile ? glm::ivec2(referenceFile->width, referenceFile->height)
+                                    : options.size.value_or(input->scene.camera.resolution);
+    if (referenceFile && options.size && *options.size != size) {
+        std::cerr << "ptview: " << options.referencePath << ": the reference is " << size.x << "x" << size.y
+                  << ", not the --size asked for\n";
+        return kExitBadInput;
+    }
+    try {
+        fs::create_directories(options.outDir);
+        HeadlessContext context;
+        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{false, options.backend});
+        tracer.setScene(input->scene, input->environmentMapOrNull());
+        tracer.setImageSize(size);
+
+        ImageRgbF reference;
+        double floor = 0.0;
+        std::string referenceText;
+        if (referenceFile) {
+            reference = *referenceFile;
+            referenceText = options.referencePath + " (given)";
+        } else {
+            int deepest = 0;
+            for (const ConvergeConfig& config : options.configs) deepest = std::max(deepest, config.maxDepth);
+            RenderSettings settings;
+            settings.integrator = Integrator::Full;
+            settings.maxDepth = std::max(deepest, 16);
+            settings.seed = options.seed + kReferenceSeedOffset;
+            settings.sampleBudget = static_cast<std::uint32_t>(options.referenceSpp);
+            tracer.setSettings(settings);
+            tracer.restart();
+            std::fprintf(stderr, "ptview: rendering the reference (%d spp, full, depth %d, seed %u)\n", options.referenceSpp,
+                         settings.maxDepth, settings.seed);
+            for (int i = 0; i < options.referenceSpp; ++i) tracer.renderSample();
+            PixelStatistics statistics = tracer.readStatistics();
+            reference = statistics.mean;
+            floor = referenceNoiseFloor(statistics);
+            writePfm(options.outDir / "reference.pfm", reference);
+            referenceText = "rendered by ptview (full integrator, random sampler, depth " + std::to_string(settings.maxDepth) +
+                            ", " + std::to_string(options.referenceSpp) + " spp, seed " + std::to_string(settings.seed) +
+                            ", written to reference.pfm)";
+        }
+
+        std::vector<ConfigResult> results;
+        for (const ConvergeConfig& config : options.configs) results.push_back(converge(tracer, config, options, reference));
+
+        std::string csv = "config,integrator,sampler,depth,spp,seconds,rmse,rel_mse,bias_r,bias_g,bias_b,nonfinite_share\n";
+        for (const ConfigResult& result : results)
+            for (const Checkpoint& c : result.checkpoints)
+                csv += configName(result.config) + "," + integratorName(result.config.integrator) + "," +
+                       samplerModeName(result.config.sampler) + "," + std::to_string(result.config.maxDepth) + "," +
+                       std::to_string(c.spp) + "," + number(c.seconds, "%.6g") + "," + number(c.error.rmse, "%.6g") + "," +
+                       number(c.error.relativeMse, "%.6g") + "," + number(c.error.meanBias.r, "%.6g") + "," +
+                       number(c.error.meanBias.g, "%.6g") + "," + number(c.error.meanBias.b, "%.6g") + "," +
+                       number(c.error.nonFiniteShare, "%.6g") + "\n";
+        writeFileAtomically(options.outDir / "convergence.csv", csv);
+        writeFileAtomically(options.outDir / "summary.md", summary(options.scenePath, results, referenceText, floor));
+
+        std::string plot = pythonForPlots() + " '" + std::string(PTVIEW_SOURCE_DIR) + "/scripts/plot_convergence.py' '" +
+                           (options.outDir / "convergence.csv").string() + "' '" + (options.outDir / "convergence.png").string() +
+                           "'" + (floor > 0 ? " " + number(floor, "%.6g") : std::string());
+        if (std::system(plot.c_str()) != 0)
+            std::cerr << "ptview: warning: the plot was not made (needs python3-matplotlib); the CSV and summary were\n";
+        std::fprintf(stderr, "ptview: wrote %s/{convergence.csv,convergence.png,summary.md} on %s\n",
+                     options.outDir.string().c_str(), context.description().c_str());
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitRuntimeError;
+    }
+    return 0;
+}
+
+} // namespace ptview

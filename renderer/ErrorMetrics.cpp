@@ -1,0 +1,45 @@
+#include "ErrorMetrics.h"
+
+#include <cmath>
+#include <string>
+
+namespace ptview {
+
+ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& reference) {
+    if (image.width != reference.width || image.height != reference.height)
+        throw std::invalid_argument("the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                    " but the reference is " + std::to_string(reference.width) + "x" +
+                                    std::to_string(reference.height));
+    // The 1e-2 keeps black reference pixels from dividing by zero (pbrt's and Mitsuba's choice).
+    constexpr double kRelativeEpsilon = 1e-2;
+    ErrorMetrics metrics;
+    double squared = 0.0, relative = 0.0;
+    glm::dvec3 sumImage(0.0), sumReference(0.0);
+    long long finite = 0, nonFinite = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            glm::vec3 value = image.at(x, y), expected = reference.at(x, y);
+            if (!std::isfinite(value.r) || !std::isfinite(value.g) || !std::isfinite(value.b)) {
+                ++nonFinite;
+                continue;
+            }
+            for (int c = 0; c < 3; ++c) {
+                double difference = double(value[c]) - double(expected[c]);
+                squared += difference * difference;
+                relative += difference * difference / (double(expected[c]) * expected[c] + kRelativeEpsilon);
+            }
+            sumImage += glm::dvec3(value);
+            sumReference += glm::dvec3(expected);
+            ++finite;
+        }
+    }
+    long long pixels = finite + nonFinite;
+    metrics.nonFiniteShare = pixels > 0 ? double(nonFinite) / double(pixels) : 0.0;
+    if (finite == 0) return metrics;
+    metrics.rmse = std::sqrt(squared / (3.0 * double(finite)));
+    metrics.relativeMse = relative / (3.0 * double(finite));
+    metrics.meanBias = (sumImage - sumReference) / double(finite);
+    return metrics;
+}
+
+} // namespace ptview

@@ -1,0 +1,40 @@
+#!/usr/bin/python3
+"""Plots a `ptview converge` CSV: relative MSE against render time, log-log, one line per
+configuration, with the reference's own noise floor. Called by `ptview converge`; needs Debian's
+python3-matplotlib (scripts/setup installs it). Usage: plot_convergence.py CSV PNG [FLOOR]"""
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # no display needed
+import matplotlib.pyplot as plt
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    csv_path, png_path = sys.argv[1], sys.argv[2]
+    floor = float(sys.argv[3]) if len(sys.argv) > 3 else None
+    series = {}
+    with open(csv_path, newline="") as f:
+        for row in csv.DictReader(f):
+            seconds, rel_mse = float(row["seconds"]), float(row["rel_mse"])
+            if seconds > 0 and rel_mse > 0:
+                series.setdefault(row["config"], []).append((seconds, rel_mse, int(row["spp"])))
+    fig, ax = plt.subplots(figsize=(8, 5.5), dpi=110)
+    for name, points in series.items():
+        ax.loglog([p[0] for p in points], [p[1] for p in points], marker="o", markersize=3, label=name)
+    if floor:
+        ax.axhline(floor, color="grey", linestyle=":", label="reference's own noise")
+    ax.set_xlabel("render time (s, GPU work timed with glFinish)")
+    ax.set_ylabel("relative MSE against the reference")
+    ax.set_title(csv_path.rsplit("/", 2)[-2] if "/" in csv_path else "convergence")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png_path)
+
+
+if __name__ == "__main__":
+    main()
