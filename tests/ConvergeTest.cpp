@@ -1,0 +1,118 @@
+// `ptview converge` on a tiny scene and budget: the CSV's MSE falls as 1/spp for an unbiased
+// configuration, errors against a reference of another seed are never zero, and a biased
+// configuration (one bounce against a deep reference) is reported as such, not hidden.
+#include "RunCommand.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Row {
+    int spp;
+    double seconds;
+    double relativeMse;
+};
+
+std::map<std::string, std::vector<Row>> readCsv(const fs::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "config,integrator,sampler,depth,spp,seconds,rmse,rel_mse,bias_r,bias_g,bias_b,nonfinite_share");
+    std::map<std::string, std::vector<Row>> rows;
+    while (std::getline(in, line)) {
+        std::vector<std::string> fields;
+        std::stringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+        EXPECT_EQ(fields.size(), 12u) << line;
+        if (fields.size() != 12) continue;
+        rows[fields[0]].push_back(Row{std::stoi(fields[4]), std::stod(fields[5]), std::stod(fields[7])});
+    }
+    return rows;
+}
+
+// Least-squares slope of log(relMSE) against log(spp) over rows with spp >= from.
+double slope(const std::vector<Row>& rows, int from) {
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const Row& row : rows) {
+        if (row.spp < from) continue;
+        double x = std::log(double(row.spp)), y = std::log(row.relativeMse);
+        n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST(Converge, UnbiasedErrorFallsAsOneOverSppAndBiasIsReported) {
+    fs::path out = fs::temp_directory_path() / ("ptview_converge_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    // The reference has 32 times the samples of the longest run, so its own noise is small
+    // beside the runs' errors and the MSE of an unbiased run falls as 1/spp.
+    testing::CommandResult result = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+        " --out " + testing::shellQuoted(out.string()) +
+        " --size 24x24 --reference-spp 2048 --max-spp 64 --time-budget 60 --configs full/random/4,full/random/1");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::map<std::string, std::vector<Row>> rows = readCsv(out / "convergence.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    const std::vector<Row>& unbiased = rows["full/random/4"];
+    const std::vector<Row>& oneBounce = rows["full/random/1"];
+    ASSERT_EQ(unbiased.size(), 7u) << "checkpoints at 1, 2, 4, ..., 64 spp";
+    for (const Row& row : unbiased) {
+        EXPECT_GT(row.relativeMse, 0.0) << "a reference of another seed never matches exactly";
+        EXPECT_GT(row.seconds, 0.0);
+    }
+    EXPECT_NEAR(slope(unbiased, 4), -1.0, 0.2);
+    EXPECT_LT(unbiased.back().relativeMse, 0.1 * unbiased.front().relativeMse);
+
+    // One bounce against a deep reference: the error levels off far above the unbiased one's.
+    EXPECT_GT(slope(oneBounce, 8), -0.3);
+    EXPECT_GT(oneBounce.back().relativeMse, 5.0 * unbiased.back().relativeMse);
+    std::string summary = readText(out / "summary.md");
+    std::istringstream lines(summary);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("| full/random/1 |", 0) == 0) EXPECT_NE(line.find("**biased**"), std::string::npos) << line;
+        if (line.rfind("| full/random/4 |", 0) == 0) EXPECT_EQ(line.find("biased"), std::string::npos) << line;
+    }
+    EXPECT_NE(summary.find("seed"), std::string::npos) << "the summary says how the reference was made";
+    EXPECT_TRUE(fs::exists(out / "reference.pfm"));
+    EXPECT_GT(fs::file_size(out / "convergence.png"), 1000u) << result.output;
+
+    // The reference can also be given: the same measurement against the file just written.
+    fs::path again = out / "again";
+    result = testing::runCommand(std::string(PTVIEW_BINARY) + " converge " +
+                                 testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") + " --out " +
+                                 testing::shellQuoted(again.string()) + " --reference " +
+                                 testing::shellQuoted((out / "reference.pfm").string()) +
+                                 " --max-spp 4 --configs naive/sobol/4");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(readCsv(again / "convergence.csv")["naive/sobol/4"].size(), 3u);
+    fs::remove_all(out);
+}
+
+TEST(Converge, BadConfigurationsAreRefused) {
+    testing::CommandResult result = testing::runCommand(std::string(PTVIEW_BINARY) + " converge " +
+                                                        testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+                                                        " --out /tmp/never --configs fast/random/8");
+    EXPECT_EQ(result.exitCode, 2);
+    EXPECT_NE(result.output.find("bad configuration \"fast/random/8\""), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists("/tmp/never/convergence.csv"));
+}
+
+} // namespace
+} // namespace ptview
