@@ -93,6 +93,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
+    app.add_option("--reference", viewer.referencePath, "reference image (.pfm): the Stats panel shows the true error")
+        ->check(CLI::ExistingFile);
     app.add_option("--script", viewer.scriptPath, "run viewer commands from FILE (docs/viewer-script.md)")
         ->check(CLI::ExistingFile);
     app.add_option("--shader-dir", viewer.shaderDir, "compile (and hot-reload) the GLSL in this directory")

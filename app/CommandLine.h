@@ -45,6 +45,7 @@ struct ViewerOptions {
     std::string screenshotPath;
     bool showWarp = false;       // open in the warp visualizer
     std::string scriptPath;      // commands to run in the viewer (docs/viewer-script.md)
+    std::string referencePath;   // a .pfm: the Stats panel shows the true error against it
     std::string shaderDir = PTVIEW_SHADER_DIR; // GLSL to compile and watch for hot reload
     WarpRequest warp{Warp::CosineHemisphere, SamplerMode::Random, 1024};
 };

@@ -15,6 +15,7 @@ struct PanelState {
     std::string scenePathInput;       // Scene panel: a path typed by the user
     std::string sceneToOpen;          // Scene panel: waiting for "discard your edits?"
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
+    std::string referencePathInput;   // Stats panel: a reference image (.pfm)
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
     // Panels to open on the next frame ("all" for every one), asked for by a script.
@@ -34,8 +35,8 @@ void drawLightsPanel(ViewerSession& session);
 // Field of view, eye, orbit target, reset.
 void drawCameraPanel(ViewerSession& session);
 // Samples per pixel, ms per frame, samples per second, elapsed time, error estimate and its plot,
-// for each view of a comparison.
-void drawStatsPanel(const ViewerSession& session, double frameSeconds);
+// for each view of a comparison; and, with a reference image loaded, the true error and its plot.
+void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSeconds);
 // Mouse and keyboard shortcuts.
 void drawHelpPanel();
 

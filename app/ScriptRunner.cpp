@@ -61,6 +61,11 @@ void printStatus(const ViewerSession& session) {
                 " right-integrator=" + integratorName(right.integrator) + " right-sampler=" +
                 samplerModeName(right.sampler);
     }
+    if (left.trueError) {
+        char text[64];
+        std::snprintf(text, sizeof text, " true-rel-mse=%.6g", left.trueError->relativeMse);
+        line += text;
+    }
     line += " scene=" + quoted(model.scene.path.string()) + " scene-error=" + quoted(model.sceneError) +
             " shader-error=" + quoted(model.shaderError);
     std::printf("%s\n", line.c_str());
@@ -227,6 +232,9 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             saveScreenshots(session, panels);
             if (panels.screenshotFailed) fail(command, panels.screenshotMessage);
             else std::printf("%s\n", panels.screenshotMessage.c_str());
+        } else if (verb == "reference") {
+            if (!session.setReference(command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(word)))
+                fail(command, session.model().sceneError);
         } else if (verb == "open-panel") {
             panels.panelsToOpen.push_back(word);
         } else if (verb == "status") {

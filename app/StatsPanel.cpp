@@ -51,6 +51,25 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
         ImGui::TextUnformatted("relative error -");
     itemTooltip("each pixel's standard error relative to its value (RMS over the image), estimated from the "
                 "pixel's own samples;\nthe square root of the relative MSE; measures noise, not bias");
+    if (stats.trueError) {
+        const ErrorMetrics& e = *stats.trueError;
+        ImGui::Text("vs reference: relMSE %.3g, RMSE %.3g", e.relativeMse, e.rmse);
+        itemTooltip("the true error against the loaded reference image: relative MSE = mean of (x - ref)^2 / (ref^2 + 0.01)");
+        ImGui::Text("bias %+.2g %+.2g %+.2g", e.meanBias.r, e.meanBias.g, e.meanBias.b);
+        itemTooltip("mean of the image minus mean of the reference, per channel: what more samples cannot remove");
+        std::vector<float> logs;
+        for (const auto& [seconds, relMse] : stats.trueErrorHistory)
+            if (relMse > 0.0f) logs.push_back(std::log10(relMse));
+        if (logs.size() >= 2) {
+            char overlay[48];
+            std::snprintf(overlay, sizeof overlay, "relMSE %.3g (log scale)", double(stats.trueErrorHistory.back().second));
+            ImGui::PlotLines("##trueError", logs.data(), static_cast<int>(logs.size()), 0, overlay, FLT_MAX, FLT_MAX,
+                             ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
+        }
+    } else if (model.reference) {
+        ImGui::TextDisabled("reference is %dx%d, the render %dx%d: no true error", model.reference->width,
+                            model.reference->height, session.renderSize().x, session.renderSize().y);
+    }
     if (stats.error.nonFinitePixels > 0)
         ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%lld NaN/Inf pixels", stats.error.nonFinitePixels);
     drawErrorPlot(stats);
@@ -58,8 +77,18 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
 
 } // namespace
 
-void drawStatsPanel(const ViewerSession& session, double frameSeconds) {
+void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSeconds) {
     const ViewerModel& model = session.model();
+    ImGui::PushID("reference");
+    if (pathField("Load reference", state.referencePathInput)) session.setReference(state.referencePathInput);
+    itemTooltip("a .pfm of this scene at the render's size (e.g. ptview render SCENE --spp 4096 --size WxH --out ref.pfm):\n"
+                "the panel then shows the true error against it");
+    if (model.reference) {
+        ImGui::TextDisabled("reference: %s", model.referencePath.filename().string().c_str());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("none")) session.setReference({});
+    }
+    ImGui::PopID();
     if (model.paused)
         ImGui::TextUnformatted("paused (Space resumes)");
     else if (!session.accumulating())

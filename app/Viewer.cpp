@@ -240,7 +240,7 @@ void ViewerWindow::drawSidebar() {
             return ImGui::CollapsingHeader(label, flags);
         };
         if (header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
-        if (header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, frameSeconds_);
+        if (header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, panelState_, frameSeconds_);
         if (header("Scene")) drawScenePanel(session_, panelState_);
         if (header("Environment")) drawEnvironmentPanel(session_, panelState_);
         if (header("Materials")) materialsPanel_.draw(session_);
@@ -442,8 +442,12 @@ int runViewer(const ViewerOptions& options) {
     try {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
                               PathTracerOptions{options.program.allFeatures, options.program.backend});
+        if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
+            std::cerr << "ptview: " << session.model().sceneError << "\n";
+            exitCode = kExitBadInput;
+        }
         ViewerWindow viewer(window, session, options);
-        exitCode = viewer.run(script);
+        if (exitCode == 0) exitCode = viewer.run(script);
     } catch (const std::exception& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         exitCode = kExitRuntimeError;

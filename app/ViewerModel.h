@@ -4,10 +4,12 @@
 // ViewerSession pushes the changes to the renderer. Nothing here knows about ImGui or OpenGL.
 
 #include "EnvironmentMap.h"
+#include "Image.h"
 #include "PathTracer.h"
 #include "Scene.h"
 #include "ToneMapper.h"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -38,6 +40,10 @@ struct ViewerModel {
     bool paused = false;
     int targetSamples = 0;        // stop accumulating at this many samples per pixel; 0: never
     CompareSettings compare;
+    // A reference image of the scene (a PFM, e.g. from `ptview render` with many samples): with it
+    // the Stats panel shows the true error, not only the estimate. Null for none.
+    std::shared_ptr<const ImageRgbF> reference;
+    std::filesystem::path referencePath;
 
     // What changed since the renderer last saw the model; the editor of a field sets its flag.
     enum Change : unsigned {

@@ -205,6 +205,8 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"screenshot", {pathArg({".png", ".pfm"})}, nullptr, "save the rendered image: tone-mapped PNG or linear PFM"},
         {"screenshot-window", {pathArg({".png"})}, nullptr, "save the whole window, panels included, as PNG"},
         {"save-screenshots", {}, nullptr, "what F12 does: timestamped files in screenshots/"},
+        {"reference", {pathArg({".pfm"}, "none")}, nullptr,
+         "load a reference image (.pfm) for the true error in Stats and status, or none"},
         {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,
          "open a sidebar panel (and a materials panel's materials), or all of them"},
         {"status", {}, nullptr, "print the current settings, samples per pixel and camera eye"},

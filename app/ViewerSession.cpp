@@ -1,6 +1,7 @@
 #include "ViewerSession.h"
 
 #include "ImageIO.h"
+#include "Image.h"
 #include "SceneMerge.h"
 #include "SceneWriter.h"
 
@@ -124,6 +125,27 @@ bool ViewerSession::setEnvironmentMap(const std::filesystem::path& path) {
         model_.pendingChanges |= ViewerModel::kSceneChanged;
         model_.sceneError.clear();
         watchFiles();
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+bool ViewerSession::setReference(const std::filesystem::path& path) {
+    try {
+        model_.reference = path.empty() ? nullptr : std::make_shared<const ImageRgbF>(readPfm(path));
+        model_.referencePath = path;
+        left_.trueErrorHistory.clear();
+        if (right_) right_->trueErrorHistory.clear();
+        // Judged at once, so that a finished render (no more frames of work) gets its true error too.
+        for (View* view : {&left_, right_.get()}) {
+            if (!view) continue;
+            view->trueError.reset();
+            view->estimatedSamples = 0;
+            view->lastEstimate = {};
+            updateErrorEstimate(*view);
+        }
         return true;
     } catch (const std::exception& e) {
         model_.sceneError = e.what();
@@ -294,6 +316,8 @@ void ViewerSession::trackRestart(View& view) {
     view.error = ErrorEstimate{};
     view.estimatedSamples = 0;
     view.errorHistory.clear();
+    view.trueError.reset();
+    view.trueErrorHistory.clear();
 }
 
 bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
@@ -352,9 +376,18 @@ void ViewerSession::updateErrorEstimate(View& view) {
     if (secondsSince(view.lastEstimate) < kErrorEstimateIntervalSeconds) return;
     view.lastEstimate = Clock::now();
     view.estimatedSamples = samples;
-    view.error = estimateError(view.tracer->readStatistics());
+    PixelStatistics statistics = view.tracer->readStatistics();
+    view.error = estimateError(statistics);
     if (view.errorHistory.size() == kErrorHistoryLength) view.errorHistory.erase(view.errorHistory.begin());
     view.errorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.error.relativeError));
+    const ImageRgbF* reference = model_.reference.get();
+    if (reference && reference->width == statistics.mean.width && reference->height == statistics.mean.height) {
+        view.trueError = compareToReference(statistics.mean, *reference);
+        if (view.trueErrorHistory.size() == kErrorHistoryLength) view.trueErrorHistory.erase(view.trueErrorHistory.begin());
+        view.trueErrorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.trueError->relativeMse));
+    } else {
+        view.trueError.reset();
+    }
 }
 
 int ViewerSession::dividerX() const {
@@ -390,6 +423,8 @@ ViewerSession::ViewStats ViewerSession::stats(Side side) const {
         stats.samplesPerSecond = double(size.x) * size.y * (stats.samples + double(v.tracer->nextRow()) / size.y) / v.renderSeconds;
     stats.error = v.error;
     stats.errorHistory = v.errorHistory;
+    stats.trueError = v.trueError;
+    stats.trueErrorHistory = v.trueErrorHistory;
     return stats;
 }
 

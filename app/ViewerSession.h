@@ -5,6 +5,7 @@
 // knows nothing about GLFW or ImGui, so tests can drive it headless.
 
 #include "ErrorEstimate.h"
+#include "ErrorMetrics.h"
 #include "FileWatcher.h"
 #include "PathTracer.h"
 #include "SceneInput.h"
@@ -14,6 +15,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,9 @@ public:
         ErrorEstimate error;
         // (render seconds, relative error) once a second or so, for the error-vs-time plot.
         std::vector<std::pair<float, float>> errorHistory;
+        // Against the reference image, when one of the render's size is loaded.
+        std::optional<ErrorMetrics> trueError;
+        std::vector<std::pair<float, float>> trueErrorHistory; // (seconds, relative MSE)
     };
 
     // Compiles the programs from shaderDir (throws ShaderError). Without a backend in `program`,
@@ -50,6 +55,9 @@ public:
     bool openScene(const std::filesystem::path& path);
     bool reloadScene(); // merges the file's changes with the user's edits (SceneMerge.h)
     bool setEnvironmentMap(const std::filesystem::path& path); // empty: none (the constant colour)
+    // Loads a reference image (.pfm) for the true error; empty: none. A file that cannot be read
+    // sets model().sceneError.
+    bool setReference(const std::filesystem::path& path);
     void resetCamera();                                          // to the scene file's camera
     // Whether the scene differs from its file in anything but the camera (which moves all the
     // time): what opening another scene would throw away.
@@ -94,6 +102,8 @@ private:
         int estimatedSamples = 0;  // the sample count `error` was estimated at
         ErrorEstimate error;
         std::vector<std::pair<float, float>> errorHistory;
+        std::optional<ErrorMetrics> trueError;
+        std::vector<std::pair<float, float>> trueErrorHistory;
         std::chrono::steady_clock::time_point lastEstimate{};
     };
 

@@ -271,5 +271,39 @@ quit
     fs::remove_all(directory);
 }
 
+// A reference loaded into the viewer gives the true error: present, small, not zero (another
+// seed), and absent for a reference of another size.
+TEST_F(ScriptedViewer, ReferenceImageGivesTheTrueErrorInStatus) {
+    fs::path directory = freshDirectory("reference");
+    testing::CommandResult render = testing::runCommand(std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted(kCornell) +
+                                                        " --size 96x96 --spp 256 --seed 99 --integrator full --out " +
+                                                        testing::shellQuoted((directory / "ref.pfm").string()));
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    render = testing::runCommand(std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted(kCornell) +
+                                 " --size 32x32 --spp 1 --out " + testing::shellQuoted((directory / "small.pfm").string()));
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
+integrator full
+reference ref.pfm
+target-spp 16
+wait-spp 16
+frames 2
+status
+reference small.pfm
+frames 2
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    ASSERT_NE(field(status[0], "true-rel-mse").rfind("<missing", 0), 0u) << status[0];
+    double trueError = std::stod(field(status[0], "true-rel-mse"));
+    EXPECT_GT(trueError, 0.0);
+    EXPECT_LT(trueError, 0.5);
+    EXPECT_EQ(field(status[1], "true-rel-mse").rfind("<missing", 0), 0u) << "a 32x32 reference cannot judge a 96x96 render";
+    fs::remove_all(directory);
+}
+
 } // namespace
 } // namespace ptview

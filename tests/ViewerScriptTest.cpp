@@ -83,13 +83,14 @@ wait-reload
 status
 quit
 open-panel materials
+reference ref.pfm
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 42u);
+    ASSERT_EQ(script.commands.size(), 43u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -292,7 +293,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 40u);
+    EXPECT_EQ(referenceVerbs().size(), 41u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
