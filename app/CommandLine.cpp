@@ -146,6 +146,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     convergeCommand->add_option("--reference-spp", converge.referenceSpp,
                                 "samples per pixel of the reference ptview renders when none is given (another seed)")
         ->check(CLI::Range(1, 1 << 24))->capture_default_str();
+    convergeCommand->add_option("--reference-depth", converge.referenceDepth,
+                                "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
+        ->check(CLI::Range(0, 1024));
     convergeCommand->add_option("--configs", configsText, "INTEGRATOR/SAMPLER/DEPTH, comma-separated")->capture_default_str();
     convergeCommand->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(CLI::Range(0.01, 86400.0))->capture_default_str();

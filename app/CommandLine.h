@@ -70,6 +70,7 @@ struct ConvergeOptions {
     std::filesystem::path outDir;
     std::string referencePath;  // a PFM; empty: render one (--reference-spp, another seed)
     int referenceSpp = 1024;
+    int referenceDepth = 0;     // 0: the deepest configuration's, and at least 16
     std::vector<ConvergeConfig> configs;
     double timeBudgetSeconds = 10.0; // per configuration
     int maxSpp = 1 << 16;
