@@ -119,10 +119,20 @@ std::string number(double value, const char* format = "%.3g") {
     return text;
 }
 
+// A rare, very bright sample (a firefly: a caustic found by chance) makes the error jump up
+// between two checkpoints; bias never does, it levels off.
+bool hasFireflies(const ConfigResult& result) {
+    const std::vector<Checkpoint>& c = result.checkpoints;
+    for (std::size_t i = c.size() / 2; i + 1 < c.size(); ++i)
+        if (c[i + 1].error.relativeMse > 2.0 * c[i].error.relativeMse) return true;
+    return false;
+}
+
 // Bias shows as an error that stops falling while still well above what the reference can tell.
 bool looksBiased(const ConfigResult& result, double floor) {
     const Checkpoint& last = result.checkpoints.back();
-    return result.checkpoints.size() >= 4 && lateSlope(result.checkpoints) > -0.5 && last.error.relativeMse > 4.0 * floor;
+    return result.checkpoints.size() >= 4 && !hasFireflies(result) && lateSlope(result.checkpoints) > -0.5 &&
+           last.error.relativeMse > 4.0 * floor;
 }
 
 std::string summary(const std::string& scene, const std::vector<ConfigResult>& results, const std::string& referenceText,
@@ -143,7 +153,7 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
         const Checkpoint& last = result.checkpoints.back();
         double efficiency = last.error.relativeMse > 0 ? 1.0 / (last.error.relativeMse * last.seconds) : 0.0;
         bool biased = looksBiased(result, floor);
-        if (!biased && efficiency > bestEfficiency) best = &result, bestEfficiency = efficiency;
+        if (!biased && !hasFireflies(result) && efficiency > bestEfficiency) best = &result, bestEfficiency = efficiency;
         double slope = lateSlope(result.checkpoints);
         out << "| " << configName(result.config) << " | " << last.spp << " | " << number(last.seconds) << " | "
             << number(last.error.rmse) << " | " << number(last.error.relativeMse) << " | "
@@ -153,11 +163,12 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
             << time(timeToReach(result.checkpoints, 0.01)) << " | " << time(timeToReach(result.checkpoints, 0.001))
             << " | " << number(slope, "%.2f") << " | "
             << (biased ? "**biased**: the error stops falling at relMSE " + number(last.error.relativeMse)
-                       : slope < -0.75 ? std::string("converging (error ~ 1/spp)") : std::string("converging slowly, or near the floor"))
+                : hasFireflies(result) ? std::string("**fireflies**: rare very bright samples make the error jump; not converged")
+                : slope < -0.75 ? std::string("converging (error ~ 1/spp)") : std::string("converging slowly, or near the floor"))
             << " |\n";
     }
     if (best)
-        out << "\nMost efficient unbiased-looking configuration: **" << configName(best->config)
+        out << "\nMost efficient configuration that converges steadily: **" << configName(best->config)
             << "**. A slope near -1 means the MSE halves with each doubling of samples; a biased configuration "
                "(too few bounces, an integrator that leaves out light) levels off however long it runs.\n";
     return out.str();
