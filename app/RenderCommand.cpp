@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -109,16 +110,25 @@ int runRenderCommand(const RenderOptions& options) {
         progress.finish();
         double seconds = progress.elapsed();
 
+        ImageRgbF mean = tracer.readMean();
         if (format == OutputFormat::Png)
             writePng(options.outPath, tracer.readToneMapped(options.display));
         else
-            writePfm(options.outPath, tracer.readMean());
+            writePfm(options.outPath, mean);
+        // Every render says whether it produced non-finite pixels: one is a bug to report.
+        long long nonFinite = 0;
+        for (int y = 0; y < mean.height; ++y)
+            for (int x = 0; x < mean.width; ++x) {
+                glm::vec3 v = mean.at(x, y);
+                nonFinite += !(std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b));
+            }
 
         double samples = static_cast<double>(size.x) * size.y * options.samplesPerPixel;
-        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s, %s backend) on %s\n",
+        std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s, %s backend, %lld NaN/Inf pixels) on %s\n",
                      options.outPath.c_str(), size.x, size.y, options.samplesPerPixel, options.settings.maxDepth,
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
-                     seconds, samples / seconds * 1e-6, backendName(tracer.backend()), context.description().c_str());
+                     seconds, samples / seconds * 1e-6, backendName(tracer.backend()), nonFinite,
+                     context.description().c_str());
     } catch (const std::invalid_argument& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;

@@ -150,6 +150,7 @@ TEST_F(CommandLineTest, RenderReportsWhatItWrote) {
                                                shellQuoted(path("c.png")) + " --spp 2 --size 32x32 --depth 2 --seed 7");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_NE(result.output.find("32x32, 2 spp, depth 2"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(", 0 NaN/Inf pixels)"), std::string::npos) << result.output;
     EXPECT_TRUE(fs::exists(path("c.png")));
 }
 
