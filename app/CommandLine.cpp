@@ -56,6 +56,11 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     for (const ToneMapperName& entry : toneMapperNames()) toneMappers.emplace_back(entry.name, entry.toneMapper);
     addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMappers)
         ->default_str(toneMapperName(display.toneMapper));
+    std::vector<std::pair<std::string, DebugView>> views;
+    for (const DebugViewName& entry : debugViewNames()) views.emplace_back(entry.name, entry.view);
+    addNamedOption(app, "--view", settings.debugView, "view", views)
+        ->description("view: radiance (the render), normals or albedo (of the first surface seen)")
+        ->default_str("radiance");
 }
 
 void addProgramOptions(CLI::App& app, ProgramOptions& program) {

@@ -90,6 +90,14 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 2.0f, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
+    if (ImGui::BeginCombo("view", debugViewName(settings.debugView))) {
+        for (const DebugViewName& entry : debugViewNames())
+            if (ImGui::Selectable(entry.name, entry.view == settings.debugView)) settings.debugView = entry.view;
+        ImGui::EndCombo();
+    }
+    itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
+    ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
+
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");
     toneMapperCombo(model.display.toneMapper);

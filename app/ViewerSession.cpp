@@ -258,6 +258,7 @@ void ViewerSession::setImageArea(PixelRect area) {
 RenderSettings ViewerSession::effectiveSettings(const RenderSettings& settings) const {
     RenderSettings effective = settings;
     effective.seed = model_.settings.seed; // both sides of a comparison see the same random numbers
+    effective.debugView = model_.settings.debugView;
     if (model_.targetSamples > 0) effective.sampleBudget = static_cast<std::uint32_t>(model_.targetSamples);
     return effective;
 }

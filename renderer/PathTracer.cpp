@@ -33,7 +33,8 @@ void resetPassState() {
 
 bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
     if (features != other.features) return features < other.features;
-    return std::tie(integrator, sampler, backend) < std::tie(other.integrator, other.sampler, other.backend);
+    return std::tie(integrator, sampler, debugView, backend) <
+           std::tie(other.integrator, other.sampler, other.debugView, other.backend);
 }
 
 PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
@@ -46,6 +47,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
     display.invSampleCount = show.uniformLocation("uInvSampleCount");
     display.exposureScale = show.uniformLocation("uExposureScale");
     display.toneMapper = show.uniformLocation("uToneMapper");
+    display.highlightNonFinite = show.uniformLocation("uHighlightNonFinite");
     display.outputOrigin = show.uniformLocation("uOutputOrigin");
     display.outputSize = show.uniformLocation("uOutputSize");
     return display;
@@ -53,7 +55,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
 
 PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) const {
     ShaderAssembler assembler(shaderDir_);
-    specializeShaders(assembler, key.features, key.integrator, key.sampler);
+    specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView);
     TraceProgram trace;
     if (key.backend == Backend::Compute) {
         trace.source = assembler.assemble("pathtrace.comp");
@@ -89,6 +91,7 @@ void PathTracer::updateProgramKey() {
     programKey_.features = options_.allFeatures ? ShaderFeatures::all() : sceneFeatures(scene_);
     programKey_.integrator = settings_.integrator;
     programKey_.sampler = settings_.sampler;
+    programKey_.debugView = settings_.debugView;
     programKey_.backend = backend_;
 }
 
@@ -281,6 +284,7 @@ void PathTracer::display(PixelRect target, const DisplaySettings& settings, Pixe
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
+    glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
     accumulator_.bindLatest(0, 1);

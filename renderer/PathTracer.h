@@ -32,10 +32,11 @@ struct RenderSettings {
     // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
     std::uint32_t sampleBudget = 1024;
     Integrator integrator = Integrator::Naive;
+    DebugView debugView = DebugView::Radiance;
 
     bool operator==(const RenderSettings& other) const {
         return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
-               sampleBudget == other.sampleBudget;
+               sampleBudget == other.sampleBudget && debugView == other.debugView;
     }
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
 };
@@ -120,6 +121,7 @@ private:
         GLint invSampleCount = -1;
         GLint exposureScale = -1;
         GLint toneMapper = -1;
+        GLint highlightNonFinite = -1;
         GLint outputOrigin = -1;
         GLint outputSize = -1;
     };
@@ -127,6 +129,7 @@ private:
         ShaderFeatures features;
         Integrator integrator = Integrator::Naive;
         SamplerMode sampler = SamplerMode::Random;
+        DebugView debugView = DebugView::Radiance;
         Backend backend = Backend::Fragment;
         bool operator<(const ProgramKey& other) const;
     };

@@ -137,7 +137,7 @@ void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features)
 }
 
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
-                       SamplerMode sampler) {
+                       SamplerMode sampler, DebugView view) {
     specializeBsdfs(assembler, features);
     if (!features.environmentMap) assembler.replaceWithFile("environment.glsl", "environment_constant.glsl");
     if (!features.meshes) assembler.replaceWithFile("mesh_intersect.glsl", "mesh_none.glsl");
@@ -146,7 +146,9 @@ void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& feature
                               "const uint kIntegrator = " + std::to_string(static_cast<std::uint32_t>(integrator)) + "u; // " +
                                   integratorName(integrator) + "\n" +
                               "const uint kSamplerMode = " + std::to_string(static_cast<std::uint32_t>(sampler)) + "u; // " +
-                                  samplerModeName(sampler) + "\n");
+                                  samplerModeName(sampler) + "\n" +
+                              "const uint kDebugView = " + std::to_string(static_cast<std::uint32_t>(view)) + "u; // " +
+                                  debugViewName(view) + "\n");
 }
 
 } // namespace ptview

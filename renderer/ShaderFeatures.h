@@ -5,6 +5,7 @@
 // only those models' files, and the environment and mesh queries come from a full or an empty
 // variant of the same functions. The integrator and sampler become constants of the program.
 
+#include "DebugView.h"
 #include "Integrator.h"
 #include "SamplerMode.h"
 #include "Scene.h"
@@ -42,7 +43,7 @@ ShaderFeatures sceneFeatures(const Scene& scene);
 // Makes `assembler` build the path-tracing program for these features, integrator and sampler:
 // generated bsdf.glsl and specialization.glsl, and the environment and mesh variants.
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
-                       SamplerMode sampler);
+                       SamplerMode sampler, DebugView view = DebugView::Radiance);
 // The BSDF dispatch alone (probes that run BSDFs without a scene use every model).
 void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features);
 

@@ -20,6 +20,7 @@ struct ToneMapperName {
 struct DisplaySettings {
     float exposureStops = 0.0f;
     ToneMapper toneMapper = ToneMapper::Reinhard;
+    bool highlightNonFinite = false; // show pixels whose mean is NaN or infinite in magenta
 };
 
 inline const std::vector<ToneMapperName>& toneMapperNames() {

@@ -7,6 +7,7 @@ uniform sampler2D uCompensation;
 uniform float uInvSampleCount;
 uniform float uExposureScale; // 2^exposure
 uniform uint uToneMapper;
+uniform bool uHighlightNonFinite; // a debug view: NaN or infinite means in magenta
 uniform vec2 uOutputOrigin;   // lower-left corner of the output rectangle, in framebuffer pixels
 uniform vec2 uOutputSize;     // its size in pixels
 
@@ -17,5 +18,9 @@ void main() {
     vec3 sum = texture(uSum, texCoord).rgb;
     vec3 compensation = texture(uCompensation, texCoord).rgb;
     vec3 mean = (sum - compensation) * uInvSampleCount;
+    if (uHighlightNonFinite && (any(isnan(mean)) || any(isinf(mean)))) {
+        outColor = vec4(1.0, 0.0, 1.0, 1.0);
+        return;
+    }
     outColor = vec4(displayTransform(mean, uExposureScale, uToneMapper), 1.0);
 }

@@ -6,9 +6,12 @@
 #include "camera.glsl"
 #include "integrator.glsl"
 #include "specialization.glsl"
+#include "debug_view.glsl"
 
 void traceSample(ivec2 pixel) {
     Sampler sampler = createSampler(uvec2(pixel), uFrameIndex, uSeed, kSamplerMode, uSampleBudget);
     vec2 filmPos = vec2(pixel) + samplerGet2D(sampler, kDimensionCamera); // box filter one pixel wide
-    accumulateSample(pixel, estimateRadiance(generateCameraRay(filmPos), sampler));
+    Ray ray = generateCameraRay(filmPos);
+    // kDebugView is a constant of the program: the branch not taken is compiled out.
+    accumulateSample(pixel, kDebugView == kDebugViewRadiance ? estimateRadiance(ray, sampler) : debugViewValue(ray, kDebugView));
 }

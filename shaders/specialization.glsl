@@ -4,3 +4,4 @@
 #include "frame_uniforms.glsl"
 #define kIntegrator uIntegrator
 #define kSamplerMode uSamplerMode
+#define kDebugView 0u

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <unistd.h>
+#include <fstream>
 
 namespace ptview {
 namespace {
@@ -194,6 +196,65 @@ TEST(PathTracer, ToneMappersMatchTheirFormulas) {
             EXPECT_NEAR(image.rgba[static_cast<size_t>(c)], expected, 1.0) << entry.name << " channel " << c;
         }
     }
+}
+
+// The debug views show the first surface's data: its normal and its albedo, exactly.
+TEST(PathTracer, DebugViewsShowNormalsAndAlbedo) {
+    testing::glContext();
+    PathTracer tracer;
+    tracer.setScene(cornell());
+    tracer.setImageSize(kSize);
+    RenderSettings settings{4, 3};
+    settings.debugView = DebugView::Albedo;
+    tracer.setSettings(settings);
+    for (int i = 0; i < 2; ++i) tracer.renderSample();
+    ImageRgbF albedo = tracer.readMean();
+    // Well inside the left (red) wall and the floor near it (rows run top-down), every sample sees
+    // the same surface.
+    EXPECT_NEAR(glm::distance(albedo.at(2, kSize.y / 2), glm::vec3(0.63f, 0.065f, 0.05f)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(albedo.at(kSize.x / 5, 40), glm::vec3(0.73f)), 0.0f, 1e-5f);
+    settings.debugView = DebugView::Normals;
+    tracer.setSettings(settings);
+    EXPECT_EQ(tracer.sampleCount(), 0) << "changing the view restarts accumulation";
+    for (int i = 0; i < 2; ++i) tracer.renderSample();
+    ImageRgbF normals = tracer.readMean();
+    EXPECT_NEAR(glm::distance(normals.at(kSize.x / 5, 40), glm::vec3(0.5f, 1.0f, 0.5f)), 0.0f, 1e-5f) << "the floor faces +Y";
+    EXPECT_NEAR(glm::distance(normals.at(2, kSize.y / 2), glm::vec3(1.0f, 0.5f, 0.5f)), 0.0f, 1e-5f) << "the left wall faces +X";
+}
+
+// The NaN/Inf debug view marks non-finite pixels magenta. A copy of the shaders whose sample is
+// NaN on the left half and infinite on the top rows stands in for a bug.
+TEST(PathTracer, NonFinitePixelsAreHighlightedInMagenta) {
+    testing::glContext();
+    std::filesystem::path shaders = std::filesystem::temp_directory_path() / ("ptview_nan_shaders_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(shaders);
+    std::filesystem::copy(PTVIEW_SHADER_DIR, shaders, std::filesystem::copy_options::recursive);
+    std::ofstream(shaders / "pathtrace_sample.glsl") << R"(#include "frame_uniforms.glsl"
+#include "specialization.glsl"
+uniform float uZero; // 0, but unknown to the compiler
+void traceSample(ivec2 pixel) {
+    float nan = uZero / uZero;
+    float inf = 1.0 / uZero;
+    accumulateSample(pixel, pixel.x < uImageSize.x / 2 ? vec3(nan) : pixel.y >= uImageSize.y - 2 ? vec3(inf) : vec3(0.25));
+}
+)";
+    PathTracer tracer(shaders);
+    tracer.setScene(cornell());
+    tracer.setImageSize({8, 8});
+    tracer.renderSample();
+    DisplaySettings display;
+    display.highlightNonFinite = true;
+    ImageRgba8 shown = tracer.readToneMapped(display);
+    auto pixel = [&](int x, int y) {
+        const std::uint8_t* p = &shown.rgba[static_cast<size_t>((y * 8 + x) * 4)];
+        return glm::ivec3(p[0], p[1], p[2]);
+    };
+    EXPECT_EQ(pixel(1, 4), glm::ivec3(255, 0, 255)) << "NaN";
+    EXPECT_EQ(pixel(6, 0), glm::ivec3(255, 0, 255)) << "infinite (the top rows: readback rows run top-down)";
+    glm::ivec3 finite = pixel(6, 4);
+    EXPECT_NE(finite, glm::ivec3(255, 0, 255));
+    EXPECT_EQ(finite.r, finite.g);
+    std::filesystem::remove_all(shaders);
 }
 
 } // namespace

@@ -1,0 +1,17 @@
+// The debug views of renderer/DebugView.h: the first surface the camera ray hits, seen through
+// its shading normal (mapped from [-1, 1] to [0, 1]) or its albedo (the material's colour; an
+// emitter's radiance scaled to at most 1). Nothing hit: black.
+#include "intersect.glsl"
+
+const uint kDebugViewRadiance = 0u;
+const uint kDebugViewNormals = 1u;
+const uint kDebugViewAlbedo = 2u;
+
+vec3 debugViewValue(Ray ray, uint view) {
+    Hit hit;
+    if (!intersectScene(ray, hit)) return vec3(0.0);
+    if (view == kDebugViewNormals) return 0.5 * hit.normalShading + 0.5;
+    Material material = fetchMaterial(hit.material);
+    if (material.type == kMaterialEmitter) return material.radiance / max(1e-6, max(material.radiance.r, max(material.radiance.g, material.radiance.b)));
+    return material.color;
+}

@@ -1,0 +1,96 @@
+// libFuzzer target for loadEnvironmentMap: the Radiance header and resolution line, the walk over
+// run-length encoded and flat scanlines that guards stb_image, stb_image's decoder itself, and
+// the sampling distribution built from what it decodes.
+//
+// loadEnvironmentMap reads a file (there is no variant that takes bytes), so each input is
+// written to a private directory first.
+//
+// An EnvironmentMapError is the documented refusal; anything else (a sanitizer report, another
+// exception, a map that breaks the promises of EnvironmentMap.h, a hang) is a finding.
+
+#include "EnvironmentMap.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path gDirectory; // removed at exit
+fs::path gInput;
+
+void removeDirectory() {
+    std::error_code ignored;
+    fs::remove_all(gDirectory, ignored);
+}
+
+void require(bool holds, const char* promise) {
+    if (holds) return;
+    std::fprintf(stderr, "fuzz_hdr_loader: loaded map breaks a promise: %s\n", promise);
+    std::abort();
+}
+
+// Nondecreasing, within [0, 1], ending at exactly 1.
+bool isCdf(const float* begin, std::size_t count) {
+    float previous = 0.0f;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!(begin[i] >= previous && begin[i] <= 1.0f)) return false;
+        previous = begin[i];
+    }
+    return count > 0 && begin[count - 1] == 1.0f;
+}
+
+// What the renderer relies on once a map has loaded (EnvironmentMap.h).
+void checkMap(const ptview::EnvironmentMap& map) {
+    require(map.width >= 1 && map.height >= 1 && map.width <= ptview::kMaxEnvironmentMapSize &&
+                map.height <= ptview::kMaxEnvironmentMapSize,
+            "size within [1, kMaxEnvironmentMapSize]");
+    const std::size_t w = static_cast<std::size_t>(map.width), h = static_cast<std::size_t>(map.height);
+    require(map.rgb.size() == w * h * 3, "3 floats per texel");
+    for (float radiance : map.rgb) require(std::isfinite(radiance) && radiance >= 0.0f, "finite, non-negative radiance");
+    require(map.marginalCdf.size() == h && isCdf(map.marginalCdf.data(), h), "marginal CDF over the rows");
+    require(map.conditionalCdf.size() == w * h, "one conditional CDF entry per texel");
+    for (std::size_t row = 0; row < h; ++row)
+        require(isCdf(map.conditionalCdf.data() + row * w, w), "conditional CDF per row");
+    require(std::isfinite(map.meanRadiance.x) && std::isfinite(map.meanRadiance.y) &&
+                std::isfinite(map.meanRadiance.z) && map.meanRadiance.x >= 0.0 && map.meanRadiance.y >= 0.0 &&
+                map.meanRadiance.z >= 0.0,
+            "finite, non-negative mean radiance");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    gDirectory = fs::temp_directory_path() / ("ptview-fuzz-hdr-" + std::to_string(::getpid()));
+    fs::create_directories(gDirectory);
+    std::atexit(removeDirectory);
+    gInput = gDirectory / "in.hdr";
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    {
+        std::ofstream file(gInput, std::ios::binary | std::ios::trunc);
+        file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!file) {
+            std::fprintf(stderr, "fuzz_hdr_loader: cannot write %s\n", gInput.c_str());
+            std::abort();
+        }
+    }
+    try {
+        checkMap(ptview::loadEnvironmentMap(gInput));
+    } catch (const ptview::EnvironmentMapError&) {
+        // The documented refusal of a file that cannot be used.
+    }
+    return 0;
+}
