@@ -28,7 +28,7 @@ struct FrameUniforms {
     std::uint32_t samplerMode;  // SamplerMode
     std::uint32_t sampleBudget; // samples per pixel the grid and stratified patterns are sized for
     std::uint32_t integrator;   // Integrator
-    std::uint32_t pad0;
+    float sceneRadius;          // bounding sphere of the geometry, for ray offsets (intersect.glsl)
     std::uint32_t pad1;
     std::uint32_t pad2;
 };

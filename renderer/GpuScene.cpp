@@ -103,6 +103,23 @@ void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<s
 
 } // namespace
 
+float sceneBoundingRadius(const ScenePrimitives& geometry, const Aabb& meshBounds) {
+    Aabb bounds = meshBounds;
+    for (const GpuQuad& quad : geometry.quads) {
+        glm::vec3 c(quad.center), u(quad.u), v(quad.v);
+        for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) bounds.extend(corner);
+    }
+    for (const GpuSphere& sphere : geometry.spheres) {
+        bounds.extend(sphere.center - sphere.radius);
+        bounds.extend(sphere.center + sphere.radius);
+    }
+    for (const GpuDisk& disk : geometry.disks) {
+        bounds.extend(disk.center - disk.radius);
+        bounds.extend(disk.center + disk.radius);
+    }
+    return bounds.empty() ? 1.0f : 0.5f * glm::length(bounds.max - bounds.min);
+}
+
 LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
                            glm::vec3 environmentRadiance, const std::vector<MeshInstance>& meshInstances,
                            const Aabb& meshBounds) {
@@ -168,27 +185,7 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 
     float environment = luminance(environmentRadiance);
     if (environment > 0.0f) {
-        glm::vec3 boundsMin(std::numeric_limits<float>::max()), boundsMax(-std::numeric_limits<float>::max());
-        for (const GpuQuad& quad : geometry.quads) {
-            glm::vec3 c(quad.center), u(quad.u), v(quad.v);
-            for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) {
-                boundsMin = glm::min(boundsMin, corner);
-                boundsMax = glm::max(boundsMax, corner);
-            }
-        }
-        for (const GpuSphere& sphere : geometry.spheres) {
-            boundsMin = glm::min(boundsMin, sphere.center - sphere.radius);
-            boundsMax = glm::max(boundsMax, sphere.center + sphere.radius);
-        }
-        for (const GpuDisk& disk : geometry.disks) {
-            boundsMin = glm::min(boundsMin, disk.center - disk.radius);
-            boundsMax = glm::max(boundsMax, disk.center + disk.radius);
-        }
-        if (!meshBounds.empty()) {
-            boundsMin = glm::min(boundsMin, meshBounds.min);
-            boundsMax = glm::max(boundsMax, meshBounds.max);
-        }
-        double radius = boundsMin.x <= boundsMax.x ? std::max(0.5 * glm::length(boundsMax - boundsMin), 1e-3) : 1.0;
+        double radius = std::max(double(sceneBoundingRadius(geometry, meshBounds)), 1e-3);
         table.environmentLight = static_cast<std::int32_t>(table.lights.size());
         GpuLight light{};
         light.kind = static_cast<float>(LightKind::Environment);
@@ -217,6 +214,7 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
     textures_[1].fill(GL_RGBA32F, 16, geometry_.quads);
     textures_[2].fill(GL_RGBA32F, 16, geometry_.disks);
     meshes_.upload(scene);
+    sceneRadius_ = sceneBoundingRadius(geometry_, meshes_.worldBounds());
     environmentRadiance_ = environmentMeanRadiance.value_or(scene.environment);
     uploadMaterials(scene.materials);
 }

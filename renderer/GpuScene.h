@@ -37,6 +37,8 @@ struct LightTable {
 };
 
 // Pure CPU steps, testable without a GL context.
+// Half the diagonal of the box around every primitive (1 for an empty scene).
+float sceneBoundingRadius(const ScenePrimitives& geometry, const Aabb& meshBounds = {});
 ScenePrimitives flattenScene(const Scene& scene);
 void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out);
 // The environment's share is its power through a disk as large as the scene's bounding sphere.
@@ -73,10 +75,12 @@ public:
     int lightCount() const { return static_cast<int>(lights_.lights.size()); }
     int environmentLight() const { return lights_.environmentLight; }
     const GpuMeshes& meshes() const { return meshes_; }
+    float sceneRadius() const { return sceneRadius_; }
 
 private:
     BufferTexture textures_[kOwnTextureCount];
     GpuMeshes meshes_;
+    float sceneRadius_ = 1.0f;
     int firstUnit_ = 0;
     GLint sphereCountLocation_ = -1;
     GLint quadCountLocation_ = -1;

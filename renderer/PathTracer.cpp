@@ -227,6 +227,7 @@ void PathTracer::updateFrameUniforms() {
     frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
     frame.sampleBudget = settings_.sampleBudget;
     frame.integrator = static_cast<std::uint32_t>(settings_.integrator);
+    frame.sceneRadius = gpuScene_.sceneRadius();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameUniforms), &frame);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);

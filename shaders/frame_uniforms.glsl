@@ -7,5 +7,6 @@ layout(std140) uniform FrameBlock {
     vec3 uCameraForward;      uint uSeed;
     vec3 uEnvironmentRadiance; int uMaxDepth;      // bounces; 0 shows emitters only
     ivec2 uImageSize;         uint uSamplerMode;   uint uSampleBudget; // see sampler.glsl
-    uint uIntegrator;         uint uPad0; uint uPad1; uint uPad2;      // see integrator.glsl
+    uint uIntegrator;         float uSceneRadius;  // of the scene's bounding sphere: sets ray offsets
+    uint uPad1; uint uPad2;
 };

@@ -1,8 +1,17 @@
 // Ray-shape intersection against every shape of the scene.
 #include "constants.glsl"
+#include "frame_uniforms.glsl"
 #include "ray.glsl"
 #include "scene_data.glsl"
 #include "mesh_intersect.glsl"
+
+// Ray offsets (spawnRay): relative to the hit position's magnitude and to the scene's size.
+const float kRelativeOffset = 1e-4;
+const float kSceneOffset = 1e-6;
+
+float maxMagnitude(vec3 p) {
+    return max(abs(p.x), max(abs(p.y), abs(p.z)));
+}
 
 struct Hit {
     float t;
@@ -129,10 +138,11 @@ bool occluded(Ray ray, float maxDistance, int light) {
 }
 
 // A ray leaving a surface point, pushed off the surface along the geometric normal on the side it
-// leaves by. The push grows with the point's magnitude because float spacing does.
+// leaves by, so it cannot hit that surface again. The push grows with the point's magnitude,
+// because float spacing does, and with the scene's size, because the hit point's error grows with
+// the length of the ray that found it: so a scene scaled by 1e-3 or 1e4 behaves as at 1.
 Ray spawnRay(vec3 posWorld, vec3 normalGeom, vec3 directionWorld) {
-    const float kRelativeOffset = 1e-4;
-    float scale = 1.0 + max(abs(posWorld.x), max(abs(posWorld.y), abs(posWorld.z)));
+    float offset = kRelativeOffset * maxMagnitude(posWorld) + kSceneOffset * uSceneRadius;
     vec3 side = dot(directionWorld, normalGeom) >= 0.0 ? normalGeom : -normalGeom;
-    return Ray(posWorld + side * (kRelativeOffset * scale), directionWorld);
+    return Ray(posWorld + side * offset, directionWorld);
 }
