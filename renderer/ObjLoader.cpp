@@ -338,10 +338,13 @@ private:
     }
 
     void addNormal(float x, float y, float z) {
-        const glm::vec3 n(x, y, z);
-        const float length = glm::length(n);
-        const glm::vec3 unit = n / length;
-        const bool usable = length > 0.0f && isFinite(unit) && fieldsAreNumbers(record(), 3, 3);
+        // In double: in float, a component above about 1.8e19 overflows the squared length to
+        // infinity, and n / length then makes a valid direction the zero vector, which passes as
+        // finite (found by tests/fuzz; tests/data/fuzz/obj_huge_normal.obj).
+        const glm::dvec3 n(x, y, z);
+        const double length = glm::length(n);
+        const glm::vec3 unit(n / length);
+        const bool usable = length > 0.0 && isFinite(unit) && fieldsAreNumbers(record(), 3, 3);
         normals_.add(usable, mesh_.normals.size(), here());
         if (usable) mesh_.normals.push_back(unit);
     }

@@ -248,6 +248,21 @@ TEST(ObjLoader, ZeroLengthOrNanNormalShadesFlat) {
     EXPECT_TRUE(contains(warning, "line 6")) << warning;
 }
 
+// Found by the OBJ fuzz target (tests/fuzz): a normal with a component near 1e20 overflowed its
+// float squared length to infinity, and the "normalized" result was the zero vector, kept as if
+// it were a direction. In double it normalizes to the unit vector it is.
+TEST(ObjLoader, HugeNormalComponentsStillNormalize) {
+    ObjFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh =
+        loadObjMesh(files.write("hugenormal.obj", std::string(kSquare) + "vn 0 0 3e20\nvn 1e38 1e38 0\nf 1//1 2//2 3//1\n"),
+                    &report);
+    ASSERT_EQ(mesh.normals.size(), 2u);
+    EXPECT_NEAR(glm::distance(mesh.normals[0], glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::distance(mesh.normals[1], glm::normalize(glm::vec3(1, 1, 0))), 0.0f, 1e-6f);
+    EXPECT_EQ(mesh.triangles[0].normal, (std::array<std::int32_t, 3>{0, 1, 0}));
+}
+
 TEST(ObjLoader, IndexOutOfRangeIsAnErrorNamingFileLineAndFace) {
     ObjFiles files;
     const std::string message =
