@@ -340,7 +340,7 @@ private:
     void addNormal(float x, float y, float z) {
         // In double: in float, a component above about 1.8e19 overflows the squared length to
         // infinity, and n / length then makes a valid direction the zero vector, which passes as
-        // finite (found by tests/fuzz; tests/data/fuzz/obj_huge_normal.obj).
+        // finite (found by tests/fuzz; ObjLoader.HugeNormalComponentsStillNormalize).
         const glm::dvec3 n(x, y, z);
         const double length = glm::length(n);
         const glm::vec3 unit(n / length);
