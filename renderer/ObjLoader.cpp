@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <istream>
+#include <iterator>
 #include <map>
 #include <streambuf>
 #include <string_view>
@@ -65,6 +67,34 @@ std::string readFile(const std::filesystem::path& path) {
     if (file.bad()) throw cannotOpen(errno);
     bytes.resize(static_cast<std::size_t>(file.gcount())); // a file that shrank meanwhile: what is there
     return bytes;
+}
+
+// tinyobjloader (2.0.0rc10) reads a number's exponent into an int and checks for overflow one
+// digit too late: "1e2147483648" overflows it, which is undefined behaviour, and a longer exponent
+// fails the parse, so that the number reads as 0 without a word (found by tests/fuzz; see
+// tests/FuzzRegressionTest.cpp). As a float such a number is infinite or 0 anyway, so before the
+// parser sees them, exponents of ten or more digits (leading zeros aside) are rewritten in place as
+// 999999999, zero-padded to the same length so that offsets and line numbers stay: the parser
+// reads that safely, with the same result.
+void clampHugeExponents(std::string& bytes) {
+    auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+    const std::size_t size = bytes.size();
+    for (std::size_t e = bytes.find_first_of("eE"); e != std::string::npos; e = bytes.find_first_of("eE", e + 1)) {
+        // Only in a number: a field of an optional sign, then digits and dots up to the 'e'.
+        std::size_t start = e;
+        while (start > 0 && (isDigit(bytes[start - 1]) || bytes[start - 1] == '.')) --start;
+        if (start == e) continue;
+        if (start > 0 && (bytes[start - 1] == '+' || bytes[start - 1] == '-')) --start;
+        if (start > 0 && !isBlank(bytes[start - 1]) && !isLineEnd(bytes[start - 1])) continue;
+        std::size_t first = e + 1;
+        if (first < size && (bytes[first] == '+' || bytes[first] == '-')) ++first;
+        while (first < size && bytes[first] == '0') ++first;
+        std::size_t end = first;
+        while (end < size && isDigit(bytes[end])) ++end;
+        if (end - first < 10) continue;
+        std::fill(bytes.begin() + std::ptrdiff_t(first), bytes.begin() + std::ptrdiff_t(end - 9), '0');
+        std::fill(bytes.begin() + std::ptrdiff_t(end - 9), bytes.begin() + std::ptrdiff_t(end), '9');
+    }
 }
 
 // An input stream over bytes already in memory (std::istringstream would copy 80 MB) that also
@@ -236,9 +266,13 @@ public:
                                 path.string() + "); its faces keep their material names");
             return false;
         }
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        clampHugeExponents(bytes);
+        MemoryBuffer buffer(bytes);
+        std::istream stream(&buffer);
         const std::size_t before = materials->size();
         std::string mtlWarnings, mtlErrors;
-        tinyobj::LoadMtl(nameToIndex, materials, &in, &mtlWarnings, &mtlErrors);
+        tinyobj::LoadMtl(nameToIndex, materials, &stream, &mtlWarnings, &mtlErrors);
         appendMessages(path.string(), mtlWarnings + mtlErrors, warnings_);
         if (materials->size() == before) warnings_.push_back(path.string() + ": defines no materials");
         for (std::size_t i = before; i < materials->size(); ++i)
@@ -542,6 +576,7 @@ TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
     const std::string file = path.string();
 
     std::string bytes = readFile(path);
+    clampHugeExponents(bytes);
     MemoryBuffer buffer(bytes);
     std::istream stream(&buffer);
 

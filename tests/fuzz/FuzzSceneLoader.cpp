@@ -2,9 +2,12 @@
 // range), every part of a scene, transforms, and mesh shapes with their material slots.
 //
 // The input is the scene text. Its source name lies in a private directory, <dir>/scenes/, beside
-// a <dir>/meshes/ that holds two small meshes, so that a scene naming "../meshes/slots.obj" or
+// a <dir>/meshes/ that holds small meshes, so that a scene naming "../meshes/slots.obj" or
 // "../meshes/plain.obj" loads a real mesh and resolves its materials. scripts/fuzz points the
 // seeds' mesh files there; any other file name fails with a SceneError, which is fine too.
+// "../meshes/fuzz.obj" uses materials "a" and "b" from fuzz.mtl, which the input writes: the bytes
+// after its first "\n#mtl\n" (none: an empty file), so that MTL values reach the conversion of
+// a mesh file's materials into scene materials.
 //
 // A SceneError is the documented refusal; anything else (a sanitizer report, another exception, a
 // scene that breaks the promises of Scene.h) is a finding.
@@ -16,8 +19,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include <unistd.h>
@@ -53,13 +58,14 @@ Ns 50
 Ke 4 4 4
 )";
 const char kPlainObj[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+const char kFuzzObj[] = "mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 2 4 3\n";
 
 void removeDirectory() {
     std::error_code ignored;
     fs::remove_all(gDirectory, ignored);
 }
 
-void writeFile(const fs::path& path, const char* text) {
+void writeFile(const fs::path& path, const std::string& text) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file << text;
     if (!file) {
@@ -76,6 +82,10 @@ void require(bool holds, const char* promise) {
 
 bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+bool isWithin(const glm::vec3& v, float low, float high) {
+    return v.x >= low && v.x <= high && v.y >= low && v.y <= high && v.z >= low && v.z <= high;
+}
+
 // What the renderer relies on once a scene has loaded (Scene.h).
 void checkScene(const ptview::Scene& scene) {
     const int materialCount = static_cast<int>(scene.materials.size());
@@ -84,6 +94,13 @@ void checkScene(const ptview::Scene& scene) {
     require(scene.camera.vfovDeg > 0.0f && scene.camera.vfovDeg < 180.0f, "field of view in (0, 180)");
     require(isFinite(scene.camera.eye) && isFinite(scene.camera.target), "finite camera");
     require(scene.environmentIntensity >= 0.0f, "non-negative environment intensity");
+    for (const ptview::Material& material : scene.materials) {
+        require(isWithin(material.color, 0.0f, 1.0f), "material colour in [0, 1]");
+        require(isWithin(material.radiance, 0.0f, std::numeric_limits<float>::max()),
+                "finite, non-negative material radiance");
+        require(material.ior >= 1.0f && material.ior <= 4.0f, "ior in [1, 4]");
+        require(material.roughness >= 0.0f && material.roughness <= 1.0f, "roughness in [0, 1]");
+    }
     for (const ptview::SceneMesh& mesh : scene.meshes) require(mesh.data != nullptr, "every mesh loaded");
     for (const ptview::Shape& shape : scene.shapes) {
         if (shape.type != ptview::ShapeType::Mesh) {
@@ -113,14 +130,23 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     writeFile(gDirectory / "meshes" / "slots.obj", kSlotsObj);
     writeFile(gDirectory / "meshes" / "slots.mtl", kSlotsMtl);
     writeFile(gDirectory / "meshes" / "plain.obj", kPlainObj);
+    writeFile(gDirectory / "meshes" / "fuzz.obj", kFuzzObj);
     gSceneFile = gDirectory / "scenes" / "fuzz.json";
     return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
+    const char* bytes = reinterpret_cast<const char*>(data);
+    // memmem rather than std::string::find: libFuzzer watches memmem's arguments, so it learns the
+    // marker and starts writing MTL sections of its own.
+    static const char kMtlMarker[] = "\n#mtl\n";
+    const std::size_t markerSize = sizeof kMtlMarker - 1;
+    const void* marker = ::memmem(bytes, size, kMtlMarker, markerSize);
+    const std::size_t sceneSize = marker ? static_cast<std::size_t>(static_cast<const char*>(marker) - bytes) : size;
+    const std::string mtl = marker ? std::string(bytes + sceneSize + markerSize, size - sceneSize - markerSize) : "";
+    writeFile(gDirectory / "meshes" / "fuzz.mtl", mtl);
     try {
-        checkScene(ptview::parseScene(text, gSceneFile));
+        checkScene(ptview::parseScene(std::string(bytes, sceneSize), gSceneFile));
     } catch (const ptview::SceneError&) {
         // The documented refusal of a file that cannot be used.
     }

@@ -1,0 +1,114 @@
+// What the fuzz targets (tests/fuzz, docs/fuzzing.md) found, kept fixed: each input the fuzzer
+// wrote, as a file under tests/data/fuzz/, gives the documented clean result, and the tests beside
+// it pin down the behaviour the fix chose. The undefined behaviour itself was inside
+// tinyobjloader, which only the fuzz build compiles with sanitizers (the test suite links
+// Debian's library), so here it shows as what it did to the numbers: they read as 0.
+
+#include "ObjLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+namespace ptview {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kFuzzData = fs::path(PTVIEW_TEST_DATA_DIR) / "fuzz";
+
+// The MeshError message of loading path, or a note that there was none.
+std::string meshErrorFrom(const fs::path& path) {
+    try {
+        loadObjMesh(path);
+    } catch (const MeshError& error) {
+        return error.what();
+    }
+    return "(no MeshError thrown)";
+}
+
+// A fresh directory per test, removed afterwards.
+class FuzzFiles {
+public:
+    FuzzFiles() {
+        const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("ptview_fuzz_regression_" + std::to_string(::getpid()) + "_" + test->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    ~FuzzFiles() {
+        std::error_code ignored;
+        fs::remove_all(dir_, ignored);
+    }
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+
+private:
+    fs::path dir_;
+};
+
+// The OBJ target's input "v 0 0e2147483648": an exponent one past INT_MAX overflowed
+// tinyobjloader's int (undefined behaviour, which UBSan stopped on in the fuzz build). Now the file
+// is read to the end and refused for what it is, a file without faces.
+TEST(FuzzRegression, ObjExponentPastIntMaxIsReadSafely) {
+    const fs::path file = kFuzzData / "obj_exponent_overflow.obj";
+    ASSERT_TRUE(fs::exists(file)) << file;
+    EXPECT_EQ(meshErrorFrom(file), file.string() + ": no triangles (the file has no faces)");
+}
+
+// The fix reads such exponents as what they mean for a float: a coordinate of 1e2147483648 (or
+// of 1e99999999999, which tinyobjloader read as 0) is infinite, so the triangle that uses it is
+// dropped as ObjLoader.h says; one of 1e-99999999999 is 0, a finite coordinate that stays.
+TEST(FuzzRegression, HugeExponentsReadAsInfinityOrZero) {
+    FuzzFiles files;
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(files.write("exponents.obj",
+                                                      "v 0 0 0\n"
+                                                      "v 1 0 0\n"
+                                                      "v 0 1 0\n"
+                                                      "v 1e2147483648 1 0\n"
+                                                      "v -1 1E+99999999999 0\n"
+                                                      "v 1 1 1e-000099999999999\n"
+                                                      "f 1 2 3\n"
+                                                      "f 2 4 3\n"
+                                                      "f 3 5 1\n"
+                                                      "f 2 6 3\n"),
+                                          &report);
+    ASSERT_EQ(mesh.positions.size(), 4u); // the two infinite vertices are left out
+    EXPECT_EQ(mesh.positions[3], glm::vec3(1.0f, 1.0f, 0.0f));
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_NE(report.warnings[0].find("dropped 2 triangles using a vertex whose coordinates are not finite numbers"),
+              std::string::npos)
+        << report.warnings[0];
+}
+
+// The same parser reads MTL values: a huge exponent there is infinite too, not undefined behaviour
+// and not a silent 0, and the values around it are untouched. Names that merely contain such
+// digits ("e" after a letter) are not numbers and stay as written.
+TEST(FuzzRegression, HugeMtlExponentIsInfiniteAndNamesStay) {
+    FuzzFiles files;
+    files.write("exponents.mtl", "newmtl x1e12345678901\nKd 1e2147483648 0.5 0.25\nNs 1e-99999999999\n");
+    const TriangleMesh mesh = loadObjMesh(files.write("exponents.obj", "mtllib exponents.mtl\nv 0 0 0\nv 1 0 0\n"
+                                                                       "v 0 1 0\nusemtl x1e12345678901\nf 1 2 3\n"));
+    ASSERT_EQ(mesh.fileMaterials.size(), 1u);
+    const MeshMaterial& material = mesh.fileMaterials[0];
+    EXPECT_EQ(material.name, "x1e12345678901");
+    EXPECT_TRUE(std::isinf(material.diffuse.r) && material.diffuse.r > 0.0f) << material.diffuse.r;
+    EXPECT_EQ(material.diffuse.g, 0.5f);
+    EXPECT_EQ(material.diffuse.b, 0.25f);
+    EXPECT_EQ(material.shininess, 0.0f);
+    ASSERT_EQ(mesh.materialSlots.size(), 2u);
+    EXPECT_EQ(mesh.materialSlots[1], "x1e12345678901");
+}
+
+} // namespace
+} // namespace ptview
