@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -860,6 +861,10 @@ class BsdfReciprocity : public ::testing::TestWithParam<ReciprocityCase> {};
 // Pairs where f lies outside [1e-6, 1e7] are skipped as beyond what float tells apart (a value
 // of 1e-6 is nothing next to the lobe; above 1e7 the spike is narrower than float's resolution
 // of directions) and reported.
+// The half vector of a nearly opposite pair, (wo + wi) / |wo + wi|, is ill-conditioned: float
+// rounding turns it by about FLT_EPSILON / |wo + wi| radians, and D changes by a few times that
+// relative per radian at moderate roughness. Such pairs (both grazing, on opposite azimuths) get
+// that much more slack, 8 FLT_EPSILON / |wo + wi|; at |wo + wi| = 0.005 the tolerance is 3e-4.
 TEST_P(BsdfReciprocity, FIsSymmetric) {
     const Material& material = GetParam().material;
     const bool transmission = material.type == MaterialType::DiffuseTransmission;
@@ -878,7 +883,9 @@ TEST_P(BsdfReciprocity, FIsSymmetric) {
         if (wos.size() % 2 == 0) {
             wi = uniformUpper();
         } else {
-            glm::dvec3 h = glm::normalize(glm::dvec3(2.0 * alpha * normal(random), 2.0 * alpha * normal(random), 1.0));
+            // Braces, not parentheses: a braced list is evaluated left to right, a call's arguments in an
+            // unspecified order (GCC and clang differ), and the draws must be the same on every compiler.
+            glm::dvec3 h = glm::normalize(glm::dvec3{2.0 * alpha * normal(random), 2.0 * alpha * normal(random), 1.0});
             wi = 2.0 * glm::dot(wo, h) * h - wo;
             if (wi.z <= 0.0) continue;
         }
@@ -911,7 +918,8 @@ TEST_P(BsdfReciprocity, FIsSymmetric) {
                 worst = error;
                 worstPair = n;
             }
-            if (error > 1e-4 && ++bad <= 3)
+            const double tolerance = 1e-4 + 8.0 * FLT_EPSILON / std::max(1e-3, double(glm::length(wos[n] + wis[n])));
+            if (error > tolerance && ++bad <= 3)
                 ADD_FAILURE() << "wo (" << wos[n].x << ", " << wos[n].y << ", " << wos[n].z << "), wi (" << wis[n].x << ", "
                               << wis[n].y << ", " << wis[n].z << "): f " << a << " but reversed " << b;
         }

@@ -61,7 +61,9 @@ glm::vec3 uniformInBox(std::mt19937& rng, float halfSize) {
 glm::vec3 uniformDirection(std::mt19937& rng) {
     std::normal_distribution<float> normal;
     for (;;) {
-        glm::vec3 d(normal(rng), normal(rng), normal(rng));
+        // Braces, not parentheses: a braced list is evaluated left to right, a call's arguments in an
+        // unspecified order (GCC and clang differ), and the draws must be the same on every compiler.
+        glm::vec3 d{normal(rng), normal(rng), normal(rng)};
         if (glm::dot(d, d) > 1e-6f) return glm::normalize(d);
     }
 }

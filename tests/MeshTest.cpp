@@ -30,8 +30,10 @@ std::shared_ptr<TriangleMesh> triangleSoup(int count, std::uint32_t seed) {
     mesh->source = "soup";
     mesh->materialSlots = {""};
     for (int i = 0; i < count; ++i) {
-        glm::vec3 center(unit(rng), unit(rng), unit(rng));
-        for (int k = 0; k < 3; ++k) mesh->positions.push_back(center + glm::vec3(offset(rng), offset(rng), offset(rng)));
+        // Braces, not parentheses: a braced list is evaluated left to right, a call's arguments in an
+        // unspecified order (GCC and clang differ), and the draws must be the same on every compiler.
+        glm::vec3 center{unit(rng), unit(rng), unit(rng)};
+        for (int k = 0; k < 3; ++k) mesh->positions.push_back(center + glm::vec3{offset(rng), offset(rng), offset(rng)});
         auto first = static_cast<std::uint32_t>(3 * i);
         mesh->triangles.push_back(MeshTriangle{{first, first + 1, first + 2}, {-1, -1, -1}, {-1, -1, -1}, 0});
     }
@@ -190,10 +192,10 @@ TEST(Mesh, GpuTraversalAgreesWithBruteForceForNearestAndAnyHits) {
     std::vector<glm::vec3> origins, directions;
     for (int i = 0; i < 20000; ++i) {
         glm::vec3 direction;
-        do direction = glm::vec3(unit(rng), unit(rng), unit(rng));
+        do direction = glm::vec3{unit(rng), unit(rng), unit(rng)};
         while (glm::length(direction) < 0.1f);
-        glm::vec3 origin(inBox(rng), inBox(rng), inBox(rng));
-        if (i % 2 == 0) direction = glm::vec3(2.0f * unit(rng), unit(rng), unit(rng)) - origin; // toward the meshes
+        glm::vec3 origin{inBox(rng), inBox(rng), inBox(rng)};
+        if (i % 2 == 0) direction = glm::vec3{2.0f * unit(rng), unit(rng), unit(rng)} - origin; // toward the meshes
         origins.push_back(origin);
         directions.push_back(glm::normalize(direction));
     }
@@ -247,7 +249,7 @@ TEST(Mesh, RaysFromInsideAClosedMeshNeverEscape) {
     std::vector<glm::vec3> origins, directions;
     for (int i = 0; i < 100000; ++i) {
         glm::vec3 inside;
-        do inside = glm::vec3(unit(rng), unit(rng), unit(rng));
+        do inside = glm::vec3{unit(rng), unit(rng), unit(rng)};
         while (glm::length(inside) > 0.9f);
         glm::vec3 origin = glm::vec3(toWorld * glm::vec4(inside, 1.0f));
         glm::vec3 direction;
@@ -257,7 +259,7 @@ TEST(Mesh, RaysFromInsideAClosedMeshNeverEscape) {
             glm::vec3 target = (i % 4 == 0) ? a : 0.5f * (a + b);
             direction = glm::vec3(toWorld * glm::vec4(target, 1.0f)) - origin;
         } else {
-            direction = glm::vec3(unit(rng), unit(rng), unit(rng));
+            direction = glm::vec3{unit(rng), unit(rng), unit(rng)};
         }
         if (glm::length(direction) < 1e-3f) direction = glm::vec3(0.0f, 1.0f, 0.0f);
         origins.push_back(origin);
