@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace ptview {
@@ -25,19 +26,32 @@ void appendBytes(void* context, void* data, int size) {
 
 } // namespace
 
+// The bytes go to a temporary file beside the target, are flushed to the disk (fsync), and only
+// then renamed over the target: rename within a directory is atomic, so a reader, a crash or a
+// full disk sees either the old file or the whole new one, never a truncated mix. The temporary
+// name carries the process id so that two ptview processes writing one path do not share it.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& bytes) {
     std::filesystem::path temporary = path;
     temporary += ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) fail(path, std::string("cannot write: ") + std::strerror(errno));
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            fail(path, "write failed (disk full?)");
-        }
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) fail(path, std::string("cannot write: ") + std::strerror(errno));
+    auto abandon = [&](const std::string& why) {
+        ::close(fd);
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        fail(path, why);
+    };
+    for (std::size_t written = 0; written < bytes.size();) {
+        const ::ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) abandon(std::string("write failed: ") + std::strerror(n < 0 ? errno : EIO));
+        written += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0) abandon(std::string("write failed: ") + std::strerror(errno));
+    if (::close(fd) != 0) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        fail(path, std::string("write failed: ") + std::strerror(errno));
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);

@@ -14,6 +14,7 @@
 #include <istream>
 #include <iterator>
 #include <map>
+#include <new>
 #include <streambuf>
 #include <string_view>
 #include <system_error>
@@ -568,9 +569,8 @@ void ObjBuilder::finish(std::size_t polylines, std::size_t points, std::vector<s
     }
 }
 
-} // namespace
 
-TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report) {
+TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* report) {
     MeshLoadReport unread;
     std::vector<std::string>& warnings = (report ? *report : unread).warnings;
     const std::string file = path.string();
@@ -602,6 +602,21 @@ TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
 
     builder.finish(countRecords(bytes, 'l'), countRecords(bytes, 'p'), warnings);
     return mesh;
+}
+
+} // namespace
+
+TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report) {
+    try {
+        return readObjMesh(path, report);
+    } catch (const std::bad_alloc&) {
+        // A mesh larger than memory is a limit of this machine, not a crash: the scene loader and
+        // the viewer report it like any other file they cannot use. What was built is freed by now.
+        std::error_code ignored;
+        const std::uintmax_t size = std::filesystem::file_size(path, ignored);
+        throw MeshError(path.string() + ": not enough memory to load it (" +
+                        (ignored ? std::string("size unknown") : std::to_string(size / (1024 * 1024)) + " MiB on disk") + ")");
+    }
 }
 
 } // namespace ptview

@@ -3,6 +3,7 @@
 configuration, with the reference's own noise floor. Called by `ptview converge`; needs Debian's
 python3-matplotlib (scripts/setup installs it). Usage: plot_convergence.py CSV PNG [FLOOR]"""
 import csv
+import os
 import sys
 
 import matplotlib
@@ -33,7 +34,15 @@ def main():
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(png_path)
+    # Drawn beside the target and renamed over it, so that an interrupted run never leaves a
+    # truncated PNG in place of the last good plot.
+    temporary = f"{png_path}.tmp-{os.getpid()}"
+    try:
+        fig.savefig(temporary, format="png")
+        os.replace(temporary, png_path)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,19 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+// AddressSanitizer reserves terabytes of address space for its shadow, so an address-space limit
+// cannot be set under it.
+#if defined(__SANITIZE_ADDRESS__)
+#define PTVIEW_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PTVIEW_UNDER_ASAN 1
+#endif
+#endif
 
 namespace ptview {
 namespace {
@@ -378,6 +390,44 @@ TEST(ObjLoader, DragonLoadsAndReportsItsPolylines) {
     for (const MeshTriangle& triangle : mesh.triangles)
         for (std::int32_t n : triangle.normal) ASSERT_GE(n, 0);
     for (const glm::vec3& n : mesh.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
+}
+
+// A mesh larger than the memory left is an error naming the file, not a crash: a child process
+// limits its address space to 8 MiB beyond what it already uses and loads a 32 MiB OBJ.
+TEST(ObjLoader, MeshBeyondMemoryIsAnErrorNamingTheFile) {
+#ifdef PTVIEW_UNDER_ASAN
+    GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#else
+    ObjFiles files;
+    std::string text;
+    const std::string vertex = "v 0.5 0.25 1\n";
+    text.reserve(32u << 20);
+    while (text.size() + vertex.size() < (32u << 20)) text += vertex;
+    text += "f 1 2 3\n";
+    const fs::path path = files.write("huge.obj", text);
+    text = std::string();
+    const std::string expected =
+        path.string() + ": not enough memory to load it (" + std::to_string(fs::file_size(path) >> 20) + " MiB on disk)";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        long pages = 0;
+        if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+            if (std::fscanf(statm, "%ld", &pages) != 1) pages = 0;
+            std::fclose(statm);
+        }
+        if (pages <= 0) ::_exit(3);
+        const rlim_t bytes = rlim_t(pages) * rlim_t(::sysconf(_SC_PAGESIZE)) + (8u << 20);
+        const rlimit limit{bytes, bytes};
+        if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(3);
+        const std::string message = errorFrom(path);
+        ::_exit(message == expected ? 0 : 1);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status)) << "the loader crashed (signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << ")";
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: not the expected MeshError, 3: no limit could be set";
+#endif
 }
 
 } // namespace
