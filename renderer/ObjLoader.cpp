@@ -246,6 +246,33 @@ MeshMaterial toMeshMaterial(const tinyobj::material_t& entry) {
     return material;
 }
 
+// A value that is not a finite number (NaN, or an overflow such as "Ke 1e39") cannot become a
+// colour or an index of refraction; it is put back to MeshMaterial's default, with a warning naming
+// the MTL file, the material and the key, as a vertex with such a coordinate is dropped.
+void repairNonFiniteValues(MeshMaterial& material, const std::string& mtlFile, std::vector<std::string>& warnings) {
+    const MeshMaterial defaults;
+    auto warn = [&](const char* key) {
+        warnings.push_back(mtlFile + ": material \"" + material.name + "\": " + key +
+                           " is not a finite number; using the default");
+    };
+    auto repairColour = [&](glm::vec3& value, const glm::vec3& fallback, const char* key) {
+        if (std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z)) return;
+        value = fallback;
+        warn(key);
+    };
+    auto repairNumber = [&](float& value, float fallback, const char* key) {
+        if (std::isfinite(value)) return;
+        value = fallback;
+        warn(key);
+    };
+    repairColour(material.diffuse, defaults.diffuse, "Kd");
+    repairColour(material.specular, defaults.specular, "Ks");
+    repairColour(material.emission, defaults.emission, "Ke");
+    repairNumber(material.shininess, defaults.shininess, "Ns");
+    repairNumber(material.ior, defaults.ior, "Ni");
+    repairNumber(material.dissolve, defaults.dissolve, "d (or Tr)");
+}
+
 // Looks for each `mtllib` file in the OBJ's directory (tinyobjloader's own file reader splits its
 // search path at ':' and, for an OBJ path without a directory, looks nowhere), and words what
 // happens in our terms, naming the MTL file.
@@ -276,8 +303,10 @@ public:
         tinyobj::LoadMtl(nameToIndex, materials, &stream, &mtlWarnings, &mtlErrors);
         appendMessages(path.string(), mtlWarnings + mtlErrors, warnings_);
         if (materials->size() == before) warnings_.push_back(path.string() + ": defines no materials");
-        for (std::size_t i = before; i < materials->size(); ++i)
+        for (std::size_t i = before; i < materials->size(); ++i) {
             mesh_.fileMaterials.push_back(toMeshMaterial((*materials)[i]));
+            repairNonFiniteValues(mesh_.fileMaterials.back(), path.string(), warnings_);
+        }
         return true;
     }
 

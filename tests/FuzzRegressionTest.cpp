@@ -5,6 +5,7 @@
 // Debian's library), so here it shows as what it did to the numbers: they read as 0.
 
 #include "ObjLoader.h"
+#include "Scene.h"
 
 #include <gtest/gtest.h>
 
@@ -91,23 +92,53 @@ TEST(FuzzRegression, HugeExponentsReadAsInfinityOrZero) {
         << report.warnings[0];
 }
 
-// The same parser reads MTL values: a huge exponent there is infinite too, not undefined behaviour
-// and not a silent 0, and the values around it are untouched. Names that merely contain such
-// digits ("e" after a letter) are not numbers and stay as written.
-TEST(FuzzRegression, HugeMtlExponentIsInfiniteAndNamesStay) {
+// The same parser reads MTL values: a huge exponent there is not undefined behaviour and not a
+// silent 0 but infinity, which no colour can be, so it gets the default with a warning naming the
+// MTL file, the material and the key; the values around it are untouched. ("nan" is no concern
+// here: tinyobjloader reads it as 0.) Names that
+// merely contain such digits ("e" after a letter) are not numbers and stay as written.
+TEST(FuzzRegression, HugeMtlExponentIsRepairedWithAWarningAndNamesStay) {
     FuzzFiles files;
-    files.write("exponents.mtl", "newmtl x1e12345678901\nKd 1e2147483648 0.5 0.25\nNs 1e-99999999999\n");
+    const fs::path mtl = files.write("exponents.mtl", "newmtl x1e12345678901\nKd 1e2147483648 0.5 0.25\nNs 1e-99999999999\n"
+                                                      "Ke 0 1e39 0\nNi 1e39\n");
+    MeshLoadReport report;
     const TriangleMesh mesh = loadObjMesh(files.write("exponents.obj", "mtllib exponents.mtl\nv 0 0 0\nv 1 0 0\n"
-                                                                       "v 0 1 0\nusemtl x1e12345678901\nf 1 2 3\n"));
+                                                                       "v 0 1 0\nusemtl x1e12345678901\nf 1 2 3\n"),
+                                          &report);
     ASSERT_EQ(mesh.fileMaterials.size(), 1u);
     const MeshMaterial& material = mesh.fileMaterials[0];
+    const MeshMaterial defaults;
     EXPECT_EQ(material.name, "x1e12345678901");
-    EXPECT_TRUE(std::isinf(material.diffuse.r) && material.diffuse.r > 0.0f) << material.diffuse.r;
-    EXPECT_EQ(material.diffuse.g, 0.5f);
-    EXPECT_EQ(material.diffuse.b, 0.25f);
-    EXPECT_EQ(material.shininess, 0.0f);
+    EXPECT_EQ(material.diffuse, defaults.diffuse);
+    EXPECT_EQ(material.emission, defaults.emission);
+    EXPECT_EQ(material.ior, defaults.ior);
+    EXPECT_EQ(material.shininess, 0.0f); // 1e-99999999999 is a finite 0
+    ASSERT_EQ(report.warnings.size(), 3u) << testing::PrintToString(report.warnings);
+    const std::string prefix = mtl.string() + ": material \"x1e12345678901\": ";
+    EXPECT_EQ(report.warnings[0], prefix + "Kd is not a finite number; using the default");
+    EXPECT_EQ(report.warnings[1], prefix + "Ke is not a finite number; using the default");
+    EXPECT_EQ(report.warnings[2], prefix + "Ni is not a finite number; using the default");
     ASSERT_EQ(mesh.materialSlots.size(), 2u);
     EXPECT_EQ(mesh.materialSlots[1], "x1e12345678901");
+}
+
+// What the scene target found: a mesh file's material with "Ke 1e39" became a scene material of
+// infinite radiance. Now every material a scene gets from a mesh file is finite and in range.
+TEST(FuzzRegression, SceneMaterialsFromAnMtlAreFiniteAndInRange) {
+    const fs::path sceneFile = kFuzzData / "scene_mtl_infinite_emission" / "scenes" / "scene.json";
+    ASSERT_TRUE(fs::exists(sceneFile)) << sceneFile;
+    const Scene scene = loadScene(sceneFile);
+    ASSERT_EQ(scene.materials.size(), 3u); // white, mesh/a, mesh/b
+    for (const Material& material : scene.materials) {
+        SCOPED_TRACE(material.name);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_TRUE(material.color[c] >= 0.0f && material.color[c] <= 1.0f) << material.color[c];
+            EXPECT_TRUE(std::isfinite(material.radiance[c]) && material.radiance[c] >= 0.0f) << material.radiance[c];
+        }
+        EXPECT_TRUE(material.ior >= 1.0f && material.ior <= 4.0f) << material.ior;
+        EXPECT_TRUE(material.roughness >= 0.0f && material.roughness <= 1.0f) << material.roughness;
+    }
+    EXPECT_FALSE(scene.warnings.empty());
 }
 
 } // namespace
