@@ -13,6 +13,11 @@ float maxMagnitude(vec3 p) {
     return max(abs(p.x), max(abs(p.y), abs(p.z)));
 }
 
+// How far spawnRay moves a surface point off its surface (see there).
+float spawnOffset(vec3 posWorld) {
+    return kRelativeOffset * maxMagnitude(posWorld) + kSceneOffset * uSceneRadius;
+}
+
 struct Hit {
     float t;
     vec3 posWorld;
@@ -43,7 +48,16 @@ float intersectSphere(Ray ray, vec4 sphere) {
 }
 
 // Parallelogram center ± u ± v. `dual` turns the hit offset into the coordinates along u and v
-// without assuming u and v orthogonal.
+// without assuming u and v orthogonal: a = dot(offset, cross(v, dual)), b = dot(offset,
+// cross(dual, u)), the reciprocal basis of (u, v).
+//
+// The coordinate test is conservative by the rounding error of the hit offset (a few ulps of the
+// magnitudes that went into it, mapped through the reciprocal basis): a ray aimed exactly at an
+// edge two quads share otherwise misses both when each one's coordinate rounds just above 1, and
+// light leaks through the seam. A bound, not a constant, keeps it right at any scale and for quads
+// small beside their distance from the origin.
+const float kQuadHitError = 1e-6; // ~16 ulps: the rounding of o + t*d - center, t's included
+
 float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
     vec3 n = cross(u, v);
     float denom = dot(ray.direction, n);
@@ -51,9 +65,26 @@ float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
     float t = dot(center - ray.origin, n) / denom;
     if (!(t > 0.0)) return kInfinity;
     vec3 offset = ray.origin + t * ray.direction - center;
-    float a = dot(dual, cross(offset, v));
-    float b = dot(dual, cross(u, offset));
-    return (abs(a) <= 1.0 && abs(b) <= 1.0) ? t : kInfinity;
+    vec3 du = cross(v, dual);
+    vec3 dv = cross(dual, u);
+    float error = kQuadHitError * (maxMagnitude(ray.origin) + t + maxMagnitude(center));
+    return (abs(dot(offset, du)) <= 1.0 + error * dot(abs(du), vec3(1.0)) &&
+            abs(dot(offset, dv)) <= 1.0 + error * dot(abs(dv), vec3(1.0))) ? t : kInfinity;
+}
+
+// The point of a quad a ray hit, rebuilt from its coordinates (so it lies on the quad's plane up
+// to the rounding of center + a*u + b*v, not o + t*d), and kept `inset` away from the quad's
+// edges. A path vertex on the edge where two quads meet lies on the other quad's plane too;
+// spawnRay pushes it off this quad only, so a ray leaving towards the other quad starts on its
+// plane at t = 0 and passes through the seam. Moved inside by as much as spawnRay moves it off,
+// the vertex sits at 45 degrees from the edge, inside any corner of more than 45 degrees.
+vec3 quadSurfacePoint(vec3 p, vec3 center, vec3 u, vec3 v, vec3 dual, float inset) {
+    vec3 du = cross(v, dual); // 1 / length(du): the distance from an edge along v per unit of a
+    vec3 dv = cross(dual, u);
+    vec3 offset = p - center;
+    float aMax = max(1.0 - inset * length(du), 0.0);
+    float bMax = max(1.0 - inset * length(dv), 0.0);
+    return center + clamp(dot(offset, du), -aMax, aMax) * u + clamp(dot(offset, dv), -bMax, bMax) * v;
 }
 
 // Disk of the given center, unit normal and radius.
@@ -102,8 +133,12 @@ bool intersectScene(Ray ray, out Hit hit) {
         hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
         ids = sphereIds(sphereHit);
     } else if (quadHit >= 0) {
-        hit.normalGeom = normalize(cross(texelFetch(uQuads, 4 * quadHit + 1).xyz,
-                                         texelFetch(uQuads, 4 * quadHit + 2).xyz));
+        vec3 center = texelFetch(uQuads, 4 * quadHit).xyz;
+        vec3 u = texelFetch(uQuads, 4 * quadHit + 1).xyz;
+        vec3 v = texelFetch(uQuads, 4 * quadHit + 2).xyz;
+        hit.normalGeom = normalize(cross(u, v));
+        hit.posWorld = quadSurfacePoint(hit.posWorld, center, u, v, texelFetch(uQuads, 4 * quadHit + 3).xyz,
+                                        spawnOffset(hit.posWorld));
         ids = quadIds(quadHit);
     } else {
         hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
@@ -142,7 +177,6 @@ bool occluded(Ray ray, float maxDistance, int light) {
 // because float spacing does, and with the scene's size, because the hit point's error grows with
 // the length of the ray that found it: so a scene scaled by 1e-3 or 1e4 behaves as at 1.
 Ray spawnRay(vec3 posWorld, vec3 normalGeom, vec3 directionWorld) {
-    float offset = kRelativeOffset * maxMagnitude(posWorld) + kSceneOffset * uSceneRadius;
     vec3 side = dot(directionWorld, normalGeom) >= 0.0 ? normalGeom : -normalGeom;
-    return Ray(posWorld + side * offset, directionWorld);
+    return Ray(posWorld + side * spawnOffset(posWorld), directionWorld);
 }
