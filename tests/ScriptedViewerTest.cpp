@@ -178,10 +178,12 @@ TEST_F(ScriptedViewer, BrokenSceneOnDiskIsReportedAndTheSceneKeepsRendering) {
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "broken.json") << "{ \"camera\": { \"eye\": [0, 1, ";
     testing::CommandResult result = runViewer(directory, (directory / "scene.json").string(), R"(resolution-scale 0.25
+target-spp 4
 wait-spp 2
 copy-file broken.json scene.json
 wait-reload
 status
+integrator direct
 wait-spp 4
 status
 quit
@@ -190,7 +192,10 @@ quit
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 2u) << result.output;
     EXPECT_NE(field(status[0], "scene-error").find("scene.json"), std::string::npos) << status[0];
+    // The restart (a new integrator) proves that samples still come after the broken reload; the
+    // target stops them at exactly 4 (without one, a frame may add several and pass 4).
     EXPECT_EQ(field(status[1], "spp"), "4") << "the last good scene keeps rendering";
+    EXPECT_EQ(field(status[1], "scene-error"), field(status[0], "scene-error")) << "the error stays shown";
     fs::remove_all(directory);
 }
 
