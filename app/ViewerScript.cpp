@@ -402,7 +402,10 @@ void checkWord(const LineContext& at, const std::string& prefix, const ArgSpec& 
         if (!value) at.fail(prefix + "expected a number" + orKeyword + " for " + arg.meta + ", got " + inQuotes(word));
         if (!std::isfinite(*value)) at.fail(prefix + arg.meta + " must be a finite number, got " + inQuotes(word));
         if (std::abs(*value) > FLT_MAX) at.fail(prefix + arg.meta + " is too large for a float, got " + inQuotes(word));
-        if (*value < arg.lo || *value > arg.hi || (arg.loOpen && *value == arg.lo)) outOfRange();
+        // The range holds for the float the viewer gets (number()), not for the double read here:
+        // "camera-zoom 1e-60" is above 0 as a double but 0 as a float.
+        const double asFloat = static_cast<float>(*value);
+        if (asFloat < arg.lo || asFloat > arg.hi || (arg.loOpen && asFloat == arg.lo)) outOfRange();
         break;
     }
     case ArgType::Choice: {
@@ -550,7 +553,11 @@ ViewerScript parseViewerScript(const std::string& text, const std::filesystem::p
         // comments after a command, which scripts want more.
         if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
         if (trim(line).empty()) continue;
-        script.commands.push_back(parseLine(LineContext{sourceName, lineNumber}, line));
+        const LineContext at{sourceName, lineNumber};
+        // The operating system reads a path only up to a NUL, so "screenshot a\0.png" would pass
+        // the extension check and write a PNG to "a". A script is text: a NUL is refused outright.
+        if (line.find('\0') != std::string_view::npos) at.fail("a NUL byte in the line (a script is text)");
+        script.commands.push_back(parseLine(at, line));
     }
     return script;
 }

@@ -2,6 +2,7 @@
 
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -89,12 +91,30 @@ ImageRgbF readPfm(const std::filesystem::path& path) {
     if (width <= 0 || height <= 0 || width > 65536 || height > 65536) fail(path, "bad PFM size");
     if (scale >= 0.0) fail(path, "big-endian PFM is not supported");
     in.get(); // the single whitespace byte that ends the header
-    ImageRgbF image(width, height);
-    size_t rowFloats = static_cast<size_t>(width) * 3;
-    for (int y = height - 1; y >= 0; --y)
-        in.read(reinterpret_cast<char*>(image.rgb.data() + static_cast<size_t>(y) * rowFloats),
-                static_cast<std::streamsize>(rowFloats * sizeof(float)));
-    if (!in) fail(path, "truncated PFM data");
+
+    // The header alone must not decide how much memory is taken: a file of 20 bytes may claim
+    // 65536 x 65536 pixels (48 GiB). The pixels are read a chunk at a time, so what is allocated
+    // never runs more than a chunk (and the vector's growth) ahead of what the file holds.
+    constexpr size_t kChunkFloats = size_t(1) << 20; // 4 MiB
+    const size_t rowFloats = static_cast<size_t>(width) * 3;
+    const size_t floatCount = rowFloats * static_cast<size_t>(height);
+    std::vector<float> stored; // the rows as the file stores them, bottom to top
+    while (stored.size() < floatCount) {
+        const size_t offset = stored.size();
+        const size_t count = std::min(kChunkFloats, floatCount - offset);
+        stored.resize(offset + count);
+        if (!in.read(reinterpret_cast<char*>(stored.data() + offset), static_cast<std::streamsize>(count * sizeof(float))))
+            fail(path, "truncated PFM data (the header says " + std::to_string(width) + "x" + std::to_string(height) +
+                           " pixels)");
+    }
+    for (size_t top = 0, bottom = static_cast<size_t>(height) - 1; top < bottom; ++top, --bottom)
+        std::swap_ranges(stored.begin() + static_cast<std::ptrdiff_t>(top * rowFloats),
+                         stored.begin() + static_cast<std::ptrdiff_t>((top + 1) * rowFloats),
+                         stored.begin() + static_cast<std::ptrdiff_t>(bottom * rowFloats));
+    ImageRgbF image;
+    image.width = width;
+    image.height = height;
+    image.rgb = std::move(stored);
     return image;
 }
 

@@ -4,17 +4,34 @@
 // tinyobjloader, which only the fuzz build compiles with sanitizers (the test suite links
 // Debian's library), so here it shows as what it did to the numbers: they read as 0.
 
+#include "ImageIO.h"
 #include "ObjLoader.h"
 #include "Scene.h"
+#include "ViewerScript.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+// AddressSanitizer reserves terabytes of address space for its shadow, so an address-space limit
+// cannot be set under it.
+#if defined(__SANITIZE_ADDRESS__)
+#define PTVIEW_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PTVIEW_UNDER_ASAN 1
+#endif
+#endif
 
 namespace ptview {
 namespace {
@@ -139,6 +156,99 @@ TEST(FuzzRegression, SceneMaterialsFromAnMtlAreFiniteAndInRange) {
         EXPECT_TRUE(material.roughness >= 0.0f && material.roughness <= 1.0f) << material.roughness;
     }
     EXPECT_FALSE(scene.warnings.empty());
+}
+
+// The ScriptError message of parsing text, or a note that there was none.
+std::string scriptErrorFrom(const std::string& text, const fs::path& sourceName) {
+    try {
+        parseViewerScript(text, sourceName);
+    } catch (const ScriptError& error) {
+        return error.what();
+    }
+    return "(no ScriptError thrown)";
+}
+
+// A literal's bytes, NULs included.
+template <std::size_t N>
+std::string bytesOf(const char (&literal)[N]) {
+    return std::string(literal, N - 1);
+}
+
+std::string readBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+// The script target's input "screenshot b\0\0\0.PNG": the path passed the extension check, but
+// the operating system reads a path only up to its first NUL, so the viewer would have written a
+// PNG to "b". A NUL in a command is refused, naming the line; one in a comment is still a comment.
+TEST(FuzzRegression, ScriptNulByteInACommandIsRefused) {
+    const fs::path file = kFuzzData / "script_nul_in_path.txt";
+    ASSERT_TRUE(fs::exists(file)) << file;
+    const std::string text = readBytes(file);
+    ASSERT_NE(text.find('\0'), std::string::npos);
+    EXPECT_EQ(scriptErrorFrom(text, file), file.string() + ":1: a NUL byte in the line (a script is text)");
+    EXPECT_EQ(scriptErrorFrom(bytesOf("depth 2\nset-material gl\0ass.ior 1.5\n"), "s.txt"),
+              "s.txt:2: a NUL byte in the line (a script is text)");
+    const ViewerScript commented =
+        parseViewerScript(bytesOf("screenshot shot.png # a \0 in a comment\n"), "s.txt");
+    ASSERT_EQ(commented.commands.size(), 1u);
+    EXPECT_EQ(commented.commands[0].words, std::vector<std::string>{"shot.png"});
+}
+
+// Found by the script target's range checks on a hand-written input, not by mutation: a number is
+// range-checked as a double but reaches the viewer as a float, so "camera-zoom 1e-60" (> 0) gave
+// a factor of 0. The range now holds for the float; the smallest float above 0 is still allowed.
+TEST(FuzzRegression, ScriptNumberThatRoundsToZeroIsOutOfAnOpenRange) {
+    EXPECT_EQ(scriptErrorFrom("camera-zoom 1e-60\n", "s.txt"), "s.txt:1: camera-zoom: FACTOR must be > 0, got 1e-60");
+    EXPECT_EQ(scriptErrorFrom("camera-zoom 5e-46\n", "s.txt"), "s.txt:1: camera-zoom: FACTOR must be > 0, got 5e-46");
+    const ViewerScript script = parseViewerScript("camera-zoom 1e-45\nenvironment-rotation 1e-60\n", "s.txt");
+    ASSERT_EQ(script.commands.size(), 2u);
+    EXPECT_GT(script.commands[0].number(0), 0.0f);
+    EXPECT_EQ(script.commands[1].number(0), 0.0f); // a closed range (any finite number) may get 0
+}
+
+// The PFM target's input: a 32-byte file whose header claims 65536 x 65536 pixels. readPfm
+// allocated the 48 GiB the header promised before reading a pixel (an out-of-memory abort under
+// the fuzzer, std::bad_alloc or the OOM killer elsewhere). Now it is refused as truncated, naming
+// the file, having allocated little: a child process runs it with its address space limited to
+// 64 MiB beyond what it already uses (not under AddressSanitizer, which cannot run so limited).
+TEST(FuzzRegression, PfmHeaderClaimingMorePixelsThanTheFileHoldsIsRefused) {
+    const fs::path file = kFuzzData / "pfm_65536x65536_in_32_bytes.pfm";
+    ASSERT_TRUE(fs::exists(file)) << file;
+    ASSERT_EQ(fs::file_size(file), 32u);
+    const std::string expected = file.string() + ": truncated PFM data (the header says 65536x65536 pixels)";
+    std::fflush(nullptr); // the child must not write our buffered output a second time
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+#ifndef PTVIEW_UNDER_ASAN
+        long pages = 0;
+        if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+            if (std::fscanf(statm, "%ld", &pages) != 1) pages = 0;
+            std::fclose(statm);
+        }
+        if (pages <= 0) ::_exit(3);
+        const rlim_t bytes = rlim_t(pages) * rlim_t(::sysconf(_SC_PAGESIZE)) + (64u << 20);
+        const rlimit limit{bytes, bytes};
+        if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(3);
+#endif
+        try {
+            readPfm(file);
+        } catch (const std::runtime_error& error) {
+            ::_exit(error.what() == expected ? 0 : 1);
+        } catch (...) {
+            ::_exit(2);
+        }
+        ::_exit(1);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status)) << "the reader crashed (signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << ")";
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: not the expected error, 2: another exception (std::bad_alloc: the header's "
+                                         "size was allocated), 3: no limit could be set";
 }
 
 } // namespace

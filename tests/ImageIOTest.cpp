@@ -69,6 +69,31 @@ TEST(Pfm, ReadsTheReferenceWithTopLeftOrigin) {
     EXPECT_NEAR(floor.r, 0.2421, 5e-4);
 }
 
+// readPfm reads the pixels a chunk (2^20 floats) at a time and then puts the rows top first: an
+// image of several chunks, whose rows straddle the chunk boundaries, must come back as written.
+TEST(Pfm, ImageOfSeveralReadChunksRoundTrips) {
+    ImageRgbF image(700, 601); // 1 261 260 floats; an odd height leaves a middle row in place
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) image.set(x, y, {float(y), float(x), float(x + y * image.width)});
+    fs::path path = tempPath("chunks.pfm");
+    writePfm(path, image);
+    ImageRgbF back = readPfm(path);
+    EXPECT_EQ(back.width, image.width);
+    EXPECT_EQ(back.height, image.height);
+    EXPECT_TRUE(back.rgb == image.rgb);
+
+    // One byte short, in the last chunk: refused, naming the file and the size the header claims.
+    const std::string bytes = readBytes(path);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() - 1);
+    try {
+        readPfm(path);
+        ADD_FAILURE() << "read a truncated file";
+    } catch (const std::runtime_error& error) {
+        EXPECT_EQ(std::string(error.what()), path.string() + ": truncated PFM data (the header says 700x601 pixels)");
+    }
+    fs::remove(path);
+}
+
 TEST(Pfm, RejectsTruncatedAndForeignFiles) {
     fs::path path = tempPath("bad.pfm");
     std::ofstream(path, std::ios::binary) << "PF\n4 4\n-1.0\n" << std::string(10, '\0');

@@ -1,0 +1,79 @@
+// libFuzzer target for readPfm (`--reference` of the viewer and of `converge`): the header (magic,
+// size, scale and the byte that ends it), the limits on the size, and the pixel rows, stored
+// bottom to top.
+//
+// readPfm reads a file (there is no variant that takes bytes), so each input is written to a
+// private directory first.
+//
+// A std::runtime_error whose message names the file is the documented refusal; anything else (a
+// sanitizer report, another exception, a hang, an allocation beyond -rss_limit_mb, an image whose
+// size disagrees with its pixel count) is a finding. A header may claim 65536 x 65536 pixels
+// (48 GiB) in a file of a few bytes: such a file must be refused, not believed.
+
+#include "ImageIO.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path gDirectory; // removed at exit
+fs::path gInput;
+
+void removeDirectory() {
+    std::error_code ignored;
+    fs::remove_all(gDirectory, ignored);
+}
+
+void require(bool holds, const char* promise) {
+    if (holds) return;
+    std::fprintf(stderr, "fuzz_pfm_reader: %s\n", promise);
+    std::abort();
+}
+
+// What the error metrics rely on once a reference has loaded (Image.h): a size within the
+// reader's limit and three floats for each of its pixels.
+void checkImage(const ptview::ImageRgbF& image) {
+    require(image.width >= 1 && image.height >= 1 && image.width <= 65536 && image.height <= 65536,
+            "loaded image breaks a promise: size within [1, 65536]");
+    require(image.rgb.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3,
+            "loaded image breaks a promise: 3 floats per pixel");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    gDirectory = fs::temp_directory_path() / ("ptview-fuzz-pfm-" + std::to_string(::getpid()));
+    fs::create_directories(gDirectory);
+    std::atexit(removeDirectory);
+    gInput = gDirectory / "in.pfm";
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    {
+        std::ofstream file(gInput, std::ios::binary | std::ios::trunc);
+        file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!file) {
+            std::fprintf(stderr, "fuzz_pfm_reader: cannot write %s\n", gInput.c_str());
+            std::abort();
+        }
+    }
+    try {
+        checkImage(ptview::readPfm(gInput));
+    } catch (const std::runtime_error& error) {
+        // The documented refusal of a file that cannot be used, which says which file.
+        require(std::string(error.what()).rfind(gInput.string() + ": ", 0) == 0, "a refusal that does not name the file");
+    }
+    return 0;
+}
