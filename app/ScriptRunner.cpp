@@ -156,7 +156,7 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             else if (command.field == "position")
                 light.position = command.vec3(0);
             else if (command.field == "direction")
-                light.direction = glm::normalize(command.vec3(0));
+                light.direction = unitDirection(command.vec3(0));
             else if (command.field == "inner-angle")
                 light.innerAngleDeg = std::min(command.number(0), light.outerAngleDeg);
             else if (command.field == "outer-angle")

@@ -126,6 +126,10 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
 
 // The rotation of a box as a matrix (local to world).
 glm::mat3 boxRotation(const Shape& box);
+// v at unit length, with the length taken in double: a float's squares underflow below about
+// 1e-19 and overflow above about 1e19, which turned (1e-30, 0, 0) into Inf and (1e20, 1e20, 1e20)
+// into (0, 0, 0). v must not be (0, 0, 0).
+glm::vec3 unitDirection(glm::dvec3 v);
 // Rodrigues' rotation about axis (any length; zero: none) by degrees.
 glm::mat3 rotationMatrix(glm::vec3 axis, float degrees);
 

@@ -314,10 +314,10 @@ bool areParallel(const glm::vec3& a, const glm::vec3& b) {
 // is kept as written: normalizing it again could move it by an ulp, and then a file the writer
 // wrote (which holds the stored unit vector) would not read back bit for bit.
 glm::vec3 readDirection(const Json& value, const Pointer& at) {
-    glm::dvec3 v(readNonzeroVec3(value, at)); // double: squaring 1e30 would overflow a float
-    double length = glm::length(v);
-    if (std::abs(length - 1.0) <= 1e-6) return glm::vec3(v);
-    return glm::vec3(v / length);
+    glm::vec3 v = readNonzeroVec3(value, at);
+    // A direction written at unit length is kept as written, so a scene saved again reads the same.
+    if (std::abs(glm::length(glm::dvec3(v)) - 1.0) <= 1e-6) return v;
+    return unitDirection(v);
 }
 
 glm::ivec2 readResolution(const Json& value, const Pointer& at) {
@@ -892,12 +892,15 @@ glm::mat4 Transform::objectToWorld() const {
     return matrix;
 }
 
+glm::vec3 unitDirection(glm::dvec3 v) {
+    return glm::vec3(v / glm::length(v));
+}
+
 glm::mat3 rotationMatrix(glm::vec3 axis, float degrees) {
-    float axisLength = glm::length(axis);
     // Only scenes built in code can get here with a zero axis; no rotation beats NaNs.
-    if (!(axisLength > 0.0f))
+    if (axis == glm::vec3(0.0f))
         return glm::mat3(1.0f);
-    glm::vec3 k = axis / axisLength;
+    glm::vec3 k = unitDirection(axis);
     float angle = glm::radians(degrees);
     float c = std::cos(angle);
     float s = std::sin(angle);

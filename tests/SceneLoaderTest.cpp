@@ -150,13 +150,17 @@ TEST(SceneLoader, CornellBoxesAreYawedAboutY) {
 // --- boxRotation --------------------------------------------------------------------------------
 
 TEST(SceneLoader, BoxRotationMatchesReferenceYaw) {
-    for (float degrees : {17.0f, -17.0f, 90.0f, 200.0f}) {
-        Shape box;
-        box.type = ShapeType::Box;
-        box.rotationAxis = glm::vec3(0.0f, 3.0f, 0.0f); // not unit: must be normalized
-        box.rotationDeg = degrees;
-        expectReferenceYaw(boxRotation(box), degrees);
-    }
+    // Not unit: normalized, in double, so that a float's square neither underflows (3e-30) nor
+    // overflows (1e25); either one once made this the identity or a scaling.
+    for (float axisLength : {3.0f, 3e-30f, 1e25f})
+        for (float degrees : {17.0f, -17.0f, 90.0f, 200.0f}) {
+            Shape box;
+            box.type = ShapeType::Box;
+            box.rotationAxis = glm::vec3(0.0f, axisLength, 0.0f);
+            box.rotationDeg = degrees;
+            SCOPED_TRACE("axis length " + std::to_string(axisLength));
+            expectReferenceYaw(boxRotation(box), degrees);
+        }
 }
 
 TEST(SceneLoader, BoxRotationFollowsRightHandRule) {

@@ -136,6 +136,32 @@ quit
     fs::remove_all(directory);
 }
 
+// A direction is any non-zero vector and is stored at unit length. A float's square underflows
+// for (1e-30, 0, 0) and overflows for (1e20, 1e20, 1e20): normalized in float they became Inf and
+// (0, 0, 0), and the spot light a NaN in the shader.
+TEST_F(ScriptedViewer, SpotDirectionsOfExtremeLengthAreStoredAtUnitLength) {
+    fs::path directory = freshDirectory("directions");
+    testing::CommandResult result = runViewer(directory, PTVIEW_ASSETS_DIR "/scenes/lights.json", R"(resolution-scale 0.125
+set-light spot.direction 1e-30 0 0
+save-scene tiny.json
+set-light spot.direction 1e20 1e20 1e20
+save-scene huge.json
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    auto spotDirection = [](const Scene& scene) {
+        for (const Light& light : scene.lights)
+            if (light.name == "spot") return light.direction;
+        ADD_FAILURE() << "no light \"spot\" in " << scene.path;
+        return glm::vec3(0.0f);
+    };
+    glm::vec3 tiny = spotDirection(loadScene(directory / "tiny.json"));
+    glm::vec3 huge = spotDirection(loadScene(directory / "huge.json"));
+    EXPECT_EQ(tiny, glm::vec3(1.0f, 0.0f, 0.0f));
+    for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(huge[axis], 1.0f / std::sqrt(3.0f), 1e-6f);
+    fs::remove_all(directory);
+}
+
 TEST_F(ScriptedViewer, SplitViewShowsTwoIntegratorsWithTheirSampleCountsAndADivider) {
     fs::path directory = freshDirectory("compare");
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.25
