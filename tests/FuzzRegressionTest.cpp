@@ -5,6 +5,7 @@
 // Debian's library), so here it shows as what it did to the numbers: they read as 0.
 
 #include "ImageIO.h"
+#include "LimitedChild.h"
 #include "ObjLoader.h"
 #include "Scene.h"
 #include "ViewerScript.h"
@@ -19,19 +20,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-// AddressSanitizer reserves terabytes of address space for its shadow, so an address-space limit
-// cannot be set under it.
-#if defined(__SANITIZE_ADDRESS__)
-#define PTVIEW_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PTVIEW_UNDER_ASAN 1
-#endif
-#endif
 
 namespace ptview {
 namespace {
@@ -54,7 +43,7 @@ std::string meshErrorFrom(const fs::path& path) {
 class FuzzFiles {
 public:
     FuzzFiles() {
-        const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+        const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
         dir_ = fs::temp_directory_path() / ("ptview_fuzz_regression_" + std::to_string(::getpid()) + "_" + test->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
@@ -130,7 +119,7 @@ TEST(FuzzRegression, HugeMtlExponentIsRepairedWithAWarningAndNamesStay) {
     EXPECT_EQ(material.emission, defaults.emission);
     EXPECT_EQ(material.ior, defaults.ior);
     EXPECT_EQ(material.shininess, 0.0f); // 1e-99999999999 is a finite 0
-    ASSERT_EQ(report.warnings.size(), 3u) << testing::PrintToString(report.warnings);
+    ASSERT_EQ(report.warnings.size(), 3u) << ::testing::PrintToString(report.warnings);
     const std::string prefix = mtl.string() + ": material \"x1e12345678901\": ";
     EXPECT_EQ(report.warnings[0], prefix + "Kd is not a finite number; using the default");
     EXPECT_EQ(report.warnings[1], prefix + "Ke is not a finite number; using the default");
@@ -220,35 +209,26 @@ TEST(FuzzRegression, PfmHeaderClaimingMorePixelsThanTheFileHoldsIsRefused) {
     ASSERT_TRUE(fs::exists(file)) << file;
     ASSERT_EQ(fs::file_size(file), 32u);
     const std::string expected = file.string() + ": truncated PFM data (the header says 65536x65536 pixels)";
-    std::fflush(nullptr); // the child must not write our buffered output a second time
-    const pid_t child = ::fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-#ifndef PTVIEW_UNDER_ASAN
-        long pages = 0;
-        if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
-            if (std::fscanf(statm, "%ld", &pages) != 1) pages = 0;
-            std::fclose(statm);
-        }
-        if (pages <= 0) ::_exit(3);
-        const rlim_t bytes = rlim_t(pages) * rlim_t(::sysconf(_SC_PAGESIZE)) + (64u << 20);
-        const rlimit limit{bytes, bytes};
-        if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(3);
+#ifdef PTVIEW_UNDER_ASAN
+    const rlim_t limit = RLIM_INFINITY;
+#else
+    const rlim_t inUse = testing::addressSpaceInUse();
+    ASSERT_GT(inUse, 0u) << "/proc/self/statm does not say how much memory this process uses";
+    const rlim_t limit = inUse + (64u << 20);
 #endif
+    const testing::ChildExit child = testing::runInLimitedChild(RLIMIT_AS, limit, [&] {
         try {
             readPfm(file);
         } catch (const std::runtime_error& error) {
-            ::_exit(error.what() == expected ? 0 : 1);
+            return error.what() == expected ? 0 : 1;
         } catch (...) {
-            ::_exit(2);
+            return 2;
         }
-        ::_exit(1);
-    }
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFEXITED(status)) << "the reader crashed (signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << ")";
-    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: not the expected error, 2: another exception (std::bad_alloc: the header's "
-                                         "size was allocated), 3: no limit could be set";
+        return 1;
+    });
+    ASSERT_EQ(child.signal, 0) << "the reader crashed";
+    EXPECT_EQ(child.code, 0) << "1: not the expected error, 2: another exception (std::bad_alloc: the header's "
+                                "size was allocated), 3: no limit could be set";
 }
 
 } // namespace

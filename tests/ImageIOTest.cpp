@@ -1,4 +1,5 @@
 #include "ImageIO.h"
+#include "LimitedChild.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +9,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace ptview {
@@ -134,25 +133,19 @@ TEST(AtomicWrite, WriteCutShortLeavesTheOldFileWhole) {
     fs::path path = dir / "image.pfm";
     const std::string old = "the good file from before";
     std::ofstream(path, std::ios::binary) << old;
-    const pid_t child = ::fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-        std::signal(SIGXFSZ, SIG_IGN); // the write then fails with EFBIG instead of killing us
-        const rlimit limit{4096, 4096};
-        if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(3);
+    const testing::ChildExit child = testing::runInLimitedChild(RLIMIT_FSIZE, 4096, [&] {
+        std::signal(SIGXFSZ, SIG_IGN); // the write then fails with EFBIG instead of killing the child
         try {
             writeFileAtomically(path, std::string(1 << 20, 'x'));
         } catch (const std::runtime_error& error) {
             // The message names the file and says why.
             const std::string what = error.what();
-            ::_exit(what.find(path.string()) == 0 && what.find("write failed") != std::string::npos ? 0 : 2);
+            return what.find(path.string()) == 0 && what.find("write failed") != std::string::npos ? 0 : 2;
         }
-        ::_exit(1); // no error: the limit did not bite
-    }
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: the write did not fail, 2: the message did not name the file, 3: no limit";
+        return 1; // no error: the limit did not bite
+    });
+    ASSERT_EQ(child.signal, 0);
+    EXPECT_EQ(child.code, 0) << "1: the write did not fail, 2: the message did not name the file, 3: no limit";
     EXPECT_EQ(readBytes(path), old);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "a temporary was left";
     fs::remove_all(dir);

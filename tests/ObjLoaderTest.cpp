@@ -2,6 +2,7 @@
 // what is skipped or dropped and the warning that says so, what is refused and the message that
 // names the file), and the project's meshes load with their known triangle counts.
 
+#include "LimitedChild.h"
 #include "ObjLoader.h"
 
 #include <gtest/gtest.h>
@@ -15,20 +16,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-// AddressSanitizer reserves terabytes of address space for its shadow, so an address-space limit
-// cannot be set under it.
-#if defined(__SANITIZE_ADDRESS__)
-#define PTVIEW_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PTVIEW_UNDER_ASAN 1
-#endif
-#endif
-
 namespace ptview {
 namespace {
 
@@ -38,7 +25,7 @@ namespace fs = std::filesystem;
 class ObjFiles {
 public:
     ObjFiles() {
-        const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+        const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
         dir_ = fs::temp_directory_path() / ("ptview_obj_" + std::to_string(::getpid()) + "_" + test->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
@@ -408,25 +395,13 @@ TEST(ObjLoader, MeshBeyondMemoryIsAnErrorNamingTheFile) {
     text = std::string();
     const std::string expected =
         path.string() + ": not enough memory to load it (" + std::to_string(fs::file_size(path) >> 20) + " MiB on disk)";
-    const pid_t child = ::fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-        long pages = 0;
-        if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
-            if (std::fscanf(statm, "%ld", &pages) != 1) pages = 0;
-            std::fclose(statm);
-        }
-        if (pages <= 0) ::_exit(3);
-        const rlim_t bytes = rlim_t(pages) * rlim_t(::sysconf(_SC_PAGESIZE)) + (8u << 20);
-        const rlimit limit{bytes, bytes};
-        if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(3);
-        const std::string message = errorFrom(path);
-        ::_exit(message == expected ? 0 : 1);
-    }
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFEXITED(status)) << "the loader crashed (signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << ")";
-    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: not the expected MeshError, 3: no limit could be set";
+    const rlim_t inUse = testing::addressSpaceInUse();
+    ASSERT_GT(inUse, 0u) << "/proc/self/statm does not say how much memory this process uses";
+    const testing::ChildExit child = testing::runInLimitedChild(RLIMIT_AS, inUse + (8u << 20), [&] {
+        return errorFrom(path) == expected ? 0 : 1;
+    });
+    ASSERT_EQ(child.signal, 0) << "the loader crashed";
+    EXPECT_EQ(child.code, 0) << "1: not the expected MeshError, 3: no limit could be set";
 #endif
 }
 
