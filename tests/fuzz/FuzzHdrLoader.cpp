@@ -8,6 +8,7 @@
 // An EnvironmentMapError is the documented refusal; anything else (a sanitizer report, another
 // exception, a map that breaks the promises of EnvironmentMap.h, a hang) is a finding.
 
+#include "FuzzScratch.h"
 #include "EnvironmentMap.h"
 
 #include <cmath>
@@ -16,23 +17,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path gDirectory; // removed at exit
 fs::path gInput;
-
-void removeDirectory() {
-    std::error_code ignored;
-    fs::remove_all(gDirectory, ignored);
-}
 
 void require(bool holds, const char* promise) {
     if (holds) return;
@@ -71,22 +63,12 @@ void checkMap(const ptview::EnvironmentMap& map) {
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    gDirectory = fs::temp_directory_path() / ("ptview-fuzz-hdr-" + std::to_string(::getpid()));
-    fs::create_directories(gDirectory);
-    std::atexit(removeDirectory);
-    gInput = gDirectory / "in.hdr";
+    gInput = ptview::fuzz::makeScratchDirectory("hdr") / "in.hdr";
     return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    {
-        std::ofstream file(gInput, std::ios::binary | std::ios::trunc);
-        file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-        if (!file) {
-            std::fprintf(stderr, "fuzz_hdr_loader: cannot write %s\n", gInput.c_str());
-            std::abort();
-        }
-    }
+    ptview::fuzz::writeInput(gInput, std::string_view(reinterpret_cast<const char*>(data), size));
     try {
         checkMap(ptview::loadEnvironmentMap(gInput));
     } catch (const ptview::EnvironmentMapError&) {

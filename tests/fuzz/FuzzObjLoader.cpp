@@ -8,6 +8,7 @@
 // A MeshError is the documented refusal; anything else (a sanitizer report, another exception, a
 // mesh that breaks the promises of TriangleMesh.h) is a finding.
 
+#include "FuzzScratch.h"
 #include "ObjLoader.h"
 
 #include <cmath>
@@ -17,30 +18,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path gDirectory; // removed at exit; left behind after a crash, with the input that caused it
-
-void removeDirectory() {
-    std::error_code ignored;
-    fs::remove_all(gDirectory, ignored);
-}
-
-void writeFile(const fs::path& path, const char* bytes, std::size_t size) {
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    file.write(bytes, static_cast<std::streamsize>(size));
-    if (!file) {
-        std::fprintf(stderr, "fuzz_obj_loader: cannot write %s\n", path.c_str());
-        std::abort();
-    }
-}
+fs::path gDirectory;
 
 void require(bool holds, const char* promise) {
     if (holds) return;
@@ -78,9 +62,7 @@ void checkMesh(const ptview::TriangleMesh& mesh) {
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    gDirectory = fs::temp_directory_path() / ("ptview-fuzz-obj-" + std::to_string(::getpid()));
-    fs::create_directories(gDirectory);
-    std::atexit(removeDirectory);
+    gDirectory = ptview::fuzz::makeScratchDirectory("obj");
     return 0;
 }
 
@@ -95,9 +77,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     const fs::path obj = gDirectory / "in.obj";
     const fs::path mtl = gDirectory / "in.mtl";
-    writeFile(obj, bytes, objSize);
+    ptview::fuzz::writeInput(obj, std::string_view(bytes, objSize));
     if (marker) {
-        writeFile(mtl, bytes + objSize + markerSize, size - objSize - markerSize);
+        ptview::fuzz::writeInput(mtl, std::string_view(bytes + objSize + markerSize, size - objSize - markerSize));
     } else {
         std::error_code ignored;
         fs::remove(mtl, ignored);

@@ -10,6 +10,7 @@
 // size disagrees with its pixel count) is a finding. A header may claim 65536 x 65536 pixels
 // (48 GiB) in a file of a few bytes: such a file must be refused, not believed.
 
+#include "FuzzScratch.h"
 #include "ImageIO.h"
 
 #include <cstddef>
@@ -17,23 +18,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
-
-#include <unistd.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path gDirectory; // removed at exit
 fs::path gInput;
-
-void removeDirectory() {
-    std::error_code ignored;
-    fs::remove_all(gDirectory, ignored);
-}
 
 void require(bool holds, const char* promise) {
     if (holds) return;
@@ -53,22 +45,12 @@ void checkImage(const ptview::ImageRgbF& image) {
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    gDirectory = fs::temp_directory_path() / ("ptview-fuzz-pfm-" + std::to_string(::getpid()));
-    fs::create_directories(gDirectory);
-    std::atexit(removeDirectory);
-    gInput = gDirectory / "in.pfm";
+    gInput = ptview::fuzz::makeScratchDirectory("pfm") / "in.pfm";
     return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    {
-        std::ofstream file(gInput, std::ios::binary | std::ios::trunc);
-        file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-        if (!file) {
-            std::fprintf(stderr, "fuzz_pfm_reader: cannot write %s\n", gInput.c_str());
-            std::abort();
-        }
-    }
+    ptview::fuzz::writeInput(gInput, std::string_view(reinterpret_cast<const char*>(data), size));
     try {
         checkImage(ptview::readPfm(gInput));
     } catch (const std::runtime_error& error) {

@@ -12,6 +12,7 @@
 // A SceneError is the documented refusal; anything else (a sanitizer report, another exception, a
 // scene that breaks the promises of Scene.h) is a finding.
 
+#include "FuzzScratch.h"
 #include "Scene.h"
 
 #include <cmath>
@@ -21,17 +22,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
-
-#include <unistd.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path gDirectory; // removed at exit
+fs::path gDirectory;
 fs::path gSceneFile; // never written: parseScene takes the text, and only resolves paths against it
 
 // Two slots with MTL materials (one of them emissive) and faces before any usemtl: every way
@@ -59,20 +57,6 @@ Ke 4 4 4
 )";
 const char kPlainObj[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 const char kFuzzObj[] = "mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 2 4 3\n";
-
-void removeDirectory() {
-    std::error_code ignored;
-    fs::remove_all(gDirectory, ignored);
-}
-
-void writeFile(const fs::path& path, const std::string& text) {
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    file << text;
-    if (!file) {
-        std::fprintf(stderr, "fuzz_scene_loader: cannot write %s\n", path.c_str());
-        std::abort();
-    }
-}
 
 void require(bool holds, const char* promise) {
     if (holds) return;
@@ -123,14 +107,13 @@ void checkScene(const ptview::Scene& scene) {
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    gDirectory = fs::temp_directory_path() / ("ptview-fuzz-scene-" + std::to_string(::getpid()));
+    gDirectory = ptview::fuzz::makeScratchDirectory("scene");
     fs::create_directories(gDirectory / "scenes");
     fs::create_directories(gDirectory / "meshes");
-    std::atexit(removeDirectory);
-    writeFile(gDirectory / "meshes" / "slots.obj", kSlotsObj);
-    writeFile(gDirectory / "meshes" / "slots.mtl", kSlotsMtl);
-    writeFile(gDirectory / "meshes" / "plain.obj", kPlainObj);
-    writeFile(gDirectory / "meshes" / "fuzz.obj", kFuzzObj);
+    ptview::fuzz::writeInput(gDirectory / "meshes" / "slots.obj", kSlotsObj);
+    ptview::fuzz::writeInput(gDirectory / "meshes" / "slots.mtl", kSlotsMtl);
+    ptview::fuzz::writeInput(gDirectory / "meshes" / "plain.obj", kPlainObj);
+    ptview::fuzz::writeInput(gDirectory / "meshes" / "fuzz.obj", kFuzzObj);
     gSceneFile = gDirectory / "scenes" / "fuzz.json";
     return 0;
 }
@@ -144,7 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const void* marker = ::memmem(bytes, size, kMtlMarker, markerSize);
     const std::size_t sceneSize = marker ? static_cast<std::size_t>(static_cast<const char*>(marker) - bytes) : size;
     const std::string mtl = marker ? std::string(bytes + sceneSize + markerSize, size - sceneSize - markerSize) : "";
-    writeFile(gDirectory / "meshes" / "fuzz.mtl", mtl);
+    ptview::fuzz::writeInput(gDirectory / "meshes" / "fuzz.mtl", mtl);
     try {
         checkScene(ptview::parseScene(std::string(bytes, sceneSize), gSceneFile));
     } catch (const ptview::SceneError&) {

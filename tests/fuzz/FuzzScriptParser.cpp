@@ -67,24 +67,10 @@ std::vector<Arg> vec3(double lo = -kInf, double hi = kInf) { return {number(lo, 
 
 // The name tables are the enums' own: the documentation lists the same words, and a renamed
 // integrator is not the parser's business.
-std::vector<std::string> integrators() {
+template <typename NameTable>
+std::vector<std::string> namesOf(const NameTable& table) {
     std::vector<std::string> names;
-    for (const ptview::IntegratorName& entry : ptview::integratorNames()) names.emplace_back(entry.name);
-    return names;
-}
-std::vector<std::string> samplers() {
-    std::vector<std::string> names;
-    for (const ptview::SamplerModeName& entry : ptview::samplerModeNames()) names.emplace_back(entry.name);
-    return names;
-}
-std::vector<std::string> toneMappers() {
-    std::vector<std::string> names;
-    for (const ptview::ToneMapperName& entry : ptview::toneMapperNames()) names.emplace_back(entry.name);
-    return names;
-}
-std::vector<std::string> materialTypes() {
-    std::vector<std::string> names;
-    for (const ptview::MaterialSchema& schema : ptview::kMaterialSchemas) names.emplace_back(schema.name);
+    for (const auto& entry : table) names.emplace_back(entry.name);
     return names;
 }
 
@@ -96,12 +82,12 @@ struct Field {
 const std::map<std::string, std::vector<Arg>>& commands() {
     static const std::map<std::string, std::vector<Arg>> table = [] {
         std::map<std::string, std::vector<Arg>> t;
-        t["integrator"] = {choice(integrators())};
-        t["sampler"] = {choice(samplers())};
+        t["integrator"] = {choice(namesOf(ptview::integratorNames()))};
+        t["sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
         t["depth"] = {integer(0, 1024)};
         t["seed"] = {unsignedInteger()};
         t["exposure"] = {number(-20, 20)};
-        t["tone-mapper"] = {choice(toneMappers())};
+        t["tone-mapper"] = {choice(namesOf(ptview::toneMapperNames()))};
         t["resolution-scale"] = {number(0.125, 2)};
         t["samples-per-frame"] = {integer(1, 1024, "auto")};
         t["pause"] = {};
@@ -124,8 +110,8 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["save-scene"] = {path({".json"})};
         t["copy-file"] = {token(), token()};
         t["compare"] = {choice({"on", "off"})};
-        t["compare-integrator"] = {choice(integrators())};
-        t["compare-sampler"] = {choice(samplers())};
+        t["compare-integrator"] = {choice(namesOf(ptview::integratorNames()))};
+        t["compare-sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
         t["compare-depth"] = {integer(0, 1024)};
         t["divider"] = {number(0, 1)};
         t["frames"] = {integer(1)};
@@ -144,7 +130,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
 
 const std::map<std::string, Field>& fieldsOf(const std::string& verb) {
     static const std::map<std::string, Field> material = {
-        {"type", {{choice(materialTypes())}}},
+        {"type", {{choice(namesOf(ptview::kMaterialSchemas))}}},
         {"color", {vec3(0, 1)}},
         {"emission", {vec3(0)}},
         {"ior", {{number(1, 4)}}},
