@@ -2,6 +2,7 @@
 // configuration, errors against a reference of another seed are never zero, and a biased
 // configuration (one bounce against a deep reference) is reported as such, not hidden.
 #include "RunCommand.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -51,13 +52,6 @@ double slope(const std::vector<Row>& rows, int from) {
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 TEST(Converge, UnbiasedErrorFallsAsOneOverSppAndBiasIsReported) {
     fs::path out = fs::temp_directory_path() / ("ptview_converge_" + std::to_string(::getpid()));
     fs::remove_all(out);
@@ -83,7 +77,7 @@ TEST(Converge, UnbiasedErrorFallsAsOneOverSppAndBiasIsReported) {
     // One bounce against a deep reference: the error levels off far above the unbiased one's.
     EXPECT_GT(slope(oneBounce, 8), -0.3);
     EXPECT_GT(oneBounce.back().relativeMse, 5.0 * unbiased.back().relativeMse);
-    std::string summary = readText(out / "summary.md");
+    std::string summary = testing::readFileBytes(out / "summary.md");
     std::istringstream lines(summary);
     for (std::string line; std::getline(lines, line);) {
         if (line.rfind("| full/random/1 |", 0) == 0) EXPECT_NE(line.find("**biased**"), std::string::npos) << line;

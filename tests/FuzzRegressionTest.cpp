@@ -8,19 +8,17 @@
 #include "LimitedChild.h"
 #include "ObjLoader.h"
 #include "Scene.h"
+#include "TestFiles.h"
 #include "ViewerScript.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-
-#include <unistd.h>
 
 namespace ptview {
 namespace {
@@ -39,29 +37,6 @@ std::string meshErrorFrom(const fs::path& path) {
     return "(no MeshError thrown)";
 }
 
-// A fresh directory per test, removed afterwards.
-class FuzzFiles {
-public:
-    FuzzFiles() {
-        const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("ptview_fuzz_regression_" + std::to_string(::getpid()) + "_" + test->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    ~FuzzFiles() {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-    fs::path write(const std::string& name, const std::string& text) const {
-        const fs::path path = dir_ / name;
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
-    }
-
-private:
-    fs::path dir_;
-};
-
 // The OBJ target's input "v 0 0e2147483648": an exponent one past INT_MAX overflowed
 // tinyobjloader's int (undefined behaviour, which UBSan stopped on in the fuzz build). Now the file
 // is read to the end and refused for what it is, a file without faces.
@@ -75,7 +50,7 @@ TEST(FuzzRegression, ObjExponentPastIntMaxIsReadSafely) {
 // of 1e99999999999, which tinyobjloader read as 0) is infinite, so the triangle that uses it is
 // dropped as ObjLoader.h says; one of 1e-99999999999 is 0, a finite coordinate that stays.
 TEST(FuzzRegression, HugeExponentsReadAsInfinityOrZero) {
-    FuzzFiles files;
+    testing::ScratchFiles files("fuzz_regression");
     MeshLoadReport report;
     const TriangleMesh mesh = loadObjMesh(files.write("exponents.obj",
                                                       "v 0 0 0\n"
@@ -104,7 +79,7 @@ TEST(FuzzRegression, HugeExponentsReadAsInfinityOrZero) {
 // here: tinyobjloader reads it as 0.) Names that
 // merely contain such digits ("e" after a letter) are not numbers and stay as written.
 TEST(FuzzRegression, HugeMtlExponentIsRepairedWithAWarningAndNamesStay) {
-    FuzzFiles files;
+    testing::ScratchFiles files("fuzz_regression");
     const fs::path mtl = files.write("exponents.mtl", "newmtl x1e12345678901\nKd 1e2147483648 0.5 0.25\nNs 1e-99999999999\n"
                                                       "Ke 0 1e39 0\nNi 1e39\n");
     MeshLoadReport report;
@@ -163,20 +138,13 @@ std::string bytesOf(const char (&literal)[N]) {
     return std::string(literal, N - 1);
 }
 
-std::string readBytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
-}
-
 // The script target's input "screenshot b\0\0\0.PNG": the path passed the extension check, but
 // the operating system reads a path only up to its first NUL, so the viewer would have written a
 // PNG to "b". A NUL in a command is refused, naming the line; one in a comment is still a comment.
 TEST(FuzzRegression, ScriptNulByteInACommandIsRefused) {
     const fs::path file = kFuzzData / "script_nul_in_path.txt";
     ASSERT_TRUE(fs::exists(file)) << file;
-    const std::string text = readBytes(file);
+    const std::string text = testing::readFileBytes(file);
     ASSERT_NE(text.find('\0'), std::string::npos);
     EXPECT_EQ(scriptErrorFrom(text, file), file.string() + ":1: a NUL byte in the line (a script is text)");
     EXPECT_EQ(scriptErrorFrom(bytesOf("depth 2\nset-material gl\0ass.ior 1.5\n"), "s.txt"),

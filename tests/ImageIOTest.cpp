@@ -1,5 +1,6 @@
 #include "ImageIO.h"
 #include "LimitedChild.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +8,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <unistd.h>
 
@@ -20,13 +20,6 @@ fs::path tempPath(const std::string& name) {
     return fs::temp_directory_path() / ("ptview_imageio_" + std::to_string(::getpid()) + "_" + name);
 }
 
-std::string readBytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 TEST(Pfm, RoundTripsAndStoresRowsBottomToTop) {
     ImageRgbF image(2, 2);
     image.set(0, 0, {1.0f, 0.0f, 0.0f}); // top row
@@ -36,7 +29,7 @@ TEST(Pfm, RoundTripsAndStoresRowsBottomToTop) {
     fs::path path = tempPath("rows.pfm");
     writePfm(path, image);
 
-    std::string bytes = readBytes(path);
+    std::string bytes = testing::readFileBytes(path);
     const std::string header = "PF\n2 2\n-1.0\n";
     ASSERT_EQ(bytes.substr(0, header.size()), header);
     float firstStored[3];
@@ -82,7 +75,7 @@ TEST(Pfm, ImageOfSeveralReadChunksRoundTrips) {
     EXPECT_TRUE(back.rgb == image.rgb);
 
     // One byte short, in the last chunk: refused, naming the file and the size the header claims.
-    const std::string bytes = readBytes(path);
+    const std::string bytes = testing::readFileBytes(path);
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() - 1);
     try {
         readPfm(path);
@@ -108,7 +101,7 @@ TEST(AtomicWrite, ReplacesWholeFileAndLeavesNoTemporary) {
     fs::path path = dir / "out.bin";
     std::ofstream(path) << "old contents that are longer";
     writeFileAtomically(path, "new");
-    EXPECT_EQ(readBytes(path), "new");
+    EXPECT_EQ(testing::readFileBytes(path), "new");
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
     fs::remove_all(dir);
 }
@@ -146,7 +139,7 @@ TEST(AtomicWrite, WriteCutShortLeavesTheOldFileWhole) {
     });
     ASSERT_EQ(child.signal, 0);
     EXPECT_EQ(child.code, 0) << "1: the write did not fail, 2: the message did not name the file, 3: no limit";
-    EXPECT_EQ(readBytes(path), old);
+    EXPECT_EQ(testing::readFileBytes(path), old);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "a temporary was left";
     fs::remove_all(dir);
 }

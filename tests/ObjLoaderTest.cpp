@@ -4,15 +4,14 @@
 
 #include "LimitedChild.h"
 #include "ObjLoader.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -20,30 +19,6 @@ namespace ptview {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A fresh directory per test, removed afterwards, for the files each test writes.
-class ObjFiles {
-public:
-    ObjFiles() {
-        const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("ptview_obj_" + std::to_string(::getpid()) + "_" + test->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    ~ObjFiles() {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-
-    fs::path write(const std::string& name, const std::string& text) const {
-        const fs::path path = dir_ / name;
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
-    }
-
-private:
-    fs::path dir_;
-};
 
 // The message of the MeshError that loading throws, or a note that it threw none.
 std::string errorFrom(const fs::path& path) {
@@ -73,7 +48,7 @@ constexpr float kEps = 1e-6f;
 const char* const kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
 TEST(ObjLoader, QuadBecomesTwoTrianglesSharingCornerZero) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh =
         loadObjMesh(files.write("quad.obj", std::string(kSquare) + "f 1 2 3 4\n"), &report);
@@ -89,14 +64,14 @@ TEST(ObjLoader, QuadBecomesTwoTrianglesSharingCornerZero) {
 }
 
 TEST(ObjLoader, CommentAfterAFaceIsNotMoreCorners) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const TriangleMesh mesh =
         loadObjMesh(files.write("comment.obj", std::string(kSquare) + "f 1 2 3 4 # a quad\n"));
     EXPECT_EQ(mesh.triangles.size(), 2u);
 }
 
 TEST(ObjLoader, PentagonBecomesAFanOfThree) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const TriangleMesh mesh =
         loadObjMesh(files.write("pentagon.obj", std::string(kSquare) + "v 0.5 1.5 0\nf 1 2 3 5 4\n"));
     ASSERT_EQ(mesh.triangles.size(), 3u);
@@ -106,7 +81,7 @@ TEST(ObjLoader, PentagonBecomesAFanOfThree) {
 }
 
 TEST(ObjLoader, NormalsAndTexcoordsArePerCornerAndNormalsUnit) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const TriangleMesh mesh = loadObjMesh(
         files.write("attributes.obj", std::string(kSquare) + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0.25 0.75\n"
                                                              "vn 0 0 2\nvn 3 4 0\n"
@@ -129,7 +104,7 @@ TEST(ObjLoader, NormalsAndTexcoordsArePerCornerAndNormalsUnit) {
 }
 
 TEST(ObjLoader, UsemtlSlotsAndMtlValues) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     files.write("materials.mtl",
                 "newmtl red\nKd 0.8 0.1 0.1\nKs 0.2 0.3 0.4\nNs 50\nNi 1.33\nd 0.5\nillum 4\n"
                 "newmtl lamp\nKd 0 0 0\nKe 10 9 8\nTr 0.25\nillum 2\n");
@@ -166,7 +141,7 @@ TEST(ObjLoader, UsemtlSlotsAndMtlValues) {
 }
 
 TEST(ObjLoader, MissingMtlIsAWarningAndFacesKeepTheirSlotNames) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh =
         loadObjMesh(files.write("nomtl.obj", "mtllib gone.mtl\n" + std::string(kSquare) +
@@ -183,7 +158,7 @@ TEST(ObjLoader, MissingMtlIsAWarningAndFacesKeepTheirSlotNames) {
 }
 
 TEST(ObjLoader, PolylinesAndPointsAreSkippedWithOneWarning) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh = loadObjMesh(
         files.write("lines.obj",
@@ -197,7 +172,7 @@ TEST(ObjLoader, PolylinesAndPointsAreSkippedWithOneWarning) {
 }
 
 TEST(ObjLoader, DegenerateTrianglesAreDroppedWithACount) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh = loadObjMesh(
         files.write("degenerate.obj", std::string(kSquare) + "v 2 0 0\nv 1 0 0\n"
@@ -212,7 +187,7 @@ TEST(ObjLoader, DegenerateTrianglesAreDroppedWithACount) {
 }
 
 TEST(ObjLoader, NonFiniteVertexDropsTheTrianglesUsingIt) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     // "nan" would read as 0 in tinyobjloader; 1e39 overflows a float; CRLF line ends must not
     // confuse which line is which.
@@ -232,7 +207,7 @@ TEST(ObjLoader, NonFiniteVertexDropsTheTrianglesUsingIt) {
 }
 
 TEST(ObjLoader, ZeroLengthOrNanNormalShadesFlat) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh = loadObjMesh(
         files.write("badnormal.obj", std::string(kSquare) + "vn 0 0 1\nvn 0 0 0\nvn nan 0 1\n"
@@ -251,7 +226,7 @@ TEST(ObjLoader, ZeroLengthOrNanNormalShadesFlat) {
 // float squared length to infinity, and the "normalized" result was the zero vector, kept as if
 // it were a direction. In double it normalizes to the unit vector it is.
 TEST(ObjLoader, HugeNormalComponentsStillNormalize) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh =
         loadObjMesh(files.write("hugenormal.obj", std::string(kSquare) + "vn 0 0 3e20\nvn 1e38 1e38 0\nf 1//1 2//2 3//1\n"),
@@ -263,7 +238,7 @@ TEST(ObjLoader, HugeNormalComponentsStillNormalize) {
 }
 
 TEST(ObjLoader, IndexOutOfRangeIsAnErrorNamingFileLineAndFace) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const std::string message =
         errorFrom(files.write("range.obj", std::string(kSquare) + "f 1 2 3\nf 1 2 9\nf 1 2 4\n"));
     EXPECT_TRUE(contains(message, "range.obj:6: face 2, corner 3 (\"9\"): position index 9 is out of range"))
@@ -289,14 +264,14 @@ TEST(ObjLoader, IndexOutOfRangeIsAnErrorNamingFileLineAndFace) {
 }
 
 TEST(ObjLoader, FacesMayComeBeforeTheirVertices) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const TriangleMesh mesh = loadObjMesh(files.write("forward.obj", "f 1 2 3\n" + std::string(kSquare)));
     ASSERT_EQ(mesh.triangles.size(), 1u);
     EXPECT_EQ(mesh.triangles[0].position, (std::array<std::uint32_t, 3>{0, 1, 2}));
 }
 
 TEST(ObjLoader, MissingFileIsAnErrorNamingIt) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const fs::path missing = files.write("present.obj", "").parent_path() / "absent.obj";
     const std::string message = errorFrom(missing);
     EXPECT_EQ(message.rfind(missing.string() + ": cannot open", 0), 0u) << message;
@@ -307,7 +282,7 @@ TEST(ObjLoader, MissingFileIsAnErrorNamingIt) {
 // A file cut off in the middle of its last face loads the complete faces before it and says what
 // it skipped; a vertex cut short is unusable rather than padded with zeros.
 TEST(ObjLoader, TruncatedFileLoadsWhatIsComplete) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     MeshLoadReport report;
     const TriangleMesh mesh =
         loadObjMesh(files.write("cut.obj", std::string(kSquare) + "f 1 2 3\nf 1 3 4\nf 1 2"), &report);
@@ -323,7 +298,7 @@ TEST(ObjLoader, TruncatedFileLoadsWhatIsComplete) {
 }
 
 TEST(ObjLoader, FileWithoutFacesIsAnError) {
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     const std::string empty = errorFrom(files.write("empty.obj", ""));
     EXPECT_TRUE(contains(empty, "empty.obj: no triangles")) << empty;
     const std::string linesOnly = errorFrom(files.write("linesonly.obj", std::string(kSquare) + "l 1 2 3\n"));
@@ -385,7 +360,7 @@ TEST(ObjLoader, MeshBeyondMemoryIsAnErrorNamingTheFile) {
 #ifdef PTVIEW_UNDER_ASAN
     GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
 #else
-    ObjFiles files;
+    testing::ScratchFiles files("obj");
     std::string text;
     const std::string vertex = "v 0.5 0.25 1\n";
     text.reserve(32u << 20);

@@ -4,6 +4,7 @@
 #include "MaterialSchema.h"
 #include "Scene.h"
 #include "SceneWriter.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -101,13 +102,6 @@ Scene roundTrip(const Scene& scene) {
         ADD_FAILURE() << error.what() << "\n" << text;
         return {};
     }
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 // A fresh directory per test, removed afterwards.
@@ -269,7 +263,7 @@ TEST_F(SceneFiles, SaveReplacesAnExistingFileCompletely) {
     }
     Scene scene = parseScene(kEveryMaterialScene, "every.json");
     saveScene(scene, target);
-    EXPECT_EQ(readFile(target), sceneToJson(scene));
+    EXPECT_EQ(testing::readFileBytes(target), sceneToJson(scene));
     expectSameScene(scene, loadScene(target));
     // Nothing left beside it, such as a temporary file.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
@@ -308,7 +302,7 @@ TEST_F(SceneFiles, FailedSaveLeavesTheTargetIntact) {
     } catch (const std::runtime_error& error) {
         EXPECT_EQ(std::string(error.what()).rfind(target.string() + ": ", 0), 0u) << error.what();
     }
-    EXPECT_EQ(readFile(target), original);
+    EXPECT_EQ(testing::readFileBytes(target), original);
     fs::remove(temporary);
 
     // A directory we may not write to (root may write anywhere, so the check needs a non-root user).
@@ -320,7 +314,7 @@ TEST_F(SceneFiles, FailedSaveLeavesTheTargetIntact) {
         } catch (const std::runtime_error& error) {
             EXPECT_EQ(std::string(error.what()).rfind(target.string() + ": ", 0), 0u) << error.what();
         }
-        EXPECT_EQ(readFile(target), original);
+        EXPECT_EQ(testing::readFileBytes(target), original);
     }
     fs::permissions(dir_, fs::perms::owner_all);
 
@@ -333,12 +327,12 @@ TEST_F(SceneFiles, FailedSaveLeavesTheTargetIntact) {
         std::string message = error.what();
         EXPECT_EQ(message.rfind(target.string() + ": /materials/chalk/albedo/0: ", 0), 0u) << message;
     }
-    EXPECT_EQ(readFile(target), original);
+    EXPECT_EQ(testing::readFileBytes(target), original);
 
     scene.materials[0].color.x = 0.5f;
     scene.shapes[0].radius = std::numeric_limits<float>::infinity();
     EXPECT_THROW(saveScene(scene, target), std::runtime_error);
-    EXPECT_EQ(readFile(target), original);
+    EXPECT_EQ(testing::readFileBytes(target), original);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
 }
 

@@ -3,13 +3,13 @@
 #include "GlTestContext.h"
 #include "ImageIO.h"
 #include "SceneInput.h"
+#include "TestFiles.h"
 #include "ViewerSession.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 #include <unistd.h>
 
@@ -23,13 +23,6 @@ fs::path freshDirectory(const std::string& name) {
     fs::remove_all(directory);
     fs::create_directories(directory);
     return directory;
-}
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 void writeText(const fs::path& path, const std::string& text) {
@@ -80,7 +73,7 @@ protected:
 TEST_F(ViewerSessionTest, BrokenSceneReloadKeepsTheSceneAndEditsThenAGoodOneMergesWithThem) {
     fs::path directory = freshDirectory("reload");
     fs::path scenePath = directory / "cornell.json";
-    const std::string original = readText(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    const std::string original = testing::readFileBytes(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
     writeText(scenePath, original);
     auto session = openSession(scenePath);
     renderSamples(*session, 2);
@@ -122,7 +115,7 @@ TEST_F(ViewerSessionTest, BrokenShaderReloadKeepsTheLastGoodProgram) {
     auto session = openSession(scenePath, directory);
     renderSamples(*session, 1);
 
-    const std::string goodToneMap = readText(directory / "tonemap.glsl");
+    const std::string goodToneMap = testing::readFileBytes(directory / "tonemap.glsl");
     waitForWatcher();
     writeText(directory / "tonemap.glsl", goodToneMap + "\nthis is not GLSL;\n");
     session->pollFiles();
@@ -245,7 +238,7 @@ TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneW
     EXPECT_EQ(model.fileScene.path, saved);
     // An edit of the saved file on disk now reloads, merged with the scene as saved.
     waitForWatcher();
-    writeText(saved, replaced(readText(saved), "[17, 12, 4]", "[1, 1, 1]")); // the light's radiance
+    writeText(saved, replaced(testing::readFileBytes(saved), "[17, 12, 4]", "[1, 1, 1]")); // the light's radiance
     session->pollFiles();
     EXPECT_EQ(model.sceneError, "");
     EXPECT_EQ(material(*session, "light").radiance, glm::vec3(1.0f));
