@@ -1,6 +1,7 @@
 #include "CameraController.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "SceneRanges.h"
 
 #include <imgui.h>
 
@@ -66,7 +67,8 @@ void drawCameraPanel(ViewerSession& session) {
     float distance = cameraDistance(camera);
     float dragSpeed = std::max(1e-4f, 0.005f * distance); // the same feel in a room and a landscape
 
-    bool changed = ImGui::SliderFloat("vertical fov", &edited.vfovDeg, 1.0f, 179.0f, "%.1f deg",
+    const SceneRange& fov = ranges::kVerticalFov;
+    bool changed = ImGui::SliderFloat("vertical fov", &edited.vfovDeg, fov.panelLo, fov.panelHi, "%.1f deg",
                                       ImGuiSliderFlags_AlwaysClamp);
     itemTooltip("full vertical field of view");
     changed |= ImGui::DragFloat3("eye", &edited.eye.x, dragSpeed, 0.0f, 0.0f, "%.3f");

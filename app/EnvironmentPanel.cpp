@@ -1,5 +1,6 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "SceneRanges.h"
 
 #include <imgui.h>
 
@@ -40,17 +41,19 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state) {
     ImGui::PopID();
     if (isMapError(model.sceneError, state.environmentPathInput)) errorText(model.sceneError);
 
-    bool changed = ImGui::DragFloat("intensity", &scene.environmentIntensity, 0.01f, 0.0f, 1e4f, "%.3f",
-                                    ImGuiSliderFlags_AlwaysClamp);
+    const SceneRange& intensity = ranges::kEnvironmentIntensity;
+    bool changed = ImGui::DragFloat("intensity", &scene.environmentIntensity, 0.01f, intensity.panelLo,
+                                    intensity.panelHi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
     itemTooltip("scales the map's radiance (not the constant colour)");
-    if (ImGui::SliderFloat("rotation", &scene.environmentRotationDeg, 0.0f, 360.0f, "%.1f deg")) {
+    const SceneRange& rotation = ranges::kEnvironmentRotation;
+    if (ImGui::SliderFloat("rotation", &scene.environmentRotationDeg, rotation.panelLo, rotation.panelHi, "%.1f deg")) {
         // Ctrl+click lets the user type any angle; keep the shown value in the slider's range.
         scene.environmentRotationDeg -= 360.0f * std::floor(scene.environmentRotationDeg / 360.0f);
         changed = true;
     }
     itemTooltip("turns the map about +Y (right-hand rule)");
     if (ImGui::ColorEdit3("colour", &scene.environment.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) {
-        scene.environment = glm::max(scene.environment, glm::vec3(0.0f)); // radiance is never negative
+        scene.environment = glm::clamp(scene.environment, ranges::kRadiance.panelLo, ranges::kRadiance.panelHi);
         changed = true;
     }
     itemTooltip("radiance of escaping rays when there is no map; unused while a map is loaded");

@@ -1,6 +1,7 @@
 #include "CameraController.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "SceneRanges.h"
 
 #include <imgui.h>
 
@@ -11,15 +12,12 @@
 namespace ptview {
 namespace {
 
-// The loader's range for a cone's half-angle; beyond 90 degrees a spot would light what is behind it.
-constexpr float kMinConeDeg = 0.1f;
-constexpr float kMaxConeDeg = 90.0f;
-
 bool drawLight(Light& light, float dragSpeed) {
     float largest = std::max(light.intensity.r, std::max(light.intensity.g, light.intensity.b));
     // Proportional speed: intensities range from a few to thousands of W/sr.
-    bool changed = ImGui::DragFloat3("intensity", &light.intensity.x, 0.01f * std::max(1.0f, largest), 0.0f, 1e6f,
-                                     "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    const SceneRange& intensity = ranges::kIntensity;
+    bool changed = ImGui::DragFloat3("intensity", &light.intensity.x, 0.01f * std::max(1.0f, largest), intensity.panelLo,
+                                     intensity.panelHi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     itemTooltip("radiant intensity, W sr^-1 per channel");
     ImGui::TextUnformatted("brightness");
     ImGui::SameLine();
@@ -28,7 +26,7 @@ bool drawLight(Light& light, float dragSpeed) {
     ImGui::SameLine();
     if (ImGui::SmallButton("x2")) scale = 2.0f;
     if (scale != 1.0f) {
-        light.intensity *= scale;
+        light.intensity = glm::min(light.intensity * scale, glm::vec3(intensity.panelHi));
         changed = true;
     }
     changed |= ImGui::DragFloat3("position", &light.position.x, dragSpeed, 0.0f, 0.0f, "%.3f");
@@ -43,13 +41,15 @@ bool drawLight(Light& light, float dragSpeed) {
         }
     }
     itemTooltip("where the cone points (normalized after each edit)");
-    if (ImGui::SliderFloat("inner", &light.innerAngleDeg, kMinConeDeg, kMaxConeDeg, "%.1f deg",
+    // The file format's range, and its rule inner <= outer: an edit drags the other angle along.
+    const SceneRange& cone = ranges::kSpotConeAngle;
+    if (ImGui::SliderFloat("inner", &light.innerAngleDeg, cone.panelLo, cone.panelHi, "%.1f deg",
                            ImGuiSliderFlags_AlwaysClamp)) {
         light.outerAngleDeg = std::max(light.outerAngleDeg, light.innerAngleDeg); // drags the outer one along
         changed = true;
     }
     itemTooltip("full intensity within this angle of the axis");
-    if (ImGui::SliderFloat("outer", &light.outerAngleDeg, kMinConeDeg, kMaxConeDeg, "%.1f deg",
+    if (ImGui::SliderFloat("outer", &light.outerAngleDeg, cone.panelLo, cone.panelHi, "%.1f deg",
                            ImGuiSliderFlags_AlwaysClamp)) {
         light.innerAngleDeg = std::min(light.innerAngleDeg, light.outerAngleDeg);
         changed = true;

@@ -1,6 +1,7 @@
 #include "MaterialsPanel.h"
 
 #include "MaterialSchema.h"
+#include "SceneRanges.h"
 
 #include "PanelWidgets.h"
 
@@ -129,11 +130,11 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
     if (material.type == MaterialType::Emitter) {
         bool edited = ImGui::ColorEdit3("colour", &emitter.color.x, kColorFlags);
         itemTooltip("radiance = colour x strength");
-        edited |= ImGui::DragFloat("strength", &emitter.strength, 0.1f, 0.0f, 1e4f, "%.2f",
-                                   ImGuiSliderFlags_AlwaysClamp);
+        edited |= ImGui::DragFloat("strength", &emitter.strength, 0.1f, ranges::kRadiance.panelLo,
+                                   ranges::kRadiance.panelHi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
         itemTooltip("radiance of the front side, W sr^-1 m^-2, at colour 1");
         if (edited) {
-            emitter.color = glm::clamp(emitter.color, 0.0f, 1.0f);
+            emitter.color = glm::clamp(emitter.color, ranges::kColor.panelLo, ranges::kColor.panelHi);
             material.radiance = emitter.color * emitter.strength;
             changed = true;
         }
@@ -141,23 +142,25 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
                             material.radiance.b);
     } else if (current.colorKey) {
         if (ImGui::ColorEdit3(current.colorKey, &material.color.x, kColorFlags)) {
-            material.color = glm::clamp(material.color, 0.0f, 1.0f); // the loader's range
+            material.color = glm::clamp(material.color, ranges::kColor.panelLo, ranges::kColor.panelHi); // the loader's range
             changed = true;
         }
         itemTooltip(colorTooltip(material.type));
     }
     if (material.type != MaterialType::Emitter) {
-        if (ImGui::DragFloat3("emission", &material.radiance.x, 0.05f, 0.0f, 1e4f, "%.2f", ImGuiSliderFlags_AlwaysClamp))
+        if (ImGui::DragFloat3("emission", &material.radiance.x, 0.05f, ranges::kRadiance.panelLo, ranges::kRadiance.panelHi,
+                              "%.2f", ImGuiSliderFlags_AlwaysClamp))
             changed = true;
         itemTooltip("radiance the surface emits from its front side, on top of what it reflects (W sr^-1 m^-2)");
     }
     if (current.hasIor) {
-        changed |= ImGui::SliderFloat("ior", &material.ior, 1.0f, 4.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        changed |= ImGui::SliderFloat("ior", &material.ior, ranges::kIor.panelLo, ranges::kIor.panelHi, "%.3f",
+                                      ImGuiSliderFlags_AlwaysClamp);
         itemTooltip("index of refraction, inside / outside");
     }
     if (current.hasRoughness) {
-        changed |= ImGui::SliderFloat("roughness", &material.roughness, 0.0f, 1.0f, "%.3f",
-                                      ImGuiSliderFlags_AlwaysClamp);
+        changed |= ImGui::SliderFloat("roughness", &material.roughness, ranges::kRoughness.panelLo,
+                                      ranges::kRoughness.panelHi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         itemTooltip("GGX alpha = roughness^2; 0 is perfectly smooth");
         ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
     }

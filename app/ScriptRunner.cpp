@@ -3,6 +3,7 @@
 #include "CameraController.h"
 #include "MaterialSchema.h"
 #include "MaterialsPanel.h"
+#include "SceneRanges.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -51,6 +52,7 @@ void printStatus(const ViewerSession& session) {
                        std::to_string(session.renderSize().x) + "x" + std::to_string(session.renderSize().y) +
                        " integrator=" + integratorName(settings.integrator) + " sampler=" +
                        samplerModeName(settings.sampler) + " depth=" + std::to_string(settings.maxDepth) +
+                       " target-spp=" + std::to_string(model.targetSamples) +
                        " backend=" + backendName(session.tracer(ViewerSession::Side::Left).backend()) +
                        " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
                        " compare=" +
@@ -157,10 +159,26 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
                 light.position = command.vec3(0);
             else if (command.field == "direction")
                 light.direction = unitDirection(command.vec3(0));
-            else if (command.field == "inner-angle")
-                light.innerAngleDeg = std::min(command.number(0), light.outerAngleDeg);
-            else if (command.field == "outer-angle")
-                light.outerAngleDeg = std::max(command.number(0), light.innerAngleDeg);
+            else if (command.field == "inner-angle" || command.field == "outer-angle") {
+                // The file format's rule between the two (SceneRanges.h), refused here rather than at Save.
+                bool inner = command.field == "inner-angle";
+                float innerDeg = inner ? command.number(0) : light.innerAngleDeg;
+                float outerDeg = inner ? light.outerAngleDeg : command.number(0);
+                if (!ranges::coneAnglesOrdered(innerDeg, outerDeg)) {
+                    auto text = [](float degrees) {
+                        char buffer[32];
+                        std::snprintf(buffer, sizeof buffer, "%g", double(degrees));
+                        return std::string(buffer);
+                    };
+                    fail(command, command.target + (inner ? ".inner-angle " + text(innerDeg) +
+                                                                " must not exceed the outer angle (" + text(outerDeg) + ")"
+                                                          : ".outer-angle " + text(outerDeg) +
+                                                                " must not be less than the inner angle (" + text(innerDeg) + ")"));
+                    return true;
+                }
+                light.innerAngleDeg = innerDeg;
+                light.outerAngleDeg = outerDeg;
+            }
             model.pendingChanges |= ViewerModel::kSceneChanged;
         } else if (verb == "environment") {
             session.setEnvironmentMap(command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(word));

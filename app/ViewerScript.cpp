@@ -3,6 +3,7 @@
 #include "Integrator.h"
 #include "MaterialSchema.h"
 #include "SamplerMode.h"
+#include "SceneRanges.h"
 #include "ToneMapper.h"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 enum class ArgType {
     Integer,  // int in [lo, hi]
     Unsigned, // any uint32
-    Number,   // finite float in [lo, hi], lo excluded when loOpen
+    Number,   // finite float in [lo, hi], lo excluded when loOpen, hi when hiOpen
     Choice,   // one of choices()
     Path,     // the rest of the line; only as a command's last argument
     Token,    // a path without spaces, so that two fit on one line
@@ -41,7 +42,7 @@ struct ArgSpec {
     const char* meta = ""; // its name in the usage line: "N", "NAME", "PATH"
     ArgType type = ArgType::Number;
     double lo = -kInf, hi = kInf;
-    bool loOpen = false;
+    bool loOpen = false, hiOpen = false;
     const char* noun = nullptr;                      // Choice: 'unknown integrator "foo"'
     std::vector<std::string> (*choices)() = nullptr; // Choice
     std::vector<const char*> extensions;             // Path: one of these, when not empty
@@ -64,6 +65,18 @@ ArgSpec numberArg(const char* meta, double lo = -kInf, double hi = kInf, bool lo
     ArgSpec arg;
     arg.meta = meta, arg.type = ArgType::Number, arg.lo = lo, arg.hi = hi, arg.loOpen = loOpen;
     return arg;
+}
+
+// A number of the scene model: its range is the loader's (SceneRanges.h), so a script cannot make
+// an edit that the file format cannot hold.
+ArgSpec rangeArg(const char* meta, const SceneRange& range) {
+    ArgSpec arg = numberArg(meta, range.lo, range.hi, range.loOpen);
+    arg.hiOpen = range.hiOpen;
+    return arg;
+}
+
+std::vector<ArgSpec> vec3RangeArgs(const char* x, const char* y, const char* z, const SceneRange& range) {
+    return {rangeArg(x, range), rangeArg(y, range), rangeArg(z, range)};
 }
 
 ArgSpec choiceArg(const char* meta, const char* noun, std::vector<std::string> (*choices)()) {
@@ -136,22 +149,24 @@ struct CommandSpec {
 const std::vector<FieldSpec>& materialFields() {
     static const std::vector<FieldSpec> fields = {
         {"type", {choiceArg("TYPE", "material type", materialTypeChoices)}, false, "the material model"},
-        {"color", vec3Args("R", "G", "B", 0.0, 1.0), false,
+        {"color", vec3RangeArgs("R", "G", "B", ranges::kColor), false,
          "the type's colour (albedo, reflectance, transmittance or tint)"},
-        {"emission", vec3Args("R", "G", "B", 0.0), false, "emitted radiance (an emitter's radiance)"},
-        {"ior", {numberArg("IOR", 1.0, 4.0)}, false, "index of refraction"},
-        {"roughness", {numberArg("R", 0.0, 1.0)}, false, "microfacet roughness"},
+        {"emission", vec3RangeArgs("R", "G", "B", ranges::kRadiance), false, "emitted radiance (an emitter's radiance)"},
+        {"ior", {rangeArg("IOR", ranges::kIor)}, false, "index of refraction"},
+        {"roughness", {rangeArg("R", ranges::kRoughness)}, false, "microfacet roughness"},
     };
     return fields;
 }
 
 const std::vector<FieldSpec>& lightFields() {
     static const std::vector<FieldSpec> fields = {
-        {"intensity", vec3Args("R", "G", "B", 0.0), false, "radiant intensity, W/sr per channel"},
+        {"intensity", vec3RangeArgs("R", "G", "B", ranges::kIntensity), false, "radiant intensity, W/sr per channel"},
         {"position", vec3Args("X", "Y", "Z"), false, "world-space position"},
         {"direction", vec3Args("X", "Y", "Z"), true, "spot light: where the cone points (any length but 0)"},
-        {"inner-angle", {numberArg("DEG", 0.0, 180.0)}, false, "spot light: full intensity within this angle of the axis"},
-        {"outer-angle", {numberArg("DEG", 0.0, 180.0)}, false, "spot light: no light beyond this angle of the axis"},
+        {"inner-angle", {rangeArg("DEG", ranges::kSpotConeAngle)}, false,
+         "spot light: full intensity within this angle of the axis (at most the outer angle)"},
+        {"outer-angle", {rangeArg("DEG", ranges::kSpotConeAngle)}, false,
+         "spot light: no light beyond this angle of the axis (at least the inner angle)"},
     };
     return fields;
 }
@@ -175,15 +190,18 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"set-material", {}, &materialFields(), "edit a field of the material named NAME (split at the last dot)"},
         {"set-light", {}, &lightFields(), "edit a field of the light named NAME (split at the last dot)"},
         {"environment", {pathArg({}, "none")}, nullptr, "load an environment map, or none to remove it"},
-        {"environment-intensity", {numberArg("F", 0.0)}, nullptr, "scale of the environment map's radiance"},
-        {"environment-rotation", {numberArg("DEG")}, nullptr, "rotation of the environment map about +Y"},
-        {"environment-color", vec3Args("R", "G", "B", 0.0), nullptr, "radiance of escaping rays when there is no map"},
+        {"environment-intensity", {rangeArg("F", ranges::kEnvironmentIntensity)}, nullptr,
+         "scale of the environment map's radiance"},
+        {"environment-rotation", {rangeArg("DEG", ranges::kEnvironmentRotation)}, nullptr,
+         "rotation of the environment map about +Y"},
+        {"environment-color", vec3RangeArgs("R", "G", "B", ranges::kRadiance), nullptr,
+         "radiance of escaping rays when there is no map"},
         // Camera
         {"camera-orbit", {numberArg("YAW"), numberArg("PITCH")}, nullptr, "orbit about the target, in degrees"},
         {"camera-pan", {numberArg("RIGHT"), numberArg("UP")}, nullptr, "move sideways, in fractions of the image height"},
         {"camera-zoom", {numberArg("FACTOR", 0.0, kInf, true)}, nullptr,
          "multiply the distance to the target by FACTOR (< 1 moves closer)"},
-        {"camera-fov", {numberArg("DEG", 1.0, 179.0)}, nullptr, "vertical field of view"},
+        {"camera-fov", {rangeArg("DEG", ranges::kVerticalFov)}, nullptr, "vertical field of view"},
         {"camera-reset", {}, nullptr, "back to the scene file's camera"},
         // Scene files
         {"load-scene", {pathArg()}, nullptr, "open another scene file"},
@@ -309,9 +327,10 @@ std::string rangeText(const ArgSpec& arg) {
     bool hasHi = std::isfinite(arg.hi) && !(arg.type == ArgType::Integer && arg.hi >= INT_MAX);
     if (hasLo && hasHi)
         return integral ? "in " + formatNumber(arg.lo) + ".." + formatNumber(arg.hi)
-                        : "in [" + formatNumber(arg.lo) + ", " + formatNumber(arg.hi) + "]";
+                        : std::string("in ") + (arg.loOpen ? "(" : "[") + formatNumber(arg.lo) + ", " +
+                              formatNumber(arg.hi) + (arg.hiOpen ? ")" : "]");
     if (hasLo) return (arg.loOpen ? "> " : ">= ") + formatNumber(arg.lo);
-    if (hasHi) return "<= " + formatNumber(arg.hi);
+    if (hasHi) return (arg.hiOpen ? "< " : "<= ") + formatNumber(arg.hi);
     return "";
 }
 
@@ -405,7 +424,8 @@ void checkWord(const LineContext& at, const std::string& prefix, const ArgSpec& 
         // The range holds for the float the viewer gets (number()), not for the double read here:
         // "camera-zoom 1e-60" is above 0 as a double but 0 as a float.
         const double asFloat = static_cast<float>(*value);
-        if (asFloat < arg.lo || asFloat > arg.hi || (arg.loOpen && asFloat == arg.lo)) outOfRange();
+        if (asFloat < arg.lo || asFloat > arg.hi || (arg.loOpen && asFloat == arg.lo) || (arg.hiOpen && asFloat == arg.hi))
+            outOfRange();
         break;
     }
     case ArgType::Choice: {

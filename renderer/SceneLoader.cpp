@@ -8,6 +8,7 @@
 #include "MaterialSchema.h"
 #include "ObjLoader.h"
 #include "Scene.h"
+#include "SceneRanges.h"
 
 #include <nlohmann/json.hpp>
 
@@ -221,6 +222,60 @@ std::pair<int, int> lineAndColumn(const std::string& text, std::size_t offset) {
     return {line, column};
 }
 
+// Where a value still open at the end of text began (an object, an array or a string), with its
+// kind; nullopt when none is open. A file cut short (an editor saving, a hot reload halfway
+// through) only fails at its end, which says nothing about what is unclosed. When a brace is
+// missing mid-file, the next closer closes the wrong value and the one left open is an outer
+// one, often the whole document; in a file laid out by lines the mistake shows as a closer on a
+// line of its own indented less than the line its (count-matched) opener is on, so that opener
+// is named instead, as a guess.
+struct UnclosedValue {
+    const char* kind;
+    std::size_t offset;
+    std::optional<std::size_t> misplacedCloser; // set for the guess: the closer that gave it away
+};
+
+std::optional<UnclosedValue> unclosedValue(const std::string& text) {
+    struct Open {
+        UnclosedValue value;
+        std::size_t lineIndent;
+    };
+    std::vector<Open> open;
+    std::optional<UnclosedValue> guess;
+    std::optional<std::size_t> stringStart;
+    std::size_t indent = 0;
+    bool onlySpaceSoFar = true; // on this line, before the current character
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (stringStart) {
+            if (c == '\\') ++i; // the escaped character cannot end the string
+            else if (c == '"') stringStart.reset();
+            continue;
+        }
+        if (c == '\n') {
+            indent = 0, onlySpaceSoFar = true;
+            continue;
+        }
+        if (onlySpaceSoFar && (c == ' ' || c == '\t')) {
+            ++indent;
+            continue;
+        }
+        bool firstOnLine = onlySpaceSoFar;
+        onlySpaceSoFar = false;
+        if (c == '"') stringStart = i;
+        else if (c == '{') open.push_back({{"object", i, std::nullopt}, indent});
+        else if (c == '[') open.push_back({{"array", i, std::nullopt}, indent});
+        else if ((c == '}' || c == ']') && !open.empty()) {
+            if (firstOnLine && indent < open.back().lineIndent && !guess)
+                guess = UnclosedValue{open.back().value.kind, open.back().value.offset, i};
+            open.pop_back();
+        }
+    }
+    if (stringStart) return UnclosedValue{"string", *stringStart, std::nullopt};
+    if (open.empty()) return std::nullopt;
+    return guess ? guess : open.back().value;
+}
+
 // --- Readers: each checks one value and names it on failure -------------------------------------
 
 template <typename Names>
@@ -298,6 +353,17 @@ glm::vec3 readVec3(const Json& value, const Pointer& at) {
     return readVec3(value, at, [](float) { return true; }, "a number");
 }
 
+// A number, or each component, within its range of SceneRanges.h.
+float readInRange(const Json& value, const Pointer& at, const SceneRange& range) {
+    float number = readNumber(value, at);
+    if (!range.contains(number)) fail(at, "expected " + range.expected());
+    return number;
+}
+
+glm::vec3 readVec3InRange(const Json& value, const Pointer& at, const SceneRange& range) {
+    return readVec3(value, at, [&range](float c) { return range.contains(c); }, range.expected().c_str());
+}
+
 glm::vec3 readNonzeroVec3(const Json& value, const Pointer& at) {
     glm::vec3 v = readVec3(value, at);
     if (v == glm::vec3(0.0f))
@@ -366,9 +432,7 @@ CameraDesc readCamera(const Json& value, const Pointer& at) {
     } else if (areParallel(camera.up, camera.target - camera.eye)) {
         fail(at / "up", "missing, and the default [0, 1, 0] is parallel to the view direction");
     }
-    camera.vfovDeg = readNumber(requireKey(value, at, "vfov_deg"), at / "vfov_deg");
-    if (!(camera.vfovDeg > 0.0f && camera.vfovDeg < 180.0f))
-        fail(at / "vfov_deg", "expected a number in (0, 180)");
+    camera.vfovDeg = readInRange(requireKey(value, at, "vfov_deg"), at / "vfov_deg", ranges::kVerticalFov);
     camera.resolution = readResolution(requireKey(value, at, "resolution"), at / "resolution");
     return camera;
 }
@@ -384,20 +448,17 @@ void readEnvironment(const Json& value, const Pointer& at, Scene& scene) {
         for (const char* key : {"intensity", "rotation_deg"})
             if (optionalKey(value, key)) fail(at / key, "only allowed with \"map\"");
         if (!optionalKey(value, "color")) fail(at / "color", "missing required key (or give \"map\")");
-        scene.environment = readVec3(value.at("color"), at / "color",
-                                     [](float c) { return c >= 0.0f; }, "a non-negative number");
+        scene.environment = readVec3InRange(value.at("color"), at / "color", ranges::kRadiance);
         return;
     }
     if (optionalKey(value, "color")) fail(at / "color", "not allowed with \"map\" (the map gives the radiance)");
     std::string path = readString(*map, at / "map");
     if (path.empty()) fail(at / "map", "expected a file name, got an empty string");
     scene.environmentMap = std::filesystem::u8path(path);
-    if (const Json* intensity = optionalKey(value, "intensity")) {
-        scene.environmentIntensity = readNumber(*intensity, at / "intensity");
-        if (!(scene.environmentIntensity >= 0.0f)) fail(at / "intensity", "expected a non-negative number");
-    }
+    if (const Json* intensity = optionalKey(value, "intensity"))
+        scene.environmentIntensity = readInRange(*intensity, at / "intensity", ranges::kEnvironmentIntensity);
     if (const Json* rotation = optionalKey(value, "rotation_deg"))
-        scene.environmentRotationDeg = readNumber(*rotation, at / "rotation_deg");
+        scene.environmentRotationDeg = readInRange(*rotation, at / "rotation_deg", ranges::kEnvironmentRotation);
 }
 
 Material readMaterial(const std::string& name, const Json& value, const Pointer& at) {
@@ -427,29 +488,19 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     const Json* radiance = schema->radianceRequired ? &requireKey(value, at, schema->radianceKey)
                                                     : optionalKey(value, schema->radianceKey);
     if (radiance) {
-        material.radiance = readVec3(*radiance, at / schema->radianceKey,
-                                     [](float c) { return c >= 0.0f; }, "a non-negative number");
+        material.radiance = readVec3InRange(*radiance, at / schema->radianceKey, ranges::kRadiance);
     }
     if (schema->colorKey) {
         const Json* color = schema->colorDefault ? optionalKey(value, schema->colorKey)
                                                  : &requireKey(value, at, schema->colorKey);
-        // Above 1 a surface would return more light than it receives.
-        material.color = color ? readVec3(*color, at / schema->colorKey,
-                                          [](float c) { return c >= 0.0f && c <= 1.0f; }, "a number in [0, 1]")
-                               : *schema->colorDefault;
+        material.color = color ? readVec3InRange(*color, at / schema->colorKey, ranges::kColor) : *schema->colorDefault;
     }
     if (schema->hasIor) {
-        if (const Json* ior = optionalKey(value, "ior")) {
-            material.ior = readNumber(*ior, at / "ior");
-            if (!(material.ior >= 1.0f && material.ior <= 4.0f)) fail(at / "ior", "expected a number in [1, 4]");
-        }
+        if (const Json* ior = optionalKey(value, "ior")) material.ior = readInRange(*ior, at / "ior", ranges::kIor);
     }
     if (schema->hasRoughness) {
-        if (const Json* roughness = optionalKey(value, "roughness")) {
-            material.roughness = readNumber(*roughness, at / "roughness");
-            if (!(material.roughness >= 0.0f && material.roughness <= 1.0f))
-                fail(at / "roughness", "expected a number in [0, 1]");
-        }
+        if (const Json* roughness = optionalKey(value, "roughness"))
+            material.roughness = readInRange(*roughness, at / "roughness", ranges::kRoughness);
     }
     return material;
 }
@@ -637,14 +688,6 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     return shape;
 }
 
-// A spot's cone half-angle: beyond 90 degrees it would light what is behind it.
-float readConeAngle(const Json& value, const Pointer& at) {
-    float degrees = readNumber(value, at);
-    if (!(degrees > 0.0f && degrees <= 90.0f))
-        fail(at, "expected a number in (0, 90]");
-    return degrees;
-}
-
 // A value the file left out, for messages that mention it.
 std::string defaultText(float value) {
     char text[32];
@@ -672,19 +715,19 @@ Light readLight(const Json& value, const Pointer& at, std::size_t index) {
     const Json* name = optionalKey(value, "name");
     light.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
     light.position = readVec3(requireKey(value, at, "position"), at / "position");
-    light.intensity = readVec3(requireKey(value, at, "intensity"), at / "intensity",
-                               [](float c) { return c >= 0.0f; }, "a non-negative number");
+    light.intensity = readVec3InRange(requireKey(value, at, "intensity"), at / "intensity", ranges::kIntensity);
     if (light.type == LightType::Spot) {
         light.direction = readDirection(requireKey(value, at, "direction"), at / "direction");
         const Json* inner = optionalKey(value, "inner_deg");
         const Json* outer = optionalKey(value, "outer_deg");
-        if (inner) light.innerAngleDeg = readConeAngle(*inner, at / "inner_deg");
-        if (outer) light.outerAngleDeg = readConeAngle(*outer, at / "outer_deg");
+        if (inner) light.innerAngleDeg = readInRange(*inner, at / "inner_deg", ranges::kSpotConeAngle);
+        if (outer) light.outerAngleDeg = readInRange(*outer, at / "outer_deg", ranges::kSpotConeAngle);
+        bool ordered = ranges::coneAnglesOrdered(light.innerAngleDeg, light.outerAngleDeg);
         // Blame an angle the file gives, the inner one when it gives both.
-        if (light.innerAngleDeg > light.outerAngleDeg && inner)
+        if (!ordered && inner)
             fail(at / "inner_deg", "must not exceed outer_deg (" +
                                        (outer ? outer->dump() : defaultText(light.outerAngleDeg)) + ")");
-        if (light.innerAngleDeg > light.outerAngleDeg)
+        if (!ordered)
             fail(at / "outer_deg", "must not be less than inner_deg (" + defaultText(light.innerAngleDeg) + ")");
     }
     return light;
@@ -872,9 +915,24 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
             scene.environmentMap = sourceName.parent_path() / scene.environmentMap;
         return scene;
     } catch (const SyntaxError& error) {
-        auto [line, column] = lineAndColumn(jsonText, error.offset);
-        throw oneLineError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                           ": malformed JSON: " + error.what());
+        auto place = [&](std::size_t offset) {
+            auto [line, column] = lineAndColumn(jsonText, offset);
+            return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+        };
+        std::string message = place(error.offset) + ": malformed JSON: " + error.what();
+        // The end says only that something is missing; where the unclosed value began says what.
+        if (error.offset >= jsonText.size()) {
+            if (std::optional<UnclosedValue> unclosed = unclosedValue(jsonText)) {
+                message += "; " + place(unclosed->offset) + ": unclosed " + unclosed->kind + " begun here";
+                if (unclosed->misplacedCloser) {
+                    auto [line, column] = lineAndColumn(jsonText, *unclosed->misplacedCloser);
+                    message += " (probably: the '" + std::string(1, jsonText[*unclosed->misplacedCloser]) + "' at " +
+                               std::to_string(line) + ":" + std::to_string(column) +
+                               " closes it by count but is indented as an outer one's)";
+                }
+            }
+        }
+        throw oneLineError(message);
     } catch (const PlaceError& error) {
         std::string where = error.where.to_string();
         // The whole document has the empty pointer, which would read as a stray ": ".

@@ -1,15 +1,18 @@
 // Writes the scene model as JSON. The document is built as an ordered nlohmann tree (which keeps
 // key order and escapes strings) and printed by a small printer of our own, for two things
 // nlohmann's dump cannot do: short arrays and objects on one line, and floats in the shortest
-// form that the loader reads back as the same float (dump prints the double, 0.7300000190734863).
+// form that the loader reads back as the same float (dump prints the double, 0.7300000190734863,
+// and a float edited in the viewer as 0.059999995 where 0.06 is the same float).
 
 #include "SceneWriter.h"
 
 #include "ImageIO.h"
 #include "MaterialSchema.h"
+#include "SceneRanges.h"
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <iterator>
@@ -42,20 +45,28 @@ Json vec3(const glm::vec3& v) {
     return Json::array({number(v.x), number(v.y), number(v.z)});
 }
 
-// The loader reads a number with strtod and keeps it only when it fits a float, then rounds it
-// to float; the fewest significant digits that survive exactly that read back as the same float.
-// They are then written as people write numbers: positional (1000, 0.001) unless that would take
-// many zeros (1e-30, 3.4028235e38).
+// Whether the loader reads text back as value: it reads a number with strtod and keeps it only
+// when it fits a float, then rounds it to float.
+bool readsBackAs(const char* text, float value) {
+    double read = std::strtod(text, nullptr);
+    return std::abs(read) <= std::numeric_limits<float>::max() && static_cast<float>(read) == value;
+}
+
+// The fewest significant digits that read back as the same float: std::to_chars gives them for
+// a float read directly; the loader reads through a double first, which in principle can round a
+// decimal next to the midpoint of two floats onto it, so that is checked, with more digits as
+// the fallback. They are then written as people write numbers: positional (1000, 0.001) unless
+// that would take many zeros (1e-30, 3.4028235e38).
 std::string formatFloat(float value, const std::string& pointer) {
     if (!std::isfinite(value)) fail(pointer, "cannot write a number that is not finite");
     // nlohmann reads "-0" as the integer 0, which has no sign.
     if (value == 0.0f) return std::signbit(value) ? "-0.0" : "0";
     char scientific[64];
-    for (int digits = 1; digits <= 17; ++digits) { // 17 digits give the double exactly
+    std::to_chars_result shortest = std::to_chars(scientific, scientific + sizeof scientific - 1, value,
+                                                  std::chars_format::scientific);
+    *shortest.ptr = '\0';
+    for (int digits = 10; !readsBackAs(scientific, value) && digits <= 17; ++digits) // 17 give the double exactly
         std::snprintf(scientific, sizeof scientific, "%.*e", digits - 1, static_cast<double>(value));
-        double read = std::strtod(scientific, nullptr);
-        if (std::abs(read) <= std::numeric_limits<float>::max() && static_cast<float>(read) == value) break;
-    }
     // scientific is "[-]d[.ddd]e±XX": split it into sign, digits and the exponent of the first digit.
     std::string text = scientific;
     std::size_t e = text.find('e');
@@ -75,6 +86,19 @@ std::string formatFloat(float value, const std::string& pointer) {
     if (count <= exponent + 1) return sign + digits + std::string(static_cast<std::size_t>(exponent + 1 - count), '0');
     return sign + digits.substr(0, static_cast<std::size_t>(exponent + 1)) + "." +
            digits.substr(static_cast<std::size_t>(exponent + 1));
+}
+
+// A number the loader would refuse is refused here, naming its place, rather than written.
+Json numberInRange(float value, const SceneRange& range, const std::string& pointer) {
+    if (std::isfinite(value) && !range.contains(value))
+        fail(pointer, "cannot write " + formatFloat(value, pointer) + ": the " + range.quantity + " must be " + range.text());
+    return number(value);
+}
+
+Json vec3InRange(const glm::vec3& v, const SceneRange& range, const std::string& pointer) {
+    Json json = Json::array();
+    for (int i = 0; i < 3; ++i) json.push_back(numberInRange(v[i], range, pointer + "/" + std::to_string(i)));
+    return json;
 }
 
 // --- Printer -------------------------------------------------------------------------------------
@@ -151,22 +175,24 @@ Json cameraJson(const CameraDesc& camera) {
     json["eye"] = vec3(camera.eye);
     json["target"] = vec3(camera.target);
     json["up"] = vec3(camera.up);
-    json["vfov_deg"] = number(camera.vfovDeg);
+    json["vfov_deg"] = numberInRange(camera.vfovDeg, ranges::kVerticalFov, "/camera/vfov_deg");
     json["resolution"] = Json::array({camera.resolution.x, camera.resolution.y});
     return json;
 }
 
-Json materialJson(const Material& material) {
+Json materialJson(const Material& material, const std::string& pointer) {
     const MaterialSchema& schema = materialSchema(material.type);
+    auto at = [&pointer](const char* key) { return pointer + "/" + key; };
     Json json;
     json["type"] = schema.name;
-    if (schema.radianceRequired) json[schema.radianceKey] = vec3(material.radiance);
-    if (schema.colorKey) json[schema.colorKey] = vec3(material.color);
-    if (schema.hasIor) json["ior"] = number(material.ior);
-    if (schema.hasRoughness) json["roughness"] = number(material.roughness);
+    if (schema.radianceRequired)
+        json[schema.radianceKey] = vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey));
+    if (schema.colorKey) json[schema.colorKey] = vec3InRange(material.color, ranges::kColor, at(schema.colorKey));
+    if (schema.hasIor) json["ior"] = numberInRange(material.ior, ranges::kIor, at("ior"));
+    if (schema.hasRoughness) json["roughness"] = numberInRange(material.roughness, ranges::kRoughness, at("roughness"));
     // Black is the default, and most surfaces do not glow.
     if (!schema.radianceRequired && material.radiance != glm::vec3(0.0f))
-        json[schema.radianceKey] = vec3(material.radiance);
+        json[schema.radianceKey] = vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey));
     return json;
 }
 
@@ -246,16 +272,18 @@ Json shapeJson(const Shape& shape, const Scene& scene, const std::string& pointe
     return json;
 }
 
-Json lightJson(const Light& light) {
+Json lightJson(const Light& light, const std::string& pointer) {
     Json json;
     json["name"] = light.name;
     json["type"] = light.type == LightType::Spot ? "spot" : "point";
     json["position"] = vec3(light.position);
     if (light.type == LightType::Spot) json["direction"] = vec3(light.direction);
-    json["intensity"] = vec3(light.intensity);
+    json["intensity"] = vec3InRange(light.intensity, ranges::kIntensity, pointer + "/intensity");
     if (light.type == LightType::Spot) {
-        json["inner_deg"] = number(light.innerAngleDeg);
-        json["outer_deg"] = number(light.outerAngleDeg);
+        json["inner_deg"] = numberInRange(light.innerAngleDeg, ranges::kSpotConeAngle, pointer + "/inner_deg");
+        json["outer_deg"] = numberInRange(light.outerAngleDeg, ranges::kSpotConeAngle, pointer + "/outer_deg");
+        if (!ranges::coneAnglesOrdered(light.innerAngleDeg, light.outerAngleDeg))
+            fail(pointer + "/inner_deg", "must not exceed outer_deg");
     }
     return json;
 }
@@ -275,10 +303,11 @@ std::string relativePathText(const std::filesystem::path& map, const std::filesy
 }
 
 Json environmentJson(const Scene& scene) {
-    if (scene.environmentMap.empty()) return Json{{"color", vec3(scene.environment)}};
+    if (scene.environmentMap.empty())
+        return Json{{"color", vec3InRange(scene.environment, ranges::kRadiance, "/environment/color")}};
     return Json{{"map", relativePathText(scene.environmentMap, scene.path.parent_path())},
-                {"intensity", number(scene.environmentIntensity)},
-                {"rotation_deg", number(scene.environmentRotationDeg)}};
+                {"intensity", numberInRange(scene.environmentIntensity, ranges::kEnvironmentIntensity, "/environment/intensity")},
+                {"rotation_deg", numberInRange(scene.environmentRotationDeg, ranges::kEnvironmentRotation, "/environment/rotation_deg")}};
 }
 
 } // namespace
@@ -293,7 +322,7 @@ std::string sceneToJson(const Scene& scene) {
         // Shapes name their material, so a second one of the same name could not be told apart.
         if (materials.contains(material.name))
             fail(joinPointer("/materials", material.name), "two materials have this name");
-        materials[material.name] = materialJson(material);
+        materials[material.name] = materialJson(material, joinPointer("/materials", material.name));
     }
     root["materials"] = std::move(materials);
 
@@ -311,7 +340,8 @@ std::string sceneToJson(const Scene& scene) {
 
     if (!scene.lights.empty()) {
         Json lights = Json::array();
-        for (const Light& light : scene.lights) lights.push_back(lightJson(light));
+        for (std::size_t i = 0; i < scene.lights.size(); ++i)
+            lights.push_back(lightJson(scene.lights[i], "/lights/" + std::to_string(i)));
         root["lights"] = std::move(lights);
     }
 

@@ -252,6 +252,33 @@ TEST(SceneLoader, MalformedJsonAtEndOfInput) {
     EXPECT_EQ(message.rfind(expected, 0), 0u) << message;
 }
 
+// A file cut short (hot reload while the editor saves, a brace deleted) fails only at its end;
+// the message names where the innermost value still open began as well.
+TEST(SceneLoader, MalformedJsonAtEndOfInputNamesWhereTheUnclosedValueBegan) {
+    std::string object = errorFrom("{\n  \"camera\": {\n    \"eye\": [0, 1, 3.9],\n    \"target\": [0, 1, 0]\n");
+    EXPECT_EQ(object.rfind(std::string(kSource) + ":5:1: malformed JSON: unexpected end of input", 0), 0u) << object;
+    EXPECT_NE(object.find(std::string("; ") + kSource + ":2:13: unclosed object begun here"), std::string::npos) << object;
+
+    std::string array = errorFrom("{\"shapes\": [\n    {\"type\": \"sphere\"},\n");
+    EXPECT_NE(array.find(std::string(kSource) + ":1:12: unclosed array begun here"), std::string::npos) << array;
+
+    // Braces and quotes inside a string are text, and an escaped quote does not end it.
+    std::string string = errorFrom("{\"a\": \"{[\\\"\", \"b\": \"é never closed");
+    EXPECT_NE(string.find(std::string(kSource) + ":1:20: unclosed string begun here"), std::string::npos) << string;
+    EXPECT_EQ(string.find('\n'), std::string::npos) << string;
+
+    // A brace missing mid-file: by count the root is left open, but the closer indented as an
+    // outer one's shows which object lost its brace.
+    std::string missing = errorFrom("{\n  \"materials\": {\n    \"white\": {\"type\": \"diffuse\"\n  },\n  \"shapes\": []\n}\n");
+    EXPECT_NE(missing.find(std::string(kSource) + ":3:14: unclosed object begun here (probably: the '}' at 4:3 closes it"),
+              std::string::npos)
+        << missing;
+
+    // A complete value followed by an error names nothing unclosed.
+    std::string complete = errorFrom("{} x");
+    EXPECT_EQ(complete.find("unclosed"), std::string::npos) << complete;
+}
+
 TEST(SceneLoader, UnterminatedStringStaysOnOneLine) {
     std::string message = errorFrom("{\"camera\": \"abc\ndef\"}");
     EXPECT_EQ(message.rfind(std::string(kSource) + ":1:16: malformed JSON: ", 0), 0u) << message;

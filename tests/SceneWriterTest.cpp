@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -190,6 +191,57 @@ TEST(SceneWriter, FloatsWithoutShortDecimalsRoundTrip) {
         EXPECT_EQ(written.shapes[0].center.y, value) << sceneToJson(scene);
         EXPECT_EQ(std::signbit(written.shapes[0].center.y), std::signbit(value)) << value;
     }
+}
+
+// The shortest decimal that reads back as the same float, as people would write it.
+TEST(SceneWriter, WritesTheShortestDecimalOfEachFloat) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    auto written = [&scene](float x, float y, float z) {
+        scene.shapes[0].center = glm::vec3(x, y, z);
+        return sceneToJson(scene);
+    };
+    EXPECT_NE(written(0.06f, 1e-7f, 3.4e38f).find("\"center\": [0.06, 1e-7, 3.4e38]"), std::string::npos)
+        << written(0.06f, 1e-7f, 3.4e38f);
+    // 0.06f is not 0.06: the float below it prints with all its digits, and is another float.
+    float below = std::nextafter(0.06f, 0.0f);
+    EXPECT_NE(written(below, 0.73f, 12345.678f).find("[0.059999995, 0.73, 12345.678]"), std::string::npos)
+        << written(below, 0.73f, 12345.678f);
+    EXPECT_NE(written(1.0f / 3.0f, 100.0f, -0.001f).find("[0.33333334, 100, -0.001]"), std::string::npos)
+        << written(1.0f / 3.0f, 100.0f, -0.001f);
+}
+
+// Random bit patterns over every exponent: each finite float reads back bit for bit.
+TEST(SceneWriter, RandomFloatsRoundTripBitForBit) {
+    std::string shapes;
+    constexpr int kSpheres = 3000; // 9000 floats
+    for (int i = 0; i < kSpheres; ++i)
+        shapes += std::string(i ? ", " : "") + R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})";
+    Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8]},
+        "materials": {"m": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}}, "shapes": [)" + shapes + "]}",
+                             "random.json");
+    std::mt19937 random(12345u);
+    auto randomFloat = [&random]() {
+        for (;;) {
+            std::uint32_t bits = static_cast<std::uint32_t>(random());
+            float value;
+            std::memcpy(&value, &bits, sizeof value);
+            if (std::isfinite(value)) return value;
+        }
+    };
+    for (Shape& sphere : scene.shapes) sphere.center = glm::vec3(randomFloat(), randomFloat(), randomFloat());
+    Scene written = roundTrip(scene);
+    ASSERT_EQ(written.shapes.size(), scene.shapes.size());
+    int mismatches = 0;
+    for (std::size_t i = 0; i < scene.shapes.size(); ++i)
+        for (int axis = 0; axis < 3; ++axis) {
+            std::uint32_t expected, actual;
+            std::memcpy(&expected, &scene.shapes[i].center[axis], sizeof expected);
+            std::memcpy(&actual, &written.shapes[i].center[axis], sizeof actual);
+            if (expected != actual && mismatches++ < 5)
+                ADD_FAILURE() << "sphere " << i << " axis " << axis << ": " << scene.shapes[i].center[axis] << " read back as "
+                              << written.shapes[i].center[axis];
+        }
+    EXPECT_EQ(mismatches, 0);
 }
 
 TEST(SceneWriter, WritesOnlyTheKeysOfEachType) {

@@ -212,10 +212,30 @@ TEST(ViewerScript, OutOfRangeValuesSayTheRange) {
     EXPECT_EQ(errorOf("set-material m.color 0.5 1.5 0"), "s.txt:1: set-material: color: G must be in [0, 1], got 1.5");
     EXPECT_EQ(errorOf("set-material m.ior 0.9"), "s.txt:1: set-material: ior: IOR must be in [1, 4], got 0.9");
     EXPECT_EQ(errorOf("set-light l.outer-angle 190"),
-              "s.txt:1: set-light: outer-angle: DEG must be in [0, 180], got 190");
+              "s.txt:1: set-light: outer-angle: DEG must be in (0, 90], got 190");
     EXPECT_EQ(errorOf("set-light l.direction 0 0 0"), "s.txt:1: set-light: direction: must not be (0, 0, 0)");
     // The bounds themselves are in range.
     EXPECT_EQ(parse("depth 0\ndepth 1024\nresolution-scale 0.125\ncamera-fov 179\n").commands.size(), 4u);
+}
+
+// The scene's numbers take the file format's ranges (SceneRanges.h), open ends included: what a
+// script sets, Save can write. They disagreed: the script took cone angles in [0, 180].
+TEST(ViewerScript, SceneValuesTakeTheFileFormatsRanges) {
+    EXPECT_EQ(errorOf("set-light spot.inner-angle 0"), "s.txt:1: set-light: inner-angle: DEG must be in (0, 90], got 0");
+    EXPECT_EQ(errorOf("# the cone\n\nset-light spot.outer-angle 120"),
+              "s.txt:3: set-light: outer-angle: DEG must be in (0, 90], got 120");
+    EXPECT_EQ(errorOf("set-light spot.outer-angle 90.00001"),
+              "s.txt:1: set-light: outer-angle: DEG must be in (0, 90], got 90.00001");
+    EXPECT_EQ(errorOf("camera-fov 180"), "s.txt:1: camera-fov: DEG must be in (0, 180), got 180");
+    EXPECT_EQ(errorOf("set-material m.roughness 1.01"), "s.txt:1: set-material: roughness: R must be in [0, 1], got 1.01");
+    EXPECT_EQ(errorOf("set-material m.emission 0 0 -1"), "s.txt:1: set-material: emission: B must be >= 0, got -1");
+    EXPECT_EQ(errorOf("set-light spot.intensity -1 0 0"), "s.txt:1: set-light: intensity: R must be >= 0, got -1");
+    EXPECT_EQ(errorOf("environment-intensity -0.5"), "s.txt:1: environment-intensity: F must be >= 0, got -0.5");
+    // The range's own bounds, and a fov just inside its open end, are taken.
+    EXPECT_EQ(parse("set-light spot.outer-angle 90\nset-light spot.inner-angle 1e-30\ncamera-fov 179.99\n"
+                    "set-material m.ior 4\nenvironment-rotation -720\n")
+                  .commands.size(),
+              5u);
 }
 
 TEST(ViewerScript, WrongArgumentCountSaysHowManyWereExpected) {

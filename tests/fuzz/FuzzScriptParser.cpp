@@ -102,7 +102,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["camera-orbit"] = {number(), number()};
         t["camera-pan"] = {number(), number()};
         t["camera-zoom"] = {number(0, kInf, true)};
-        t["camera-fov"] = {number(1, 179)};
+        t["camera-fov"] = {number(0, 180, true)}; // (0, 180); this oracle has no open top
         t["camera-reset"] = {};
         t["load-scene"] = {path()};
         t["reload"] = {};
@@ -140,8 +140,8 @@ const std::map<std::string, Field>& fieldsOf(const std::string& verb) {
         {"intensity", {vec3(0)}},
         {"position", {vec3()}},
         {"direction", {vec3(), true}},
-        {"inner-angle", {{number(0, 180)}}},
-        {"outer-angle", {{number(0, 180)}}},
+        {"inner-angle", {{number(0, 90, true)}}},
+        {"outer-angle", {{number(0, 90, true)}}},
     };
     static const std::map<std::string, Field> none;
     return verb == "set-material" ? material : verb == "set-light" ? light : none;
