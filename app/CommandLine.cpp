@@ -37,7 +37,12 @@ CLI::Option* addNamedOption(CLI::App& app, const std::string& flag, Value& value
 void addSamplerOption(CLI::App& app, SamplerMode& sampler) {
     std::vector<std::pair<std::string, SamplerMode>> names;
     for (const SamplerModeName& entry : samplerModeNames()) names.emplace_back(entry.name, entry.mode);
-    addNamedOption(app, "--sampler", sampler, "sampler", names)->default_str(samplerModeName(sampler));
+    std::string description = "sampler:";
+    for (const SamplerModeName& entry : samplerModeNames())
+        description += std::string("\n  ") + entry.name + ": " + entry.description;
+    addNamedOption(app, "--sampler", sampler, "sampler", names)
+        ->description(description)
+        ->default_str(samplerModeName(sampler));
 }
 
 void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings& display) {
@@ -125,7 +130,6 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     renderCommand->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
 
     BenchOptions& bench = out.bench;
-    bench.settings.integrator = Integrator::Full;
     std::string benchSizeText;
     DisplaySettings unusedDisplay;
     CLI::App* benchCommand = app.add_subcommand("bench", "time loading, BVH builds and path tracing of scenes (headless)");

@@ -21,12 +21,28 @@ void integratorCombo(const char* label, Integrator& integrator) {
     }
 }
 
+// Each choice says what it is and whether it is biased, in the list and on the closed combo.
 void samplerCombo(const char* label, SamplerMode& sampler) {
     if (ImGui::BeginCombo(label, samplerModeName(sampler))) {
-        for (const SamplerModeName& entry : samplerModeNames())
+        for (const SamplerModeName& entry : samplerModeNames()) {
             if (ImGui::Selectable(entry.name, entry.mode == sampler)) sampler = entry.mode;
+            itemTooltip(entry.description);
+        }
         ImGui::EndCombo();
     }
+    itemTooltip(samplerModeInfo(sampler).description);
+}
+
+// Grid and stratified are meant to stop at a complete pattern; say where this one stops.
+void patternNote(const ViewerModel& model) {
+    bool anyPattern = samplerModeInfo(model.settings.sampler).needsTarget ||
+                      (model.compare.enabled && samplerModeInfo(model.compare.right.sampler).needsTarget);
+    if (!anyPattern) return;
+    if (model.targetSamples > 0)
+        noteText("the pattern is complete at the target, " + std::to_string(model.targetSamples) + " spp");
+    else
+        noteText("no target spp: the pattern is incomplete (patchy) until " +
+                 std::to_string(model.settings.sampleBudget) + " spp");
 }
 
 void toneMapperCombo(ToneMapper& toneMapper) {
@@ -61,6 +77,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
     itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
     samplerCombo(model.compare.enabled ? "sampler (left)" : "sampler", settings.sampler);
+    patternNote(model);
 
     int perFrame = model.maxSamplesPerFrame;
     if (ImGui::SliderInt("samples/frame", &perFrame, 0, 64, perFrame == 0 ? "auto" : "%d"))

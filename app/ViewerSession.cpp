@@ -289,7 +289,8 @@ void ViewerSession::update() {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     renderSize_ = glm::clamp(glm::ivec2(glm::round(scaled)), glm::ivec2(1), glm::ivec2(maxSize));
 
-    unsigned changes = model_.pendingChanges;
+    setPatternTarget();
+    unsigned changes = model_.pendingChanges | restartOnCompare();
     model_.pendingChanges = 0;
     if (model_.compare.enabled && !right_) {
         // A first comparison shows something worth comparing: MIS against what the left side has.
@@ -308,6 +309,32 @@ void ViewerSession::update() {
         setEnvironmentMap({}); // the constant colour instead, and say why
         model_.sceneError = e.what();
     }
+}
+
+// Grid and stratified chosen without a target would run on past no end, showing a partial pattern
+// (SamplerMode.h); the target stops them where the pattern is complete. Also for a sampler given
+// on the command line, which is the user's choice too. A target the user set, or cleared after
+// this, stays theirs.
+void ViewerSession::setPatternTarget() {
+    SamplerMode samplers[2] = {model_.settings.sampler, model_.compare.right.sampler};
+    bool chosen = false;
+    for (int side = 0; side < 2; ++side) {
+        bool used = side == 0 || model_.compare.enabled;
+        if (used && samplers[side] != seenSampler_[side] && samplerModeInfo(samplers[side]).needsTarget) chosen = true;
+        if (used) seenSampler_[side] = samplers[side];
+    }
+    if (!chosen || model_.targetSamples != 0) return;
+    model_.targetSamples = kPatternTargetSamples;
+    model_.notice = "target set to " + std::to_string(kPatternTargetSamples) +
+                    " spp: grid and stratified patterns are complete only at the target";
+}
+
+// Equal time must mean equal time from the first frame: turning the split view on starts both
+// sides afresh, not the left one with a head start.
+unsigned ViewerSession::restartOnCompare() {
+    bool turnedOn = model_.compare.enabled && !seenCompare_;
+    seenCompare_ = model_.compare.enabled;
+    return turnedOn ? ViewerModel::kRestart : 0u;
 }
 
 void ViewerSession::trackRestart(View& view) {

@@ -117,6 +117,8 @@ private:
     void watchFiles();
     void reloadShaders();
     void applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map);
+    void setPatternTarget();
+    unsigned restartOnCompare();
 
     ViewerModel model_;
     std::filesystem::path shaderDir_;
@@ -127,6 +129,10 @@ private:
     glm::ivec2 renderSize_{0, 0};
     FileWatcher watcher_;
     int reloadCount_ = 0;
+    // What update() last saw, to act on a change: a grid or stratified sampler newly chosen gets a
+    // target (setPatternTarget), and the split view newly turned on restarts both sides.
+    SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
+    bool seenCompare_ = false;
 };
 
 } // namespace ptview

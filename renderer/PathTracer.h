@@ -31,7 +31,8 @@ struct RenderSettings {
     // The samples per pixel the render is heading for: grid and stratified lay out patterns of
     // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
     std::uint32_t sampleBudget = 1024;
-    Integrator integrator = Integrator::Naive;
+    // The best result is the default (the viewer, `ptview render`, bench); naive is for teaching.
+    Integrator integrator = Integrator::Full;
     DebugView debugView = DebugView::Radiance;
 
     bool operator==(const RenderSettings& other) const {

@@ -156,7 +156,7 @@ TEST_F(CommandLineTest, RenderReportsWhatItWrote) {
 
 TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
     testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " +
-                                               shellQuoted(path("c.pfm")) + " --spp 400 --size 128x128");
+                                               shellQuoted(path("c.pfm")) + " --spp 400 --size 128x128 --integrator naive");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::smatch seconds;
     ASSERT_TRUE(std::regex_search(result.output, seconds, std::regex(R"(depth 8, random sampler, naive integrator, ([0-9.]+) s,)"))) << result.output;
@@ -165,6 +165,26 @@ TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
     if (std::stod(seconds[1]) > 1.5) {
         EXPECT_TRUE(std::regex_search(result.output, std::regex(R"(\d+/400 spp \(\d+%\), [0-9.]+ s elapsed, ETA [0-9.]+ s)")))
             << result.output;
+    }
+}
+
+// The best result is the default; naive stays one option away. Each sampler says what it is,
+// the biased one that it is.
+TEST_F(CommandLineTest, DefaultIntegratorIsFullAndHelpDescribesEachSampler) {
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " +
+                                               shellQuoted(path("c.pfm")) + " --spp 1 --size 8x8");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("random sampler, full integrator"), std::string::npos) << result.output;
+    for (const char* arguments : {" --help", " render --help"}) {
+        testing::CommandResult help = runCommand(kBinary + arguments);
+        EXPECT_EQ(help.exitCode, 0) << help.output;
+        std::size_t option = help.output.find("--integrator");
+        ASSERT_NE(option, std::string::npos) << arguments << help.output;
+        std::string line = help.output.substr(option, help.output.find('\n', option) - option);
+        EXPECT_NE(line.find("=full"), std::string::npos) << arguments << ": " << line;
+        EXPECT_NE(help.output.find("grid: cell centres of an n x n grid: regular and biased"), std::string::npos)
+            << arguments << help.output;
+        EXPECT_NE(help.output.find("sobol: scrambled Sobol' sequence: unbiased"), std::string::npos) << arguments;
     }
 }
 

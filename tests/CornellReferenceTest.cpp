@@ -56,7 +56,7 @@ TEST(CornellReference, BlockMeansMatchIndependentRenderer) {
     PathTracer tracer;
     tracer.setScene(scene);
     tracer.setImageSize({kSize, kSize});
-    tracer.setSettings(RenderSettings{kMaxDepth, 1});
+    tracer.setSettings(testing::naiveSettings(kMaxDepth, 1));
     for (int i = 0; i < kSamplesPerPixel; ++i) tracer.renderSample();
     PixelStatistics stats = tracer.readStatistics();
 
@@ -113,7 +113,7 @@ TEST_P(CornellReferenceBySampler, ImageMeanMatches) {
     PathTracer tracer;
     tracer.setScene(loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json"));
     tracer.setImageSize({size, size});
-    RenderSettings settings{kMaxDepth, 2};
+    RenderSettings settings = testing::naiveSettings(kMaxDepth, 2);
     settings.sampler = GetParam();
     settings.sampleBudget = samplesPerPixel;
     tracer.setSettings(settings);
@@ -151,7 +151,7 @@ TEST(CornellReference, FullIntegratorBlockMeansMatchIndependentRenderer) {
     PathTracer tracer;
     tracer.setScene(loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json"));
     tracer.setImageSize({kSize, kSize});
-    RenderSettings settings{kMaxDepth, 3};
+    RenderSettings settings = testing::naiveSettings(kMaxDepth, 3);
     settings.integrator = Integrator::Full;
     settings.sampleBudget = samplesPerPixel;
     tracer.setSettings(settings);

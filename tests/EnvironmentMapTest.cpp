@@ -738,7 +738,7 @@ protected:
 TEST_F(EnvironmentMapRender, WhiteSphereInUniformLightIsExactlyAsBrightAsTheSky) {
     // Albedo 1 on a convex sphere: every bounce escapes, and the naive sample weight is exactly 1.
     writeHdr("uniform.hdr", 2, 1, {1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f});
-    ImageRgbF image = render(sphereUnder("uniform.hdr", 1.0f, 0.0f, 32), RenderSettings{8, 1}, 8);
+    ImageRgbF image = render(sphereUnder("uniform.hdr", 1.0f, 0.0f, 32), testing::naiveSettings(8, 1), 8);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.at(x, y)[c], 1.0f, 1e-5f) << x << ", " << y;
@@ -747,7 +747,7 @@ TEST_F(EnvironmentMapRender, WhiteSphereInUniformLightIsExactlyAsBrightAsTheSky)
     // (not exact per sample) average to the same 2 over the sphere's inner pixels, within 4
     // standard errors.
     for (Integrator integrator : {Integrator::Naive, Integrator::Direct, Integrator::Mis, Integrator::Full}) {
-        RenderSettings settings{8, 2};
+        RenderSettings settings = testing::naiveSettings(8, 2);
         settings.integrator = integrator;
         PixelStatistics stats;
         render(sphereUnder("uniform.hdr", 2.0f, 0.0f, 32), settings, 256, &stats);
@@ -779,7 +779,7 @@ TEST_F(EnvironmentMapRender, CameraSeesTheMapAsDocumented) {
             "environment": { "map": "columns.hdr", "rotation_deg": )" + std::to_string(rotationDeg) + R"( },
             "materials": {}, "shapes": [] })",
                                  dir_ / "scene.json");
-        ImageRgbF image = render(scene, RenderSettings{1, 1}, 4);
+        ImageRgbF image = render(scene, testing::naiveSettings(1, 1), 4);
         int left = rotationDeg == 0.0f ? 1 : 2;
         EXPECT_EQ(image.at(2, 4), colours[left]) << rotationDeg;
         EXPECT_EQ(image.at(13, 4), colours[left + 1]) << rotationDeg;
@@ -821,7 +821,7 @@ TEST_F(EnvironmentMapRender, SunlitWhiteSphereMatchesTheIrradianceOfTheMap) {
     // the sun stands to the camera's left at 10 degrees elevation.
     const int size = 96;
     Scene scene = sphereUnder(kRooitou, 0.5f, 180.0f, size);
-    RenderSettings settings{4, 3};
+    RenderSettings settings = testing::naiveSettings(4, 3);
     settings.integrator = Integrator::Full;
     PixelStatistics stats;
     render(scene, settings, 1024, &stats);

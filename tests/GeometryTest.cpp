@@ -18,7 +18,7 @@ ImageRgbF render(const std::string& json, int depth, int samplesPerPixel) {
     PathTracer tracer;
     tracer.setScene(parseScene(json, "inline.json"));
     tracer.setImageSize({kSize, kSize});
-    tracer.setSettings(RenderSettings{depth, 1});
+    tracer.setSettings(testing::naiveSettings(depth, 1));
     for (int i = 0; i < samplesPerPixel; ++i) tracer.renderSample();
     return tracer.readMean();
 }

@@ -1,12 +1,25 @@
 #pragma once
 // One headless OpenGL context per test process, created on first use.
 #include "HeadlessContext.h"
+#include "PathTracer.h"
+
+#include <cstdint>
 
 namespace ptview::testing {
 
 inline HeadlessContext& glContext() {
     static HeadlessContext context;
     return context;
+}
+
+// Naive path tracing at this depth and seed: what RenderSettings{depth, seed} gave the tests
+// written before the default integrator became full, spelt out so that they test what they did.
+inline RenderSettings naiveSettings(int maxDepth, std::uint32_t seed) {
+    RenderSettings settings;
+    settings.maxDepth = maxDepth;
+    settings.seed = seed;
+    settings.integrator = Integrator::Naive;
+    return settings;
 }
 
 } // namespace ptview::testing

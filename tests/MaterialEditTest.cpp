@@ -50,7 +50,7 @@ protected:
         tracer_ = std::make_unique<PathTracer>();
         tracer_->setScene(scene_);
         tracer_->setImageSize(kSize);
-        tracer_->setSettings(RenderSettings{8, 7});
+        tracer_->setSettings(testing::naiveSettings(8, 7));
     }
     Scene scene_;
     std::unique_ptr<PathTracer> tracer_;
@@ -77,7 +77,7 @@ TEST_F(MaterialEdit, WallColourShowsInTheFirstSampleAfterTheEdit) {
 // camera rays, so doubling the light's radiance must double every pixel exactly: nothing but the
 // material changed (not the camera, the size or the sample positions).
 TEST_F(MaterialEdit, RadianceEditScalesDirectlySeenLightExactly) {
-    tracer_->setSettings(RenderSettings{0, 7});
+    tracer_->setSettings(testing::naiveSettings(0, 7));
     tracer_->renderSample();
     ImageRgbF before = tracer_->readMean();
 
@@ -97,7 +97,7 @@ TEST_F(MaterialEdit, RadianceEditScalesDirectlySeenLightExactly) {
 
 // A type change is material data too: the red wall turned into a blue emitter glows at depth 0.
 TEST_F(MaterialEdit, TypeChangeReachesTheGpu) {
-    tracer_->setSettings(RenderSettings{0, 7});
+    tracer_->setSettings(testing::naiveSettings(0, 7));
     tracer_->renderSample();
     EXPECT_EQ(wallSum(tracer_->readMean()), glm::dvec3(0.0)) << "at depth 0 the wall is black";
 
@@ -133,7 +133,7 @@ TEST_F(MaterialEdit, ManyEditsKeepTheProgramsAndKeepWorking) {
     EXPECT_EQ(programAfter, programBefore);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     EXPECT_EQ(tracer_->imageSize(), kSize);
-    EXPECT_EQ(tracer_->settings(), (RenderSettings{8, 7}));
+    EXPECT_EQ(tracer_->settings(), testing::naiveSettings(8, 7));
 
     for (int i = 0; i < 3; ++i) tracer_->renderSample();
     EXPECT_EQ(tracer_->sampleCount(), 4);

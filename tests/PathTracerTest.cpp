@@ -30,7 +30,7 @@ ImageRgbF render(const Scene& scene, RenderSettings settings, int samplesPerPixe
 }
 
 TEST(PathTracer, DepthZeroShowsOnlyEmittersSeenDirectly) {
-    ImageRgbF image = render(cornell(), RenderSettings{0, 3}, 4);
+    ImageRgbF image = render(cornell(), testing::naiveSettings(0, 3), 4);
     int lit = 0;
     for (int y = 0; y < kSize.y; ++y) {
         for (int x = 0; x < kSize.x; ++x) {
@@ -50,9 +50,9 @@ TEST(PathTracer, DepthZeroShowsOnlyEmittersSeenDirectly) {
 TEST(PathTracer, EachExtraBounceOnlyAddsLight) {
     // The same seed replays the same path prefixes, so deeper renders add light pixel by pixel.
     Scene scene = cornell();
-    ImageRgbF previous = render(scene, RenderSettings{1, 5}, 2);
+    ImageRgbF previous = render(scene, testing::naiveSettings(1, 5), 2);
     for (int depth = 2; depth <= 4; ++depth) {
-        ImageRgbF deeper = render(scene, RenderSettings{depth, 5}, 2);
+        ImageRgbF deeper = render(scene, testing::naiveSettings(depth, 5), 2);
         double added = 0.0;
         for (int y = 0; y < kSize.y; ++y)
             for (int x = 0; x < kSize.x; ++x) {
@@ -67,16 +67,16 @@ TEST(PathTracer, EachExtraBounceOnlyAddsLight) {
 
 TEST(PathTracer, SeedReproducesOrDecorrelates) {
     Scene scene = cornell();
-    ImageRgbF a = render(scene, RenderSettings{4, 11}, 2);
-    ImageRgbF b = render(scene, RenderSettings{4, 11}, 2);
-    ImageRgbF c = render(scene, RenderSettings{4, 12}, 2);
+    ImageRgbF a = render(scene, testing::naiveSettings(4, 11), 2);
+    ImageRgbF b = render(scene, testing::naiveSettings(4, 11), 2);
+    ImageRgbF c = render(scene, testing::naiveSettings(4, 12), 2);
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_NE(a.rgb, c.rgb);
 }
 
 TEST(PathTracer, MirrorAndGlassSpheresRenderFinitePlausibleImages) {
     Scene spheres = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell_spheres.json");
-    ImageRgbF image = render(spheres, RenderSettings{16, 9}, 16);
+    ImageRgbF image = render(spheres, testing::naiveSettings(16, 9), 16);
     glm::dvec3 sum(0.0);
     for (float value : image.rgb) ASSERT_TRUE(std::isfinite(value));
     for (int y = 0; y < kSize.y; ++y)
@@ -94,7 +94,7 @@ TEST(PathTracer, EveryShippedSceneLoadsAndRendersFinitePixels) {
         if (entry.path().extension() != ".json") continue;
         ++scenes;
         Scene scene = loadScene(entry.path());
-        ImageRgbF image = render(scene, RenderSettings{8, 4}, 4);
+        ImageRgbF image = render(scene, testing::naiveSettings(8, 4), 4);
         double sum = 0.0;
         for (float value : image.rgb) {
             ASSERT_TRUE(std::isfinite(value)) << entry.path();
@@ -131,7 +131,7 @@ TEST(PathTracer, ChangingSettingsOrSizeRestartsAccumulation) {
 TEST(PathTracer, RowTilesAccumulateExactlyLikeWholePasses) {
     testing::glContext();
     Scene scene = cornell();
-    RenderSettings settings{4, 11};
+    RenderSettings settings = testing::naiveSettings(4, 11);
     settings.sampler = SamplerMode::Sobol;
     PathTracer whole, tiled;
     for (PathTracer* tracer : {&whole, &tiled}) {
@@ -180,7 +180,7 @@ TEST(PathTracer, ToneMappersMatchTheirFormulas) {
     PathTracer tracer;
     tracer.setScene(scene);
     tracer.setImageSize({8, 8});
-    tracer.setSettings(RenderSettings{0, 1});
+    tracer.setSettings(testing::naiveSettings(0, 1));
     tracer.renderSample();
     auto encode = [](double linear) { return std::pow(std::min(std::max(linear, 0.0), 1.0), 1.0 / 2.2) * 255.0; };
     auto reinhard = [](double x) { return x / (1.0 + x); };
@@ -204,7 +204,7 @@ TEST(PathTracer, DebugViewsShowNormalsAndAlbedo) {
     PathTracer tracer;
     tracer.setScene(cornell());
     tracer.setImageSize(kSize);
-    RenderSettings settings{4, 3};
+    RenderSettings settings = testing::naiveSettings(4, 3);
     settings.debugView = DebugView::Albedo;
     tracer.setSettings(settings);
     for (int i = 0; i < 2; ++i) tracer.renderSample();

@@ -162,6 +162,34 @@ quit
     fs::remove_all(directory);
 }
 
+// Grid without a target gets one (the status says which); a spot cone the file format cannot
+// hold is refused at the command that makes it, naming the line, not found out at Save. The
+// default integrator is full.
+TEST_F(ScriptedViewer, PatternSamplersGetATargetAndCrossedConeAnglesAreRefusedAtTheEdit) {
+    fs::path directory = freshDirectory("ranges");
+    testing::CommandResult result = runViewer(directory, PTVIEW_ASSETS_DIR "/scenes/lights.json", R"(resolution-scale 0.125
+status
+sampler grid
+status
+set-light spot.outer-angle 15
+set-light spot.inner-angle 30
+save-scene never.json
+quit
+)");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "integrator"), "full");
+    EXPECT_EQ(field(status[0], "target-spp"), "0");
+    EXPECT_EQ(field(status[1], "sampler"), "grid");
+    EXPECT_EQ(field(status[1], "target-spp"), "256");
+    EXPECT_NE(result.output.find("script.txt:6: set-light: spot.inner-angle 30 must not exceed the outer angle (15)"),
+              std::string::npos)
+        << result.output;
+    EXPECT_FALSE(fs::exists(directory / "never.json")) << "the script stops at the refused edit";
+    fs::remove_all(directory);
+}
+
 TEST_F(ScriptedViewer, SplitViewShowsTwoIntegratorsWithTheirSampleCountsAndADivider) {
     fs::path directory = freshDirectory("compare");
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.25

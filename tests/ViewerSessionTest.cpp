@@ -54,8 +54,7 @@ protected:
     std::unique_ptr<ViewerSession> openSession(const fs::path& scenePath, const fs::path& shaderDir = PTVIEW_SHADER_DIR) {
         std::optional<SceneInput> input = loadSceneInput(scenePath.string());
         EXPECT_TRUE(input);
-        RenderSettings settings;
-        settings.maxDepth = 3;
+        RenderSettings settings = testing::naiveSettings(3, 0);
         auto session = std::make_unique<ViewerSession>(std::move(*input), settings, DisplaySettings{}, shaderDir);
         session->setImageArea(PixelRect{{0, 0}, {24, 24}});
         session->update();
@@ -131,6 +130,71 @@ TEST_F(ViewerSessionTest, BrokenShaderReloadKeepsTheLastGoodProgram) {
     EXPECT_NE(session->model().notice.find("shaders reloaded"), std::string::npos);
     renderSamples(*session, 1);
     fs::remove_all(directory);
+}
+
+// Equal time means equal time from the first frame: turning the split view on restarts the left
+// side too, instead of letting it keep the samples it had before (which it did).
+TEST_F(ViewerSessionTest, TurningTheSplitViewOnRestartsBothSides) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    renderSamples(*session, 4);
+    ASSERT_GE(session->stats(ViewerSession::Side::Left).samples, 4);
+
+    model.compare.enabled = true;
+    session->update();
+    ASSERT_TRUE(session->comparing());
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0);
+    EXPECT_EQ(session->stats(ViewerSession::Side::Right).samples, 0);
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).renderSeconds, 0.0);
+
+    // Off, the left side goes on alone; on again, both start afresh (the right one had samples).
+    renderSamples(*session, 2);
+    model.compare.enabled = false;
+    renderSamples(*session, 5);
+    model.compare.enabled = true;
+    session->update();
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0);
+    EXPECT_EQ(session->stats(ViewerSession::Side::Right).samples, 0);
+    // Staying on restarts nothing.
+    renderSamples(*session, 1);
+    session->update();
+    EXPECT_GE(session->stats(ViewerSession::Side::Left).samples, 1);
+}
+
+// Grid and stratified without a target run past their pattern into patches; choosing one sets
+// the target where the pattern is complete, and says so. A target the user set stays theirs.
+TEST_F(ViewerSessionTest, ChoosingAPatternSamplerWithoutATargetSetsOne) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    ASSERT_EQ(model.targetSamples, 0);
+    model.settings.sampler = SamplerMode::Sobol; // unbiased at any count: no target
+    session->update();
+    EXPECT_EQ(model.targetSamples, 0);
+
+    model.settings.sampler = SamplerMode::Grid;
+    session->update();
+    EXPECT_EQ(model.targetSamples, kPatternTargetSamples);
+    EXPECT_NE(model.notice.find(std::to_string(kPatternTargetSamples) + " spp"), std::string::npos) << model.notice;
+    EXPECT_EQ(session->settings(ViewerSession::Side::Left).sampleBudget, std::uint32_t(kPatternTargetSamples));
+
+    model.targetSamples = 0; // cleared by the user: stays cleared while the sampler stays
+    session->update();
+    session->update();
+    EXPECT_EQ(model.targetSamples, 0);
+
+    model.targetSamples = 64;
+    model.settings.sampler = SamplerMode::Stratified;
+    session->update();
+    EXPECT_EQ(model.targetSamples, 64);
+
+    // The split view's right side counts as a choice too, once it is shown.
+    model.targetSamples = 0;
+    model.compare.right.sampler = SamplerMode::Grid;
+    session->update();
+    EXPECT_EQ(model.targetSamples, 0) << "the right side is not shown yet";
+    model.compare.enabled = true;
+    session->update();
+    EXPECT_EQ(model.targetSamples, kPatternTargetSamples);
 }
 
 TEST_F(ViewerSessionTest, SplitViewRendersBothSidesWithTheirOwnSettings) {
