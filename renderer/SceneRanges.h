@@ -20,8 +20,8 @@ struct SceneRange {
     const char* unit;        // "deg", "W sr^-1", ""
     const char* description; // what the quantity is, for tooltips and docs
     // What the panels' sliders and drags span: inside the range (a slider cannot stop short of an
-    // open end) and, for an unbounded side, what a drag reasonably reaches. Ctrl+click typing is
-    // still clamped to this span by the panels.
+    // open end) and, for an unbounded side, what a drag reasonably reaches. The panels clamp a
+    // typed value (Ctrl+click) to it, except the environment rotation, which wraps into one turn.
     float panelLo, panelHi;
 
     bool contains(double value) const {

@@ -4,7 +4,8 @@
 # crash or hang fails the test.
 set -u
 binary=$1 scene=$2
-"$binary" "$scene" & pid=$!
+shift 2
+"$binary" "$scene" "$@" & pid=$!  # further arguments go to the viewer
 window=$(timeout 30 xdotool search --sync --name '^ptview$' | head -1)
 if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
 xdotool windowfocus "$window" 2>/dev/null
