@@ -57,6 +57,17 @@ void printStatus(const ViewerSession& session) {
                        " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
                        " compare=" +
                        (session.comparing() ? "on" : "off");
+    // The image area the render is displayed in (it keeps its size through Tab or a resize), and
+    // the low-resolution preview level on screen, if any (PathTracer::setPreviewEnabled).
+    PixelRect area = session.imageArea();
+    glm::ivec2 preview = session.tracer(ViewerSession::Side::Left).shownPreviewSize();
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, " render-seconds=%.3f", left.renderSeconds);
+    line += seconds;
+    // The first row of the full-size pass in progress: it moves even while spp waits for a slow pass.
+    line += " pass-row=" + std::to_string(session.tracer(ViewerSession::Side::Left).nextRow());
+    line += " area=" + std::to_string(area.size.x) + "x" + std::to_string(area.size.y) + " preview=" +
+            (preview.x > 0 ? std::to_string(preview.x) + "x" + std::to_string(preview.y) : std::string("none"));
     if (session.comparing()) {
         const RenderSettings& right = session.settings(ViewerSession::Side::Right);
         line += " right-spp=" + std::to_string(session.stats(ViewerSession::Side::Right).samples) +
@@ -235,6 +246,10 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             if (!session.accumulating()) fail(command, "paused or stopped at its target before " + word + " spp");
             else if (Clock::now() > waitDeadline_) fail(command, word + " spp not reached in time");
             return quit_;
+        } else if (verb == "wait-seconds") {
+            using Seconds = std::chrono::duration<double>;
+            if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(Seconds(command.number(0)));
+            return Clock::now() >= waitDeadline_;
         } else if (verb == "wait-reload") {
             if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + kReloadTimeout, reloadCountAtWait_ = session.reloadCount();
             if (session.reloadCount() > reloadCountAtWait_) return true;
@@ -242,7 +257,15 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             return quit_;
         // ---- output
         } else if (verb == "screenshot") {
+            // Right after an edit the accumulation has started over: wait for its first complete
+            // sample, as `wait-spp 1` would, rather than fail with "nothing rendered yet".
+            if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + kWaitTimeout;
             session.update();
+            if (session.stats(ViewerSession::Side::Left).samples == 0) {
+                if (!session.accumulating()) fail(command, "paused before the first sample: nothing to save");
+                else if (Clock::now() > waitDeadline_) fail(command, "no complete sample in time");
+                return quit_;
+            }
             session.writeImage(ViewerSession::Side::Left, word);
         } else if (verb == "screenshot-window") {
             windowScreenshot_ = std::filesystem::path(word);

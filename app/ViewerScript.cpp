@@ -220,6 +220,8 @@ const std::vector<CommandSpec>& commandSpecs() {
         // Waiting and output
         {"frames", {integerArg("N", 1)}, nullptr, "let N frames be displayed"},
         {"wait-spp", {integerArg("N", 1)}, nullptr, "wait until the image has N samples per pixel"},
+        {"wait-seconds", {numberArg("S", 0.0, 600.0)}, nullptr,
+         "let S seconds of frames go by (while a test acts on the window from outside)"},
         {"screenshot", {pathArg({".png", ".pfm"})}, nullptr, "save the rendered image: tone-mapped PNG or linear PFM"},
         {"screenshot-window", {pathArg({".png"})}, nullptr, "save the whole window, panels included, as PNG"},
         {"save-screenshots", {}, nullptr, "what F12 does: timestamped files in screenshots/"},

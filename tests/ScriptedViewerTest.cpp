@@ -272,6 +272,32 @@ TEST_F(ScriptedViewer, ScriptErrorsNameFileAndLineBeforeAnyWindowOpens) {
     fs::remove_all(directory);
 }
 
+// Right after an edit the accumulation has no sample: `screenshot` waits for the first (as
+// `wait-spp 1` would) instead of failing with "nothing rendered yet".
+TEST_F(ScriptedViewer, ScreenshotRightAfterAnEditWaitsForTheFirstSample) {
+    fs::path directory = freshDirectory("shot_after_edit");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
+set-material red.color 0.1 0.1 0.9
+screenshot edited.pfm
+status
+pause
+camera-orbit 10 0
+screenshot paused.pfm
+)");
+    // The paused one cannot wait: it fails, naming why, after the first succeeded.
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:7: screenshot: paused"), std::string::npos) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 1u) << result.output;
+    EXPECT_NE(field(status[0], "spp"), "0");
+    ImageRgbF image = readPfm(directory / "edited.pfm");
+    EXPECT_EQ(image.width, 96);
+    glm::dvec3 leftWall = regionMean(image, 2, 12, 30, 66);
+    EXPECT_GT(leftWall.z, leftWall.x) << "the edited, blue wall";
+    EXPECT_FALSE(fs::exists(directory / "paused.pfm"));
+    fs::remove_all(directory);
+}
+
 // F12 as a user presses it (xdotool), in an interactive session without a script.
 TEST_F(ScriptedViewer, F12SavesPngAndPfmIntoScreenshots) {
     fs::path directory = freshDirectory("f12");
