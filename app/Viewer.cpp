@@ -3,6 +3,7 @@
 #include "CameraController.h"
 #include "ImageIO.h"
 #include "MaterialsPanel.h"
+#include "PanelWidgets.h"
 #include "Panels.h"
 #include "Readback.h"
 #include "SceneInput.h"
@@ -68,12 +69,19 @@ void reportGlfwError(int code, const char* description) {
     std::fprintf(stderr, "ptview: GLFW error %d: %s\n", code, description);
 }
 
-glm::ivec2 initialWindowSize(glm::ivec2 resolution, float sidebarWidth) {
-    // Small scene resolutions would give an image too small to look at, and a sidebar too short
-    // for its panels: at least 768 pixels high, in the scene's aspect ratio.
-    float scale = resolution.y < 768 ? 768.0f / static_cast<float>(resolution.y) : 1.0f;
-    glm::ivec2 image(glm::vec2(resolution) * scale);
-    return {image.x + static_cast<int>(sidebarWidth), image.y};
+// Window coordinates kept free around the window for a window manager's title bar and borders.
+constexpr int kDecorationAllowance = 48;
+
+// The scene's aspect ratio, an image of at least 768 rows (small scene resolutions would give an
+// image too small to look at, and a sidebar too short for its panels), then shrunk until sidebar
+// and image fit the monitor's work area (the screen less task bars), so nothing opens off-screen.
+glm::ivec2 initialWindowSize(glm::ivec2 resolution, float sidebarWidth, glm::ivec2 workArea) {
+    glm::vec2 image(resolution);
+    if (image.y < 768.0f) image *= 768.0f / image.y;
+    glm::vec2 room = glm::vec2(workArea - glm::ivec2(0, kDecorationAllowance)) - glm::vec2(sidebarWidth, 0.0f);
+    if (room.x > 0.0f && room.y > 0.0f) image *= std::min(1.0f, std::min(room.x / image.x, room.y / image.y));
+    glm::ivec2 size(static_cast<int>(image.x + sidebarWidth), static_cast<int>(image.y));
+    return glm::max(size, glm::ivec2(1));
 }
 
 ImageRgba8 readWindow(glm::ivec2 size) {
@@ -88,6 +96,10 @@ ImageRgba8 readWindow(glm::ivec2 size) {
 void applyContentScale(float scale) {
     ImGuiStyle style;
     ImGui::StyleColorsDark(&style);
+    // Slider handles: narrow and translucent, so the value printed over them stays readable.
+    style.GrabMinSize = 4.0f;
+    style.Colors[ImGuiCol_SliderGrab].w = 0.45f;
+    style.Colors[ImGuiCol_SliderGrabActive].w = 0.6f;
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
     ImGui::GetIO().FontGlobalScale = scale;
@@ -111,6 +123,7 @@ private:
     void drawUi();
     void drawSidebar();
     void drawCompareLabels();
+    void drawImageNotes();
 
     GLFWwindow* window_;
     ViewerSession& session_;
@@ -174,7 +187,7 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
         if (left && !draggingDivider_ && session_.comparing() && std::abs(cursor.x - delta.x - dividerX) < kDividerGrabPixels &&
             ImGui::IsMouseClicked(ImGuiMouseButton_Left))
             draggingDivider_ = true;
-        PixelRect area = session_.imageArea();
+        PixelRect area = session_.displayArea();
         float imageHeight = std::max(1.0f, static_cast<float>(area.size.y) / framebufferScale_.y);
         if (draggingDivider_) {
             float areaLeft = static_cast<float>(area.origin.x) / framebufferScale_.x;
@@ -239,18 +252,23 @@ void ViewerWindow::drawSidebar() {
                 ImGui::SetNextItemOpen(true);
             return ImGui::CollapsingHeader(label, flags);
         };
-        if (header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
-        if (header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, panelState_, frameSeconds_);
-        if (header("Scene")) drawScenePanel(session_, panelState_);
-        if (header("Environment")) drawEnvironmentPanel(session_, panelState_);
-        if (header("Materials")) materialsPanel_.draw(session_);
-        if (header("Lights")) drawLightsPanel(session_);
-        if (header("Camera")) drawCameraPanel(session_);
+        // The warp visualizer replaces the render: the panels about it (samples, samples/s,
+        // its settings and scene) would describe a picture that is not on the screen.
+        bool rendering = !warpVisualizer_.active();
+        if (!rendering) noteText("The path tracer pauses while the warp visualizer is shown.");
+        if (rendering && header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
+        if (rendering && header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, panelState_, frameSeconds_);
+        bool sceneOpen = rendering && header("Scene");
+        if (sceneOpen) drawScenePanel(session_, panelState_);
+        if (rendering && header("Environment")) drawEnvironmentPanel(session_, panelState_);
+        if (rendering && header("Materials")) materialsPanel_.draw(session_);
+        if (rendering && header("Lights")) drawLightsPanel(session_);
+        if (rendering && header("Camera")) drawCameraPanel(session_);
         if (header("Help")) drawHelpPanel();
         ImGui::SetNextItemOpen(warpVisualizer_.active(), ImGuiCond_Once);
         if (ImGui::CollapsingHeader("Warp visualizer")) warpVisualizer_.drawControls();
-        // A load error must be seen even with the Scene panel closed.
-        if (!model.sceneError.empty()) {
+        // A load error must be seen even with the Scene panel closed (open, it shows it itself).
+        if (!model.sceneError.empty() && !sceneOpen) {
             ImGui::Separator();
             ImGui::PushTextWrapPos(0.0f);
             ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", model.sceneError.c_str());
@@ -287,6 +305,32 @@ void ViewerWindow::drawCompareLabels() {
     (void)area;
 }
 
+// What the image shows when it is not simply the render at the window's size: a low-resolution
+// preview before the first full sample, or a render kept through a resize and shown scaled.
+void ViewerWindow::drawImageNotes() {
+    std::string note;
+    const PathTracer& tracer = session_.tracer(ViewerSession::Side::Left);
+    if (glm::ivec2 size = tracer.shownPreviewSize(); size.x > 0) {
+        note = "preview " + std::to_string(size.x) + "x" + std::to_string(size.y) + ", first full sample " +
+               std::to_string(tracer.nextRow() * 100 / std::max(1, tracer.imageSize().y)) + "% done";
+    }
+    glm::ivec2 rendered = session_.renderSize(), wanted = session_.wantedRenderSize();
+    if (rendered != wanted) {
+        if (!note.empty()) note += "\n";
+        note += "render " + std::to_string(rendered.x) + "x" + std::to_string(rendered.y) + " shown scaled; R renders at " +
+                std::to_string(wanted.x) + "x" + std::to_string(wanted.y);
+    }
+    if (note.empty()) return;
+    PixelRect area = session_.imageArea();
+    ImVec2 size = ImGui::CalcTextSize(note.c_str());
+    ImVec2 position(static_cast<float>(area.origin.x) / framebufferScale_.x + 10.0f,
+                    ImGui::GetIO().DisplaySize.y - size.y - 10.0f);
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->AddRectFilled(ImVec2(position.x - 4, position.y - 2), ImVec2(position.x + size.x + 4, position.y + size.y + 2),
+                        IM_COL32(0, 0, 0, 160), 3.0f);
+    draw->AddText(position, IM_COL32(255, 255, 255, 255), note.c_str());
+}
+
 void ViewerWindow::drawUi() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -295,11 +339,21 @@ void ViewerWindow::drawUi() {
     if (helpOpen_) {
         ImVec2 display = ImGui::GetIO().DisplaySize;
         ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-        if (ImGui::Begin("Help", &helpOpen_, ImGuiWindowFlags_AlwaysAutoResize)) drawHelpPanel();
+        // A fixed width and an auto-fitted height (0): with AlwaysAutoResize the table's wrapping
+        // column and the window's width fed each other until the column was one letter wide.
+        float width = std::min(display.x - 20.0f, 36.0f * ImGui::GetFontSize());
+        ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
+        if (ImGui::Begin("Help", &helpOpen_, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse)) drawHelpPanel();
         ImGui::End();
     }
-    drawCompareLabels();
-    if (warpVisualizer_.active()) warpVisualizer_.handleMouse();
+    if (!warpVisualizer_.active()) {
+        drawCompareLabels();
+        drawImageNotes();
+    }
+    if (warpVisualizer_.active()) {
+        warpVisualizer_.drawLabels();
+        warpVisualizer_.handleMouse();
+    }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
@@ -353,7 +407,8 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
         glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         if (warpVisualizer_.active()) {
-            warpVisualizer_.draw(framebufferSize_); // the path tracer pauses meanwhile
+            PixelRect area = session_.imageArea(); // beside the sidebar, not under it
+            warpVisualizer_.draw(area.origin, area.size, framebufferSize_, framebufferScale_); // the path tracer pauses meanwhile
         } else {
             if (session_.accumulating())
                 lastTracingSeconds_ = session_.renderFrame(std::max(kMinTracingSeconds, kFrameSeconds - overheadSeconds_));
@@ -410,13 +465,30 @@ int runViewer(const ViewerOptions& options) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE); // required on macOS
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);      // HiDPI: window size in logical units
-    glm::ivec2 windowSize = initialWindowSize(input->scene.camera.resolution, kSidebarWidth);
+    glm::ivec2 workOrigin(0), workArea(0); // none known: only the 768-row rule applies
+    float monitorScale = 1.0f;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        glfwGetMonitorWorkarea(monitor, &workOrigin.x, &workOrigin.y, &workArea.x, &workArea.y);
+        glfwGetMonitorContentScale(monitor, &monitorScale, nullptr);
+    }
+    // GLFW_SCALE_TO_MONITOR multiplies the size asked for by the content scale.
+    glm::ivec2 windowSize = initialWindowSize(input->scene.camera.resolution, kSidebarWidth,
+                                              glm::ivec2(glm::vec2(workArea) / std::max(monitorScale, 1.0f)));
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE); // shown once placed in the work area
     GLFWwindow* window = glfwCreateWindow(windowSize.x, windowSize.y, "ptview", nullptr, nullptr);
     if (!window) {
         std::cerr << "ptview: cannot create an OpenGL 4.1 core window\n";
         glfwTerminate();
         return kExitRuntimeError;
     }
+    if (workArea.x > 0)
+    {
+        glm::ivec2 actual;
+        glfwGetWindowSize(window, &actual.x, &actual.y);
+        glfwSetWindowPos(window, workOrigin.x + std::max(0, (workArea.x - actual.x) / 2),
+                         workOrigin.y + std::max(0, (workArea.y - kDecorationAllowance - actual.y) / 2));
+    }
+    glfwShowWindow(window);
     glfwMakeContextCurrent(window);
     glfwSwapInterval(0); // the frame budget paces us; vsync would cap the sample rate
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {

@@ -16,6 +16,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr double kErrorEstimateIntervalSeconds = 1.0;
+constexpr double kResizeSettleSeconds = 0.3;
 constexpr size_t kErrorHistoryLength = 512;
 
 double secondsSince(Clock::time_point start) {
@@ -59,6 +60,7 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     model_.display = display;
     model_.compare.right = settings;
     left_.tracer = std::make_unique<PathTracer>(shaderDir_, programOptions_);
+    left_.tracer->setPreviewEnabled(true);
     left_.tracer->setScene(model_.scene, model_.environmentMap.get());
     left_.tracer->setSettings(settings);
     model_.backend = program.backend ? *program.backend : left_.tracer->chooseBackend();
@@ -268,6 +270,7 @@ void ViewerSession::syncView(View& view, const RenderSettings& settings, unsigne
     if (changes & ViewerModel::kSceneChanged) {
         tracer.setScene(model_.scene, model_.environmentMap.get());
         view.cost.forget();
+        view.previewCost.forget();
     } else if (changes & ViewerModel::kMaterialsChanged) {
         tracer.setMaterials(model_.scene.materials);
     }
@@ -276,22 +279,62 @@ void ViewerSession::syncView(View& view, const RenderSettings& settings, unsigne
     if (tracer.imageSize() != renderSize_) {
         tracer.setImageSize(renderSize_);
         view.cost.forget();
+        view.previewCost.forget();
     }
-    if (tracer.settings() != settings || tracer.backend() != model_.backend) view.cost.forget(); // costs differ
+    if (tracer.settings() != settings || tracer.backend() != model_.backend) { // costs differ
+        view.cost.forget();
+        view.previewCost.forget();
+    }
     tracer.setSettings(settings);
     tracer.setBackend(model_.backend);
     trackRestart(view);
 }
 
-void ViewerSession::update() {
+glm::ivec2 ViewerSession::wantedRenderSize() const {
     glm::vec2 scaled = glm::vec2(imageArea_.size) * model_.resolutionScale;
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-    renderSize_ = glm::clamp(glm::ivec2(glm::round(scaled)), glm::ivec2(1), glm::ivec2(maxSize));
+    return glm::clamp(glm::ivec2(glm::round(scaled)), glm::ivec2(1), glm::ivec2(maxSize));
+}
 
+// The render follows the image area's size only when that loses nothing: while no view has a
+// complete sample (once the size has stopped changing for kResizeSettleSeconds, so a window being
+// dragged restarts once, not every frame), or when the accumulation starts over anyway (an edit,
+// a camera move, a setting, a new resolution scale, R). Otherwise an image survives Tab and
+// resizes, displayed scaled in its own aspect ratio (displayArea) until the user asks.
+void ViewerSession::followImageArea(unsigned changes) {
+    glm::ivec2 wanted = wantedRenderSize();
+    if (wanted != wantedSize_) wantedSize_ = wanted, wantedSince_ = Clock::now();
+    if (wanted == renderSize_) return;
+    auto settingsChange = [&](const View& view, const RenderSettings& settings) {
+        return view.tracer->settings() != effectiveSettings(settings) || view.tracer->backend() != model_.backend;
+    };
+    bool restarting = (changes & (ViewerModel::kSceneChanged | ViewerModel::kMaterialsChanged |
+                                  ViewerModel::kCameraChanged | ViewerModel::kRestart)) != 0 ||
+                      model_.resolutionScale != followedScale_ || settingsChange(left_, model_.settings) ||
+                      (right_ && settingsChange(*right_, model_.compare.right)) || (model_.compare.enabled && !right_);
+    bool nothingRendered = left_.tracer->sampleCount() == 0 && (!right_ || right_->tracer->sampleCount() == 0);
+    bool settled = secondsSince(wantedSince_) >= kResizeSettleSeconds;
+    if (renderSize_.x == 0 || restarting || (nothingRendered && settled)) {
+        renderSize_ = wanted;
+        followedScale_ = model_.resolutionScale;
+    }
+}
+
+PixelRect ViewerSession::displayArea() const {
+    if (renderSize_.x <= 0 || renderSize_.y <= 0 || imageArea_.size.x <= 0 || imageArea_.size.y <= 0) return imageArea_;
+    // The render's aspect ratio, as large as fits, centred: bars where the shapes differ.
+    glm::vec2 area(imageArea_.size);
+    float scale = std::min(area.x / static_cast<float>(renderSize_.x), area.y / static_cast<float>(renderSize_.y));
+    glm::ivec2 size = glm::clamp(glm::ivec2(glm::round(glm::vec2(renderSize_) * scale)), glm::ivec2(1), imageArea_.size);
+    return PixelRect{imageArea_.origin + (imageArea_.size - size) / 2, size};
+}
+
+void ViewerSession::update() {
     setPatternTarget();
     unsigned changes = model_.pendingChanges | restartOnCompare();
     model_.pendingChanges = 0;
+    followImageArea(changes);
     if (model_.compare.enabled && !right_) {
         // A first comparison shows something worth comparing: MIS against what the left side has.
         CompareSettings& compare = model_.compare;
@@ -299,6 +342,7 @@ void ViewerSession::update() {
             compare.right.integrator = model_.settings.integrator == Integrator::Mis ? Integrator::Naive : Integrator::Mis;
         right_ = std::make_unique<View>();
         right_->tracer = std::make_unique<PathTracer>(shaderDir_, PathTracerOptions{programOptions_.allFeatures, model_.backend});
+        right_->tracer->setPreviewEnabled(true);
         right_->tracer->setScene(model_.scene, model_.environmentMap.get());
         right_->tracer->setCamera(model_.scene.camera);
     }
@@ -380,17 +424,25 @@ double ViewerSession::renderFrame(double budgetSeconds) {
         if (next < 0) break;
         double remaining = budgetSeconds - secondsSince(frameStart);
         View& chosen = *views[next];
-        if (worked && (remaining <= 0.0 || chosen.cost.rowOverruns(remaining))) break;
         PathTracer& tracer = *chosen.tracer;
-        int rows = chosen.cost.rowsFitting(remaining, tracer.imageSize().y - tracer.nextRow());
+        // Until the full size has a sample, the preview's passes first: an image within a frame
+        // or two however large the window (PathTracer::setPreviewEnabled).
+        bool preview = tracer.previewWanted();
+        TileCost& cost = preview ? chosen.previewCost : chosen.cost;
+        if (worked && (remaining <= 0.0 || cost.rowOverruns(remaining))) break;
+        int rowsLeft = preview ? tracer.previewLevelSize().y - tracer.previewNextRow() : tracer.imageSize().y - tracer.nextRow();
+        // The coarsest level's first pass (a thousand pixels or so) goes in one piece, whatever
+        // the budget: a loaded machine that gets a row per frame would otherwise take a frame per
+        // row before anything shows.
+        int rows = preview && !tracer.previewStarted() ? rowsLeft : cost.rowsFitting(remaining, rowsLeft);
         Clock::time_point tileStart = Clock::now();
-        bool passDone = tracer.renderRows(rows);
+        bool passDone = preview ? tracer.renderPreviewRows(rows) : tracer.renderRows(rows);
         glFinish(); // the time of this tile's GPU work, not of its submission
         double seconds = secondsSince(tileStart);
-        chosen.cost.record(rows, seconds);
+        cost.record(rows, seconds);
         chosen.renderSeconds += seconds;
         worked = true;
-        if (passDone) ++passes[next];
+        if (passDone && !preview) ++passes[next];
     }
     double seconds = secondsSince(frameStart);
     for (View* v : views)
@@ -420,22 +472,24 @@ void ViewerSession::updateErrorEstimate(View& view) {
 
 int ViewerSession::dividerX() const {
     float fraction = std::clamp(model_.compare.dividerFraction, 0.0f, 1.0f);
-    return imageArea_.origin.x + static_cast<int>(std::round(fraction * static_cast<float>(imageArea_.size.x)));
+    PixelRect area = displayArea();
+    return area.origin.x + static_cast<int>(std::round(fraction * static_cast<float>(area.size.x)));
 }
 
 void ViewerSession::display() const {
+    PixelRect area = displayArea();
     if (!comparing()) {
-        left_.tracer->display(imageArea_, model_.display);
+        left_.tracer->display(area, model_.display);
         return;
     }
     int divider = dividerX();
-    PixelRect leftClip{imageArea_.origin, {divider - imageArea_.origin.x, imageArea_.size.y}};
-    PixelRect rightClip{{divider, imageArea_.origin.y}, {imageArea_.origin.x + imageArea_.size.x - divider, imageArea_.size.y}};
-    if (leftClip.size.x > 0) left_.tracer->display(imageArea_, model_.display, leftClip);
-    if (rightClip.size.x > 0) right_->tracer->display(imageArea_, model_.display, rightClip);
+    PixelRect leftClip{area.origin, {divider - area.origin.x, area.size.y}};
+    PixelRect rightClip{{divider, area.origin.y}, {area.origin.x + area.size.x - divider, area.size.y}};
+    if (leftClip.size.x > 0) left_.tracer->display(area, model_.display, leftClip);
+    if (rightClip.size.x > 0) right_->tracer->display(area, model_.display, rightClip);
     // The divider: two pixels of white, drawn by clearing a scissored column.
     glEnable(GL_SCISSOR_TEST);
-    glScissor(divider - 1, imageArea_.origin.y, 2, imageArea_.size.y);
+    glScissor(divider - 1, area.origin.y, 2, area.size.y);
     glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);

@@ -86,7 +86,14 @@ public:
     ViewStats stats(Side side) const;
     const RenderSettings& settings(Side side) const;
     glm::ivec2 renderSize() const { return renderSize_; }
+    // The size the image area asks for (its size times the resolution scale). The render keeps
+    // its own size through a resize or Tab while it holds work worth keeping (see update); until
+    // then it is displayed scaled, and R (kRestart) renders at this size.
+    glm::ivec2 wantedRenderSize() const;
     PixelRect imageArea() const { return imageArea_; }
+    // Where the image is drawn: the largest rectangle of the render's aspect ratio in the image
+    // area, centred (the whole area when the render has the area's shape).
+    PixelRect displayArea() const;
     int dividerX() const; // framebuffer column of the split view's divider
     // Reload attempts so far (scene, environment map or shaders, successful or not).
     int reloadCount() const { return reloadCount_; }
@@ -97,6 +104,7 @@ private:
     struct View {
         std::unique_ptr<PathTracer> tracer;
         TileCost cost;
+        TileCost previewCost; // of the preview's rows (PathTracer::renderPreviewRows)
         double renderSeconds = 0.0;
         int seenRestartCount = -1; // the tracer's restartCount() when renderSeconds was zeroed
         int estimatedSamples = 0;  // the sample count `error` was estimated at
@@ -114,6 +122,7 @@ private:
     void syncView(View& view, const RenderSettings& settings, unsigned changes);
     void trackRestart(View& view);
     void updateErrorEstimate(View& view);
+    void followImageArea(unsigned changes);
     void watchFiles();
     void reloadShaders();
     void applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map);
@@ -127,6 +136,9 @@ private:
     std::unique_ptr<View> right_; // created the first time compare mode is turned on
     PixelRect imageArea_;
     glm::ivec2 renderSize_{0, 0};
+    glm::ivec2 wantedSize_{0, 0};                 // wantedRenderSize() as last seen
+    std::chrono::steady_clock::time_point wantedSince_{}; // when it last changed
+    float followedScale_ = 1.0f;                  // the resolution scale renderSize_ was set with
     FileWatcher watcher_;
     int reloadCount_ = 0;
     // What update() last saw, to act on a change: a grid or stratified sampler newly chosen gets a

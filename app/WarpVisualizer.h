@@ -20,7 +20,11 @@ public:
     // orbit, wheel to zoom.
     void drawControls();
     void handleMouse();
-    void draw(glm::ivec2 viewportSize);
+    // The points into `area` of the framebuffer (origin at the lower left, as OpenGL counts),
+    // then, through ImGui's foreground list, the labelled axes and a caption over it;
+    // pixelsPerPoint converts framebuffer pixels to ImGui's coordinates (HiDPI).
+    void draw(glm::ivec2 areaOrigin, glm::ivec2 areaSize, glm::ivec2 framebufferSize, glm::vec2 pixelsPerPoint);
+    void drawLabels(); // after ImGui::NewFrame: what draw() measured
 
 private:
     WarpProbe probe_;
@@ -30,6 +34,8 @@ private:
     float coneAngleDeg_ = 60.0f;
     bool active_ = false;
     bool dirty_ = true;
+    // Where draw() put the image, in ImGui coordinates (top-left origin), for drawLabels.
+    glm::vec2 labelOrigin_{0.0f}, labelSize_{1.0f};
 };
 
 } // namespace ptview

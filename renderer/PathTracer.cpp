@@ -190,7 +190,10 @@ void PathTracer::setCamera(const CameraDesc& camera) {
 
 void PathTracer::restart() {
     accumulator_.restart();
+    for (Accumulator& level : previews_) level.restart();
     nextRow_ = 0;
+    previewLevel_ = 0;
+    previewNextRow_ = 0;
     ++restartCount_;
 }
 
@@ -205,11 +208,66 @@ void PathTracer::setImageSize(glm::ivec2 size) {
     if (size == accumulator_.size()) return;
     accumulator_.resize(size);
     nextRow_ = 0;
+    resizePreview();
     ++restartCount_;
 }
 
-void PathTracer::updateFrameUniforms() {
+void PathTracer::setPreviewEnabled(bool enabled) {
+    previewEnabled_ = enabled;
+    resizePreview();
+}
+
+void PathTracer::resizePreview() {
     glm::ivec2 size = accumulator_.size();
+    std::vector<glm::ivec2> sizes; // coarsest first
+    if (previewEnabled_ && double(size.x) * size.y > kPreviewedPixels) {
+        // Whole factors (8, 32, 128, ...), so each preview pixel covers the same block of
+        // full-size pixels.
+        for (int factor = 8; double(size.x) * size.y / (double(factor) * factor) >= kCoarsestPreviewPixels / 4.0; factor *= 4)
+            sizes.insert(sizes.begin(), glm::max(glm::ivec2(1), (size + factor - 1) / factor));
+        while (sizes.size() > 1 && double(sizes[1].x) * sizes[1].y <= kCoarsestPreviewPixels) sizes.erase(sizes.begin());
+    }
+    std::vector<Accumulator> levels(sizes.size());
+    for (size_t i = 0; i < sizes.size(); ++i) levels[i].resize(sizes[i]);
+    previews_ = std::move(levels);
+    previewLevel_ = 0;
+    previewNextRow_ = 0;
+}
+
+bool PathTracer::previewWanted() const {
+    return accumulator_.sampleCount() == 0 && previewLevel_ < previews_.size();
+}
+
+glm::ivec2 PathTracer::previewLevelSize() const {
+    return previewLevel_ < previews_.size() ? previews_[previewLevel_].size() : glm::ivec2(0);
+}
+
+bool PathTracer::previewStarted() const {
+    return !previews_.empty() && previews_[0].sampleCount() > 0;
+}
+
+const Accumulator* PathTracer::shownPreview() const {
+    if (previews_.empty() || accumulator_.sampleCount() > 0) return nullptr;
+    // The finest level done since the last restart (a finer one at fewer samples would look
+    // noisier), or begun; else the full size's sums from before the restart (the viewer keeps
+    // showing the old image rather than black); else the finest old level.
+    for (size_t i = previews_.size(); i-- > 0;)
+        if (previews_[i].sampleCount() >= kPreviewSamples) return &previews_[i];
+    for (size_t i = previews_.size(); i-- > 0;)
+        if (previews_[i].sampleCount() > 0) return &previews_[i];
+    if (accumulator_.displayedSampleCount() > 0) return nullptr;
+    for (size_t i = previews_.size(); i-- > 0;)
+        if (previews_[i].displayedSampleCount() > 0) return &previews_[i];
+    return nullptr;
+}
+
+glm::ivec2 PathTracer::shownPreviewSize() const {
+    const Accumulator* shown = shownPreview();
+    return shown ? shown->size() : glm::ivec2(0);
+}
+
+void PathTracer::updateFrameUniforms(const Accumulator& target) {
+    glm::ivec2 size = target.size();
     glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
     glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
     FrameUniforms frame{};
@@ -218,7 +276,7 @@ void PathTracer::updateFrameUniforms() {
     frame.cameraRight = right;
     frame.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     frame.cameraUp = glm::cross(right, forward);
-    frame.frameIndex = static_cast<std::uint32_t>(accumulator_.sampleCount());
+    frame.frameIndex = static_cast<std::uint32_t>(target.sampleCount());
     frame.cameraForward = forward;
     frame.seed = settings_.seed;
     frame.environmentRadiance = environmentRadiance_;
@@ -238,27 +296,39 @@ void PathTracer::renderSample() {
 }
 
 bool PathTracer::renderRows(int rowCount) {
-    glm::ivec2 size = accumulator_.size();
-    int endRow = std::min(size.y, nextRow_ + std::max(1, rowCount));
+    return renderRowsInto(accumulator_, nextRow_, rowCount);
+}
+
+bool PathTracer::renderPreviewRows(int rowCount) {
+    if (previewLevel_ >= previews_.size()) return false;
+    Accumulator& level = previews_[previewLevel_];
+    bool done = renderRowsInto(level, previewNextRow_, rowCount);
+    if (done && level.sampleCount() >= kPreviewSamples) ++previewLevel_; // then the next, finer one
+    return done;
+}
+
+bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount) {
+    glm::ivec2 size = target.size();
+    int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
     const TraceProgram& trace = useTraceProgram();
-    updateFrameUniforms();
+    updateFrameUniforms(target);
     resetPassState();
     glUseProgram(trace.program->id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
     gpuScene_.bind();
     environmentMap_.bind();
     if (backend_ == Backend::Compute) {
-        accumulator_.beginComputePass(kAccumulationUnit, 0);
-        glUniform2i(trace.tileOrigin, 0, nextRow_);
+        target.beginComputePass(kAccumulationUnit, 0);
+        glUniform2i(trace.tileOrigin, 0, nextRow);
         glUniform2i(trace.tileEnd, size.x, endRow);
-        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((endRow - nextRow_ + 7) / 8), 1);
+        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((endRow - nextRow + 7) / 8), 1);
         // Later passes read these texels as textures, the display and read-backs as attachments.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     } else {
-        accumulator_.beginPass(kAccumulationUnit);
-        if (nextRow_ > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
+        target.beginPass(kAccumulationUnit);
+        if (nextRow > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
             glEnable(GL_SCISSOR_TEST);
-            glScissor(0, nextRow_, size.x, endRow - nextRow_);
+            glScissor(0, nextRow, size.x, endRow - nextRow);
         }
         glBindVertexArray(emptyVertexArray_.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -267,28 +337,33 @@ bool PathTracer::renderRows(int rowCount) {
     }
     if (endRow < size.y) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        nextRow_ = endRow;
+        nextRow = endRow;
         return false;
     }
-    accumulator_.endPass();
-    nextRow_ = 0;
+    target.endPass();
+    nextRow = 0;
     return true;
 }
 
 void PathTracer::display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const {
+    const Accumulator* preview = shownPreview();
+    drawMean(preview ? *preview : accumulator_, target, settings, clip);
+}
+
+void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const {
     resetPassState();
     glViewport(target.origin.x, target.origin.y, target.size.x, target.size.y);
     glEnable(GL_SCISSOR_TEST);
     glScissor(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
     glUseProgram(display_.program->id());
-    int samples = accumulator_.displayedSampleCount();
+    int samples = shown.displayedSampleCount();
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
     glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
-    accumulator_.bindLatest(0, 1);
+    shown.bindLatest(0, 1); // the preview is upscaled by the texture lookup
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -300,7 +375,10 @@ ImageRgbF PathTracer::readMean() const {
 }
 
 ImageRgba8 PathTracer::readToneMapped(const DisplaySettings& settings) const {
-    return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) { display(PixelRect{{0, 0}, size}, settings); });
+    // Never the preview: a saved image is the render itself.
+    return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) {
+        drawMean(accumulator_, PixelRect{{0, 0}, size}, settings, PixelRect{{0, 0}, size});
+    });
 }
 
 } // namespace ptview

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace ptview {
 
@@ -102,6 +103,28 @@ public:
     // Grows whenever accumulation starts over, so an observer can tell that it did.
     int restartCount() const { return restartCount_; }
 
+    // The progressive preview: while the full-size accumulation has no complete sample (a first
+    // pass over a large window takes many seconds on a software rasterizer), the same programs
+    // render kPreviewSamples samples into each of a few smaller targets, coarsest first: 1/8 of
+    // the width, 1/32, ... down to about kCoarsestPreviewPixels (a pass of milliseconds even
+    // there). display() shows the finest level done, upscaled. All levels together cost about
+    // 4/60 of the first full sample; sizes of at most kPreviewedPixels get none. Off by default
+    // (the headless renderer has no use for it).
+    void setPreviewEnabled(bool enabled);
+    // Whether the next rows should go to a preview level: the full size has no complete sample
+    // and a level is still unrendered.
+    bool previewWanted() const;
+    bool renderPreviewRows(int rowCount); // as renderRows, into the level in progress
+    int previewNextRow() const { return previewNextRow_; }
+    glm::ivec2 previewLevelSize() const; // of the level in progress (0 when none)
+    bool previewStarted() const;         // whether a level has a sample since the last restart
+    // The preview level display() draws, or 0x0 when it draws the full-size image. Read-backs
+    // (readMean, readToneMapped, readStatistics) never return a preview.
+    glm::ivec2 shownPreviewSize() const;
+    static constexpr int kPreviewedPixels = 1 << 17;
+    static constexpr int kPreviewSamples = 4;
+    static constexpr int kCoarsestPreviewPixels = 1024;
+
     int sampleCount() const { return accumulator_.sampleCount(); }
     glm::ivec2 imageSize() const { return accumulator_.size(); }
     const RenderSettings& settings() const { return settings_; }
@@ -145,7 +168,10 @@ private:
     TraceProgram buildTraceProgram(const ProgramKey& key) const;
     TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
     void updateProgramKey();
-    void updateFrameUniforms();
+    void updateFrameUniforms(const Accumulator& target);
+    bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount);
+    void resizePreview();
+    void drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const;
 
     std::filesystem::path shaderDir_;
     PathTracerOptions options_;
@@ -162,6 +188,11 @@ private:
     GpuScene gpuScene_;
     GpuEnvironmentMap environmentMap_;
     Accumulator accumulator_;
+    std::vector<Accumulator> previews_; // coarsest first; empty when there is none
+    bool previewEnabled_ = false;
+    size_t previewLevel_ = 0; // the level being rendered (previews_.size(): all done)
+    int previewNextRow_ = 0;
+    const Accumulator* shownPreview() const; // the level display() draws, or null
 
     CameraDesc camera_;
     glm::vec3 environmentRadiance_{0.0f};

@@ -113,13 +113,15 @@ void WarpView::setSamples(WarpDomain domain, const std::vector<WarpSample>& samp
     outlineCount_ = static_cast<GLsizei>(lines.size());
 }
 
-void WarpView::draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const {
-    glViewport(0, 0, viewportSize.x, viewportSize.y);
+void WarpView::draw(glm::ivec2 origin, glm::ivec2 viewportSize, const OrbitCamera& camera) const {
+    viewportSize = glm::max(viewportSize, glm::ivec2(1));
+    glViewport(origin.x, origin.y, viewportSize.x, viewportSize.y);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST); // points are sparse; depth would hide the far side of the sphere
-    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_FRAMEBUFFER_SRGB);
     glEnable(GL_PROGRAM_POINT_SIZE);
+    glEnable(GL_SCISSOR_TEST); // the clear respects the scissor, not the viewport
+    glScissor(origin.x, origin.y, viewportSize.x, viewportSize.y);
     glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
 
@@ -140,6 +142,7 @@ void WarpView::draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const {
     glDrawArrays(GL_POINTS, 0, pointCount_);
     glBindVertexArray(0);
     glDisable(GL_PROGRAM_POINT_SIZE);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 ImageRgba8 WarpView::renderImage(glm::ivec2 size, const OrbitCamera& camera) const {

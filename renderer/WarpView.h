@@ -39,7 +39,10 @@ public:
 
     void setSamples(WarpDomain domain, const std::vector<WarpSample>& samples, float cosThetaMax);
     // Into the bound draw framebuffer, over the whole viewport.
-    void draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const;
+    void draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const { draw({0, 0}, viewportSize, camera); }
+    // Into the rectangle at origin (lower left, framebuffer pixels) of that size, touching
+    // nothing outside it (the viewer's image area, beside the sidebar).
+    void draw(glm::ivec2 origin, glm::ivec2 size, const OrbitCamera& camera) const;
     // Offscreen, for headless pictures.
     ImageRgba8 renderImage(glm::ivec2 size, const OrbitCamera& camera) const;
 
