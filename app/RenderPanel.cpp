@@ -73,10 +73,12 @@ void saveScreenshots(ViewerSession& session, PanelState& state) {
 void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ViewerModel& model = session.model();
     RenderSettings& settings = model.settings;
-    integratorCombo(model.compare.enabled ? "integrator (left)" : "integrator", settings.integrator);
+    // Short labels, so the combos have room for whole entries; in compare mode these are the
+    // left side's, and the right side's follow a "right side" line below.
+    integratorCombo("integrator", settings.integrator);
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
     itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
-    samplerCombo(model.compare.enabled ? "sampler (left)" : "sampler", settings.sampler);
+    samplerCombo("sampler", settings.sampler);
     patternNote(model);
 
     int perFrame = model.maxSamplesPerFrame;
@@ -123,9 +125,10 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
     itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
     if (model.compare.enabled) {
-        integratorCombo("integrator (right)", model.compare.right.integrator);
-        samplerCombo("sampler (right)", model.compare.right.sampler);
-        ImGui::SliderInt("MAX_DEPTH (right)", &model.compare.right.maxDepth, 0, 64);
+        ImGui::TextDisabled("right side (above: the left side):");
+        integratorCombo("integrator##right", model.compare.right.integrator);
+        samplerCombo("sampler##right", model.compare.right.sampler);
+        ImGui::SliderInt("MAX_DEPTH##right", &model.compare.right.maxDepth, 0, 64);
         ImGui::Checkbox("equal time", &model.compare.equalTime);
         itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
                 "off: both get the same number of samples per pixel");

@@ -240,7 +240,11 @@ void ViewerWindow::drawSidebar() {
         ImGui::TextUnformatted(model.scene.path.filename().string().c_str());
         ImGui::SameLine();
         ImGui::TextDisabled("(F1: help, Tab: hide)");
-        ImGui::PushItemWidth(-150.0f * ImGui::GetIO().FontGlobalScale); // room for the labels
+        // Room for the longest label beside a widget ("samples/frame") and no more, so that combo
+        // boxes show whole entries ("Full (global illumination)" was cut with a fixed 150-pixel
+        // label column).
+        float labelWidth = ImGui::CalcTextSize("samples/frame").x + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x;
+        ImGui::PushItemWidth(-labelWidth);
         std::vector<std::string> toOpen;
         std::swap(toOpen, panelState_.panelsToOpen);
         // A header, opened when a script asked for it.

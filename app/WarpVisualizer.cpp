@@ -35,7 +35,7 @@ void WarpVisualizer::drawControls() {
         ImGui::EndCombo();
     }
     dirty_ |= ImGui::SliderInt("points", &request_.count, 16, 65536, "%d", ImGuiSliderFlags_Logarithmic);
-    if (request_.warp == Warp::UniformCone && ImGui::SliderFloat("cone half-angle", &coneAngleDeg_, 1.0f, 180.0f, "%.0f deg")) {
+    if (request_.warp == Warp::UniformCone && ImGui::SliderFloat("half-angle", &coneAngleDeg_, 1.0f, 180.0f, "%.0f deg")) {
         request_.cosThetaMax = std::cos(glm::radians(coneAngleDeg_));
         dirty_ = true;
     }
