@@ -257,5 +257,45 @@ void traceSample(ivec2 pixel) {
     std::filesystem::remove_all(shaders);
 }
 
+// The viewer's preview: levels at 1/8 of the width (and coarser while they keep ~256 pixels or
+// more), four samples each, shown only until the full size has a sample, and never read back.
+TEST(PathTracer, PreviewIsShownUntilTheFirstFullSampleAndNeverReadBack) {
+    testing::glContext();
+    PathTracer tracer;
+    tracer.setScene(cornell());
+    RenderSettings settings;
+    settings.maxDepth = 0; // the light alone: cheap, and bright where it is seen
+    tracer.setSettings(settings);
+    const glm::ivec2 size{400, 330}; // just over the 2^17 pixels below which there is no preview
+    tracer.setImageSize(size);
+    EXPECT_FALSE(tracer.previewWanted()) << "off by default: the headless renderer has no use for it";
+    tracer.setPreviewEnabled(true);
+    ASSERT_TRUE(tracer.previewWanted());
+    EXPECT_EQ(tracer.shownPreviewSize(), glm::ivec2(0));
+    int passes = 0;
+    while (tracer.previewWanted() && passes < 100) passes += tracer.renderPreviewRows(1000);
+    EXPECT_EQ(passes, PathTracer::kPreviewSamples) << "one level (1/32 would have 143 pixels), four samples";
+    EXPECT_EQ(tracer.shownPreviewSize(), glm::ivec2(50, 42)); // 400/8, 330/8 rounded up
+    EXPECT_EQ(tracer.sampleCount(), 0);
+
+    // The read-back is the full-size accumulation, which has nothing yet: black, not the preview.
+    auto litPixels = [](const ImageRgba8& image) {
+        int lit = 0;
+        for (size_t i = 0; i < image.rgba.size(); i += 4) lit += image.rgba[i] > 128;
+        return lit;
+    };
+    ImageRgba8 beforeSample = tracer.readToneMapped(DisplaySettings{});
+    EXPECT_EQ(beforeSample.width, size.x);
+    EXPECT_EQ(litPixels(beforeSample), 0);
+
+    tracer.renderSample();
+    EXPECT_EQ(tracer.shownPreviewSize(), glm::ivec2(0)) << "the full size replaces the preview";
+    EXPECT_FALSE(tracer.previewWanted());
+    EXPECT_GT(litPixels(tracer.readToneMapped(DisplaySettings{})), 200) << "the light, seen directly";
+
+    tracer.restart(); // a camera move: the preview starts over with the render
+    EXPECT_TRUE(tracer.previewWanted());
+}
+
 } // namespace
 } // namespace ptview

@@ -69,6 +69,39 @@ protected:
     }
 };
 
+// Tab or a resize must not throw away an image: with samples, the render keeps its size and is
+// displayed letterboxed in its own aspect ratio until the accumulation restarts anyway (R here).
+// Without samples there is nothing to keep, and it follows once the size has settled.
+TEST_F(ViewerSessionTest, ResizeKeepsARenderWithSamplesUntilARestart) {
+    auto session = openSession(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    renderSamples(*session, 3);
+    const int samples = session->stats(ViewerSession::Side::Left).samples; // a frame may hold several
+    session->setImageArea(PixelRect{{10, 0}, {48, 24}}); // the sidebar hidden: a wider area
+    session->update();
+    EXPECT_EQ(session->renderSize(), glm::ivec2(24, 24));
+    EXPECT_EQ(session->wantedRenderSize(), glm::ivec2(48, 24));
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, samples);
+    PixelRect shown = session->displayArea();
+    EXPECT_EQ(shown.size, glm::ivec2(24, 24));
+    EXPECT_EQ(shown.origin, glm::ivec2(10 + 12, 0)) << "centred in the area";
+    std::this_thread::sleep_for(std::chrono::milliseconds(400)); // longer than the settling time
+    session->update();
+    EXPECT_EQ(session->renderSize(), glm::ivec2(24, 24)) << "settling alone does not drop samples";
+
+    session->model().pendingChanges |= ViewerModel::kRestart;
+    session->update();
+    EXPECT_EQ(session->renderSize(), glm::ivec2(48, 24));
+    EXPECT_EQ(session->displayArea().size, glm::ivec2(48, 24));
+
+    // No sample yet: the new size is taken once it has held for the settling time.
+    session->setImageArea(PixelRect{{0, 0}, {32, 32}});
+    session->update();
+    EXPECT_EQ(session->renderSize(), glm::ivec2(48, 24)) << "not while the size may still be changing";
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    session->update();
+    EXPECT_EQ(session->renderSize(), glm::ivec2(32, 32));
+}
+
 TEST_F(ViewerSessionTest, BrokenSceneReloadKeepsTheSceneAndEditsThenAGoodOneMergesWithThem) {
     fs::path directory = freshDirectory("reload");
     fs::path scenePath = directory / "cornell.json";
