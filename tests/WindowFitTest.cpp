@@ -167,7 +167,7 @@ TEST_F(WindowKeys, HelpOverlayIsWideEnoughToRead) {
 // The 768x768 Cornell box has 590 thousand pixels: on a loaded llvmpipe a first full sample
 // takes minutes, and the image stayed black until it was done. The preview must show an image
 // within a few frames (its coarsest level's first pass goes in one piece), and the render go on.
-TEST_F(WindowFit, LargeRenderShowsAPreviewWithinAFewFramesWhileTheFullPassGoesOn) {
+TEST_F(WindowFit, LargeRenderShowsAPreviewWithinAFewFramesAndTracesOn) {
     fs::path directory = freshDirectory("preview");
     testing::CommandResult result = runScript(directory, "1600x1000x24", PTVIEW_ASSETS_DIR "/scenes/cornell.json",
                                               "integrator direct\ndepth 1\nframes 3\nstatus\n"
