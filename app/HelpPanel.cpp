@@ -25,7 +25,7 @@ constexpr Shortcut kShortcuts[] = {
     {"F12", "screenshot (PNG + PFM into screenshots/)"},
     {"Tab", "hide / show the sidebar"},
     {"F1", "this help"},
-    {"Esc", "quit"},
+    {"Esc", "quit (asks first when the scene has unsaved edits)"},
 };
 
 } // namespace

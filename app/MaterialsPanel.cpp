@@ -168,32 +168,50 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
 }
 
 void MaterialsPanel::save(ViewerSession& session) {
-    if (savePath_.empty()) savePath_ = session.model().scene.path.string();
+    // The session keeps the target: the open scene's file, or what was typed since it opened.
+    std::string path = session.saveTarget();
     ImGui::TextUnformatted("Save scene as");
     ImGui::SetNextItemWidth(-60.0f);
-    bool submitted = ImGui::InputText("##path", &savePath_, ImGuiInputTextFlags_EnterReturnsTrue);
+    bool submitted = ImGui::InputText("##path", &path, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (path != session.saveTarget()) session.setSaveTarget(path);
     ImGui::SameLine();
     submitted |= ImGui::Button("Save");
     if (submitted) {
-        if (savePath_.empty()) {
+        if (path.empty()) {
             saveFailed_ = true;
             saveStatus_ = "enter a file name";
+        } else if (session.saveReplacesAnotherFile(path)) {
+            ImGui::OpenPopup("Replace file");
         } else {
-            try {
-                session.saveSceneAs(savePath_);
-                saveFailed_ = false;
-                saveStatus_ = "saved " + savePath_;
-            } catch (const std::exception& error) {
-                saveFailed_ = true;
-                saveStatus_ = error.what();
-            }
+            saveTo(session, path);
         }
+    }
+    if (ImGui::BeginPopupModal("Replace file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("%s exists and is not the open scene's file.\nReplace it with this scene?", path.c_str());
+        if (ImGui::Button("Replace")) {
+            saveTo(session, path);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
     }
     if (!saveStatus_.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(saveFailed_ ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "%s",
                            saveStatus_.c_str());
         ImGui::PopTextWrapPos();
+    }
+}
+
+void MaterialsPanel::saveTo(ViewerSession& session, const std::string& path) {
+    try {
+        session.saveSceneAs(path);
+        saveFailed_ = false;
+        saveStatus_ = "saved " + path;
+    } catch (const std::exception& error) {
+        saveFailed_ = true;
+        saveStatus_ = error.what();
     }
 }
 

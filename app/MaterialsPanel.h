@@ -20,7 +20,8 @@ Material retypedMaterial(const Material& material, MaterialType type);
 class MaterialsPanel {
 public:
     // Draws the panel's controls into the current window (the viewer's sidebar); an edit flags
-    // ViewerModel::kMaterialsChanged. A successful save makes the saved file the scene's file.
+    // ViewerModel::kMaterialsChanged. A successful save makes the saved file the scene's file;
+    // one that would replace another existing file asks first.
     void draw(ViewerSession& session);
 
 private:
@@ -34,9 +35,9 @@ private:
 
     bool drawMaterial(Material& material, EmitterControls& emitter);
     void save(ViewerSession& session);
+    void saveTo(ViewerSession& session, const std::string& path);
 
     std::vector<EmitterControls> emitters_; // one per material, used by emitters only
-    std::string savePath_;
     std::string saveStatus_; // the outcome of the last save, shown under the button
     bool saveFailed_ = false;
 };

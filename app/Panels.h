@@ -3,6 +3,7 @@
 // under its own collapsing header drawn by the caller) and edits the session's model or calls
 // its actions; the session pushes the changes to the renderer. One file per panel.
 
+#include "UnsavedEditsPrompt.h"
 #include "ViewerSession.h"
 
 #include <string>
@@ -13,7 +14,8 @@ namespace ptview {
 // Text the user is typing and choices that live between frames, one per viewer window.
 struct PanelState {
     std::string scenePathInput;       // Scene panel: a path typed by the user
-    std::string sceneToOpen;          // Scene panel: waiting for "discard your edits?"
+    // Quit, open and Reload waiting for "save your edits?" (drawUnsavedEditsDialog asks).
+    UnsavedEditsPrompt unsavedEdits;
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
     std::string referencePathInput;   // Stats panel: a reference image (.pfm)
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
@@ -39,6 +41,9 @@ void drawCameraPanel(ViewerSession& session);
 void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSeconds);
 // Mouse and keyboard shortcuts.
 void drawHelpPanel();
+// The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,
+// Discard, Cancel. Drawn outside the sidebar, so it shows with the sidebar hidden too.
+void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state);
 
 // Saves the screenshots (button and F12) and records the outcome in state.
 void saveScreenshots(ViewerSession& session, PanelState& state);

@@ -20,33 +20,14 @@ void drawScenePanel(ViewerSession& session, PanelState& state) {
     std::optional<std::filesystem::path> picked =
         fileCombo("scenes", std::filesystem::path(assetsDirectory()) / "scenes", ".json", file);
     if (pathField("Open", state.scenePathInput)) picked = state.scenePathInput;
-    if (picked) {
-        if (session.hasUnsavedEdits()) {
-            state.sceneToOpen = picked->string();
-            ImGui::OpenPopup("Unsaved edits");
-        } else {
-            session.openScene(*picked);
-        }
-    }
-    // Nothing the user made is lost without asking.
-    if (ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("The scene has edits that are not saved.\nOpen %s and lose them?", state.sceneToOpen.c_str());
-        ImGui::TextDisabled("(Materials > Save scene as keeps them.)");
-        if (ImGui::Button("Discard edits and open")) {
-            session.openScene(state.sceneToOpen);
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
+    if (picked) state.unsavedEdits.request(session, UnsavedEditsPrompt::Action::OpenScene, *picked);
     ImGui::PopID();
 
     ImGui::BeginDisabled(file.empty());
-    if (ImGui::Button("Reload")) session.reloadScene();
+    if (ImGui::Button("Reload")) state.unsavedEdits.request(session, UnsavedEditsPrompt::Action::Reload);
     ImGui::EndDisabled();
-    itemTooltip("read the file again, keeping the edits made here to what the file did not change");
-    noteText("edits on disk reload automatically; your UI edits are kept");
+    itemTooltip("read the file again; with unsaved edits it asks first (Discard reads the file as it is)");
+    noteText("a change on disk reloads automatically and keeps your edits to what it did not change");
 
     if (!model.sceneError.empty()) errorText(model.sceneError);
     if (!model.notice.empty()) noteText(model.notice);

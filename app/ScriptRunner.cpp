@@ -44,7 +44,14 @@ std::string vectorText(const glm::vec3& v) {
     return text;
 }
 
-void printStatus(const ViewerSession& session) {
+// "materials, camera": the kinds of unsaved edits, joined with `separator`.
+std::string joined(const std::vector<std::string>& words, const char* separator) {
+    std::string text;
+    for (const std::string& word : words) text += (text.empty() ? "" : separator) + word;
+    return text;
+}
+
+void printStatus(const ViewerSession& session, const PanelState& panels) {
     const ViewerModel& model = session.model();
     ViewerSession::ViewStats left = session.stats(ViewerSession::Side::Left);
     const RenderSettings& settings = session.settings(ViewerSession::Side::Left);
@@ -79,6 +86,10 @@ void printStatus(const ViewerSession& session) {
         std::snprintf(text, sizeof text, " true-rel-mse=%.6g", left.trueError->relativeMse);
         line += text;
     }
+    std::vector<std::string> edits = session.unsavedEdits();
+    std::optional<UnsavedEditsPrompt::Action> asking = panels.unsavedEdits.pending();
+    line += " edits=" + (edits.empty() ? std::string("none") : joined(edits, ",")) +
+            " prompt=" + (asking ? actionName(*asking) : "none") + " save-target=" + quoted(session.saveTarget());
     line += " scene=" + quoted(model.scene.path.string()) + " scene-error=" + quoted(model.sceneError) +
             " shader-error=" + quoted(model.shaderError);
     std::printf("%s\n", line.c_str());
@@ -86,6 +97,13 @@ void printStatus(const ViewerSession& session) {
 }
 
 } // namespace
+
+// A script answers no questions: what it throws away it says on stderr.
+void ScriptRunner::noteDiscardedEdits(const ScriptCommand& command, const std::vector<std::string>& edits) const {
+    if (edits.empty()) return;
+    std::cerr << "ptview: " << script_.path.string() << ":" << command.line << ": " << command.verb
+              << ": discarded unsaved edits (" << joined(edits, ", ") << ")\n";
+}
 
 void ScriptRunner::fail(const ScriptCommand& command, const std::string& reason) {
     std::cerr << "ptview: " << script_.path.string() << ":" << command.line << ": " << command.verb << ": " << reason
@@ -213,7 +231,9 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             model.pendingChanges |= ViewerModel::kCameraChanged;
         // ---- files
         } else if (verb == "load-scene") {
-            session.openScene(word); // a bad file shows in the UI (and status), as a click would
+            std::vector<std::string> edits = session.unsavedEdits();
+            // A bad file shows in the UI (and status), as a click would, and keeps the edits.
+            if (session.openScene(word)) noteDiscardedEdits(command, edits);
         } else if (verb == "reload") {
             session.reloadScene();
         } else if (verb == "save-scene") {
@@ -280,8 +300,9 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             panels.panelsToOpen.push_back(word);
         } else if (verb == "status") {
             session.update();
-            printStatus(session);
+            printStatus(session, panels);
         } else if (verb == "quit") {
+            noteDiscardedEdits(command, session.unsavedEdits());
             quit_ = true;
         } else {
             fail(command, "not implemented by this viewer");

@@ -11,6 +11,8 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace ptview {
 
@@ -35,6 +37,8 @@ private:
     // Returns false when the command must wait (and is to be run again next frame).
     bool run(const ScriptCommand& command, ViewerSession& session, PanelState& panels);
     void fail(const ScriptCommand& command, const std::string& reason);
+    // "ptview: FILE:LINE: verb: discarded unsaved edits (materials, camera)" on stderr, if any.
+    void noteDiscardedEdits(const ScriptCommand& command, const std::vector<std::string>& edits) const;
 
     ViewerScript script_;
     size_t next_ = 0;

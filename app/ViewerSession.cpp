@@ -64,6 +64,7 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     left_.tracer->setScene(model_.scene, model_.environmentMap.get());
     left_.tracer->setSettings(settings);
     model_.backend = program.backend ? *program.backend : left_.tracer->chooseBackend();
+    saveTarget_ = model_.fileScene.path.string();
     watchFiles();
 }
 
@@ -86,6 +87,7 @@ bool ViewerSession::openScene(const std::filesystem::path& path) {
         std::optional<EnvironmentMap> map;
         if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
         model_.fileScene = scene;
+        saveTarget_ = path.string(); // Save must not write the new scene over the last one's file
         model_.notice = "opened " + path.string();
         for (const std::string& warning : scene.warnings) model_.notice += "\nwarning: " + warning;
         applyScene(std::move(scene), shareMap(map));
@@ -160,21 +162,58 @@ void ViewerSession::resetCamera() {
     model_.pendingChanges |= ViewerModel::kCameraChanged;
 }
 
+// Compared as the file would hold them, so that an edit counts exactly when saving would change
+// the file, and a field the file does not keep (one the material's type does not use) does not.
 bool ViewerSession::hasUnsavedEdits() const {
-    Scene edited = model_.scene;
-    edited.camera = model_.fileScene.camera;
     try {
-        return sceneToJson(edited) != sceneToJson(model_.fileScene);
+        return sceneToJson(model_.scene) != sceneToJson(model_.fileScene);
     } catch (const std::exception&) { // a model no file can hold is certainly not the file's
         return true;
     }
+}
+
+std::vector<std::string> ViewerSession::unsavedEdits() const {
+    const Scene& file = model_.fileScene;
+    const Scene& edited = model_.scene;
+    std::vector<std::string> kinds;
+    try {
+        const std::string fileJson = sceneToJson(file);
+        if (sceneToJson(edited) == fileJson) return kinds;
+        // Each kind alone on the file's scene: does it change what the file would hold?
+        auto differs = [&](const char* kind, auto copyPart) {
+            Scene partial = file;
+            copyPart(partial);
+            if (sceneToJson(partial) != fileJson) kinds.push_back(kind);
+        };
+        differs("materials", [&](Scene& s) { s.materials = edited.materials; });
+        differs("lights", [&](Scene& s) { s.lights = edited.lights; });
+        differs("camera", [&](Scene& s) { s.camera = edited.camera; });
+        differs("environment", [&](Scene& s) {
+            s.environment = edited.environment;
+            s.environmentMap = edited.environmentMap;
+            s.environmentIntensity = edited.environmentIntensity;
+            s.environmentRotationDeg = edited.environmentRotationDeg;
+        });
+        if (kinds.empty()) kinds.push_back("scene"); // nothing the UI edits, yet not the file
+    } catch (const std::exception&) { // a model no file can hold
+        if (kinds.empty()) kinds.push_back("scene");
+    }
+    return kinds;
 }
 
 void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
     saveScene(model_.scene, path);
     model_.scene.path = path;
     model_.fileScene = model_.scene;
+    saveTarget_ = path.string();
     watchFiles();
+}
+
+bool ViewerSession::saveReplacesAnotherFile(const std::filesystem::path& path) const {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) return false;
+    const std::filesystem::path& own = model_.fileScene.path;
+    return own.empty() || !std::filesystem::equivalent(path, own, error);
 }
 
 void ViewerSession::writeImage(Side side, const std::filesystem::path& path) const {

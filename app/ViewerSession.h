@@ -59,12 +59,25 @@ public:
     // sets model().sceneError.
     bool setReference(const std::filesystem::path& path);
     void resetCamera();                                          // to the scene file's camera
-    // Whether the scene differs from its file in anything but the camera (which moves all the
-    // time): what opening another scene would throw away.
+    // Whether the scene in memory differs from its file in anything the file holds, the camera
+    // included (a view the user set up is work): what quitting or opening another scene would
+    // throw away.
     bool hasUnsavedEdits() const;
+    // The kinds of those edits, in this order: "materials", "lights", "camera", "environment",
+    // and "scene" for anything else; empty when there are none.
+    std::vector<std::string> unsavedEdits() const;
     // Writes the scene with the user's edits (atomically) and makes that file the scene's file,
-    // the one hot reload watches. Throws SceneError naming the file when it cannot be written.
+    // the one hot reload watches, and the save target. Throws SceneError naming the file when it
+    // cannot be written.
     void saveSceneAs(const std::filesystem::path& path);
+    // What Save writes to (the Materials panel's "Save scene as" field): the open scene's own
+    // file, or what the user typed since it was opened. Opening a scene, or saving as another
+    // file, makes that file the target.
+    const std::string& saveTarget() const { return saveTarget_; }
+    void setSaveTarget(std::string path) { saveTarget_ = std::move(path); }
+    // Whether saving to path would replace a file other than the open scene's own, which the
+    // viewer asks about first.
+    bool saveReplacesAnotherFile(const std::filesystem::path& path) const;
     // Tone-mapped PNG and linear PFM of each view into directory, named after the scene and the
     // time; returns the files written. Throws std::runtime_error when nothing is rendered yet or
     // a file cannot be written.
@@ -145,6 +158,7 @@ private:
     // target (setPatternTarget), and the split view newly turned on restarts both sides.
     SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
     bool seenCompare_ = false;
+    std::string saveTarget_;
 };
 
 } // namespace ptview

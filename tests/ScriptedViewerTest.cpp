@@ -4,6 +4,7 @@
 #include "ImageIO.h"
 #include "RunCommand.h"
 #include "Scene.h"
+#include "TestFiles.h"
 
 #include <stb_image.h>
 
@@ -390,6 +391,137 @@ quit
     EXPECT_GT(trueError, 0.0);
     EXPECT_LT(trueError, 0.5);
     EXPECT_EQ(field(status[1], "true-rel-mse").rfind("<missing", 0), 0u) << "a 32x32 reference cannot judge a 96x96 render";
+    fs::remove_all(directory);
+}
+
+// A script answers no questions: `quit` and `load-scene` go ahead, and say on stderr which kinds
+// of unsaved edits they threw away. The status line shows the edits and the save target, which
+// follows the open scene (after a save to a.json, opening another scene makes Save write that one).
+TEST_F(ScriptedViewer, ScriptsSayWhatUnsavedEditsTheyDiscardAndTheSaveTargetFollowsTheScene) {
+    fs::path directory = freshDirectory("discard");
+    fs::copy_file(kCornell, directory / "scene.json");
+    fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/materials.json", directory / "other.json");
+    testing::CommandResult result = runViewer(directory, "scene.json", R"(resolution-scale 0.125
+status
+set-material red.color 0 0 1
+camera-orbit 5 0
+status
+save-scene a.json
+status
+load-scene other.json
+status
+environment-color 0.2 0.2 0.2
+set-material floor.color 0 0 1
+load-scene scene.json
+environment-color 0.5 0.5 0.5
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 5u) << result.output;
+    EXPECT_EQ(field(status[0], "edits"), "none");
+    EXPECT_EQ(field(status[0], "prompt"), "none");
+    EXPECT_EQ(field(status[0], "save-target"), "\"scene.json\"");
+    EXPECT_EQ(field(status[1], "edits"), "materials,camera");
+    EXPECT_EQ(field(status[2], "edits"), "none") << "saved";
+    EXPECT_EQ(field(status[2], "save-target"), "\"a.json\"");
+    EXPECT_EQ(field(status[3], "save-target"), "\"other.json\"") << "Save writes the open scene, not a.json";
+    EXPECT_EQ(field(status[3], "edits"), "none");
+    EXPECT_EQ(field(status[4], "edits"), "environment");
+    EXPECT_EQ(result.output.find("script.txt:8: load-scene: discarded"), std::string::npos)
+        << "nothing to discard after the save: " << result.output;
+    EXPECT_NE(result.output.find("script.txt:12: load-scene: discarded unsaved edits (materials, environment)"),
+              std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("script.txt:15: quit: discarded unsaved edits (environment)"), std::string::npos)
+        << result.output;
+    fs::remove_all(directory);
+}
+
+// What the window shows and does with unsaved edits, driven as a user would (window_unsaved.sh):
+// the title is starred; Escape and the close button ask instead of quitting, Escape in the
+// question cancels it, D discards and quits, leaving the file alone.
+TEST_F(ScriptedViewer, EscapeAndCloseAskBeforeDiscardingEditsAndDiscardQuits) {
+    fs::path directory = freshDirectory("unsaved_discard");
+    fs::copy_file(kCornell, directory / "scene.json");
+    const std::string original = testing::readFileBytes(directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.125
+target-spp 1
+set-material red.color 0 0 1
+frames 2
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+wait-reload
+)";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_unsaved.sh " +
+                                                        PTVIEW_BINARY + " Escape Escape close d");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 4u) << result.output;
+    EXPECT_EQ(field(status[0], "edits"), "materials");
+    EXPECT_EQ(field(status[0], "prompt"), "none");
+    EXPECT_EQ(field(status[1], "prompt"), "quit") << "Escape asks";
+    EXPECT_EQ(field(status[2], "prompt"), "none") << "Escape in the question cancels it";
+    EXPECT_EQ(field(status[3], "prompt"), "quit") << "the close button asks";
+    EXPECT_EQ(testing::readFileBytes(directory / "steps.txt"),
+              "running after Escape\nrunning after Escape\nrunning after close\nexited after d\n");
+    const std::string titles = testing::readFileBytes(directory / "titles.txt");
+    EXPECT_EQ(titles.substr(0, titles.find('\n')), "ptview \xE2\x80\x94 scene.json *") << "an edited scene is starred";
+    EXPECT_EQ(testing::readFileBytes(directory / "scene.json"), original) << "discarded, not saved";
+    fs::remove_all(directory);
+}
+
+// Save in the question writes the edits to the scene's file, then quits; a save (here the
+// script's) takes the star off the title.
+TEST_F(ScriptedViewer, SaveInTheQuestionWritesTheSceneFileThenQuits) {
+    fs::path directory = freshDirectory("unsaved_save");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.125
+target-spp 1
+set-material red.color 0 0 1
+frames 2
+status
+wait-reload
+save-scene scene.json
+frames 2
+status
+wait-reload
+set-material red.color 0 1 0
+frames 2
+status
+wait-reload
+frames 2
+status
+wait-reload
+)";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_unsaved.sh " +
+                                                        PTVIEW_BINARY + " none none Escape s");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 4u) << result.output;
+    EXPECT_EQ(field(status[3], "prompt"), "quit");
+    EXPECT_EQ(testing::readFileBytes(directory / "steps.txt"),
+              "running after none\nrunning after none\nrunning after Escape\nexited after s\n");
+    const std::string title = "ptview \xE2\x80\x94 scene.json";
+    EXPECT_EQ(testing::readFileBytes(directory / "titles.txt"),
+              title + " *\n" + title + "\n" + title + " *\n" + title + " *\n");
+    bool found = false;
+    for (const Material& m : loadScene(directory / "scene.json").materials)
+        if (m.name == "red") {
+            found = true;
+            EXPECT_EQ(m.color, glm::vec3(0.0f, 1.0f, 0.0f));
+        }
+    EXPECT_TRUE(found);
     fs::remove_all(directory);
 }
 

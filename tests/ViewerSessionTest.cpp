@@ -4,6 +4,7 @@
 #include "ImageIO.h"
 #include "SceneInput.h"
 #include "TestFiles.h"
+#include "UnsavedEditsPrompt.h"
 #include "ViewerSession.h"
 
 #include <gtest/gtest.h>
@@ -324,10 +325,16 @@ TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneW
     auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
     ViewerModel& model = session->model();
     EXPECT_FALSE(session->hasUnsavedEdits());
-    model.scene.camera.eye.x += 0.5f; // looking around is not an edit worth a warning
-    EXPECT_FALSE(session->hasUnsavedEdits());
-    model.scene.materials[0].color *= 0.5f;
+    EXPECT_EQ(session->unsavedEdits(), std::vector<std::string>{});
+    model.scene.camera.eye.x += 0.5f; // a view the user set up is work too
     EXPECT_TRUE(session->hasUnsavedEdits());
+    EXPECT_EQ(session->unsavedEdits(), std::vector<std::string>{"camera"});
+    session->resetCamera();
+    EXPECT_FALSE(session->hasUnsavedEdits()) << "the file's camera again";
+    model.scene.materials[0].color *= 0.5f;
+    model.scene.environment = glm::vec3(0.2f); // the colour: without a map the file keeps no intensity
+    EXPECT_TRUE(session->hasUnsavedEdits());
+    EXPECT_EQ(session->unsavedEdits(), (std::vector<std::string>{"materials", "environment"}));
 
     fs::path saved = directory / "mine.json";
     session->saveSceneAs(saved);
@@ -341,6 +348,112 @@ TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneW
     EXPECT_EQ(material(*session, "light").radiance, glm::vec3(1.0f));
     EXPECT_EQ(model.scene.materials[0].color, model.fileScene.materials[0].color);
     fs::remove_all(directory);
+}
+
+// Save to a.json, then open another scene: Save must now write that scene's own file, not a.json
+// (the Materials panel kept the first path it showed, and a Save replaced the edited a.json with
+// the other scene). What the user types after opening is the target until the next open or save.
+TEST_F(ViewerSessionTest, SaveTargetFollowsTheOpenScene) {
+    fs::path directory = freshDirectory("target");
+    fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/cornell.json", directory / "cornell.json");
+    fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/materials.json", directory / "materials.json");
+    auto session = openSession(directory / "cornell.json");
+    EXPECT_EQ(session->saveTarget(), (directory / "cornell.json").string());
+    session->model().scene.materials[0].color *= 0.5f;
+    session->saveSceneAs(directory / "a.json");
+    EXPECT_EQ(session->saveTarget(), (directory / "a.json").string());
+
+    ASSERT_TRUE(session->openScene(directory / "materials.json"));
+    EXPECT_EQ(session->saveTarget(), (directory / "materials.json").string());
+    EXPECT_FALSE(session->saveReplacesAnotherFile(directory / "materials.json")) << "its own file";
+    EXPECT_TRUE(session->saveReplacesAnotherFile(directory / "a.json")) << "the edited cornell box";
+    EXPECT_FALSE(session->saveReplacesAnotherFile(directory / "new.json")) << "nothing to replace";
+
+    session->setSaveTarget((directory / "typed.json").string());
+    EXPECT_EQ(session->saveTarget(), (directory / "typed.json").string()) << "what the user typed stays";
+    EXPECT_FALSE(session->openScene(directory / "missing.json"));
+    EXPECT_EQ(session->saveTarget(), (directory / "typed.json").string()) << "a failed open changes nothing";
+    ASSERT_TRUE(session->openScene(directory / "a.json"));
+    EXPECT_EQ(session->saveTarget(), (directory / "a.json").string());
+    fs::remove_all(directory);
+}
+
+TEST_F(ViewerSessionTest, QuitWaitsForAnAnswerOnlyWhenThereAreUnsavedEdits) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    UnsavedEditsPrompt clean;
+    clean.request(*session, UnsavedEditsPrompt::Action::Quit);
+    EXPECT_TRUE(clean.quitConfirmed()) << "nothing to lose: no question";
+    EXPECT_FALSE(clean.pending());
+
+    session->model().scene.camera.eye.y += 0.25f;
+    UnsavedEditsPrompt prompt;
+    prompt.request(*session, UnsavedEditsPrompt::Action::Quit);
+    EXPECT_FALSE(prompt.quitConfirmed());
+    ASSERT_TRUE(prompt.pending());
+    EXPECT_EQ(*prompt.pending(), UnsavedEditsPrompt::Action::Quit);
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Cancel);
+    EXPECT_FALSE(prompt.pending());
+    EXPECT_FALSE(prompt.quitConfirmed());
+    EXPECT_TRUE(session->hasUnsavedEdits()) << "Cancel keeps everything";
+    prompt.request(*session, UnsavedEditsPrompt::Action::Quit);
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Discard);
+    EXPECT_TRUE(prompt.quitConfirmed());
+}
+
+TEST_F(ViewerSessionTest, SaveAnswerWritesTheEditsBeforeOpeningAnotherScene) {
+    fs::path directory = freshDirectory("prompt_save");
+    fs::path scenePath = directory / "cornell.json";
+    fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/cornell.json", scenePath);
+    auto session = openSession(scenePath);
+    const fs::path other = fs::path(PTVIEW_ASSETS_DIR) / "scenes/materials.json";
+    UnsavedEditsPrompt prompt;
+    session->model().scene.materials[0].color = glm::vec3(0.25f, 0.5f, 0.75f);
+    prompt.request(*session, UnsavedEditsPrompt::Action::OpenScene, other);
+    ASSERT_TRUE(prompt.pending());
+    EXPECT_EQ(session->model().fileScene.path, scenePath) << "nothing opened yet";
+
+    // A save that cannot be written keeps the question, the scene and the edits.
+    session->setSaveTarget((directory / "no such directory" / "x.json").string());
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Save);
+    EXPECT_TRUE(prompt.pending());
+    EXPECT_NE(prompt.saveError().find("x.json"), std::string::npos) << prompt.saveError();
+    EXPECT_EQ(session->model().fileScene.path, scenePath);
+    EXPECT_TRUE(session->hasUnsavedEdits());
+
+    session->setSaveTarget(scenePath.string());
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Save);
+    EXPECT_FALSE(prompt.pending());
+    EXPECT_EQ(loadScene(scenePath).materials[0].color, glm::vec3(0.25f, 0.5f, 0.75f)) << "the edit is in the file";
+    EXPECT_EQ(session->model().fileScene.path, other) << "then the other scene opened";
+    EXPECT_FALSE(session->hasUnsavedEdits());
+    fs::remove_all(directory);
+}
+
+TEST_F(ViewerSessionTest, DiscardOpensTheOtherSceneAndReloadDiscardReadsTheFileAsItIs) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    const Scene file = session->model().fileScene;
+    UnsavedEditsPrompt prompt;
+
+    // Reload with an edit the file did not change: the merge would keep it, so only Discard drops it.
+    session->model().scene.materials[0].color = glm::vec3(0.25f, 0.5f, 0.75f);
+    prompt.request(*session, UnsavedEditsPrompt::Action::Reload);
+    ASSERT_TRUE(prompt.pending());
+    EXPECT_EQ(session->model().scene.materials[0].color, glm::vec3(0.25f, 0.5f, 0.75f));
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Discard);
+    EXPECT_FALSE(prompt.pending());
+    EXPECT_EQ(session->model().scene.materials[0].color, file.materials[0].color);
+    EXPECT_FALSE(session->hasUnsavedEdits());
+
+    const fs::path other = fs::path(PTVIEW_ASSETS_DIR) / "scenes/materials.json";
+    session->model().scene.environment = glm::vec3(0.1f);
+    session->model().scene.camera.vfovDeg = 30.0f;
+    prompt.request(*session, UnsavedEditsPrompt::Action::OpenScene, other);
+    ASSERT_TRUE(prompt.pending());
+    EXPECT_EQ(prompt.sceneToOpen(), other);
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Discard);
+    EXPECT_EQ(session->model().fileScene.path, other);
+    EXPECT_EQ(session->model().scene.shapes.size(), loadScene(other).shapes.size());
+    EXPECT_FALSE(prompt.quitConfirmed());
 }
 
 } // namespace

@@ -6,7 +6,7 @@ set -u
 binary=$1 scene=$2
 shift 2
 "$binary" "$scene" "$@" & pid=$!  # further arguments go to the viewer
-window=$(timeout 30 xdotool search --sync --name '^ptview$' | head -1)
+window=$(timeout 30 xdotool search --sync --name '^ptview' | head -1)
 if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
 xdotool windowfocus "$window" 2>/dev/null
 # A screenshot needs a finished sample; a press before that is refused (and said so in the panel).

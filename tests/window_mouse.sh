@@ -6,7 +6,7 @@
 set -u
 binary=$1
 "$binary" scene.json --script script.txt > out.txt 2>&1 & pid=$!
-window=$(timeout 30 xdotool search --sync --name '^ptview$' | head -1)
+window=$(timeout 30 xdotool search --sync --name '^ptview' | head -1)
 if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
 xdotool windowfocus "$window" 2>/dev/null
 

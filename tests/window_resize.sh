@@ -4,7 +4,7 @@
 set -u
 binary=$1 scene=$2
 "$binary" "$scene" & pid=$!
-window=$(timeout 30 xdotool search --sync --name '^ptview$' | head -1)
+window=$(timeout 30 xdotool search --sync --name '^ptview' | head -1)
 if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
 for size in "900 500" "300 700" "40 30" "1000 600"; do
   xdotool windowsize "$window" $size
