@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -96,6 +98,14 @@ void clampHugeExponents(std::string& bytes) {
         std::fill(bytes.begin() + std::ptrdiff_t(first), bytes.begin() + std::ptrdiff_t(end - 9), '0');
         std::fill(bytes.begin() + std::ptrdiff_t(end - 9), bytes.begin() + std::ptrdiff_t(end), '9');
     }
+}
+
+// Editors on Windows start UTF-8 text with a byte-order mark, which tinyobjloader takes for part
+// of the first keyword: a first line "v 0 0 0" was skipped without a word, and every index after
+// it pointed one vertex further. The mark is blanked (three spaces, so offsets stay), and the
+// reader skips blanks before a keyword.
+void blankByteOrderMark(std::string& bytes) {
+    if (bytes.compare(0, 3, "\xEF\xBB\xBF") == 0) bytes.replace(0, 3, "   ");
 }
 
 // An input stream over bytes already in memory (std::istringstream would copy 80 MB) that also
@@ -295,6 +305,7 @@ public:
             return false;
         }
         std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        blankByteOrderMark(bytes);
         clampHugeExponents(bytes);
         MemoryBuffer buffer(bytes);
         std::istream stream(&buffer);
@@ -302,7 +313,13 @@ public:
         std::string mtlWarnings, mtlErrors;
         tinyobj::LoadMtl(nameToIndex, materials, &stream, &mtlWarnings, &mtlErrors);
         appendMessages(path.string(), mtlWarnings + mtlErrors, warnings_);
-        if (materials->size() == before) warnings_.push_back(path.string() + ": defines no materials");
+        // tinyobjloader ends every MTL with the material it was filling, so a file without a
+        // `newmtl` still yields one, unnamed: that one is dropped, not offered as a material.
+        if (checkMtlLines(bytes, path) == 0) {
+            warnings_.push_back(path.string() + ": defines no materials (no newmtl line)");
+            for (std::size_t i = before; i < materials->size(); ++i) nameToIndex->erase((*materials)[i].name);
+            materials->resize(before);
+        }
         for (std::size_t i = before; i < materials->size(); ++i) {
             mesh_.fileMaterials.push_back(toMeshMaterial((*materials)[i]));
             repairNonFiniteValues(mesh_.fileMaterials.back(), path.string(), warnings_);
@@ -311,6 +328,61 @@ public:
     }
 
 private:
+    // Warns, naming the file and line, where tinyobjloader would read on without a word: a value
+    // that is not a number ("Kd abc" reads as 0) and a texture map that is not there. Returns how
+    // many `newmtl` lines there are.
+    std::size_t checkMtlLines(std::string_view bytes, const std::filesystem::path& path) {
+        struct NumericKey {
+            const char* key;
+            int required, most;
+        };
+        static const NumericKey kNumericKeys[] = {{"Ka", 1, 3}, {"Kd", 1, 3}, {"Ks", 1, 3}, {"Ke", 1, 3},
+                                                  {"Kt", 1, 3}, {"Tf", 1, 3}, {"Ns", 1, 1}, {"Ni", 1, 1},
+                                                  {"d", 1, 1},  {"Tr", 1, 1}, {"illum", 1, 1}};
+        std::size_t materials = 0, lineNumber = 0, begin = 0;
+        while (begin < bytes.size()) {
+            std::size_t end = begin;
+            while (end < bytes.size() && !isLineEnd(bytes[end])) ++end;
+            ++lineNumber;
+            std::string_view line = bytes.substr(begin, end - begin);
+            begin = end + (end + 1 < bytes.size() && bytes[end] == '\r' && bytes[end + 1] == '\n' ? 2 : 1);
+            std::size_t at = 0;
+            while (at < line.size() && isBlank(line[at])) ++at;
+            line.remove_prefix(at);
+            std::size_t keyEnd = 0;
+            while (keyEnd < line.size() && !isBlank(line[keyEnd])) ++keyEnd;
+            const std::string_view key = line.substr(0, keyEnd);
+            std::string_view rest = line.substr(keyEnd);
+            while (!rest.empty() && isBlank(rest.front())) rest.remove_prefix(1);
+            while (!rest.empty() && isBlank(rest.back())) rest.remove_suffix(1);
+            const std::string place = path.string() + ":" + std::to_string(lineNumber) + ": ";
+            if (key == "newmtl") {
+                ++materials;
+                continue;
+            }
+            for (const NumericKey& numeric : kNumericKeys)
+                if (key == numeric.key && !fieldsAreNumbers(line, numeric.required, numeric.most))
+                    warnings_.push_back(place + std::string(key) +
+                                        (rest.empty() ? std::string(" has no value")
+                                                      : " \"" + std::string(rest) + "\" is not a number") +
+                                        "; it reads as 0");
+            if (key.substr(0, 4) == "map_" || key == "bump" || key == "disp" || key == "decal" || key == "refl") {
+                // The file name is the last word: options such as "-s 1 1 1" come before it.
+                const std::size_t lastBlank = rest.find_last_of(" \t");
+                const std::string_view name = lastBlank == std::string_view::npos ? rest : rest.substr(lastBlank + 1);
+                const std::filesystem::path texture = path.parent_path() / std::string(name);
+                std::error_code ignored;
+                if (name.empty())
+                    warnings_.push_back(place + std::string(key) + " names no file");
+                else if (!std::filesystem::exists(texture, ignored))
+                    warnings_.push_back(place + std::string(key) + " " + std::string(name) + " not found (looked for " +
+                                        texture.string() +
+                                        "); ptview uses no texture maps, but the model may need it");
+            }
+        }
+        return materials;
+    }
+
     std::filesystem::path directory_;
     std::string objFile_;
     TriangleMesh& mesh_;
@@ -447,6 +519,7 @@ private:
     void addFace(const tinyobj::index_t* corners, int count) {
         ++faces_;
         if (!error_.empty()) return;
+        if (!indicesFitAnInt(count)) return;
         if (count < 3) {
             if (shortFaces_++ == 0) firstShortFaceEnd_ = here();
             return;
@@ -483,6 +556,40 @@ private:
             normal[1] = normal[2];
             texcoord[1] = texcoord[2];
         }
+    }
+
+    // tinyobjloader reads an index as atoi does, so one beyond the int range comes through as some
+    // other number: "4294967299" as 3, "99999999999999999999" as -1, a valid index either way. The
+    // digits are read again here and such an index refused. Only a line with a run of ten digits
+    // or more can hold one, so the common line costs one scan.
+    bool indicesFitAnInt(int count) {
+        const std::string_view line = record();
+        std::size_t run = 0, longest = 0;
+        for (char c : line) {
+            run = (c >= '0' && c <= '9') ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+        if (longest < 10) return true;
+        static const char* const kNouns[3] = {"position", "texture coordinate", "normal"};
+        for (int k = 0; k < count; ++k) {
+            std::string_view corner = cornerText(line, k);
+            if (corner.substr(0, 1) == "#") break; // a comment after the corners
+            for (int field = 0; field < 3 && !corner.empty(); ++field) {
+                const std::size_t slash = corner.find('/');
+                std::string_view digits = corner.substr(0, slash);
+                corner = slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
+                if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);
+                long long value = 0;
+                const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+                const bool tooLarge = ec == std::errc::result_out_of_range ||
+                                      (ec == std::errc() && (value > INT_MAX || value < -INT_MAX));
+                if (!tooLarge || end == digits.data()) continue;
+                fail(k, std::string(kNouns[field]) + " index " + std::string(digits) +
+                            " does not fit a 32-bit integer (at most 2147483647)");
+                return false;
+            }
+        }
+        return true;
     }
 
     void useMaterial(const char* text) {
@@ -605,6 +712,7 @@ TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
     const std::string file = path.string();
 
     std::string bytes = readFile(path);
+    blankByteOrderMark(bytes);
     clampHugeExponents(bytes);
     MemoryBuffer buffer(bytes);
     std::istream stream(&buffer);

@@ -157,6 +157,29 @@ TEST(ObjLoader, MissingMtlIsAWarningAndFacesKeepTheirSlotNames) {
     EXPECT_TRUE(contains(report.warnings[0], "gone.mtl")) << report.warnings[0];
 }
 
+// tinyobjloader always ends an MTL with the material it was filling, so "defines no materials"
+// never fired and an empty MTL gave an unnamed material; "Kd abc" read as 0 and a missing map_Kd
+// went unmentioned. Each is a warning naming the MTL file (and the line).
+TEST(ObjLoader, MtlProblemsAreWarningsNamingTheFileAndLine) {
+    testing::ScratchFiles files("obj");
+    const std::string obj = "mtllib m.mtl\n" + std::string(kSquare) + "usemtl red\nf 1 2 3\n";
+    const fs::path mtl = files.write("m.mtl", "# nothing here\n");
+    MeshLoadReport empty;
+    const TriangleMesh none = loadObjMesh(files.write("empty.obj", obj), &empty);
+    EXPECT_TRUE(none.fileMaterials.empty());
+    EXPECT_EQ(warningWith(empty, "defines no materials"), mtl.string() + ": defines no materials (no newmtl line)");
+
+    files.write("m.mtl", "newmtl red\nKd abc 0.5 0.5\nNs\nmap_Kd -s 1 1 1 wood.png\nmap_Ks here.png\n");
+    files.write("here.png", "");
+    MeshLoadReport bad;
+    const TriangleMesh red = loadObjMesh(files.write("bad.obj", obj), &bad);
+    ASSERT_EQ(red.fileMaterials.size(), 1u);
+    EXPECT_EQ(warningWith(bad, ":2: Kd"), mtl.string() + ":2: Kd \"abc 0.5 0.5\" is not a number; it reads as 0");
+    EXPECT_EQ(warningWith(bad, "Ns"), mtl.string() + ":3: Ns has no value; it reads as 0");
+    EXPECT_EQ(warningWith(bad, "map_Kd").rfind(mtl.string() + ":4: map_Kd wood.png not found (looked for ", 0), 0u);
+    EXPECT_EQ(bad.warnings.size(), 3u) << "map_Ks names a file that is there";
+}
+
 TEST(ObjLoader, PolylinesAndPointsAreSkippedWithOneWarning) {
     testing::ScratchFiles files("obj");
     MeshLoadReport report;
@@ -261,6 +284,53 @@ TEST(ObjLoader, IndexOutOfRangeIsAnErrorNamingFileLineAndFace) {
     // Too large for an int: the reader hands over some other number, so the message quotes the text.
     const std::string huge = errorFrom(files.write("huge.obj", std::string(kSquare) + "f 1 2 99999999999\n"));
     EXPECT_TRUE(contains(huge, "huge.obj:5: face 1, corner 3 (\"99999999999\"): position index")) << huge;
+}
+
+// tinyobjloader reads indices as atoi does: "4294967299" came through as 3 and a valid triangle
+// 1 2 3 was drawn, "99999999999999999999" as -1 (the last vertex). Each is refused, naming the
+// file, the line, the corner as written and which index.
+TEST(ObjLoader, IndicesBeyondTheIntRangeAreRefusedNamingTheLine) {
+    testing::ScratchFiles files("obj");
+    const std::string wraps = errorFrom(files.write("wraps.obj", std::string(kSquare) + "f 1 2 4294967299\n"));
+    EXPECT_TRUE(contains(wraps, "wraps.obj:5: face 1, corner 3 (\"4294967299\"): position index 4294967299 does not fit"))
+        << wraps;
+    const std::string saturates =
+        errorFrom(files.write("saturates.obj", std::string(kSquare) + "f 1 2 99999999999999999999\n"));
+    EXPECT_TRUE(contains(saturates, "saturates.obj:5: face 1, corner 3 (\"99999999999999999999\"): position index"))
+        << saturates;
+    EXPECT_TRUE(contains(saturates, "does not fit a 32-bit integer")) << saturates;
+    const std::string negative = errorFrom(files.write("negative.obj", std::string(kSquare) + "f -1 -2 -4294967297\n"));
+    EXPECT_TRUE(contains(negative, "negative.obj:5: face 1, corner 3 (\"-4294967297\"): position index")) << negative;
+    EXPECT_TRUE(contains(negative, "does not fit")) << negative;
+    const std::string texcoord = errorFrom(
+        files.write("texcoord.obj", std::string(kSquare) + "vt 0 0\nf 1/1 2/4294967297 3/1\n"));
+    EXPECT_TRUE(contains(texcoord, "texcoord.obj:6: face 1, corner 2 (\"2/4294967297\"): texture coordinate index"))
+        << texcoord;
+    const std::string normal =
+        errorFrom(files.write("normal.obj", std::string(kSquare) + "vn 0 0 1\nf 1//1 2//1 3//4294967297\n"));
+    EXPECT_TRUE(contains(normal, "normal.obj:6: face 1, corner 3 (\"3//4294967297\"): normal index")) << normal;
+    // Leading zeros make a long run of digits but a small index; a comment may hold any number.
+    const TriangleMesh padded = loadObjMesh(
+        files.write("padded.obj", std::string(kSquare) + "f 0000000001 2 0000000003 # 99999999999\n"));
+    EXPECT_EQ(padded.triangles.size(), 1u);
+}
+
+// A byte-order mark made the first line "\xEF\xBB\xBFv 0 0 0" an unknown record, skipped without a
+// word: the first vertex was lost and the face "f 1 2 3" used vertices 2, 3 and 4. In an MTL the
+// first material was lost the same way.
+TEST(ObjLoader, AByteOrderMarkAtTheStartIsSkippedInObjAndMtl) {
+    testing::ScratchFiles files("obj");
+    files.write("bom.mtl", "\xEF\xBB\xBFnewmtl red\nKd 0.8 0.1 0.1\n");
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(
+        files.write("bom.obj", "\xEF\xBB\xBF" + std::string(kSquare) + "mtllib bom.mtl\nusemtl red\nf 1 2 3\n"), &report);
+    EXPECT_TRUE(report.warnings.empty()) << report.warnings.front();
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[0], glm::vec3(0, 0, 0));
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0].position, (std::array<std::uint32_t, 3>{0, 1, 2}));
+    ASSERT_EQ(mesh.fileMaterials.size(), 1u);
+    EXPECT_EQ(mesh.fileMaterials[0].name, "red");
 }
 
 TEST(ObjLoader, FacesMayComeBeforeTheirVertices) {
