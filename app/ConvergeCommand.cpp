@@ -102,7 +102,8 @@ double lateSlope(const std::vector<Checkpoint>& checkpoints) {
 // Seconds until relMSE first fell to `target`, interpolated log-log between checkpoints.
 std::optional<double> timeToReach(const std::vector<Checkpoint>& checkpoints, double target) {
     for (std::size_t i = 0; i < checkpoints.size(); ++i) {
-        if (checkpoints[i].error.relativeMse > target) continue;
+        // Written so that a NaN error (nothing finite to compare) is never "reached".
+        if (!(checkpoints[i].error.relativeMse <= target)) continue;
         if (i == 0) return checkpoints[0].seconds;
         const Checkpoint& a = checkpoints[i - 1];
         const Checkpoint& b = checkpoints[i];
@@ -162,7 +163,8 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
             << number(efficiency) << " | " << time(timeToReach(result.checkpoints, 0.1)) << " | "
             << time(timeToReach(result.checkpoints, 0.01)) << " | " << time(timeToReach(result.checkpoints, 0.001))
             << " | " << number(slope, "%.2f") << " | "
-            << (biased ? "**biased**: the error stops falling at relMSE " + number(last.error.relativeMse)
+            << (!std::isfinite(last.error.relativeMse) ? std::string("**not measured**: no finite pixel to compare")
+                : biased ? "**biased**: the error stops falling at relMSE " + number(last.error.relativeMse)
                 : hasFireflies(result) ? std::string("**fireflies**: rare very bright samples make the error jump; not converged")
                 : slope < -0.75 ? std::string("converging (error ~ 1/spp)") : std::string("converging slowly, or near the floor"))
             << " |\n";
@@ -219,7 +221,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
     std::optional<ImageRgbF> referenceFile;
     if (!options.referencePath.empty()) {
         try {
-            referenceFile = readPfm(options.referencePath);
+            referenceFile = readReferenceImage(options.referencePath);
         } catch (const std::exception& e) {
             std::cerr << "ptview: " << e.what() << "\n";
             return kExitBadInput;

@@ -138,7 +138,7 @@ bool ViewerSession::setEnvironmentMap(const std::filesystem::path& path) {
 
 bool ViewerSession::setReference(const std::filesystem::path& path) {
     try {
-        model_.reference = path.empty() ? nullptr : std::make_shared<const ImageRgbF>(readPfm(path));
+        model_.reference = path.empty() ? nullptr : std::make_shared<const ImageRgbF>(readReferenceImage(path));
         model_.referencePath = path;
         left_.trueErrorHistory.clear();
         if (right_) right_->trueErrorHistory.clear();

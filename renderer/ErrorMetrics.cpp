@@ -1,6 +1,9 @@
 #include "ErrorMetrics.h"
 
+#include "ImageIO.h"
+
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace ptview {
@@ -35,11 +38,35 @@ ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& referen
     }
     long long pixels = finite + nonFinite;
     metrics.nonFiniteShare = pixels > 0 ? double(nonFinite) / double(pixels) : 0.0;
-    if (finite == 0) return metrics;
+    if (finite == 0) {
+        constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+        metrics.rmse = metrics.relativeMse = kNaN;
+        metrics.meanBias = glm::dvec3(kNaN);
+        return metrics;
+    }
     metrics.rmse = std::sqrt(squared / (3.0 * double(finite)));
     metrics.relativeMse = relative / (3.0 * double(finite));
     metrics.meanBias = (sumImage - sumReference) / double(finite);
     return metrics;
+}
+
+ImageRgbF readReferenceImage(const std::filesystem::path& path) {
+    ImageRgbF image = readPfm(path);
+    long long nonFinite = 0, first = -1;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 value = image.at(x, y);
+            if (std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b)) continue;
+            if (nonFinite++ == 0) first = static_cast<long long>(y) * image.width + x;
+        }
+    if (nonFinite == 0) return image;
+    const int x = static_cast<int>(first % image.width), y = static_cast<int>(first / image.width);
+    const glm::vec3 value = image.at(x, y);
+    const bool nan = std::isnan(value.r) || std::isnan(value.g) || std::isnan(value.b);
+    throw std::runtime_error(path.string() + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " +
+                             (nan ? "NaN" : "infinite") + " (" + std::to_string(nonFinite) + " of " +
+                             std::to_string(static_cast<long long>(image.width) * image.height) +
+                             " pixels are not finite); a reference image must be finite everywhere");
 }
 
 } // namespace ptview

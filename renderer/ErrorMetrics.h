@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace ptview {
@@ -17,7 +18,15 @@ struct ErrorMetrics {
     double nonFiniteShare = 0.0;   // pixels with a NaN or infinite channel, as a share of all (left out above)
 };
 
-// Throws std::invalid_argument when the sizes differ.
+// Throws std::invalid_argument when the sizes differ. With no finite pixel in the image there is
+// nothing to measure: rmse, relativeMse and meanBias are NaN (not 0, which would read as a perfect
+// match), and a NaN error never counts as a target reached.
 ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& reference);
+
+// A reference image (.pfm) for compareToReference, as `--reference` and `converge --reference`
+// read it. A NaN or infinite pixel in a reference would make every error figure NaN, so such a
+// file is refused: std::runtime_error naming the file, the first such pixel (x, y from the top
+// left) and how many there are. Other problems are readPfm's errors.
+ImageRgbF readReferenceImage(const std::filesystem::path& path);
 
 } // namespace ptview

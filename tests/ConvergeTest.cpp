@@ -1,6 +1,8 @@
 // `ptview converge` on a tiny scene and budget: the CSV's MSE falls as 1/spp for an unbiased
 // configuration, errors against a reference of another seed are never zero, and a biased
 // configuration (one bounce against a deep reference) is reported as such, not hidden.
+#include "ErrorMetrics.h"
+#include "ImageIO.h"
 #include "RunCommand.h"
 #include "TestFiles.h"
 
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <unistd.h>
@@ -106,6 +109,43 @@ TEST(Converge, BadConfigurationsAreRefused) {
     EXPECT_EQ(result.exitCode, 2);
     EXPECT_NE(result.output.find("bad configuration \"fast/random/8\""), std::string::npos) << result.output;
     EXPECT_FALSE(fs::exists("/tmp/never/convergence.csv"));
+}
+
+// A reference with a NaN pixel gave a CSV of nan and a summary claiming every error target reached
+// at the first checkpoint. It is refused before any rendering, naming the file and the pixel.
+TEST(Converge, ReferenceWithANaNPixelIsRefused) {
+    testing::ScratchFiles files("converge_nan");
+    ImageRgbF image;
+    image.width = 8, image.height = 8;
+    image.rgb.assign(8 * 8 * 3, 0.25f);
+    image.rgb[(2 * 8 + 3) * 3] = std::numeric_limits<float>::quiet_NaN();
+    const fs::path reference = files.write("nan.pfm", "");
+    writePfm(reference, image);
+    const fs::path out = reference.parent_path() / "out";
+    testing::CommandResult result = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+        " --out " + testing::shellQuoted(out.string()) + " --reference " + testing::shellQuoted(reference.string()) +
+        " --max-spp 2 --configs naive/random/1");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find(reference.string() + ": pixel (3, 2) is NaN (1 of 64 pixels"), std::string::npos)
+        << result.output;
+    EXPECT_FALSE(fs::exists(out / "summary.md"));
+}
+
+// With no finite pixel to compare, the error is NaN, never the 0 that read as a perfect match and
+// as every target reached.
+TEST(Converge, AnImageWithNoFinitePixelHasNoError) {
+    ImageRgbF reference;
+    reference.width = 2, reference.height = 1;
+    reference.rgb.assign(6, 0.5f);
+    ImageRgbF image = reference;
+    image.rgb.assign(6, std::numeric_limits<float>::quiet_NaN());
+    const ErrorMetrics error = compareToReference(image, reference);
+    EXPECT_TRUE(std::isnan(error.relativeMse));
+    EXPECT_TRUE(std::isnan(error.rmse));
+    EXPECT_EQ(error.nonFiniteShare, 1.0);
+    image.rgb[0] = image.rgb[1] = image.rgb[2] = 0.5f;
+    EXPECT_EQ(compareToReference(image, reference).relativeMse, 0.0);
 }
 
 } // namespace

@@ -9,8 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <thread>
 #include <unistd.h>
 
@@ -277,6 +279,31 @@ TEST_F(ViewerSessionTest, UnreadableSceneOrMapLeavesTheCurrentSceneAlone) {
     EXPECT_EQ(session->model().scene.shapes.size(), shapes);
     EXPECT_TRUE(session->model().scene.environmentMap.empty());
     renderSamples(*session, 1);
+}
+
+// A reference with one NaN (or infinite) pixel made every true-error figure NaN. It is refused
+// with the file and the pixel named, and the reference loaded before stays.
+TEST_F(ViewerSessionTest, ReferenceWithANonFinitePixelIsRefusedNamingThePixel) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    testing::ScratchFiles files("session_reference");
+    ImageRgbF image;
+    image.width = 24, image.height = 24;
+    image.rgb.assign(24 * 24 * 3, 0.5f);
+    const fs::path good = files.write("good.pfm", "");
+    writePfm(good, image);
+    ASSERT_TRUE(session->setReference(good)) << session->model().sceneError;
+    for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        image.rgb[(5 * 24 + 7) * 3 + 1] = bad; // pixel (7, 5), green
+        const fs::path path = files.write(std::isnan(bad) ? "nan.pfm" : "inf.pfm", "");
+        writePfm(path, image);
+        EXPECT_FALSE(session->setReference(path));
+        const std::string& error = session->model().sceneError;
+        EXPECT_EQ(error.rfind(path.string() + ": pixel (7, 5) is " + (std::isnan(bad) ? "NaN" : "infinite"), 0), 0u)
+            << error;
+        EXPECT_NE(error.find("1 of 576 pixels"), std::string::npos) << error;
+        ASSERT_TRUE(session->model().reference);
+        EXPECT_EQ(session->model().referencePath, good);
+    }
 }
 
 double imageMean(const ImageRgbF& image) {

@@ -1,6 +1,7 @@
-// libFuzzer target for readPfm (`--reference` of the viewer and of `converge`): the header (magic,
-// size, scale and the byte that ends it), the limits on the size, and the pixel rows, stored
-// bottom to top.
+// libFuzzer target for readReferenceImage, readPfm and its check that every pixel is finite
+// (`--reference` of the viewer and of `converge`): the header (magic, size, scale and the byte
+// that ends it), the limits on the size, the pixel rows, stored bottom to top, and NaN or
+// infinite pixels, which would make every error figure NaN.
 //
 // readPfm reads a file (there is no variant that takes bytes), so each input is written to a
 // private directory first.
@@ -10,9 +11,11 @@
 // size disagrees with its pixel count) is a finding. A header may claim 65536 x 65536 pixels
 // (48 GiB) in a file of a few bytes: such a file must be refused, not believed.
 
+#include "ErrorMetrics.h"
 #include "FuzzScratch.h"
 #include "ImageIO.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -40,6 +43,7 @@ void checkImage(const ptview::ImageRgbF& image) {
             "loaded image breaks a promise: size within [1, 65536]");
     require(image.rgb.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3,
             "loaded image breaks a promise: 3 floats per pixel");
+    for (float value : image.rgb) require(std::isfinite(value), "loaded reference breaks a promise: every pixel finite");
 }
 
 } // namespace
@@ -52,7 +56,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     ptview::fuzz::writeInput(gInput, std::string_view(reinterpret_cast<const char*>(data), size));
     try {
-        checkImage(ptview::readPfm(gInput));
+        checkImage(ptview::readReferenceImage(gInput));
     } catch (const std::runtime_error& error) {
         // The documented refusal of a file that cannot be used, which says which file.
         require(std::string(error.what()).rfind(gInput.string() + ": ", 0) == 0, "a refusal that does not name the file");
