@@ -4,12 +4,40 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <regex>
+#include <system_error>
 
 namespace ptview {
 namespace {
+
+// CLI11 (2.1.2) reads integers in base 0, so "--spp 0x10" was 16 and "010" 8, and its Range lets
+// NaN through (every comparison with NaN is false), so "--exposure nan" rendered black. Numbers on
+// the command line are decimal and finite: these check the text before CLI11 converts it
+// (kDecimalInteger as a transform, since it also takes leading zeros off).
+const CLI::Validator kDecimalInteger(
+    [](std::string& text) -> std::string {
+        static const std::regex pattern(R"([+-]?[0-9]+)");
+        if (!std::regex_match(text, pattern)) return "expected a decimal integer, got \"" + text + "\"";
+        // Leading zeros go, or CLI11 would read "010" as octal 8.
+        const std::size_t digits = text.find_first_not_of("+-");
+        const std::size_t first = std::min(text.find_first_not_of('0', digits), text.size() - 1);
+        text = text.substr(0, digits) + text.substr(first);
+        return {};
+    },
+    "INT");
+
+const CLI::Validator kFiniteNumber(
+    [](std::string& text) -> std::string {
+        static const std::regex pattern(R"([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)");
+        if (std::regex_match(text, pattern) && std::isfinite(std::strtod(text.c_str(), nullptr))) return {};
+        return "expected a finite decimal number, got \"" + text + "\"";
+    },
+    "NUMBER");
 
 // An option that takes one of a fixed set of names; an unknown name is rejected with the list.
 template <typename Value>
@@ -52,11 +80,11 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     addNamedOption(app, "--integrator", settings.integrator, "integrator", integrators)
         ->default_str(integratorName(settings.integrator));
     app.add_option("--depth", settings.maxDepth, "maximum number of bounces (0: emitters only)")
-        ->check(CLI::Range(0, 1024))->capture_default_str();
+        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024))->capture_default_str();
     app.add_option("--seed", settings.seed, "random seed; renders with different seeds are independent")
-        ->capture_default_str();
+        ->transform(kDecimalInteger)->capture_default_str();
     app.add_option("--exposure", display.exposureStops, "exposure in stops applied before tone mapping")
-        ->check(CLI::Range(-20.0f, 20.0f))->capture_default_str();
+        ->check(kFiniteNumber)->check(CLI::Range(-20.0f, 20.0f))->capture_default_str();
     std::vector<std::pair<std::string, ToneMapper>> toneMappers;
     for (const ToneMapperName& entry : toneMapperNames()) toneMappers.emplace_back(entry.name, entry.toneMapper);
     addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMappers)
@@ -76,6 +104,39 @@ void addProgramOptions(CLI::App& app, ProgramOptions& program) {
     addNamedOption(app, "--backend", program.backend, "backend", backends)
         ->description("backend: auto (the faster on this device, measured), fragment or compute (OpenGL 4.3)")
         ->default_str("auto");
+}
+
+
+// Edits (insertions, deletions, substitutions) that turn a into b.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// The subcommand a first argument is a typo of ("rendr": "render"), or nullptr. CLI11 takes a word
+// that names no subcommand for the viewer's scene path, so "ptview rendr SCENE" said only that
+// SCENE was not expected. A path that exists is a scene, whatever its name.
+const CLI::App* misspeltSubcommand(const CLI::App& app, const std::string& word) {
+    std::error_code ignored;
+    if (word.empty() || word[0] == '-' || std::filesystem::exists(word, ignored)) return nullptr;
+    const CLI::App* nearest = nullptr;
+    std::size_t nearestDistance = 3; // farther than this is another word, not a typo
+    for (const CLI::App* command : app.get_subcommands({})) {
+        const std::size_t distance = editDistance(word, command->get_name());
+        if (distance == 0) return nullptr;
+        if (distance < nearestDistance) nearest = command, nearestDistance = distance;
+    }
+    return nearest;
 }
 
 const CLI::Validator kImageSize(
@@ -101,7 +162,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     addRenderSettings(app, viewer.settings, viewer.display);
     addProgramOptions(app, viewer.program);
     app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
-        ->check(CLI::Range(1, 1000000));
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
     app.add_option("--reference", viewer.referencePath, "reference image (.pfm): the Stats panel shows the true error")
         ->check(CLI::ExistingFile);
@@ -121,7 +182,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     renderCommand->add_option("scene", render.scenePath, "scene JSON")->required();
     renderCommand->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)");
     renderCommand->add_option("--spp", render.samplesPerPixel, "samples per pixel")
-        ->check(CLI::Range(1, 1 << 24))->capture_default_str();
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
     renderCommand->add_option("--size", sizeText, "image size WxH (default: the scene's resolution)")
         ->check(kImageSize);
     addRenderSettings(*renderCommand, render.settings, render.display);
@@ -136,7 +197,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     benchCommand->add_option("scenes", bench.scenePaths, "scene files (default: cornell, cornell_bunny, meshes, dragon, cornell_bunny_1m)");
     benchCommand->add_option("--size", benchSizeText, "image size WxH (default: each scene's resolution)")->check(kImageSize);
     benchCommand->add_option("--seconds", bench.seconds, "rendering time per scene, at least")
-        ->check(CLI::Range(0.1, 600.0))->capture_default_str();
+        ->check(kFiniteNumber)->check(CLI::Range(0.1, 600.0))->capture_default_str();
     addRenderSettings(*benchCommand, bench.settings, unusedDisplay);
     addProgramOptions(*benchCommand, bench.program);
     benchCommand->add_flag("--variants", bench.variants,
@@ -154,17 +215,18 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::ExistingFile);
     convergeCommand->add_option("--reference-spp", converge.referenceSpp,
                                 "samples per pixel of the reference ptview renders when none is given (another seed)")
-        ->check(CLI::Range(1, 1 << 24))->capture_default_str();
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
     convergeCommand->add_option("--reference-depth", converge.referenceDepth,
                                 "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
-        ->check(CLI::Range(0, 1024));
+        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024));
     convergeCommand->add_option("--configs", configsText, "INTEGRATOR/SAMPLER/DEPTH, comma-separated")->capture_default_str();
     convergeCommand->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
-        ->check(CLI::Range(0.01, 86400.0))->capture_default_str();
+        ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
     convergeCommand->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")
-        ->check(CLI::Range(1, 1 << 24))->capture_default_str();
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
     convergeCommand->add_option("--size", convergeSizeText, "image size WxH (default: the scene's resolution)")->check(kImageSize);
-    convergeCommand->add_option("--seed", converge.seed, "seed of the runs (the reference uses another)")->capture_default_str();
+    convergeCommand->add_option("--seed", converge.seed, "seed of the runs (the reference uses another)")
+        ->transform(kDecimalInteger)->capture_default_str();
     ProgramOptions convergeProgram;
     addProgramOptions(*convergeCommand, convergeProgram);
 
@@ -174,14 +236,20 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     addNamedOption(*warpCommand, "--warp", warp.request.warp, "warp", warpNames)->required();
     addSamplerOption(*warpCommand, warp.request.sampler);
     warpCommand->add_option("--count", warp.request.count, "number of points")
-        ->check(CLI::Range(1, 1 << 22))->capture_default_str();
-    warpCommand->add_option("--seed", warp.request.seed, "random seed")->capture_default_str();
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 22))->capture_default_str();
+    warpCommand->add_option("--seed", warp.request.seed, "random seed")->transform(kDecimalInteger)->capture_default_str();
     warpCommand->add_option("--cone-angle", coneAngleDeg, "half-angle of uniform-cone in degrees")
-        ->check(CLI::Range(0.1f, 180.0f))->capture_default_str();
+        ->check(kFiniteNumber)->check(CLI::Range(0.1f, 180.0f))->capture_default_str();
     warpCommand->add_option("--out,-o", warp.outPath, "output image (.png)")->required();
     warpCommand->add_option("--image-size", warp.imageSize, "width and height of the picture in pixels")
-        ->check(CLI::Range(64, 8192))->capture_default_str();
+        ->transform(kDecimalInteger)->check(CLI::Range(64, 8192))->capture_default_str();
 
+    if (argc >= 2)
+        if (const CLI::App* nearest = misspeltSubcommand(app, argv[1])) {
+            std::cerr << "ptview: unknown command \"" << argv[1] << "\" (did you mean \"" << nearest->get_name()
+                      << "\"?)\n";
+            return kExitBadInput;
+        }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

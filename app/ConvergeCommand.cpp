@@ -184,15 +184,32 @@ std::string pythonForPlots() {
 } // namespace
 
 std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::string& text, std::string& error) {
+    // Split by hand: std::getline drops a trailing empty item, so "mis/sobol/1," passed, and
+    // reading three parts left "mis/sobol/1/2" at depth 1. Every item, empty ones too, has exactly
+    // three parts.
+    auto split = [](const std::string& whole, char separator) {
+        std::vector<std::string> parts(1);
+        for (char c : whole)
+            if (c == separator) parts.emplace_back();
+            else parts.back() += c;
+        return parts;
+    };
+    if (text.empty()) {
+        error = "no configuration given";
+        return std::nullopt;
+    }
     std::vector<ConvergeConfig> configs;
-    std::stringstream list(text);
-    std::string item;
-    while (std::getline(list, item, ',')) {
-        std::stringstream parts(item);
-        std::string integrator, sampler, depth;
-        std::getline(parts, integrator, '/');
-        std::getline(parts, sampler, '/');
-        std::getline(parts, depth, '/');
+    for (const std::string& item : split(text, ',')) {
+        if (item.empty()) {
+            error = "an empty configuration in \"" + text + "\" (a comma too many?)";
+            return std::nullopt;
+        }
+        std::vector<std::string> parts = split(item, '/');
+        const std::string integrator = parts[0];
+        const std::string sampler = parts.size() > 1 ? parts[1] : std::string();
+        // Digits only: strtol would take "+8" or " 8".
+        const std::string depth = parts.size() == 3 && parts[2].find_first_not_of("0123456789") == std::string::npos &&
+                                          parts[2].size() <= 4 ? parts[2] : std::string();
         ConvergeConfig config;
         bool knownIntegrator = false;
         for (const IntegratorName& entry : integratorNames())
@@ -207,10 +224,6 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         config.sampler = *mode;
         config.maxDepth = static_cast<int>(maxDepth);
         configs.push_back(config);
-    }
-    if (configs.empty()) {
-        error = "no configuration given";
-        return std::nullopt;
     }
     return configs;
 }

@@ -99,6 +99,95 @@ TEST_F(CommandLineTest, BadArgumentsAndOutputFormat) {
     expectRefused("render " + shellQuoted(kCornell), "--out");
 }
 
+// "--exposure nan" wrote a black PNG with exit 0 (CLI11's Range lets NaN through), "--spp 0x10" was
+// 16 and "010" 8 (CLI11 reads integers in base 0). Every number option is decimal and finite.
+TEST_F(CommandLineTest, NumbersAreDecimalAndFinite) {
+    const std::string render = "render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " ";
+    for (const char* exposure : {"nan", "inf", "-inf", "0x1p2", "1e999"})
+        expectRefused(render + "--exposure " + exposure,
+                      std::string("--exposure: expected a finite decimal number, got \"") + exposure + "\"");
+    expectRefused(render + "--spp 0x10", "--spp: expected a decimal integer, got \"0x10\"");
+    expectRefused(render + "--depth 010x", "--depth: expected a decimal integer");
+    expectRefused(render + "--seed 0x10", "--seed: expected a decimal integer");
+    expectRefused("bench --seconds nan", "--seconds: expected a finite decimal number");
+    expectRefused("converge " + shellQuoted(kCornell) + " --out " + shellQuoted(path("c")) + " --time-budget nan",
+                  "--time-budget: expected a finite decimal number");
+    expectRefused("warp --warp uniform-cone --cone-angle nan --out " + shellQuoted(path("out.png")),
+                  "--cone-angle: expected a finite decimal number");
+    expectRefused("warp --warp square --count 0x100 --out " + shellQuoted(path("out.png")), "--count: expected a decimal");
+    expectRefused("--frames 0x2 --screenshot " + shellQuoted(path("out.png")), "--frames: expected a decimal integer");
+    // Leading zeros are still decimal: 010 is ten samples, not eight.
+    testing::CommandResult ten = runCommand(kBinary + " " + render + "--size 4x4 --spp 010 --exposure +0.5");
+    EXPECT_EQ(ten.exitCode, 0) << ten.output;
+    EXPECT_NE(ten.output.find("10 spp"), std::string::npos) << ten.output;
+}
+
+// "--configs mis/sobol/1," was accepted (a trailing empty item dropped), and "mis/sobol/1/2" read
+// as depth 1.
+TEST_F(CommandLineTest, ConvergeConfigsRefuseEmptyItemsAndExtraParts) {
+    const std::string converge = "converge " + shellQuoted(kCornell) + " --out " + shellQuoted(path("c")) + " --configs ";
+    expectRefused(converge + "mis/sobol/1,", "--configs: an empty configuration in \"mis/sobol/1,\" (a comma too many?)");
+    expectRefused(converge + ",mis/sobol/1", "an empty configuration");
+    expectRefused(converge + "mis/sobol/1,,full/random/2", "an empty configuration");
+    expectRefused(converge + "mis/sobol/1/2", "bad configuration \"mis/sobol/1/2\"");
+    expectRefused(converge + "mis/sobol/+8", "bad configuration \"mis/sobol/+8\"");
+    expectRefused(converge + "mis/sobol", "bad configuration \"mis/sobol\"");
+    EXPECT_FALSE(fs::exists(path("c")));
+}
+
+// "ptview rendr SCENE" said only that SCENE was not expected: CLI11 took "rendr" for the viewer's
+// scene path. A first word near a subcommand's name, that is no file, is named as the typo.
+TEST_F(CommandLineTest, MisspeltSubcommandIsNamedWithTheNearestOne) {
+    expectRefused("rendr " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")),
+                  "ptview: unknown command \"rendr\" (did you mean \"render\"?)");
+    expectRefused("convrge " + shellQuoted(kCornell), "unknown command \"convrge\" (did you mean \"converge\"?)");
+    expectRefused("wrap --warp square", "unknown command \"wrap\" (did you mean \"warp\"?)");
+    // A scene file of that name is a scene: the viewer would open it, so the typo check stays out.
+    write("rendr", "not json");
+    testing::CommandResult result = runCommand("cd " + shellQuoted(dir_.string()) + " && " + kBinary + " rendr --frames 1");
+    EXPECT_EQ(result.output.find("did you mean"), std::string::npos) << result.output;
+}
+
+// The scene format's bounds (1e9 m, radiance 1e9) are ones that render finite: every shape and
+// light at them, and a map at intensity 1e9 (at 3e38, within the old range,
+// 1223 of 1296 pixels were NaN or Inf).
+TEST_F(CommandLineTest, ScenesAtTheFormatsBoundsRenderFinite) {
+    const std::string big = write("big.json", R"({
+  "camera": { "eye": [0, 5e8, 1e9], "target": [0, 0, -1e9], "vfov_deg": 60, "resolution": [24, 24] },
+  "environment": {"color": [1e9, 1e9, 1e9]},
+  "materials": { "w": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8], "emission": [1e9, 1e9, 1e9]},
+                 "g": {"type": "glass", "ior": 1.5}, "m": {"type": "metal", "reflectance": [1, 1, 1], "roughness": 0.01},
+                 "l": {"type": "emitter", "radiance": [1e9, 1e9, 1e9]} },
+  "shapes": [
+    {"type": "quad", "center": [0, -1e9, 0], "u": [1e9, 0, 0], "v": [0, 0, -1e9], "material": "w"},
+    {"type": "sphere", "center": [0, 0, -1e9], "radius": 1e9, "material": "g"},
+    {"type": "sphere", "center": [1e9, 1e9, -1e9], "radius": 1e8, "material": "l"},
+    {"type": "box", "center": [-1e9, 0, 0], "half_size": [1e9, 1e9, 1e9], "material": "m"},
+    {"type": "disk", "center": [0, 1e9, 0], "normal": [0, -1, 0], "radius": 1e9, "material": "l"} ],
+  "lights": [{"type": "point", "position": [0, 1e9, 1e9], "intensity": [1e9, 1e9, 1e9]},
+             {"type": "spot", "position": [1e9, 0, 1e9], "direction": [-1, 0, -1], "intensity": [1e9, 1e9, 1e9]}] })");
+    const std::string map = write("map.json", R"({
+  "camera": { "eye": [0, 1.1, 5], "target": [0, 0.55, 0], "vfov_deg": 38, "resolution": [32, 18] },
+  "environment": {"map": ")" PTVIEW_ASSETS_DIR R"(/hdr/rooitou_park_1k.hdr", "intensity": 1e9},
+  "materials": { "gold": {"type": "metal", "reflectance": [1, 0.78, 0.34], "roughness": 0.15},
+                 "glass": {"type": "glass", "ior": 1.5} },
+  "shapes": [ {"type": "quad", "center": [0, 0, 0], "u": [0, 0, 6], "v": [6, 0, 0], "material": "gold"},
+              {"type": "sphere", "center": [0.6, 0.5, 0], "radius": 0.5, "material": "glass"} ] })");
+    // naive reaches the emitters by chance only, full samples every light with MIS: between them
+    // every way a radiance reaches a pixel.
+    for (const std::string& scene : {big, map}) {
+        for (const char* integrator : {"naive", "full"}) {
+            testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(scene) + " --out " +
+                                                       shellQuoted(path("out.pfm")) + " --spp 16 --integrator " + integrator);
+            ASSERT_EQ(result.exitCode, 0) << result.output;
+            EXPECT_NE(result.output.find(" 0 NaN/Inf pixels"), std::string::npos) << scene << " " << result.output;
+            const ImageRgbF image = readPfm(path("out.pfm"));
+            const float brightest = *std::max_element(image.rgb.begin(), image.rgb.end());
+            EXPECT_TRUE(std::isfinite(brightest) && brightest > 1e6f) << scene << " " << integrator << ": " << brightest;
+        }
+    }
+}
+
 TEST_F(CommandLineTest, FailedRenderLeavesExistingOutputUntouched) {
     std::ofstream(path("out.pfm")) << "precious";
     testing::CommandResult result =
