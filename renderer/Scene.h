@@ -2,6 +2,7 @@
 // The scene model: what a scene file describes, validated and in world units (metres, Y up).
 // The UI edits this model and the renderer uploads it; neither knows about JSON.
 
+#include "SceneRanges.h"
 #include "TriangleMesh.h"
 
 #include <glm/glm.hpp>

@@ -43,6 +43,17 @@ using Pointer = Json::json_pointer;
 
 constexpr int kMaxResolution = 16384;
 
+// Bounds that keep every image finite. Any float fits the file, but the renderer multiplies what
+// it reads: a quad's plane test takes the product of three lengths (the distance to it and its
+// two edges), a sphere's the square of one, and an emitter's radiance is summed over up to 2^24
+// samples and divided by densities that may be 1e-6 or less. A coordinate or a length of 1e9 m
+// (a million km; scenes here span 1e-3 to 1e4 m) keeps a product of three at 1e27, and a radiance
+// of 1e9 keeps 2^24 samples of it over such a density at 1e22, both far below float's 3.4e38.
+// Before these bounds a sphere of radius 1e38 scaled by 1e5 loaded with an infinite radius, and an
+// environment intensity of 3e38 made half the pixels NaN or Inf.
+constexpr float kMaxExtent = kMaxSceneExtent;     // Scene.h: |coordinate|, radius, half size, |u|, |v|
+constexpr float kMaxRadiance = kMaxSceneRadiance; // Scene.h: radiance, emission, light and environment intensity
+
 // A problem at a place in the document. parseScene adds the file name, so the readers below
 // need not carry it around.
 class PlaceError : public std::runtime_error {
@@ -327,13 +338,6 @@ float readNumber(const Json& value, const Pointer& at) {
     return static_cast<float>(number);
 }
 
-float readPositive(const Json& value, const Pointer& at) {
-    float number = readNumber(value, at);
-    if (!(number > 0.0f))
-        fail(at, "expected a positive number");
-    return number;
-}
-
 // [x, y, z] where every component must satisfy isValid, which `expected` describes.
 template <typename Predicate>
 glm::vec3 readVec3(const Json& value, const Pointer& at, Predicate isValid, const char* expected) {
@@ -364,10 +368,42 @@ glm::vec3 readVec3InRange(const Json& value, const Pointer& at, const SceneRange
     return readVec3(value, at, [&range](float c) { return range.contains(c); }, range.expected().c_str());
 }
 
+std::string boundText(float bound) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(bound));
+    return text;
+}
+
+// A point in space: each coordinate within kMaxExtent of the origin.
+glm::vec3 readPosition(const Json& value, const Pointer& at) {
+    return readVec3(value, at, [](float c) { return std::abs(c) <= kMaxExtent; },
+                    ("a coordinate in [-" + boundText(kMaxExtent) + ", " + boundText(kMaxExtent) + "] (metres)").c_str());
+}
+
+// A length in (0, kMaxExtent].
+float readLength(const Json& value, const Pointer& at) {
+    float number = readNumber(value, at);
+    if (!(number > 0.0f && number <= kMaxExtent))
+        fail(at, "expected a positive number at most " + boundText(kMaxExtent) + " (metres)");
+    return number;
+}
+
+
 glm::vec3 readNonzeroVec3(const Json& value, const Pointer& at) {
     glm::vec3 v = readVec3(value, at);
     if (v == glm::vec3(0.0f))
         fail(at, "expected a nonzero vector");
+    return v;
+}
+
+// An edge vector (a quad's u or v): nonzero, of length at most kMaxExtent, taken in double so that
+// a length of 3e38 is not an infinity that later reads as "parallel".
+glm::vec3 readEdge(const Json& value, const Pointer& at) {
+    glm::vec3 v = readNonzeroVec3(value, at);
+    const double length = glm::length(glm::dvec3(v));
+    if (!(length <= kMaxExtent))
+        fail(at, "length " + boundText(static_cast<float>(std::min(length, 3.4e38))) + " is above " +
+                     boundText(kMaxExtent) + " (metres)");
     return v;
 }
 
@@ -421,8 +457,8 @@ CameraDesc readCamera(const Json& value, const Pointer& at) {
     requireObject(value, at);
     checkKeys(value, at, {"eye", "target", "up", "vfov_deg", "resolution"});
     CameraDesc camera;
-    camera.eye = readVec3(requireKey(value, at, "eye"), at / "eye");
-    camera.target = readVec3(requireKey(value, at, "target"), at / "target");
+    camera.eye = readPosition(requireKey(value, at, "eye"), at / "eye");
+    camera.target = readPosition(requireKey(value, at, "target"), at / "target");
     if (camera.target == camera.eye)
         fail(at / "target", "must differ from eye");
     if (const Json* up = optionalKey(value, "up")) {
@@ -524,7 +560,7 @@ Transform readTransform(const Json& value, const Pointer& at) {
     checkKeys(value, at, {"translate", "rotation", "scale"});
     Transform transform;
     if (const Json* translate = optionalKey(value, "translate"))
-        transform.translate = readVec3(*translate, at / "translate");
+        transform.translate = readPosition(*translate, at / "translate");
     if (const Json* rotation = optionalKey(value, "rotation"))
         readRotation(*rotation, at / "rotation", transform.rotationAxis, transform.rotationDeg);
     if (const Json* scale = optionalKey(value, "scale")) {
@@ -562,7 +598,10 @@ void applyTransform(Shape& shape, const Transform& transform, const Pointer& at)
     case ShapeType::Disk:
         if (!isUniform(transform.scale)) fail(at / "scale", "a disk takes only a uniform scale");
         shape.center = place(shape.center);
-        shape.normal = glm::normalize(glm::transpose(glm::inverse(linear)) * shape.normal);
+        // Under a uniform scale s the inverse transpose is the rotation divided by s, so the normal
+        // is turned and, for a mirroring s < 0, flipped. Inverting the matrix instead took s^3,
+        // which underflows at s = 1e-30 and made the normal NaN.
+        shape.normal = unitDirection(glm::dvec3(rotation * shape.normal) * (transform.scale.x < 0.0f ? -1.0 : 1.0));
         shape.radius *= uniformScale;
         break;
     case ShapeType::Box: {
@@ -581,6 +620,33 @@ void applyTransform(Shape& shape, const Transform& transform, const Pointer& at)
         shape.rotationAxis = glm::length(axis) > 0.0f && angle != 0.0f ? axis : glm::vec3(0.0f, 1.0f, 0.0f);
         break;
     }
+    case ShapeType::Mesh:
+        break;
+    }
+}
+
+// The bounds hold for what is stored, after the transform: a radius of 1e8 scaled by 100 is as far
+// out of range as one of 1e10 written so. The message names the transformed value.
+void checkTransformedShape(const Shape& shape, const Pointer& at) {
+    auto refuse = [&](const std::string& what, double value) {
+        fail(at / "transform", "gives a " + what + " of " + boundText(static_cast<float>(std::min(value, 3.4e38))) +
+                                   ", above " + boundText(kMaxExtent) + " (metres)");
+    };
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(shape.center[i]) <= kMaxExtent)) refuse("centre coordinate", std::abs(shape.center[i]));
+    switch (shape.type) {
+    case ShapeType::Sphere:
+    case ShapeType::Disk:
+        if (!(shape.radius <= kMaxExtent)) refuse("radius", shape.radius);
+        break;
+    case ShapeType::Quad:
+        if (!(glm::length(glm::dvec3(shape.u)) <= kMaxExtent)) refuse("length of u", glm::length(glm::dvec3(shape.u)));
+        if (!(glm::length(glm::dvec3(shape.v)) <= kMaxExtent)) refuse("length of v", glm::length(glm::dvec3(shape.v)));
+        break;
+    case ShapeType::Box:
+        for (int i = 0; i < 3; ++i)
+            if (!(shape.halfSize[i] <= kMaxExtent)) refuse("half size", shape.halfSize[i]);
+        break;
     case ShapeType::Mesh:
         break;
     }
@@ -655,28 +721,29 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     shape.material = findMaterial(materials, materialName);
     if (shape.material < 0)
         fail(at / "material", "unknown material \"" + materialName + "\"");
-    shape.center = readVec3(requireKey(value, at, "center"), at / "center");
+    shape.center = readPosition(requireKey(value, at, "center"), at / "center");
 
     switch (shape.type) {
     case ShapeType::Sphere:
-        shape.radius = readPositive(requireKey(value, at, "radius"), at / "radius");
+        shape.radius = readLength(requireKey(value, at, "radius"), at / "radius");
         break;
     case ShapeType::Quad:
-        shape.u = readNonzeroVec3(requireKey(value, at, "u"), at / "u");
-        shape.v = readNonzeroVec3(requireKey(value, at, "v"), at / "v");
+        shape.u = readEdge(requireKey(value, at, "u"), at / "u");
+        shape.v = readEdge(requireKey(value, at, "v"), at / "v");
         // A degenerate quad has no area and no normal.
         if (areParallel(shape.u, shape.v))
             fail(at / "v", "must not be parallel to u");
         break;
     case ShapeType::Box:
         shape.halfSize = readVec3(requireKey(value, at, "half_size"), at / "half_size",
-                                  [](float c) { return c > 0.0f; }, "a positive number");
+                                  [](float c) { return c > 0.0f && c <= kMaxExtent; },
+                                  ("a positive number at most " + boundText(kMaxExtent) + " (metres)").c_str());
         if (const Json* rotation = optionalKey(value, "rotation"))
             readRotation(*rotation, at / "rotation", shape.rotationAxis, shape.rotationDeg);
         break;
     case ShapeType::Disk:
         shape.normal = readDirection(requireKey(value, at, "normal"), at / "normal");
-        shape.radius = readPositive(requireKey(value, at, "radius"), at / "radius");
+        shape.radius = readLength(requireKey(value, at, "radius"), at / "radius");
         break;
     case ShapeType::Mesh:
         break;
@@ -684,6 +751,7 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     if (transform) {
         applyTransform(shape, shape.transform, at / "transform");
         shape.transform = Transform{};
+        checkTransformedShape(shape, at);
     }
     return shape;
 }
@@ -714,7 +782,7 @@ Light readLight(const Json& value, const Pointer& at, std::size_t index) {
 
     const Json* name = optionalKey(value, "name");
     light.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
-    light.position = readVec3(requireKey(value, at, "position"), at / "position");
+    light.position = readPosition(requireKey(value, at, "position"), at / "position");
     light.intensity = readVec3InRange(requireKey(value, at, "intensity"), at / "intensity", ranges::kIntensity);
     if (light.type == LightType::Spot) {
         light.direction = readDirection(requireKey(value, at, "direction"), at / "direction");

@@ -55,6 +55,11 @@ private:
     }
 };
 
+// Bounds that keep every image finite (renderer/SceneLoader.cpp says why): positions and lengths
+// (the loader, the script, the camera controls) and every radiance-like range below.
+inline constexpr float kMaxSceneExtent = 1e9f;   // metres: |coordinate|, radius, half size, edge length
+inline constexpr float kMaxSceneRadiance = 1e9f; // radiance, emission, light intensity, environment intensity
+
 namespace ranges {
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
@@ -74,11 +79,11 @@ inline const SceneRange kRoughness{
 inline const SceneRange kColor{
     "colour component", 0.0, 1.0, false, false, "", "albedo, reflectance, transmittance or tint", 0.0f, 1.0f};
 inline const SceneRange kRadiance{
-    "radiance", 0.0, kUnbounded, false, false, "W sr^-1 m^-2", "emitted radiance per channel", 0.0f, 1e4f};
+    "radiance", 0.0, kMaxSceneRadiance, false, false, "W sr^-1 m^-2", "emitted radiance per channel", 0.0f, 1e4f};
 inline const SceneRange kIntensity{
-    "light intensity", 0.0, kUnbounded, false, false, "W sr^-1", "radiant intensity per channel", 0.0f, 1e6f};
+    "light intensity", 0.0, kMaxSceneRadiance, false, false, "W sr^-1", "radiant intensity per channel", 0.0f, 1e6f};
 inline const SceneRange kEnvironmentIntensity{
-    "environment intensity", 0.0, kUnbounded, false, false, "", "scale of the environment map's radiance", 0.0f, 1e4f};
+    "environment intensity", 0.0, kMaxSceneRadiance, false, false, "", "scale of the environment map's radiance", 0.0f, 1e4f};
 // Any angle turns the map; the panel shows one turn.
 inline const SceneRange kEnvironmentRotation{
     "environment rotation", -kUnbounded, kUnbounded, false, false, "deg", "turn of the environment map about +Y",

@@ -434,7 +434,7 @@ TEST(EnvironmentSceneFormat, ColourOrMapNeverBoth) {
     EXPECT_EQ(sceneError(R"({})"), "s.json: /environment/color: missing required key (or give \"map\")");
     EXPECT_EQ(sceneError(R"({ "map": "" })"), "s.json: /environment/map: expected a file name, got an empty string");
     EXPECT_EQ(sceneError(R"({ "map": 3 })"), "s.json: /environment/map: expected a string, got a number");
-    EXPECT_EQ(sceneError(R"({ "map": "a.hdr", "intensity": -1 })"), "s.json: /environment/intensity: expected a non-negative number");
+    EXPECT_EQ(sceneError(R"({ "map": "a.hdr", "intensity": -1 })"), "s.json: /environment/intensity: expected a number in [0, 1000000000]");
     EXPECT_EQ(sceneError(R"({ "map": "a.hdr", "rotation_deg": "east" })"),
               "s.json: /environment/rotation_deg: expected a number, got a string");
     EXPECT_EQ(sceneError(R"({ "map": "a.hdr", "scale": 2 })"),

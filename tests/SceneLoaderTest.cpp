@@ -444,7 +444,7 @@ TEST(SceneLoader, RejectsMaterialParametersOutOfRangeOrForeignToTheType) {
 
 TEST(SceneLoader, RejectsNegativeRadius) {
     std::string message = errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": -0.3"));
-    EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/radius: expected a positive number");
+    EXPECT_EQ(message, std::string(kSource) + ": /shapes/1/radius: expected a positive number at most 1e+09 (metres)");
 }
 
 TEST(SceneLoader, RejectsZeroRadius) {
@@ -459,7 +459,7 @@ TEST(SceneLoader, RejectsAlbedoAboveOne) {
 
 TEST(SceneLoader, RejectsNegativeRadiance) {
     expectPlaceError(errorFrom(validSceneWith("[17, 12, 4]", "[17, 12, -4]")),
-                     "/materials/light/radiance/2", "expected a non-negative number");
+                     "/materials/light/radiance/2", "expected a number in [0, 1000000000]");
 }
 
 TEST(SceneLoader, RejectsParallelQuadEdges) {
@@ -482,6 +482,56 @@ TEST(SceneLoader, RejectsBadBox) {
                      "/shapes/2/rotation/degrees", "missing required key");
     expectPlaceError(errorFrom(withRotation("17")), "/shapes/2/rotation",
                      "expected an object, got a number");
+}
+
+// Values beyond what renders finite: a sphere of radius 1e38 scaled by 1e5 loaded with an infinite
+// radius (and Save then failed), an environment intensity of 3e38 made half the pixels NaN. The
+// bounds (Scene.h: 1e9 m, radiance 1e9) hold for what is stored, after transforms, and the
+// message names the value that is wrong.
+TEST(SceneLoader, RejectsValuesThatWouldNotRenderFiniteNamingThem) {
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 1e38")), "/shapes/1/radius",
+                     "expected a positive number at most 1e+09 (metres)");
+    expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 1e8, \"transform\": { \"scale\": 1e5 }")),
+                     "/shapes/1/transform", "gives a radius of 1e+13, above 1e+09 (metres)");
+    expectPlaceError(
+        errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 0.3, \"transform\": { \"translate\": [0, 0, 1e10] }")),
+        "/shapes/1/transform/translate/2", "expected a coordinate in [-1e+09, 1e+09] (metres)");
+    expectPlaceError(
+        errorFrom(validSceneWith("\"center\": [0, 0.3, 0], \"radius\": 0.3", "\"center\": [0, 0.3, 6e8], \"radius\": 0.3, \"transform\": { \"scale\": 2 }")),
+        "/shapes/1/transform", "gives a centre coordinate of 1.2e+09");
+    expectPlaceError(errorFrom(validSceneWith("\"center\": [0, 0.3, 0]", "\"center\": [0, 3e38, 0]")),
+                     "/shapes/1/center/1", "expected a coordinate in [-1e+09, 1e+09]");
+    expectPlaceError(errorFrom(validSceneWith("[0.5, 0.5, 0.5]", "[0.5, 2e9, 0.5]")), "/shapes/2/half_size/1",
+                     "at most 1e+09");
+    expectPlaceError(errorFrom(validSceneWith("[17, 12, 4]", "[17, 3e38, 4]")), "/materials/light/radiance/1",
+                     "expected a number in [0, 1000000000]");
+    const std::string map = R"("environment": { "map": "sky.hdr", "intensity": 3e38 }, "camera")";
+    expectPlaceError(errorFrom(validSceneWith("\"camera\"", map)), "/environment/intensity",
+                     "expected a number in [0, 1000000000]");
+}
+
+
+// Misleading places: an eye at 3e38 was reported as "/camera/up: must not be parallel" (the
+// squared length of the view direction overflowed), u and v of length 3e38 as "v must not be
+// parallel to u". The message names the value that is wrong.
+TEST(SceneLoader, HugeValuesAreBlamedWhereTheyAre) {
+    expectPlaceError(errorFrom(validSceneWith("\"eye\": [0, 1, 3.9]", "\"eye\": [0, 1, 3e38]")), "/camera/eye/2",
+                     "expected a coordinate in [-1e+09, 1e+09] (metres)");
+    expectPlaceError(errorFrom(validSceneWith("\"target\": [0, 1, 0]", "\"target\": [-3e38, 1, 0]")),
+                     "/camera/target/0", "expected a coordinate");
+    expectPlaceError(errorFrom(validSceneWith("\"u\": [0, 0, 1], \"v\": [1, 0, 0]", "\"u\": [0, 0, 3e38], \"v\": [3e38, 0, 0]")),
+                     "/shapes/0/u", "length 3e+38 is above 1e+09 (metres)");
+    expectPlaceError(errorFrom(validSceneWith("\"v\": [1, 0, 0]", "\"v\": [2e9, 0, 0]")), "/shapes/0/v",
+                     "length 2e+09 is above 1e+09");
+}
+
+// A scene saved by an editor with a UTF-8 byte-order mark reads as the same scene.
+TEST(SceneLoader, AByteOrderMarkAtTheStartIsSkipped) {
+    const Scene scene = parseScene("\xEF\xBB\xBF" + validScene(), kSource);
+    EXPECT_EQ(scene.shapes.size(), 3u);
+    // Elsewhere it is no whitespace: the error names line 1, column 2.
+    const std::string message = errorFrom(" \xEF\xBB\xBF" + validScene());
+    EXPECT_EQ(message.rfind(std::string(kSource) + ":1:2: ", 0), 0u) << message;
 }
 
 // --- Camera -------------------------------------------------------------------------------------
@@ -554,7 +604,7 @@ TEST(SceneLoader, ReadsEmissionOnEveryNonEmitterType) {
 
 TEST(SceneLoader, RejectsBadEmission) {
     expectPlaceError(errorFrom(validSceneWith("[0.73, 0.73, 0.73] }", "[0.73, 0.73, 0.73], \"emission\": [1, -0.5, 1] }")),
-                     "/materials/white/emission/1", "expected a non-negative number");
+                     "/materials/white/emission/1", "expected a number in [0, 1000000000]");
     expectPlaceError(errorFrom(validSceneWith("[0.73, 0.73, 0.73] }", "[0.73, 0.73, 0.73], \"emission\": [1, 1] }")),
                      "/materials/white/emission", "expected an array of 3 numbers");
     // The emitter's radiance is not optional and has one name only.
@@ -566,6 +616,16 @@ TEST(SceneLoader, RejectsBadEmission) {
     expectPlaceError(errorFrom(validSceneWith("\"type\": \"diffuse\", \"albedo\": [0.73, 0.73, 0.73]",
                                               "\"typo\": \"diffuse\", \"emission\": [1, 1, 1]")),
                      "/materials/white/typo", "unknown key");
+}
+
+// A disk scaled by 1e-30: its normal went through the inverse of the transform, whose determinant
+// (1e-90) underflows in float, and was stored as NaN.
+TEST(SceneLoader, DiskNormalStaysUnitUnderATinyScale) {
+    const Scene scene = parseScene(validSceneWithDisk(R"("type": "disk", "center": [0, 1, 0], "normal": [0, 0, 1], )"
+                                                      R"("radius": 0.25, "material": "light", "transform": { "scale": 1e-30 })"),
+                                   kSource);
+    EXPECT_FLOAT_EQ(glm::length(scene.shapes[3].normal), 1.0f);
+    EXPECT_EQ(scene.shapes[3].normal, glm::vec3(0, 0, 1));
 }
 
 TEST(SceneLoader, ReadsDisk) {
@@ -700,7 +760,7 @@ TEST(SceneLoader, RejectsBadLights) {
     const std::string point = R"({ "type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1] })";
     expectPlaceError(errorFrom(validSceneWithLights(
                          R"({ "type": "point", "position": [0, 1, 0], "intensity": [1, 1, -1] })")),
-                     "/lights/0/intensity/2", "expected a non-negative number");
+                     "/lights/0/intensity/2", "expected a number in [0, 1000000000]");
     expectPlaceError(errorFrom(validSceneWithLights(
                          point + R"(, { "type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0], "intensity": [1, 1, 1] })")),
                      "/lights/1/direction", "expected a nonzero vector");
