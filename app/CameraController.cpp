@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ptview {
 namespace {
@@ -45,6 +46,23 @@ CameraFrame cameraFrame(const CameraDesc& camera) {
 }
 
 } // namespace
+
+std::string cameraProblem(const CameraDesc& camera) {
+    for (auto [name, point] : {std::pair{"eye", camera.eye}, std::pair{"target", camera.target}}) {
+        for (int i = 0; i < 3; ++i) {
+            if (!std::isfinite(point[i])) return std::string(name) + " is not finite";
+            if (std::abs(point[i]) > kMaxSceneExtent)
+                return std::string(name) + " is beyond 1e9 m from the origin (the scene format's bound)";
+        }
+    }
+    if (camera.eye == camera.target) return "eye is on the target";
+    if (!(camera.vfovDeg > 0.0f && camera.vfovDeg < 180.0f)) return "vfov_deg must be in (0, 180)";
+    return {};
+}
+
+CameraDesc usableCamera(const CameraDesc& moved, const CameraDesc& before) {
+    return cameraProblem(moved).empty() ? moved : before;
+}
 
 float cameraDistance(const CameraDesc& camera) {
     return glm::length(camera.target - camera.eye);

@@ -11,7 +11,19 @@
 
 #include "Scene.h"
 
+#include <string>
+
 namespace ptview {
+
+// Why the camera cannot be rendered, or empty when it can: "eye is not finite", "eye is beyond
+// 1e9 m from the origin" (kMaxSceneExtent, as the scene format allows), "target is ...", "eye is
+// on the target", "vfov_deg must be in (0, 180)". The motions below can produce such a camera
+// from a valid one ("camera-zoom 1e38" put the eye at infinity and every pixel at NaN); callers
+// refuse the move (the script) or keep the camera they had (the mouse and keys).
+std::string cameraProblem(const CameraDesc& camera);
+
+// `moved` when it can be rendered, else `before`: for interactive motion, which stops at the edge.
+CameraDesc usableCamera(const CameraDesc& moved, const CameraDesc& before);
 
 // Mouse-drag pixels to orbit degrees, the same for yaw and pitch.
 inline constexpr float kOrbitDegreesPerPixel = 0.25f;

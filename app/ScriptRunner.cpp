@@ -222,11 +222,18 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             model.pendingChanges |= ViewerModel::kSceneChanged;
         // ---- camera
         } else if (verb.rfind("camera-", 0) == 0) {
-            CameraDesc& camera = scene.camera;
+            CameraDesc camera = scene.camera;
             if (verb == "camera-orbit") camera = orbitCamera(camera, command.number(0), command.number(1));
             if (verb == "camera-pan") camera = panCamera(camera, command.number(0), command.number(1));
             if (verb == "camera-zoom") camera = zoomCamera(camera, command.number(0));
             if (verb == "camera-fov") camera.vfovDeg = command.number(0);
+            // A move that leaves the camera unusable is refused here, at its line: "camera-zoom 1e38"
+            // made a NaN camera and the next wait-spp timed out after 120 s.
+            if (const std::string problem = cameraProblem(camera); !problem.empty()) {
+                fail(command, "the camera would be unusable (" + problem + "); it is left as it was");
+                return true;
+            }
+            scene.camera = camera;
             if (verb == "camera-reset") session.resetCamera();
             model.pendingChanges |= ViewerModel::kCameraChanged;
         // ---- files

@@ -232,12 +232,12 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
             float areaWidth = std::max(1.0f, static_cast<float>(area.size.x) / framebufferScale_.x);
             model.compare.dividerFraction = std::clamp((static_cast<float>(cursor.x) - areaLeft) / areaWidth, 0.0f, 1.0f);
         } else if (delta != glm::dvec2(0.0) && (right || (left && shift))) {
-            camera = panCamera(camera, static_cast<float>(-delta.x) / imageHeight, static_cast<float>(delta.y) / imageHeight);
+            camera = usableCamera(panCamera(camera, static_cast<float>(-delta.x) / imageHeight, static_cast<float>(delta.y) / imageHeight), camera);
         } else if (delta != glm::dvec2(0.0) && left) {
-            camera = orbitCamera(camera, static_cast<float>(-delta.x) * kOrbitDegreesPerPixel,
-                                 static_cast<float>(delta.y) * kOrbitDegreesPerPixel);
+            camera = usableCamera(orbitCamera(camera, static_cast<float>(-delta.x) * kOrbitDegreesPerPixel,
+                                 static_cast<float>(delta.y) * kOrbitDegreesPerPixel), camera);
         }
-        if (scroll != 0.0) camera = zoomCamera(camera, zoomFactorForWheel(static_cast<float>(scroll)));
+        if (scroll != 0.0) camera = usableCamera(zoomCamera(camera, zoomFactorForWheel(static_cast<float>(scroll))), camera);
     }
     if (!io.WantCaptureKeyboard) {
         glm::vec3 move(0.0f);
@@ -248,7 +248,7 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
         if (move != glm::vec3(0.0f)) {
             // A slow frame must not fling the camera: cap the step at a tenth of a second.
             float step = flyDistance(camera, static_cast<float>(std::min(seconds, 0.1))) * (shift ? kFastFlyFactor : 1.0f);
-            camera = flyCamera(camera, move, step);
+            camera = usableCamera(flyCamera(camera, move, step), camera);
         }
     }
     const CameraDesc& before = model.scene.camera;

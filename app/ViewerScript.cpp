@@ -161,7 +161,7 @@ const std::vector<FieldSpec>& materialFields() {
 const std::vector<FieldSpec>& lightFields() {
     static const std::vector<FieldSpec> fields = {
         {"intensity", vec3RangeArgs("R", "G", "B", ranges::kIntensity), false, "radiant intensity, W/sr per channel"},
-        {"position", vec3Args("X", "Y", "Z"), false, "world-space position"},
+        {"position", vec3Args("X", "Y", "Z", -kMaxSceneExtent, kMaxSceneExtent), false, "world-space position"},
         {"direction", vec3Args("X", "Y", "Z"), true, "spot light: where the cone points (any length but 0)"},
         {"inner-angle", {rangeArg("DEG", ranges::kSpotConeAngle)}, false,
          "spot light: full intensity within this angle of the axis (at most the outer angle)"},
@@ -567,7 +567,11 @@ bool ScriptCommand::isWord(std::size_t i, const char* keyword) const {
 ViewerScript parseViewerScript(const std::string& text, const std::filesystem::path& sourceName) {
     ViewerScript script;
     script.path = sourceName;
-    std::istringstream lines(text);
+    // Editors on Windows start UTF-8 text with a byte-order mark; it is no part of the first
+    // command ("unknown command \"\xEF\xBB\xBFstatus\"" otherwise).
+    constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+    std::istringstream lines(std::string_view(text).substr(0, kUtf8Bom.size()) == kUtf8Bom ? text.substr(kUtf8Bom.size())
+                                                                                           : text);
     std::string lineText;
     for (int lineNumber = 1; std::getline(lines, lineText); ++lineNumber) {
         std::string_view line = lineText;

@@ -186,6 +186,23 @@ TEST(CameraController, FlyMovesBothAlongCameraAxes) {
     EXPECT_NEAR(flyDistance(zoomCamera(camera, 2.0f), 0.1f), 2.0f * near, 1e-5f);
 }
 
+// Moves that a valid camera survives in float but the renderer cannot: an eye at infinity, or
+// beyond the scene format's 1e9 m. cameraProblem says which; usableCamera keeps the old camera.
+TEST(CameraController, MovesBeyondTheSceneBoundsAreProblems) {
+    const CameraDesc camera = frontCamera();
+    EXPECT_EQ(cameraProblem(camera), "");
+    const CameraDesc far = zoomCamera(camera, 1e38f);
+    EXPECT_EQ(cameraProblem(far), "eye is not finite");
+    EXPECT_EQ(usableCamera(far, camera).eye, camera.eye);
+    EXPECT_EQ(cameraProblem(zoomCamera(camera, 1e9f)), "eye is beyond 1e9 m from the origin (the scene format's bound)");
+    EXPECT_EQ(cameraProblem(zoomCamera(camera, 1e8f)), "") << "5e8 m is within the bound";
+    EXPECT_NE(cameraProblem(panCamera(camera, 1e30f, 0.0f)), "");
+    EXPECT_NE(cameraProblem(flyCamera(camera, {0, 0, 1}, 3e38f)), "");
+    CameraDesc onTarget = camera;
+    onTarget.eye = onTarget.target;
+    EXPECT_EQ(cameraProblem(onTarget), "eye is on the target");
+}
+
 TEST(CameraController, DegenerateCamerasStayFinite) {
     // Eye on the target: nothing to orbit or zoom about, so every motion leaves it be.
     CameraDesc onTarget = obliqueCamera();

@@ -299,6 +299,24 @@ screenshot paused.pfm
     fs::remove_all(directory);
 }
 
+// "camera-zoom 1e38" put the eye at infinity (status: eye=-nan,-nan,inf) and the next wait-spp timed
+// out after 120 s. The move is refused at its line, exit 2, and the camera stays as it was.
+TEST_F(ScriptedViewer, CameraMovesThatWouldMakeTheCameraUnusableAreRefusedAtTheirLine) {
+    fs::path directory = freshDirectory("camera");
+    testing::CommandResult result =
+        runViewer(directory, kCornell, "resolution-scale 0.125\ncamera-zoom 1e38\nwait-spp 1\nquit\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:2: camera-zoom: the camera would be unusable (eye is not finite)"),
+              std::string::npos)
+        << result.output;
+    result = runViewer(directory, kCornell, "resolution-scale 0.125\ncamera-pan 1e30 0\nquit\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:2: camera-pan: the camera would be unusable (eye is beyond 1e9 m"),
+              std::string::npos)
+        << result.output;
+    fs::remove_all(directory);
+}
+
 // F12 as a user presses it (xdotool), in an interactive session without a script.
 TEST_F(ScriptedViewer, F12SavesPngAndPfmIntoScreenshots) {
     fs::path directory = freshDirectory("f12");

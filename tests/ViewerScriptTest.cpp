@@ -147,6 +147,17 @@ TEST(ViewerScript, CommentsAndBlankLinesAreSkippedButCountedAsLines) {
     EXPECT_TRUE(parse("# only comments\n\n").commands.empty());
 }
 
+// A script saved with a UTF-8 byte-order mark failed as unknown command "\xEF\xBB\xBFstatus". The mark
+// is skipped at the start of the file only; elsewhere it is part of a word.
+TEST(ViewerScript, AByteOrderMarkAtTheStartIsSkipped) {
+    ViewerScript script = parse("\xEF\xBB\xBFstatus\nquit\n");
+    ASSERT_EQ(script.commands.size(), 2u);
+    EXPECT_EQ(script.commands[0].verb, "status");
+    EXPECT_EQ(script.commands[0].line, 1);
+    EXPECT_EQ(parse("\xEF\xBB\xBF# a comment\ndepth 3\n").commands.at(0).line, 2);
+    EXPECT_EQ(errorOf("status\n\xEF\xBB\xBFquit\n").rfind("s.txt:2: unknown command", 0), 0u);
+}
+
 TEST(ViewerScript, MaterialNameWithDotsSplitsAtTheLastDot) {
     ViewerScript script = parse("set-material glass.001.ior 1.45\nset-material light.bulb.emission 5 4 3\n");
     EXPECT_EQ(script.commands[0].target, "glass.001");
@@ -209,7 +220,7 @@ TEST(ViewerScript, OutOfRangeValuesSayTheRange) {
     EXPECT_EQ(errorOf("target-spp -4"), "s.txt:1: target-spp: N must be >= 0, got -4");
     EXPECT_EQ(errorOf("samples-per-frame 0"), "s.txt:1: samples-per-frame: N must be in 1..1024, got 0");
     EXPECT_EQ(errorOf("divider 1.01"), "s.txt:1: divider: F must be in [0, 1], got 1.01");
-    EXPECT_EQ(errorOf("environment-color 0 -1 0"), "s.txt:1: environment-color: G must be >= 0, got -1");
+    EXPECT_EQ(errorOf("environment-color 0 -1 0"), "s.txt:1: environment-color: G must be in [0, 1000000000], got -1");
     EXPECT_EQ(errorOf("set-material m.color 0.5 1.5 0"), "s.txt:1: set-material: color: G must be in [0, 1], got 1.5");
     EXPECT_EQ(errorOf("set-material m.ior 0.9"), "s.txt:1: set-material: ior: IOR must be in [1, 4], got 0.9");
     EXPECT_EQ(errorOf("set-light l.outer-angle 190"),
