@@ -388,7 +388,6 @@ float readLength(const Json& value, const Pointer& at) {
     return number;
 }
 
-
 glm::vec3 readNonzeroVec3(const Json& value, const Pointer& at) {
     glm::vec3 v = readVec3(value, at);
     if (v == glm::vec3(0.0f))
@@ -886,7 +885,9 @@ Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& s
         material.type = MaterialType::Diffuse;
         material.color = diffuse;
     }
-    material.radiance = glm::max(source.emission, glm::vec3(0.0f));
+    // Clamped to the bound a scene file's radiance has (Scene.h), as the colours above are to
+    // [0, 1]: "Ke 1e20" in an MTL is no more renderable than in a scene file.
+    material.radiance = glm::clamp(source.emission, 0.0f, kMaxRadiance);
     return material;
 }
 

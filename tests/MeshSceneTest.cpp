@@ -3,6 +3,7 @@
 // shapes, and the round trip through the writer.
 #include "Scene.h"
 #include "SceneWriter.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -80,6 +81,21 @@ TEST_F(MeshScene, SlotsTakeOverridesThenTheDefaultThenTheFilesOwnMaterials) {
     scene = load(R"({"type": "mesh", "mesh": "model", "materials": {"": "white"}})",
                  R"("white": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]}, "red": {"type": "mirror"})");
     EXPECT_EQ(materialOfSlot(scene, scene.shapes[0], "red").type, MaterialType::Mirror);
+}
+
+// An MTL's "Ke 1e20" became a scene material of radiance 1e20, beyond what a scene file may hold
+// (1e9, the bound that renders finite); it is clamped to the bound, as Kd is to [0, 1].
+TEST(MeshSceneMtl, EmissionFromAnMtlIsClampedToTheSceneBound) {
+    testing::ScratchFiles files("mesh_mtl_emission");
+    files.write("lamp.mtl", "newmtl lamp\nKd 0 0 0\nKe 1e20 5 0\n");
+    files.write("lamp.obj", "mtllib lamp.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n");
+    const fs::path scene = files.write("scene.json", R"({
+  "camera": { "eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8] },
+  "materials": {}, "meshes": { "m": { "file": "lamp.obj" } }, "shapes": [ { "type": "mesh", "mesh": "m" } ] })");
+    const Scene loaded = loadScene(scene);
+    ASSERT_EQ(loaded.materials.size(), 1u);
+    EXPECT_EQ(loaded.materials[0].name, "m/lamp");
+    EXPECT_EQ(loaded.materials[0].radiance, glm::vec3(kMaxSceneRadiance, 5.0f, 0.0f));
 }
 
 TEST_F(MeshScene, BadMeshReferencesNameTheFileAndThePlace) {

@@ -77,11 +77,14 @@ void checkScene(const ptview::Scene& scene) {
     require(scene.camera.resolution.x >= 1 && scene.camera.resolution.y >= 1, "positive resolution");
     require(scene.camera.vfovDeg > 0.0f && scene.camera.vfovDeg < 180.0f, "field of view in (0, 180)");
     require(isFinite(scene.camera.eye) && isFinite(scene.camera.target), "finite camera");
-    require(scene.environmentIntensity >= 0.0f, "non-negative environment intensity");
+    require(isWithin(scene.camera.eye, -ptview::kMaxSceneExtent, ptview::kMaxSceneExtent) &&
+                isWithin(scene.camera.target, -ptview::kMaxSceneExtent, ptview::kMaxSceneExtent),
+            "camera within the scene bounds");
+    require(scene.environmentIntensity >= 0.0f && scene.environmentIntensity <= ptview::kMaxSceneRadiance,
+            "environment intensity in [0, kMaxSceneRadiance]");
     for (const ptview::Material& material : scene.materials) {
         require(isWithin(material.color, 0.0f, 1.0f), "material colour in [0, 1]");
-        require(isWithin(material.radiance, 0.0f, std::numeric_limits<float>::max()),
-                "finite, non-negative material radiance");
+        require(isWithin(material.radiance, 0.0f, ptview::kMaxSceneRadiance), "material radiance in [0, kMaxSceneRadiance]");
         require(material.ior >= 1.0f && material.ior <= 4.0f, "ior in [1, 4]");
         require(material.roughness >= 0.0f && material.roughness <= 1.0f, "roughness in [0, 1]");
     }
@@ -89,6 +92,12 @@ void checkScene(const ptview::Scene& scene) {
     for (const ptview::Shape& shape : scene.shapes) {
         if (shape.type != ptview::ShapeType::Mesh) {
             require(shape.material >= 0 && shape.material < materialCount, "shape material in range");
+            // The bounds hold after transforms (docs/scene-format.md).
+            const float extent = ptview::kMaxSceneExtent;
+            require(isWithin(shape.center, -extent, extent) && shape.radius <= extent &&
+                        isWithin(shape.halfSize, 0.0f, extent) && glm::length(glm::dvec3(shape.u)) <= extent &&
+                        glm::length(glm::dvec3(shape.v)) <= extent,
+                    "shape within the scene bounds");
             continue;
         }
         require(shape.mesh >= 0 && shape.mesh < meshCount, "shape mesh in range");
@@ -98,7 +107,9 @@ void checkScene(const ptview::Scene& scene) {
             require(material >= 0 && material < materialCount, "slot material in range");
     }
     for (const ptview::Light& light : scene.lights) {
-        require(isFinite(light.position) && isFinite(light.intensity), "finite light");
+        require(isWithin(light.position, -ptview::kMaxSceneExtent, ptview::kMaxSceneExtent) &&
+                    isWithin(light.intensity, 0.0f, ptview::kMaxSceneRadiance),
+                "light within the scene bounds");
         if (light.type == ptview::LightType::Spot)
             require(std::abs(glm::length(light.direction) - 1.0f) <= 1e-5f, "unit spot direction");
     }
