@@ -51,8 +51,8 @@ constexpr int kMaxResolution = 16384;
 // of 1e9 keeps 2^24 samples of it over such a density at 1e22, both far below float's 3.4e38.
 // Before these bounds a sphere of radius 1e38 scaled by 1e5 loaded with an infinite radius, and an
 // environment intensity of 3e38 made half the pixels NaN or Inf.
-constexpr float kMaxExtent = kMaxSceneExtent;     // Scene.h: |coordinate|, radius, half size, |u|, |v|
-constexpr float kMaxRadiance = kMaxSceneRadiance; // Scene.h: radiance, emission, light and environment intensity
+constexpr float kMaxExtent = kMaxSceneExtent;     // SceneRanges.h: |coordinate|, radius, half size, |u|, |v|
+constexpr float kMaxRadiance = kMaxSceneRadiance; // SceneRanges.h: radiance, emission, light and environment intensity
 
 // A problem at a place in the document. parseScene adds the file name, so the readers below
 // need not carry it around.
@@ -885,7 +885,7 @@ Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& s
         material.type = MaterialType::Diffuse;
         material.color = diffuse;
     }
-    // Clamped to the bound a scene file's radiance has (Scene.h), as the colours above are to
+    // Clamped to the bound a scene file's radiance has (SceneRanges.h), as the colours above are to
     // [0, 1]: "Ke 1e20" in an MTL is no more renderable than in a scene file.
     material.radiance = glm::clamp(source.emission, 0.0f, kMaxRadiance);
     return material;

@@ -486,7 +486,7 @@ TEST(SceneLoader, RejectsBadBox) {
 
 // Values beyond what renders finite: a sphere of radius 1e38 scaled by 1e5 loaded with an infinite
 // radius (and Save then failed), an environment intensity of 3e38 made half the pixels NaN. The
-// bounds (Scene.h: 1e9 m, radiance 1e9) hold for what is stored, after transforms, and the
+// bounds (SceneRanges.h: 1e9 m, radiance 1e9) hold for what is stored, after transforms, and the
 // message names the value that is wrong.
 TEST(SceneLoader, RejectsValuesThatWouldNotRenderFiniteNamingThem) {
     expectPlaceError(errorFrom(validSceneWith("\"radius\": 0.3", "\"radius\": 1e38")), "/shapes/1/radius",
