@@ -175,7 +175,7 @@ TEST(SceneRanges, TheWriterRefusesWhatTheLoaderWouldNaming) {
     EXPECT_EQ(writeError(bright), "/materials/coat/albedo/2: cannot write 1.5: the colour component must be in [0, 1]");
     Scene negative = scene;
     negative.environmentIntensity = -1.0f;
-    EXPECT_EQ(writeError(negative), "/environment/intensity: cannot write -1: the environment intensity must be >= 0");
+    EXPECT_EQ(writeError(negative), "/environment/intensity: cannot write -1: the environment intensity must be in [0, 1000000000]");
     EXPECT_EQ(writeError(scene), "written");
 }
 
