@@ -20,7 +20,8 @@
 //                converged value.
 //
 // The estimate is a mean of per-pixel terms that each rest on one squared difference, so its own
-// relative standard error is about sqrt(2 / effectivePixels), effectivePixels = (sum c)^2 / sum c^2.
+// relative standard error is about sqrt(2 / effectivePixels), effectivePixels = (sum c)^2 / sum c^2
+// over the per-channel terms c (a grey pixel counts up to 3).
 // It counts as reliable from kMinEffectivePixels on (a standard error of 18% of itself, so that
 // three of them stay well inside a factor of 2 in relative error); before that, and for the grid
 // sampler (the same deterministic pattern in every pixel: its changes are not noise), it is not.
@@ -38,7 +39,7 @@ inline constexpr double kMinEffectivePixels = 64.0;
 
 struct ErrorEstimate {
     double relativeMse = 0.0;     // estimated relative MSE against the converged image
-    double effectivePixels = 0.0; // how many pixels' worth of evidence it rests on
+    double effectivePixels = 0.0; // how many pixel channels effectively carry it: (sum c)^2 / sum c^2
     bool reliable = false;        // false: show "-" and `unreliableReason`
     const char* unreliableReason = "needs two read-backs, the first at half the samples or fewer";
     long long nonFinitePixels = 0; // pixels whose mean is NaN or infinite (left out of the above)
