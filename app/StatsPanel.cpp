@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace ptview {
@@ -19,15 +20,15 @@ void drawErrorPlot(const ViewerSession::ViewStats& stats) {
     // Log scale: the error falls as 1/sqrt(time), so a straight line shows healthy convergence.
     std::vector<float> logErrors;
     logErrors.reserve(stats.errorHistory.size());
-    for (const auto& [seconds, error] : stats.errorHistory)
-        if (error > 0.0f && std::isfinite(error)) logErrors.push_back(std::log10(error));
+    for (const auto& [seconds, relativeMse] : stats.errorHistory)
+        if (relativeMse > 0.0f && std::isfinite(relativeMse)) logErrors.push_back(std::log10(float(relativeError(relativeMse))));
     if (logErrors.size() < 2) return;
     char overlay[48];
-    std::snprintf(overlay, sizeof overlay, "%.3g %% (log scale)", 100.0 * stats.errorHistory.back().second);
+    std::snprintf(overlay, sizeof overlay, "%.3g %% (log scale)", 100.0 * relativeError(stats.errorHistory.back().second));
     // An explicit width: PlotLines in ImGui 1.86 does not take -1 to mean "to the right edge".
     ImGui::PlotLines("##error", logErrors.data(), static_cast<int>(logErrors.size()), 0, overlay, FLT_MAX, FLT_MAX,
                      ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
-    itemTooltip("log10 of the relative error, about once a second of rendering");
+    itemTooltip("log10 of the estimated relative error, about once a second of rendering while the estimate is reliable");
 }
 
 void drawViewStats(const ViewerSession& session, ViewerSession::Side side, double frameSeconds) {
@@ -45,24 +46,33 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     glm::ivec2 size = session.renderSize();
     ImGui::Text("%d x %d pixels, %.1f ms/frame", size.x, size.y, frameSeconds * 1e3);
     ImGui::Text("%.2f M samples/s, %.1f s rendering", stats.samplesPerSecond * 1e-6, stats.renderSeconds);
-    if (stats.error.relativeError > 0.0)
-        ImGui::Text("relative error %.3g %%", stats.error.relativeError * 100.0);
+    // The estimate and the true error are the same quantity (relative MSE as ErrorMetrics.h defines
+    // it), shown the same way, so with a reference loaded the two lines can be compared directly.
+    if (stats.error.reliable)
+        ImGui::Text("relative error ~%.3g %% (relMSE %.3g)", 100.0 * relativeError(stats.error.relativeMse),
+                    stats.error.relativeMse);
     else
-        ImGui::TextUnformatted("relative error -");
-    itemTooltip("each pixel's standard error relative to its value (RMS over the image), estimated from the "
-                "pixel's own samples;\nthe square root of the relative MSE; measures noise, not bias");
+        ImGui::TextUnformatted("relative error -  (not yet reliable)"); // ImGui's default font has no em dash
+    if (stats.error.reliable)
+        itemTooltip("estimated from the render itself: sqrt of the relative MSE against the image it converges to,\n"
+                    "mean of (x - converged)^2 / (converged^2 + 0.01); each pixel's change since an earlier read-back,\n"
+                    "over its neighbourhood's brightness (docs/viewer.md). Measures noise, not bias");
+    else
+        itemTooltip((std::string("no estimate yet: ") + stats.error.unreliableReason).c_str());
     if (stats.trueError) {
         const ErrorMetrics& e = *stats.trueError;
-        ImGui::Text("vs reference: relMSE %.3g, RMSE %.3g", e.relativeMse, e.rmse);
-        itemTooltip("the true error against the loaded reference image: relative MSE = mean of (x - ref)^2 / (ref^2 + 0.01)");
+        ImGui::Text("vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g", 100.0 * relativeError(e.relativeMse),
+                    e.relativeMse, e.rmse);
+        itemTooltip("the true error against the loaded reference image: sqrt of the relative MSE,\n"
+                    "mean of (x - ref)^2 / (ref^2 + 0.01); includes the reference's own noise");
         ImGui::Text("bias %+.2g %+.2g %+.2g", e.meanBias.r, e.meanBias.g, e.meanBias.b);
         itemTooltip("mean of the image minus mean of the reference, per channel: what more samples cannot remove");
         std::vector<float> logs;
         for (const auto& [seconds, relMse] : stats.trueErrorHistory)
-            if (relMse > 0.0f) logs.push_back(std::log10(relMse));
+            if (relMse > 0.0f) logs.push_back(std::log10(float(relativeError(relMse))));
         if (logs.size() >= 2) {
             char overlay[48];
-            std::snprintf(overlay, sizeof overlay, "relMSE %.3g (log scale)", double(stats.trueErrorHistory.back().second));
+            std::snprintf(overlay, sizeof overlay, "true %.3g %% (log scale)", 100.0 * relativeError(stats.trueErrorHistory.back().second));
             ImGui::PlotLines("##trueError", logs.data(), static_cast<int>(logs.size()), 0, overlay, FLT_MAX, FLT_MAX,
                              ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
         }

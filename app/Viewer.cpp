@@ -331,8 +331,8 @@ void ViewerWindow::drawCompareLabels() {
         const RenderSettings& settings = session_.settings(side);
         ViewerSession::ViewStats stats = session_.stats(side);
         char text[160];
-        char error[32] = "-";
-        if (stats.error.relativeError > 0.0) std::snprintf(error, sizeof(error), "%.2f%%", stats.error.relativeError * 100.0);
+        char error[32] = "-"; // until the estimate is reliable (the Stats panel's tooltip says why)
+        if (stats.error.reliable) std::snprintf(error, sizeof(error), "%.2f%%", 100.0 * relativeError(stats.error.relativeMse));
         std::snprintf(text, sizeof(text), "%s / %s / depth %d\n%d spp, %.1f s, error ~%s", integratorName(settings.integrator),
                       samplerModeName(settings.sampler), settings.maxDepth, stats.samples, stats.renderSeconds, error);
         ImVec2 size = ImGui::CalcTextSize(text);

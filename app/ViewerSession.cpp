@@ -427,6 +427,7 @@ void ViewerSession::trackRestart(View& view) {
     view.error = ErrorEstimate{};
     view.estimatedSamples = 0;
     view.errorHistory.clear();
+    view.earlierMeans.clear();
     view.trueError.reset();
     view.trueErrorHistory.clear();
 }
@@ -496,9 +497,7 @@ void ViewerSession::updateErrorEstimate(View& view) {
     view.lastEstimate = Clock::now();
     view.estimatedSamples = samples;
     PixelStatistics statistics = view.tracer->readStatistics();
-    view.error = estimateError(statistics);
-    if (view.errorHistory.size() == kErrorHistoryLength) view.errorHistory.erase(view.errorHistory.begin());
-    view.errorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.error.relativeError));
+    recordErrorEstimate(view, statistics);
     const ImageRgbF* reference = model_.reference.get();
     if (reference && reference->width == statistics.mean.width && reference->height == statistics.mean.height) {
         view.trueError = compareToReference(statistics.mean, *reference);
@@ -507,6 +506,26 @@ void ViewerSession::updateErrorEstimate(View& view) {
     } else {
         view.trueError.reset();
     }
+}
+
+void ViewerSession::recordErrorEstimate(View& view, const PixelStatistics& statistics) {
+    // The latest earlier mean at half the samples or fewer; those before it are never needed again.
+    std::vector<std::pair<int, ImageRgbF>>& earlier = view.earlierMeans;
+    auto usable = std::find_if(earlier.rbegin(), earlier.rend(),
+                               [&](const auto& entry) { return 2 * entry.first <= statistics.sampleCount; });
+    if (usable != earlier.rend()) {
+        earlier.erase(earlier.begin(), usable.base() - 1);
+        view.error = estimateError(statistics, earlier.front().second, earlier.front().first,
+                                   view.tracer->settings().sampler);
+    } else {
+        view.error = estimateError(statistics, ImageRgbF(), 0, view.tracer->settings().sampler);
+    }
+    // Kept at counts that at least double, so a handful of images cover any run.
+    if (earlier.empty() || statistics.sampleCount >= 2 * earlier.back().first)
+        earlier.emplace_back(statistics.sampleCount, statistics.mean);
+    if (!view.error.reliable) return;
+    if (view.errorHistory.size() == kErrorHistoryLength) view.errorHistory.erase(view.errorHistory.begin());
+    view.errorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.error.relativeMse));
 }
 
 int ViewerSession::dividerX() const {

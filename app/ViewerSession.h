@@ -35,7 +35,8 @@ public:
         double renderSeconds = 0.0; // GPU time spent on the current accumulation
         double samplesPerSecond = 0.0;
         ErrorEstimate error;
-        // (render seconds, relative error) once a second or so, for the error-vs-time plot.
+        // (render seconds, estimated relative MSE) once a second or so while the estimate is
+        // reliable, for the error-vs-time plot.
         std::vector<std::pair<float, float>> errorHistory;
         // Against the reference image, when one of the render's size is loaded.
         std::optional<ErrorMetrics> trueError;
@@ -126,6 +127,9 @@ private:
         std::optional<ErrorMetrics> trueError;
         std::vector<std::pair<float, float>> trueErrorHistory;
         std::chrono::steady_clock::time_point lastEstimate{};
+        // Means read back earlier in this accumulation, at sample counts at least doubling, for
+        // the error estimate (which compares the mean with one at half the samples or fewer).
+        std::vector<std::pair<int, ImageRgbF>> earlierMeans;
     };
 
     View& view(Side side) { return side == Side::Left ? left_ : *right_; }
@@ -136,6 +140,7 @@ private:
     void trackRestart(View& view);
     void updateErrorEstimate(View& view);
     void followImageArea(unsigned changes);
+    void recordErrorEstimate(View& view, const PixelStatistics& statistics);
     void watchFiles();
     void reloadShaders();
     void applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map);

@@ -1,21 +1,57 @@
 #pragma once
-// How far a progressive render still is from converged, judged from the image alone: each
-// pixel's variance of the mean (from its own samples) against the image's brightness. No
-// reference is needed, so the viewer can show it live; it measures noise, not bias.
+// How far a progressive render still is from converged, judged from the render alone, so the
+// viewer can show it live. It estimates the relative MSE of ErrorMetrics.h (same per-channel
+// normalization, same epsilon) against the image the render converges to: noise, never bias.
+//
+// Why not each pixel's own sample variance over its own mean: a pixel that has not yet had its
+// first light hit shows no variance, and one that has divides its variance by a mean inflated by
+// that very hit, so the estimate rose while the image improved. And a Sobol' pixel's samples are
+// not independent: their spread overstates the error of their mean (here by about 3x in relative
+// error for direct lighting). So, per pixel and channel:
+//
+//   numerator    (x_n - x_m)^2 / (n/m - 1): the change of the pixel's mean since an earlier mean of
+//                the same accumulation at m <= n/2 samples. For independent samples its
+//                expectation is exactly Var[x_n]; it measures the error the samples actually
+//                make, so a sampler that converges faster (Sobol') gets a smaller number.
+//   denominator  max(x_n^2 - Var^[x_n], box(x)^2) + kRelativeMseEpsilon, where x_n^2 - Var^ is an
+//                unbiased estimate of mean^2 (near 0 for a pixel carried by one bright sample) and
+//                box(x) is the 3x3 neighbourhood's mean: a bright pixel keeps its own value, a lone
+//                hit is judged against its neighbours, as the true error judges it against the
+//                converged value.
+//
+// The estimate is a mean of per-pixel terms that each rest on one squared difference, so its own
+// relative standard error is about sqrt(2 / effectivePixels), effectivePixels = (sum c)^2 / sum c^2
+// over the per-channel terms c (a grey pixel counts up to 3).
+// It counts as reliable from kMinEffectivePixels on (a standard error of 18% of itself, so that
+// three of them stay well inside a factor of 2 in relative error); before that, and for the grid
+// sampler (the same deterministic pattern in every pixel: its changes are not noise), it is not.
 
 #include "Accumulator.h"
+#include "ErrorMetrics.h"
+#include "SamplerMode.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace ptview {
 
+inline constexpr double kMinEffectivePixels = 64.0;
+
 struct ErrorEstimate {
-    // sqrt(mean over pixels of Var[mean] / (mean^2 + 1e-4)), with each pixel's mean and variance
-    // averaged over its channels: the RMS of each pixel's standard error relative to its own
-    // value, the square root of the usual relative MSE. The 1e-4 (a radiance of 0.01 squared)
-    // keeps nearly black pixels from dominating. Halves when the samples quadruple; 0 before two.
-    double relativeError = 0.0;
+    double relativeMse = 0.0;     // estimated relative MSE against the converged image
+    double effectivePixels = 0.0; // how many pixel channels effectively carry it: (sum c)^2 / sum c^2
+    bool reliable = false;        // false: show "-" and `unreliableReason`
+    const char* unreliableReason = "needs two read-backs, the first at half the samples or fewer";
     long long nonFinitePixels = 0; // pixels whose mean is NaN or infinite (left out of the above)
 };
 
-ErrorEstimate estimateError(const PixelStatistics& statistics);
+// The square root of a relative MSE: the RMS relative error the panels show, for the estimate
+// and the true error alike.
+inline double relativeError(double relativeMse) { return std::sqrt(std::max(relativeMse, 0.0)); }
+
+// `earlierMean` is the mean of the same accumulation at earlierSamples (1 <= earlierSamples <=
+// statistics.sampleCount / 2, the same size); without one (earlierSamples 0) nothing is estimated.
+ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& earlierMean, int earlierSamples,
+                            SamplerMode sampler);
 
 } // namespace ptview

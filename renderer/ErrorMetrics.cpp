@@ -13,8 +13,6 @@ ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& referen
         throw std::invalid_argument("the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                     " but the reference is " + std::to_string(reference.width) + "x" +
                                     std::to_string(reference.height));
-    // The 1e-2 keeps black reference pixels from dividing by zero (pbrt's and Mitsuba's choice).
-    constexpr double kRelativeEpsilon = 1e-2;
     ErrorMetrics metrics;
     double squared = 0.0, relative = 0.0;
     glm::dvec3 sumImage(0.0), sumReference(0.0);
@@ -29,7 +27,7 @@ ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& referen
             for (int c = 0; c < 3; ++c) {
                 double difference = double(value[c]) - double(expected[c]);
                 squared += difference * difference;
-                relative += difference * difference / (double(expected[c]) * expected[c] + kRelativeEpsilon);
+                relative += difference * difference / (double(expected[c]) * expected[c] + kRelativeMseEpsilon);
             }
             sumImage += glm::dvec3(value);
             sumReference += glm::dvec3(expected);

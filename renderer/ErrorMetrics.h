@@ -11,6 +11,10 @@
 
 namespace ptview {
 
+// The epsilon of the relative MSE: (x - ref)^2 / (ref^2 + kRelativeMseEpsilon) keeps black pixels
+// from dividing by zero (pbrt's and Mitsuba's choice). ErrorEstimate.h estimates the same quantity.
+inline constexpr double kRelativeMseEpsilon = 1e-2;
+
 struct ErrorMetrics {
     double rmse = 0.0;             // sqrt(mean over pixels and channels of (x - ref)^2)
     double relativeMse = 0.0;      // mean of (x - ref)^2 / (ref^2 + 1e-2): scale-free, as in the literature
