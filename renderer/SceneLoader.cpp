@@ -5,6 +5,7 @@
 // finite) is an error rather than silently ignored: a typo such as "radus" would otherwise give a
 // default radius and a puzzling image instead of a message.
 
+#include "InputFile.h"
 #include "MaterialSchema.h"
 #include "ObjLoader.h"
 #include "Scene.h"
@@ -28,6 +29,7 @@
 #include <system_error>
 #include <utility>
 #include <map>
+#include <new>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -42,6 +44,10 @@ using Json = nlohmann::ordered_json;
 using Pointer = Json::json_pointer;
 
 constexpr int kMaxResolution = 16384;
+// Scene files are hand-written or saved text that names its meshes and maps; the largest in
+// assets/ is a few KiB. A limit far above any real scene keeps /dev/zero or a mistyped multi-GiB
+// file from being read into memory whole.
+constexpr std::uintmax_t kMaxSceneFileBytes = 64 * kMiB;
 
 // A problem at a place in the document. parseScene adds the file name, so the readers below
 // need not carry it around.
@@ -883,21 +889,19 @@ void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
 } // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
-    auto cannotOpen = [&path](int error) {
-        return oneLineError(path.string() + ": cannot open scene file: " + std::strerror(error));
-    };
-    // Opening a directory succeeds and only the read fails, with a less helpful errno.
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored))
-        throw cannotOpen(EISDIR);
-    std::ifstream file(path, std::ios::binary);
-    if (!file)
-        throw cannotOpen(errno);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (file.bad())
-        throw cannotOpen(errno);
-    return parseScene(text.str(), path);
+    std::string text;
+    try {
+        text = readInputFile(path, kMaxSceneFileBytes, "scene file");
+    } catch (const InputFileError& e) {
+        throw oneLineError(e.what());
+    }
+    try {
+        return parseScene(text, path);
+    } catch (const std::bad_alloc&) {
+        // A document of many small values takes many times its size in memory.
+        throw oneLineError(path.string() + ": not enough memory to load the scene (" +
+                           std::to_string((text.size() + kMiB - 1) / kMiB) + " MiB on disk)");
+    }
 }
 
 Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName) {
