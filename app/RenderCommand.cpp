@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <optional>
 
 namespace ptview {
@@ -134,6 +135,10 @@ int runRenderCommand(const RenderOptions& options) {
         return kExitBadInput;
     } catch (const EnvironmentMapError& e) { // too large for this GPU
         std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        // The GPU's targets are checked where they are made; this is the CPU side (the read-back).
+        std::cerr << "ptview: image size " << size.x << "x" << size.y << " is too large for the memory\n";
         return kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << "ptview: " << e.what() << "\n";
