@@ -51,7 +51,10 @@ std::optional<std::string> outputPathProblem(const std::string& path, std::initi
         return std::string(e.what());
     }
     std::error_code error;
-    if (fs::is_directory(target, error)) return path + ": is a directory";
+    const fs::file_status existing = fs::status(target, error);
+    if (fs::is_directory(existing)) return path + ": is a directory";
+    // Renaming over a device or a FIFO would replace it (as root, /dev/null) instead of writing to it.
+    if (fs::exists(existing) && !fs::is_regular_file(existing)) return path + ": exists and is not a regular file";
     const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     const fs::file_status status = fs::status(directory, error);
     if (status.type() == fs::file_type::not_found) return path + ": directory " + directory.string() + " does not exist";

@@ -12,8 +12,8 @@ namespace ptview {
 
 // Why `path` cannot be written as one of the `allowed` extensions (e.g. ".png", compared ignoring
 // case), as "PATH: reason"; nullopt when it can as far as can be told without writing it. The
-// checks: the extension; the target (through a symbolic link, the file it names) is not a
-// directory; its directory exists; a file can be created there under the writer's temporary name
+// checks: the extension; the target (through a symbolic link, the file it names) is a regular
+// file if it exists (not a directory, a device or a FIFO); its directory exists; a file can be created there under the writer's temporary name
 // (write permission, a read-only file system, a name too long).
 std::optional<std::string> outputPathProblem(const std::string& path, std::initializer_list<const char*> allowed);
 

@@ -288,6 +288,10 @@ TEST_F(CommandLineTest, OutputPathsThatCannotBeWrittenAreRefusedBeforeRendering)
     expectRefused(render + shellQuoted(path(std::string(300, 'n') + ".png")), "cannot write here: File name too long");
     expectRefused(render + shellQuoted(path(std::string(300, 'n') + "/out.png")), "cannot write here: File name too long");
     expectRefused(render + "/sys/ptview_out.png", "/sys/ptview_out.png: cannot write here: Permission denied");
+    // Renamed over, a FIFO (or, as root, a device such as /dev/null) would have been replaced.
+    ASSERT_EQ(::mkfifo(path("fifo.png").c_str(), 0600), 0);
+    expectRefused(render + shellQuoted(path("fifo.png")), "fifo.png: exists and is not a regular file");
+    EXPECT_TRUE(fs::is_fifo(path("fifo.png")));
     expectRefused(render + shellQuoted(path("out.png")) + " --dump-shader " + shellQuoted(path("nodir/x.glsl")),
                   "does not exist");
     expectRefused("warp --warp concentric-disk --out " + shellQuoted(path("d.png")), "d.png: is a directory");
