@@ -127,6 +127,11 @@ class DocumentBuilder final : public nlohmann::json_sax<Json> {
 public:
     Json root;
 
+    DocumentBuilder() = default;
+    DocumentBuilder(const DocumentBuilder&) = delete;
+    DocumentBuilder& operator=(const DocumentBuilder&) = delete;
+    ~DocumentBuilder() override { dismantle(); }
+
     bool null() override { return addValue(nullptr); }
     bool boolean(bool value) override { return addValue(value); }
     bool number_integer(number_integer_t value) override { return addValue(value); }
@@ -164,6 +169,30 @@ private:
     };
     // Pointers stay valid: only the innermost container grows, and none of its elements is open.
     std::vector<Frame> stack;
+
+    // Frees the document innermost value first, so that no container still holds another when
+    // it is destroyed. nlohmann's destructor moves nested containers onto a vector it allocates;
+    // when the memory ran out while the document was built, that allocation fails inside a
+    // destructor during the unwinding, which is std::terminate. The path down reuses `stack`,
+    // whose capacity is the document's depth, so nothing here allocates.
+    void dismantle() noexcept {
+        stack.clear();
+        if (root.is_structured()) stack.push_back({&root, {}});
+        while (!stack.empty()) {
+            Json& container = *stack.back().container;
+            if (container.empty()) {
+                stack.pop_back();
+                continue;
+            }
+            Json& last = container.is_array() ? container.back() : container.get_ref<Json::object_t&>().back().second;
+            if (last.is_structured() && !last.empty() && stack.size() < stack.capacity()) {
+                stack.push_back({&last, {}});
+                continue;
+            }
+            if (container.is_array()) container.get_ref<Json::array_t&>().pop_back();
+            else container.get_ref<Json::object_t&>().pop_back();
+        }
+    }
 
     Json* place(Json&& value) {
         if (stack.empty()) {
