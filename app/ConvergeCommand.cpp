@@ -180,9 +180,10 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
     return out.str();
 }
 
-// Runs argv[0] with the arguments as they are, without a shell: a path holding a quote or a
-// semicolon is a name, never code. Returns what went wrong, or nullopt when it exited with 0.
-std::optional<std::string> runProgram(const std::vector<std::string>& arguments) {
+// Runs the plot script (arguments: the interpreter, the script, then its own) with its arguments
+// as they are, without a shell: a path holding a quote or a semicolon is a name, never code.
+// Returns what went wrong, or nullopt when it exited with 0.
+std::optional<std::string> runPlotScript(const std::vector<std::string>& arguments) {
     std::vector<char*> argv;
     for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
     argv.push_back(nullptr);
@@ -316,7 +317,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
                                          (options.outDir / "convergence.csv").string(),
                                          (options.outDir / "convergence.png").string()};
         if (floor > 0) plot.push_back(number(floor, "%.6g"));
-        if (std::optional<std::string> failure = runProgram(plot))
+        if (std::optional<std::string> failure = runPlotScript(plot))
             std::cerr << "ptview: warning: the plot was not made (" << *failure << "); the CSV and summary were\n";
         std::fprintf(stderr, "ptview: wrote %s/{convergence.csv,convergence.png,summary.md} on %s\n",
                      options.outDir.string().c_str(), context.description().c_str());

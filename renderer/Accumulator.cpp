@@ -35,7 +35,8 @@ void Accumulator::resize(glm::ivec2 size) {
     if (size.x > maxSize || size.y > maxSize)
         throw std::invalid_argument("image size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
                                     " exceeds the GPU's limit of " + std::to_string(maxSize));
-    while (glGetError() != GL_NO_ERROR) {} // only what the allocation below reports counts
+    // Only what the allocation below reports counts. Bounded: a lost context repeats its error.
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}
     for (Target& target : targets_) {
         target.framebuffer = createFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());

@@ -330,6 +330,28 @@ TEST_F(CommandLineTest, FileSizeLimitIsAWriteErrorThatKeepsTheOldFile) {
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1) << "a temporary was left";
 }
 
+// The case of issue 17: a valid 8192 x 8192 map under a 1.7 GB address-space limit aborted on
+// std::bad_alloc (exit 134). It loads (1 GiB); its way to the GPU does not fit, which is named.
+TEST_F(CommandLineTest, EnvironmentMapBeyondTheMemoryIsNamedNotAnAbort) {
+#ifdef PTVIEW_UNDER_ASAN
+    GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#endif
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 8192\n";
+    std::string scanline = {2, 2, 32, 0};
+    for (char value : {char(128), char(128), char(128), char(129)})
+        for (int left = 8192; left > 0; left -= 127) scanline += {char(128 + std::min(left, 127)), value};
+    for (int row = 0; row < 8192; ++row) hdr += scanline;
+    write("big.hdr", hdr);
+    write("big.json", R"({ "camera": { "eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 60, "resolution": [8, 6] },
+                          "environment": { "map": "big.hdr" }, "materials": {}, "shapes": [] })");
+    testing::CommandResult result = runCommand("ulimit -v 1700000 && exec " + kBinary + " render " +
+                                               shellQuoted(path("big.json")) + " --spp 1 --out " + shellQuoted(path("out.pfm")));
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("not enough memory for"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("big.hdr"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(path("out.pfm")));
+}
+
 // Before: "the GPU cannot render to RGBA32F accumulation targets" (exit 1), which blamed the GPU.
 TEST_F(CommandLineTest, ImageTooLargeForTheMemoryIsNamed) {
 #ifdef PTVIEW_UNDER_ASAN
