@@ -3,18 +3,24 @@
 #include "ErrorMetrics.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
+#include "OutputPath.h"
 #include "PathTracer.h"
 #include "SceneInput.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace ptview {
 namespace {
@@ -176,6 +182,28 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
     return out.str();
 }
 
+// Runs the plot script (arguments: the interpreter, the script, then its own) with its arguments
+// as they are, without a shell: a path holding a quote or a semicolon is a name, never code.
+// Returns what went wrong, or nullopt when it exited with 0.
+std::optional<std::string> runPlotScript(const std::vector<std::string>& arguments) {
+    std::vector<char*> argv;
+    for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+    argv.push_back(nullptr);
+    std::fflush(nullptr); // the child's output must come after ours
+    pid_t child = 0;
+    if (int error = ::posix_spawnp(&child, argv[0], nullptr, nullptr, argv.data(), environ))
+        return "cannot run " + arguments[0] + ": " + std::strerror(error);
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0)
+        if (errno != EINTR) return "cannot wait for " + arguments[0] + ": " + std::strerror(errno);
+    if (WIFSIGNALED(status)) return arguments[1] + " was killed by signal " + std::to_string(WTERMSIG(status));
+    if (WEXITSTATUS(status) == 127) return "cannot run " + arguments[0];
+    if (WEXITSTATUS(status) != 0)
+        return arguments[1] + " exited with status " + std::to_string(WEXITSTATUS(status)) +
+               " (it needs python3-matplotlib; its message is above)";
+    return std::nullopt;
+}
+
 std::string pythonForPlots() {
     // Debian's python has matplotlib; a `python3` earlier on PATH may be another install without it.
     return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
@@ -247,8 +275,11 @@ int runConvergeCommand(const ConvergeOptions& options) {
                   << ", not the --size asked for\n";
         return kExitBadInput;
     }
+    if (std::optional<std::string> problem = outputDirectoryProblem(options.outDir)) {
+        std::cerr << "ptview: " << *problem << "\n";
+        return kExitBadInput;
+    }
     try {
-        fs::create_directories(options.outDir);
         HeadlessContext context;
         PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{false, options.backend});
         tracer.setScene(input->scene, input->environmentMapOrNull());
@@ -297,11 +328,12 @@ int runConvergeCommand(const ConvergeOptions& options) {
         writeFileAtomically(options.outDir / "convergence.csv", csv);
         writeFileAtomically(options.outDir / "summary.md", summary(options.scenePath, results, referenceText, floor));
 
-        std::string plot = pythonForPlots() + " '" + std::string(PTVIEW_SOURCE_DIR) + "/scripts/plot_convergence.py' '" +
-                           (options.outDir / "convergence.csv").string() + "' '" + (options.outDir / "convergence.png").string() +
-                           "'" + (floor > 0 ? " " + number(floor, "%.6g") : std::string());
-        if (std::system(plot.c_str()) != 0)
-            std::cerr << "ptview: warning: the plot was not made (needs python3-matplotlib); the CSV and summary were\n";
+        std::vector<std::string> plot = {pythonForPlots(), std::string(PTVIEW_SOURCE_DIR) + "/scripts/plot_convergence.py",
+                                         (options.outDir / "convergence.csv").string(),
+                                         (options.outDir / "convergence.png").string()};
+        if (floor > 0) plot.push_back(number(floor, "%.6g"));
+        if (std::optional<std::string> failure = runPlotScript(plot))
+            std::cerr << "ptview: warning: the plot was not made (" << *failure << "); the CSV and summary were\n";
         std::fprintf(stderr, "ptview: wrote %s/{convergence.csv,convergence.png,summary.md} on %s\n",
                      options.outDir.string().c_str(), context.description().c_str());
     } catch (const std::invalid_argument& e) {

@@ -16,7 +16,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <optional>
+#include <string>
 
 namespace ptview {
 namespace {
@@ -79,6 +81,11 @@ int runRenderCommand(const RenderOptions& options) {
     Scene scene = std::move(input->scene);
     glm::ivec2 size = options.size.value_or(scene.camera.resolution);
 
+    // What was being made when memory ran out, for the message.
+    std::string allocating = "the scene " + options.scenePath + " on the GPU";
+    if (const EnvironmentMap* map = input->environmentMapOrNull())
+        allocating += " (its environment map " + map->source + " is " + std::to_string(map->width) + "x" +
+                      std::to_string(map->height) + ")";
     try {
         HeadlessContext context;
         PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{options.program.allFeatures, options.program.backend});
@@ -93,6 +100,7 @@ int runRenderCommand(const RenderOptions& options) {
                          backendName(tracer.backend()));
         }
         if (options.outPath.empty()) return 0; // only the features or the shader were asked for
+        allocating = "the image, size " + std::to_string(size.x) + "x" + std::to_string(size.y);
         tracer.setImageSize(size);
         if (!options.program.backend) tracer.chooseBackend();
 
@@ -134,6 +142,11 @@ int runRenderCommand(const RenderOptions& options) {
         return kExitBadInput;
     } catch (const EnvironmentMapError& e) { // too large for this GPU
         std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        // The accumulation targets are checked where they are made (Accumulator); this is what
+        // the CPU allocates: the scene's GPU data on its way, the read-back of the image.
+        std::cerr << "ptview: not enough memory for " << allocating << "\n";
         return kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << "ptview: " << e.what() << "\n";

@@ -3,6 +3,7 @@
 #include "CameraController.h"
 #include "MaterialSchema.h"
 #include "MaterialsPanel.h"
+#include "OutputPath.h"
 #include "SceneRanges.h"
 
 #include <algorithm>
@@ -295,7 +296,9 @@ bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, Pan
             }
             session.writeImage(ViewerSession::Side::Left, word);
         } else if (verb == "screenshot-window") {
-            windowScreenshot_ = std::filesystem::path(word);
+            // Written by the window after this frame, where the script's line is no longer known.
+            if (std::optional<std::string> problem = outputPathProblem(word, {".png"})) fail(command, *problem);
+            else windowScreenshot_ = std::filesystem::path(word);
         } else if (verb == "save-screenshots") {
             saveScreenshots(session, panels);
             if (panels.screenshotFailed) fail(command, panels.screenshotMessage);

@@ -3,6 +3,7 @@
 #include "CameraController.h"
 #include "ImageIO.h"
 #include "MaterialsPanel.h"
+#include "OutputPath.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
 #include "Readback.h"
@@ -493,6 +494,9 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
 } // namespace
 
 int runViewer(const ViewerOptions& options) {
+    // The window is PNG whatever the name says, so the name must say PNG; and a path that cannot
+    // be written is refused before any window opens.
+    if (!options.screenshotPath.empty() && !checkOutputPath(options.screenshotPath, {".png"})) return kExitBadInput;
     std::optional<ScriptRunner> script;
     if (!options.scriptPath.empty()) {
         try {

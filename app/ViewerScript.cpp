@@ -1,5 +1,6 @@
 #include "ViewerScript.h"
 
+#include "InputFile.h"
 #include "Integrator.h"
 #include "MaterialSchema.h"
 #include "SamplerMode.h"
@@ -589,12 +590,9 @@ ViewerScript parseViewerScript(const std::string& text, const std::filesystem::p
 }
 
 ViewerScript loadViewerScript(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw ScriptError(path.string() + ": cannot read the script (missing or unreadable)");
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (file.bad()) throw ScriptError(path.string() + ": cannot read the script");
-    return parseViewerScript(text.str(), path);
+    // A script is a page of commands; 16 MiB is far beyond any, and keeps /dev/zero out.
+    constexpr std::uintmax_t kMaxScriptFileBytes = 16 * kMiB;
+    return parseViewerScript(readInputFileAs<ScriptError>(path, kMaxScriptFileBytes, "script"), path);
 }
 
 const char* viewerScriptReference() {

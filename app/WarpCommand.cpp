@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <new>
 
 namespace ptview {
 
@@ -24,6 +25,9 @@ int runWarpCommand(const WarpOptions& options) {
         writePng(options.outPath, view.renderImage(glm::ivec2(options.imageSize), defaultWarpCamera(info.domain)));
         std::fprintf(stderr, "ptview: wrote %s (%d points, %s warp, %s sampler)\n", options.outPath.c_str(),
                      options.request.count, info.name, samplerModeName(options.request.sampler));
+    } catch (const std::bad_alloc&) {
+        std::cerr << "ptview: image size " << options.imageSize << "x" << options.imageSize << " is too large for the memory\n";
+        return kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitRuntimeError;

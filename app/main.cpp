@@ -3,11 +3,18 @@
 #include "BenchCommand.h"
 #include "ConvergeCommand.h"
 #include "CommandLine.h"
+#include "ImageIO.h"
 #include "RenderCommand.h"
 #include "Viewer.h"
 #include "WarpCommand.h"
 
-int main(int argc, char** argv) {
+#include <exception>
+#include <iostream>
+#include <new>
+
+namespace {
+
+int runCommand(int argc, char** argv) {
     ptview::CommandLine commandLine;
     if (auto exitCode = ptview::parseCommandLine(argc, argv, commandLine)) return *exitCode;
     if (commandLine.mode == ptview::CommandLine::Mode::Render) return ptview::runRenderCommand(commandLine.render);
@@ -15,4 +22,20 @@ int main(int argc, char** argv) {
     if (commandLine.mode == ptview::CommandLine::Mode::Bench) return ptview::runBenchCommand(commandLine.bench);
     if (commandLine.mode == ptview::CommandLine::Mode::Converge) return ptview::runConvergeCommand(commandLine.converge);
     return ptview::runViewer(commandLine.viewer);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    ptview::reportFileSizeLimitAsWriteError();
+    // The commands report what they expect; anything else still ends with its reason, never an
+    // abort (std::terminate) with a core dump.
+    try {
+        return runCommand(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "ptview: out of memory\n";
+    } catch (const std::exception& e) {
+        std::cerr << "ptview: " << e.what() << "\n";
+    }
+    return ptview::kExitRuntimeError;
 }

@@ -35,6 +35,8 @@ void Accumulator::resize(glm::ivec2 size) {
     if (size.x > maxSize || size.y > maxSize)
         throw std::invalid_argument("image size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
                                     " exceeds the GPU's limit of " + std::to_string(maxSize));
+    // Only what the allocation below reports counts. Bounded: a lost context repeats its error.
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}
     for (Target& target : targets_) {
         target.framebuffer = createFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
@@ -45,6 +47,13 @@ void Accumulator::resize(glm::ivec2 size) {
             glFramebufferTexture2D(GL_FRAMEBUFFER, drawBuffers[i], GL_TEXTURE_2D, target.textures[i].id(), 0);
         }
         glDrawBuffers(kTextureCount, drawBuffers);
+        if (glGetError() == GL_OUT_OF_MEMORY) {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            const double mebibytes = 2.0 * kTextureCount * 16.0 * double(size.x) * double(size.y) / double(1 << 20);
+            throw std::invalid_argument("image size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                                        " is too large for the memory (its accumulation targets need " +
+                                        std::to_string(static_cast<long long>(mebibytes)) + " MiB)");
+        }
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw std::runtime_error("the GPU cannot render to RGBA32F accumulation targets");
     }

@@ -1,6 +1,6 @@
 #include "EnvironmentMap.h"
 
-#include <stb_image.h>
+#include "InputFile.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -9,9 +9,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <memory>
+#include <new>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -25,10 +24,12 @@ double luminance(const float* rgb) {
 
 // --- Radiance RGBE files ----------------------------------------------------------------------
 //
-// stb_image decodes them, but trusts the data: at the end of the file its reader returns zeros,
-// and a run of length 0 makes its RLE loop spin forever (a truncated file hangs the program), while
-// a truncated flat file decodes as black. So the structure is walked here first, the way stb
-// reads it, and anything incomplete is refused before stb sees it.
+// Decoded here rather than by stb_image, which trusts the data (at the end of the file its reader
+// returns zeros, and a run of length 0 makes its RLE loop spin forever) and refuses any image of
+// more than 2^31 bytes as floats ("too large": 16384x16384 is 3 GiB). The layout read is stb's:
+// scanlines of new-style RLE (2, 2, width) with each channel run-length coded, or flat RGBE
+// pixels, into which a scanline that does not start with an RLE marker turns the whole image from
+// its first pixel on. Anything incomplete or corrupt is refused naming the scanline.
 
 struct RadianceHeader {
     int width = 0;
@@ -77,19 +78,32 @@ public:
         return header;
     }
 
-    // Follows stb_image's decoder over the pixel data without decoding it.
-    void checkPixels(const RadianceHeader& header) {
+    // Whether what follows the header can hold pixel data of this size at all: the fewest bytes
+    // it can take (every scanline run-length coded in runs of the longest, 127, or flat pixels,
+    // whichever is shorter). Only then is room for all the texels taken at once, so that a short
+    // file cannot claim gigabytes; otherwise they grow as scanlines are decoded, until the data
+    // is found cut short or corrupt at its place.
+    bool canHoldPixels(const RadianceHeader& header) const {
         const std::size_t width = static_cast<std::size_t>(header.width);
         const std::size_t height = static_cast<std::size_t>(header.height);
-        if (width < 8 || width >= 32768) return need(4 * width * height, "pixel data");
+        std::size_t least = 4 * width * height;
+        if (width >= 8 && width < 32768) least = std::min(least, height * (4 + 4 * 2 * ((width + 126) / 127)));
+        return bytes_.size() - at_ >= least;
+    }
+
+    // Linear radiance, 3 floats per texel, row 0 the top, into `rgb`.
+    void decodePixels(const RadianceHeader& header, std::vector<float>& rgb) {
+        const std::size_t width = static_cast<std::size_t>(header.width);
+        const std::size_t height = static_cast<std::size_t>(header.height);
+        if (width < 8 || width >= 32768) return decodeFlat(width * height, rgb);
+        std::vector<unsigned char> scanline(width * 4);
         for (std::size_t row = 0; row < height; ++row) {
             std::size_t rowStart = at_;
-            need(4, "scanline " + std::to_string(row));
+            needInScanline(4, row);
             auto b = [&](std::size_t k) { return static_cast<unsigned char>(bytes_[rowStart + k]); };
             if (b(0) != 2 || b(1) != 2 || (b(2) & 0x80)) {
-                // A flat scanline: stb then reads the whole image flat from here.
                 at_ = rowStart;
-                return need(4 * width * height, "pixel data");
+                return decodeFlat(width * height, rgb);
             }
             at_ += 4;
             std::size_t length = (std::size_t(b(2)) << 8) | b(3);
@@ -99,22 +113,38 @@ public:
             for (int channel = 0; channel < 4; ++channel) {
                 std::size_t filled = 0;
                 while (filled < width) {
-                    need(1, "scanline " + std::to_string(row));
+                    needInScanline(1, row);
                     unsigned count = static_cast<unsigned char>(bytes_[at_++]);
                     bool isRun = count > 128;
                     if (isRun) count -= 128;
                     if (count == 0 || count > width - filled)
                         fail("corrupt run-length data in scanline " + std::to_string(row));
-                    std::size_t payload = isRun ? 1 : count;
-                    need(payload, "scanline " + std::to_string(row));
-                    at_ += payload;
-                    filled += count;
+                    needInScanline(isRun ? 1 : count, row);
+                    for (unsigned k = 0; k < count; ++k, ++filled)
+                        scanline[filled * 4 + channel] = static_cast<unsigned char>(bytes_[isRun ? at_ : at_ + k]);
+                    at_ += isRun ? 1 : count;
                 }
             }
+            rgb.resize((row + 1) * width * 3);
+            for (std::size_t i = 0; i < width; ++i) convert(&scanline[i * 4], &rgb[(row * width + i) * 3]);
         }
     }
 
 private:
+    void decodeFlat(std::size_t texels, std::vector<float>& rgb) {
+        need(4 * texels, "pixel data");
+        rgb.resize(3 * texels);
+        const auto* data = reinterpret_cast<const unsigned char*>(bytes_.data() + at_);
+        for (std::size_t t = 0; t < texels; ++t) convert(data + 4 * t, &rgb[3 * t]);
+        at_ += 4 * texels;
+    }
+
+    // RGBE: three mantissas sharing the exponent e, each worth m * 2^(e - 136); e = 0 is black.
+    static void convert(const unsigned char* rgbe, float* out) {
+        const float scale = rgbe[3] != 0 ? std::ldexp(1.0f, int(rgbe[3]) - (128 + 8)) : 0.0f;
+        for (int c = 0; c < 3; ++c) out[c] = float(rgbe[c]) * scale;
+    }
+
     // The next line without its '\n'; at the end of the data, what is left.
     std::string line() {
         std::size_t end = bytes_.find('\n', at_);
@@ -122,6 +152,11 @@ private:
         std::string text = bytes_.substr(at_, end - at_);
         at_ = std::min(end + 1, bytes_.size());
         return text;
+    }
+
+    // The message is built only on failure: this runs for every run of every scanline.
+    void needInScanline(std::size_t count, std::size_t row) {
+        if (bytes_.size() - at_ < count) need(count, "scanline " + std::to_string(row));
     }
 
     void need(std::size_t count, const std::string& what) {
@@ -135,17 +170,12 @@ private:
     std::size_t at_ = 0;
 };
 
-std::string readFile(const std::filesystem::path& path) {
-    auto cannotOpen = [&path](int error) {
-        return EnvironmentMapError(path.string() + ": cannot open environment map: " + std::strerror(error));
-    };
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) throw cannotOpen(EISDIR);
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw cannotOpen(errno);
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (file.bad()) throw cannotOpen(errno);
-    return bytes;
+// A flat (uncompressed) map of the largest size, and room for its header.
+constexpr std::uintmax_t kMaxHdrFileBytes =
+    4 * std::uintmax_t(kMaxEnvironmentMapSize) * std::uintmax_t(kMaxEnvironmentMapSize) + kMiB;
+
+std::string mebibytes(std::size_t bytes) {
+    return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
 }
 
 // Running sums in double, stored as float: a texel of weight 0 repeats the previous value
@@ -183,8 +213,13 @@ EnvironmentMap makeEnvironmentMap(int width, int height, std::vector<float> rgb,
     map.width = width;
     map.height = height;
     map.rgb = std::move(rgb);
-    map.conditionalCdf.reserve(w * h);
-    map.marginalCdf.reserve(h);
+    try {
+        map.conditionalCdf.reserve(w * h);
+        map.marginalCdf.reserve(h);
+    } catch (const std::bad_alloc&) {
+        fail("not enough memory for the sampling distribution of its " + std::to_string(width) + "x" +
+             std::to_string(height) + " texels (" + mebibytes((w * h + h) * sizeof(float)) + ")");
+    }
 
     const double pi = glm::pi<double>();
     std::vector<double> weights(w), rowWeights(h);
@@ -210,22 +245,20 @@ EnvironmentMap makeEnvironmentMap(int width, int height, std::vector<float> rgb,
 
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& path) {
     const std::string file = path.string();
-    std::string bytes = readFile(path);
+    std::string bytes = readInputFileAs<EnvironmentMapError>(path, kMaxHdrFileBytes, "environment map");
     RadianceReader reader(bytes, file);
     RadianceHeader header = reader.readHeader();
-    reader.checkPixels(header);
-
-    int width = 0, height = 0, channels = 0;
-    std::unique_ptr<float, void (*)(void*)> pixels(
-        stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
-                               &height, &channels, 3),
-        stbi_image_free);
-    if (!pixels) throw EnvironmentMapError(file + ": cannot decode: " + stbi_failure_reason());
-    if (width != header.width || height != header.height)
-        throw EnvironmentMapError(file + ": decoded size differs from the header's");
-    const float* begin = pixels.get();
-    std::vector<float> rgb(begin, begin + std::size_t(width) * std::size_t(height) * 3);
-    return makeEnvironmentMap(width, height, std::move(rgb), file);
+    const std::size_t floats = std::size_t(header.width) * std::size_t(header.height) * 3;
+    std::vector<float> rgb;
+    try {
+        if (reader.canHoldPixels(header)) rgb.reserve(floats);
+        reader.decodePixels(header, rgb);
+    } catch (const std::bad_alloc&) {
+        throw EnvironmentMapError(file + ": not enough memory for its " + std::to_string(header.width) + "x" +
+                                  std::to_string(header.height) + " texels (" + mebibytes(floats * sizeof(float)) + ")");
+    }
+    bytes = std::string(); // the file's bytes are not needed while the distribution is built
+    return makeEnvironmentMap(header.width, header.height, std::move(rgb), file);
 }
 
 } // namespace ptview

@@ -1,9 +1,12 @@
 #include "ImageIO.h"
 
+#include "InputFile.h"
+
 #include <stb_image_write.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -32,9 +35,32 @@ void appendBytes(void* context, void* data, int size) {
 // then renamed over the target: rename within a directory is atomic, so a reader, a crash or a
 // full disk sees either the old file or the whole new one, never a truncated mix. The temporary
 // name carries the process id so that two ptview processes writing one path do not share it.
-void writeFileAtomically(const std::filesystem::path& path, const std::string& bytes) {
-    std::filesystem::path temporary = path;
+std::filesystem::path writeTarget(const std::filesystem::path& path) {
+    // As the kernel resolves them: at most 40 links, each relative to the directory holding it.
+    std::filesystem::path target = path;
+    for (int hops = 0; hops < 40; ++hops) {
+        std::error_code error;
+        if (!std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) return target;
+        const std::filesystem::path next = std::filesystem::read_symlink(target, error);
+        if (error) fail(path, "cannot read the symbolic link: " + error.message());
+        target = next.is_absolute() ? next : target.parent_path() / next;
+    }
+    fail(path, std::strerror(ELOOP));
+}
+
+std::filesystem::path temporaryPathFor(const std::filesystem::path& target) {
+    std::filesystem::path temporary = target;
     temporary += ".tmp-" + std::to_string(::getpid());
+    return temporary;
+}
+
+void reportFileSizeLimitAsWriteError() {
+    std::signal(SIGXFSZ, SIG_IGN);
+}
+
+void writeFileAtomically(const std::filesystem::path& path, const std::string& bytes) {
+    const std::filesystem::path target = writeTarget(path);
+    const std::filesystem::path temporary = temporaryPathFor(target);
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) fail(path, std::string("cannot write: ") + std::strerror(errno));
     auto abandon = [&](const std::string& why) {
@@ -56,7 +82,7 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& b
         fail(path, std::string("write failed: ") + std::strerror(errno));
     }
     std::error_code error;
-    std::filesystem::rename(temporary, path, error);
+    std::filesystem::rename(temporary, target, error);
     if (error) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
@@ -81,6 +107,11 @@ void writePfm(const std::filesystem::path& path, const ImageRgbF& image) {
 }
 
 ImageRgbF readPfm(const std::filesystem::path& path) {
+    try {
+        checkInputFile(path, "reference image"); // not a directory, a device or a FIFO
+    } catch (const InputFileError& e) {
+        throw std::runtime_error(e.what());
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
     std::string magic;

@@ -9,8 +9,18 @@
 
 namespace ptview {
 
-// Throws std::runtime_error naming the file.
+// Throws std::runtime_error naming the file. A path that is a symbolic link is written through:
+// the file it names is replaced (atomically, beside it), and the link stays.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& bytes);
+// The file writeFileAtomically replaces for `path`: `path` itself, or what its chain of symbolic
+// links ends at (which need not exist yet). Throws std::runtime_error naming the path for a loop.
+std::filesystem::path writeTarget(const std::filesystem::path& path);
+// The temporary file writeFileAtomically writes beside `target` before renaming it.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
+// Makes a write past the file-size limit (`ulimit -f`) fail with EFBIG, which writeFileAtomically
+// reports as a write error, instead of SIGXFSZ killing the process with a temporary left behind.
+// Called once at start-up, by main.
+void reportFileSizeLimitAsWriteError();
 void writePng(const std::filesystem::path& path, const ImageRgba8& image);
 // Portable float map: little-endian, rows stored bottom-to-top as the format defines.
 void writePfm(const std::filesystem::path& path, const ImageRgbF& image);

@@ -1,5 +1,7 @@
 #include "ObjLoader.h"
 
+#include "InputFile.h"
+
 #include <tiny_obj_loader.h>
 
 #include <glm/glm.hpp>
@@ -52,25 +54,11 @@ std::string counted(std::size_t count, const char* noun) {
 
 // --- Bytes and lines --------------------------------------------------------------------------
 
-std::string readFile(const std::filesystem::path& path) {
-    auto cannotOpen = [&path](int error) {
-        return MeshError(path.string() + ": cannot open mesh file: " + std::strerror(error));
-    };
-    std::error_code ignored;
-    // Opening a directory succeeds and only the read fails, with a less helpful errno.
-    if (std::filesystem::is_directory(path, ignored)) throw cannotOpen(EISDIR);
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw cannotOpen(errno);
-    file.seekg(0, std::ios::end);
-    const std::streamoff size = file.tellg();
-    file.seekg(0, std::ios::beg);
-    if (!file || size < 0) throw cannotOpen(errno);
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    file.read(bytes.data(), size);
-    if (file.bad()) throw cannotOpen(errno);
-    bytes.resize(static_cast<std::size_t>(file.gcount())); // a file that shrank meanwhile: what is there
-    return bytes;
-}
+// OBJ files of real scans run to a few GiB; past this one a mistake (or a device) is likelier
+// than a mesh, and the memory for a mesh that size would run out anyway.
+constexpr std::uintmax_t kMaxObjFileBytes = 8192 * kMiB;
+// A material library is a few lines per material.
+constexpr std::uintmax_t kMaxMtlFileBytes = 64 * kMiB;
 
 // tinyobjloader (2.0.0rc10) reads a number's exponent into an int and checks for overflow one
 // digit too late: "1e2147483648" overflows it, which is undefined behaviour, and a longer exponent
@@ -297,14 +285,20 @@ public:
                     std::string* /*err*/) override {
         const std::filesystem::path path = directory_ / name;
         std::error_code ignored;
-        std::ifstream in;
-        if (!std::filesystem::is_directory(path, ignored)) in.open(path, std::ios::binary);
-        if (!in.is_open()) {
+        if (!std::filesystem::exists(path, ignored)) {
             warnings_.push_back(objFile_ + ": material library " + name + " not found (looked for " +
                                 path.string() + "); its faces keep their material names");
             return false;
         }
-        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        // A library that is there but unusable (a directory, a device, too large) is as good as
+        // missing, with the reason.
+        std::string bytes;
+        try {
+            bytes = readInputFile(path, kMaxMtlFileBytes, "material library");
+        } catch (const InputFileError& e) {
+            warnings_.push_back(std::string(e.what()) + "; the faces of " + objFile_ + " keep their material names");
+            return false;
+        }
         blankByteOrderMark(bytes);
         clampHugeExponents(bytes);
         MemoryBuffer buffer(bytes);
@@ -711,7 +705,7 @@ TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
     std::vector<std::string>& warnings = (report ? *report : unread).warnings;
     const std::string file = path.string();
 
-    std::string bytes = readFile(path);
+    std::string bytes = readInputFileAs<MeshError>(path, kMaxObjFileBytes, "mesh file");
     blankByteOrderMark(bytes);
     clampHugeExponents(bytes);
     MemoryBuffer buffer(bytes);

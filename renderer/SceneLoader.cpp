@@ -5,6 +5,7 @@
 // finite) is an error rather than silently ignored: a typo such as "radus" would otherwise give a
 // default radius and a puzzling image instead of a message.
 
+#include "InputFile.h"
 #include "MaterialSchema.h"
 #include "ObjLoader.h"
 #include "Scene.h"
@@ -28,6 +29,7 @@
 #include <system_error>
 #include <utility>
 #include <map>
+#include <new>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -42,6 +44,10 @@ using Json = nlohmann::ordered_json;
 using Pointer = Json::json_pointer;
 
 constexpr int kMaxResolution = 16384;
+// Scene files are hand-written or saved text that names its meshes and maps; the largest in
+// assets/ is a few KiB. A limit far above any real scene keeps /dev/zero or a mistyped multi-GiB
+// file from being read into memory whole.
+constexpr std::uintmax_t kMaxSceneFileBytes = 64 * kMiB;
 
 // Bounds that keep every image finite. Any float fits the file, but the renderer multiplies what
 // it reads: a quad's plane test takes the product of three lengths (the distance to it and its
@@ -132,6 +138,11 @@ class DocumentBuilder final : public nlohmann::json_sax<Json> {
 public:
     Json root;
 
+    DocumentBuilder() = default;
+    DocumentBuilder(const DocumentBuilder&) = delete;
+    DocumentBuilder& operator=(const DocumentBuilder&) = delete;
+    ~DocumentBuilder() override { dismantle(); }
+
     bool null() override { return addValue(nullptr); }
     bool boolean(bool value) override { return addValue(value); }
     bool number_integer(number_integer_t value) override { return addValue(value); }
@@ -169,6 +180,30 @@ private:
     };
     // Pointers stay valid: only the innermost container grows, and none of its elements is open.
     std::vector<Frame> stack;
+
+    // Frees the document innermost value first, so that no container still holds another when
+    // it is destroyed. nlohmann's destructor moves nested containers onto a vector it allocates;
+    // when the memory ran out while the document was built, that allocation fails inside a
+    // destructor during the unwinding, which is std::terminate. The path down reuses `stack`,
+    // whose capacity is the document's depth, so nothing here allocates.
+    void dismantle() noexcept {
+        stack.clear();
+        if (root.is_structured()) stack.push_back({&root, {}});
+        while (!stack.empty()) {
+            Json& container = *stack.back().container;
+            if (container.empty()) {
+                stack.pop_back();
+                continue;
+            }
+            Json& last = container.is_array() ? container.back() : container.get_ref<Json::object_t&>().back().second;
+            if (last.is_structured() && !last.empty() && stack.size() < stack.capacity()) {
+                stack.push_back({&last, {}});
+                continue;
+            }
+            if (container.is_array()) container.get_ref<Json::array_t&>().pop_back();
+            else container.get_ref<Json::object_t&>().pop_back();
+        }
+    }
 
     Json* place(Json&& value) {
         if (stack.empty()) {
@@ -952,21 +987,19 @@ void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
 } // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
-    auto cannotOpen = [&path](int error) {
-        return oneLineError(path.string() + ": cannot open scene file: " + std::strerror(error));
-    };
-    // Opening a directory succeeds and only the read fails, with a less helpful errno.
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored))
-        throw cannotOpen(EISDIR);
-    std::ifstream file(path, std::ios::binary);
-    if (!file)
-        throw cannotOpen(errno);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (file.bad())
-        throw cannotOpen(errno);
-    return parseScene(text.str(), path);
+    std::string text;
+    try {
+        text = readInputFile(path, kMaxSceneFileBytes, "scene file");
+    } catch (const InputFileError& e) {
+        throw oneLineError(e.what());
+    }
+    try {
+        return parseScene(text, path);
+    } catch (const std::bad_alloc&) {
+        // A document of many small values takes many times its size in memory.
+        throw oneLineError(path.string() + ": not enough memory to load the scene (" +
+                           std::to_string((text.size() + kMiB - 1) / kMiB) + " MiB on disk)");
+    }
 }
 
 Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName) {

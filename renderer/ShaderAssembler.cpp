@@ -1,5 +1,7 @@
 #include "ShaderAssembler.h"
 
+#include "InputFile.h"
+
 #include <fstream>
 #include <map>
 #include <regex>
@@ -9,12 +11,17 @@
 namespace ptview {
 namespace {
 
-std::string readText(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+// GLSL sources are a few KiB each; the limit only keeps a device or a stray huge file out.
+constexpr std::uintmax_t kMaxShaderFileBytes = 4 * kMiB;
+
+std::string readText(const std::filesystem::path& path, const std::string& displayName) {
+    try {
+        return readInputFile(path, kMaxShaderFileBytes, "shader file");
+    } catch (const InputFileError& e) {
+        // The display name (the include's name) is what the user can find in the shader folder.
+        const std::string message = e.what();
+        throw ShaderError(displayName + message.substr(path.string().size()));
+    }
 }
 
 struct Expander {
@@ -26,9 +33,7 @@ struct Expander {
     void expand(const std::filesystem::path& path, const std::string& displayName) {
         std::filesystem::path canonical = std::filesystem::weakly_canonical(path);
         if (included.count(canonical.string())) return;
-        std::ifstream probe(path);
-        if (!probe) throw ShaderError(displayName + ": cannot open shader file");
-        expandText(readText(path), displayName, canonical.string());
+        expandText(readText(path, displayName), displayName, canonical.string());
     }
 
     // An include's name may stand for another file or for generated text (ShaderAssembler::replace).

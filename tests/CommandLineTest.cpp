@@ -1,6 +1,7 @@
 // End-to-end tests of the real `ptview` binary: bad input is refused with exit code 2 and a one-line
 // message naming the file and place, and nothing is written; good input renders what it should.
 #include "ImageIO.h"
+#include "LimitedChild.h"
 #include "RunCommand.h"
 
 #include <stb_image.h>
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace ptview {
@@ -330,6 +332,126 @@ TEST_F(CommandLineTest, BenchReportsEachSceneAsATableRow) {
     testing::CommandResult bad = runCommand(kBinary + " bench " + shellQuoted(path("absent.json")) + " --seconds 0.1");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
     EXPECT_NE(bad.output.find("absent.json"), std::string::npos) << bad.output;
+}
+
+// ---- Inputs that are not regular files or are too large, outputs that cannot be written (issue 17)
+
+// Before: /dev/zero as the scene, the script or the map was read until memory ran out (an abort
+// under a memory limit); a FIFO blocked the open.
+TEST_F(CommandLineTest, InputsThatAreNotRegularFilesAreRefusedNamingThem) {
+    const std::string out = " --out " + shellQuoted(path("out.png"));
+    expectRefused("render /dev/zero" + out, "/dev/zero: cannot open scene file: a character device, not a regular file");
+    expectRefused(shellQuoted(kCornell) + " --script /dev/zero", "/dev/zero: cannot open script: a character device");
+    write("map.json", R"({ "camera": { "eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 60, "resolution": [8, 6] },
+                          "environment": { "map": "/dev/zero" }, "materials": {}, "shapes": [] })");
+    expectRefused("render " + shellQuoted(path("map.json")) + out, "/dev/zero: cannot open environment map: a character device");
+    ASSERT_EQ(::mkfifo(path("fifo.json").c_str(), 0600), 0);
+    // `timeout`: should the open block again, the test fails instead of hanging.
+    testing::CommandResult fifo =
+        runCommand("timeout 60 " + kBinary + " render " + shellQuoted(path("fifo.json")) + out);
+    EXPECT_EQ(fifo.exitCode, 2) << fifo.output;
+    EXPECT_NE(fifo.output.find("fifo.json: cannot open scene file: a FIFO, not a regular file"), std::string::npos)
+        << fifo.output;
+}
+
+TEST_F(CommandLineTest, InputFilesLargerThanTheirFormatAllowsAreRefusedUnread) {
+    // Sparse files: their size is all that is looked at, so they cost no disk and no time.
+    fs::resize_file(write("huge.json", ""), 65 << 20);
+    expectRefused("render " + shellQuoted(path("huge.json")) + " --out " + shellQuoted(path("out.png")),
+                  "huge.json: scene file too large (65 MiB; at most 64 MiB)");
+    fs::resize_file(write("huge.txt", ""), 17 << 20);
+    expectRefused(shellQuoted(kCornell) + " --script " + shellQuoted(path("huge.txt")),
+                  "huge.txt: script too large (17 MiB; at most 16 MiB)");
+}
+
+// Before: each of these rendered first and failed at the write with exit code 1 (13 s for the
+// directory named d.png at full size), or, for a name too long, aborted on an escaping
+// std::filesystem_error. /sys refuses new files even to root, which a permission test must
+// survive: CI runs as root.
+TEST_F(CommandLineTest, OutputPathsThatCannotBeWrittenAreRefusedBeforeRendering) {
+    const std::string render = "render " + shellQuoted(kCornell) + " --size 8x8 --spp 1 --out ";
+    fs::create_directories(path("d.png"));
+    expectRefused(render + shellQuoted(path("d.png")), "d.png: is a directory");
+    write("file.txt", "x");
+    expectRefused(render + shellQuoted(path("file.txt/out.png")), "file.txt is not a directory");
+    expectRefused(render + shellQuoted(path(std::string(300, 'n') + ".png")), "cannot write here: File name too long");
+    expectRefused(render + shellQuoted(path(std::string(300, 'n') + "/out.png")), "cannot write here: File name too long");
+    expectRefused(render + "/sys/ptview_out.png", "/sys/ptview_out.png: cannot write here: Permission denied");
+    // Renamed over, a FIFO (or, as root, a device such as /dev/null) would have been replaced.
+    ASSERT_EQ(::mkfifo(path("fifo.png").c_str(), 0600), 0);
+    expectRefused(render + shellQuoted(path("fifo.png")), "fifo.png: exists and is not a regular file");
+    EXPECT_TRUE(fs::is_fifo(path("fifo.png")));
+    expectRefused(render + shellQuoted(path("out.png")) + " --dump-shader " + shellQuoted(path("nodir/x.glsl")),
+                  "does not exist");
+    expectRefused("warp --warp concentric-disk --out " + shellQuoted(path("d.png")), "d.png: is a directory");
+    expectRefused(shellQuoted(kCornell) + " --frames 1 --screenshot " + shellQuoted(path("nodir/s.png")),
+                  "nodir/s.png: directory");
+    // The window is always PNG: a .jpg name would have held PNG bytes.
+    expectRefused(shellQuoted(kCornell) + " --frames 1 --screenshot " + shellQuoted(path("s.jpg")),
+                  "s.jpg: unsupported output format (use .png)");
+}
+
+// Writing through a symbolic link replaces the file it names, as a shell's `>` would; the link
+// stays a link. Before, the link itself was replaced by a regular file.
+TEST_F(CommandLineTest, OutputThroughASymbolicLinkReplacesTheFileItNames) {
+    fs::create_directories(path("real"));
+    write("real/image.pfm", "old");
+    fs::create_symlink("real/image.pfm", path("link.pfm"));
+    testing::CommandResult result =
+        runCommand(kBinary + " render " + shellQuoted(kCornell) + " --size 8x8 --spp 1 --out " + shellQuoted(path("link.pfm")));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::is_symlink(path("link.pfm")));
+    EXPECT_EQ(readPfm(path("real/image.pfm")).width, 8);
+    EXPECT_EQ(std::distance(fs::directory_iterator(path("real")), fs::directory_iterator()), 1) << "a temporary was left";
+}
+
+// The real binary with the signal disposition it inherits (SIGXFSZ kills by default): a write
+// past `ulimit -f` is a write error, exit 1 with the reason, the old file kept, no temporary left.
+// Before, SIGXFSZ killed the render and out.pfm.tmp-PID stayed.
+TEST_F(CommandLineTest, FileSizeLimitIsAWriteErrorThatKeepsTheOldFile) {
+    write("out.pfm", "the good file from before");
+    testing::CommandResult result = runCommand("ulimit -f 8 && exec " + kBinary + " render " + shellQuoted(kCornell) +
+                                               " --size 64x64 --spp 1 --out " + shellQuoted(path("out.pfm")));
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find(path("out.pfm") + ": write failed: File too large"), std::string::npos) << result.output;
+    std::ifstream in(path("out.pfm"));
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "the good file from before");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1) << "a temporary was left";
+}
+
+// The case of issue 17: a valid 8192 x 8192 map under a 1.7 GB address-space limit aborted on
+// std::bad_alloc (exit 134). It loads (1 GiB); its way to the GPU does not fit, which is named.
+TEST_F(CommandLineTest, EnvironmentMapBeyondTheMemoryIsNamedNotAnAbort) {
+#ifdef PTVIEW_UNDER_ASAN
+    GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#endif
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 8192\n";
+    std::string scanline = {2, 2, 32, 0};
+    for (char value : {char(128), char(128), char(128), char(129)})
+        for (int left = 8192; left > 0; left -= 127) scanline += {char(128 + std::min(left, 127)), value};
+    for (int row = 0; row < 8192; ++row) hdr += scanline;
+    write("big.hdr", hdr);
+    write("big.json", R"({ "camera": { "eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 60, "resolution": [8, 6] },
+                          "environment": { "map": "big.hdr" }, "materials": {}, "shapes": [] })");
+    testing::CommandResult result = runCommand("ulimit -v 1700000 && exec " + kBinary + " render " +
+                                               shellQuoted(path("big.json")) + " --spp 1 --out " + shellQuoted(path("out.pfm")));
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("not enough memory for"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("big.hdr"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(path("out.pfm")));
+}
+
+// Before: "the GPU cannot render to RGBA32F accumulation targets" (exit 1), which blamed the GPU.
+TEST_F(CommandLineTest, ImageTooLargeForTheMemoryIsNamed) {
+#ifdef PTVIEW_UNDER_ASAN
+    GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#endif
+    // 4 GiB of address space: enough for the GL driver, not for 6 targets of 4 GiB each.
+    testing::CommandResult result = runCommand("ulimit -v 4194304 && exec " + kBinary + " render " + shellQuoted(kCornell) +
+                                               " --size 16384x16384 --spp 1 --out " + shellQuoted(path("out.pfm")));
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("image size 16384x16384 is too large for the memory"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(path("out.pfm")));
 }
 
 } // namespace

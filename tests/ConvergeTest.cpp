@@ -148,5 +148,40 @@ TEST(Converge, AnImageWithNoFinitePixelHasNoError) {
     EXPECT_EQ(compareToReference(image, reference).relativeMse, 0.0);
 }
 
+// Before: the plot command was pasted into std::system, so a directory name could run code, and a
+// legitimate `it's/` got no plot with a warning that blamed matplotlib. The helper now runs with
+// an argument vector: the name below, quote and semicolons included, is only a name.
+TEST(Converge, OutputDirectoryNamesAreNeverRunAsCode) {
+    fs::path base = fs::temp_directory_path() / ("ptview_converge_quote_" + std::to_string(::getpid()));
+    fs::remove_all(base);
+    fs::create_directories(base);
+    const fs::path pwned = base / "PWNED";
+    const fs::path out = base / ("it's'; touch '" + pwned.string() + "'; echo '");
+    testing::CommandResult result = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+        " --out \"" + out.string() + "\" --size 8x8 --reference-spp 4 --max-spp 2 --configs naive/random/1");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_FALSE(fs::exists(pwned)) << "the directory's name ran as a shell command";
+    EXPECT_TRUE(fs::exists(out / "convergence.csv"));
+    EXPECT_GT(fs::file_size(out / "convergence.png"), 1000u) << result.output;
+    EXPECT_EQ(result.output.find("warning"), std::string::npos) << result.output;
+    fs::remove_all(base);
+}
+
+// Before: an existing file as the output directory was found only after the reference and all
+// the runs were rendered (exit 1).
+TEST(Converge, OutputDirectoryThatIsAFileIsRefusedBeforeRendering) {
+    const fs::path file = fs::temp_directory_path() / ("ptview_converge_file_" + std::to_string(::getpid()));
+    std::ofstream(file) << "not a directory";
+    testing::CommandResult result = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+        " --out " + testing::shellQuoted(file.string()) + " --size 8x8 --configs naive/random/1");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find(file.string() + ": exists and is not a directory"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("rendering the reference"), std::string::npos) << result.output;
+    EXPECT_EQ(testing::readFileBytes(file), "not a directory");
+    fs::remove(file);
+}
+
 } // namespace
 } // namespace ptview

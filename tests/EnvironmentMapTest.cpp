@@ -6,6 +6,7 @@
 #include "ChiSquare.h"
 #include "EnvironmentMap.h"
 #include "GlTestContext.h"
+#include "LimitedChild.h"
 #include "GpuEnvironmentMap.h"
 #include "PathTracer.h"
 #include "ProbePass.h"
@@ -14,6 +15,7 @@
 #include "SceneWriter.h"
 #include "ShaderAssembler.h"
 
+#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <gtest/gtest.h>
@@ -375,6 +377,123 @@ TEST_F(EnvironmentMapFiles, RefusesBadFilesNamingThem) {
     std::string zeroRun = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n";
     zeroRun += std::string("\x02\x02\x00\x08", 4) + std::string(1, '\0');
     EXPECT_NE(loadError(write("zero_run.hdr", zeroRun)).find("corrupt run-length data in scanline 0"), std::string::npos);
+}
+
+// A Radiance file of one RGBE value everywhere, run-length coded as stb_image_write would, built
+// without holding the image: 16384 x 16384 takes 17 MiB.
+std::string constantRleHdr(int width, int height, const unsigned char rgbe[4]) {
+    std::string bytes = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " +
+                        std::to_string(width) + "\n";
+    std::string scanline = {2, 2, char(width >> 8), char(width & 0xFF)};
+    for (int channel = 0; channel < 4; ++channel)
+        for (int left = width; left > 0; left -= std::min(left, 127))
+            scanline += {char(128 + std::min(left, 127)), char(rgbe[channel])};
+    bytes.reserve(bytes.size() + scanline.size() * std::size_t(height));
+    for (int row = 0; row < height; ++row) bytes += scanline;
+    return bytes;
+}
+
+// The decoder is ptview's own (stb_image refuses images of more than 2^31 bytes as floats); it reads
+// what stb_image reads, bit for bit, including its odd rule that a scanline without an RLE marker
+// turns the whole image into flat pixels from the first one on.
+TEST_F(EnvironmentMapFiles, DecodesEveryLayoutAsStbImageDoes) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> value(0.0f, 40.0f);
+    auto randomMap = [&](int width, int height) {
+        std::vector<float> rgb(std::size_t(width) * height * 3);
+        for (float& v : rgb) v = value(random) * value(random);
+        return rgb;
+    };
+    std::string rle = writeHdr("rle.hdr", 37, 5, randomMap(37, 5)); // width >= 8: run-length coded
+    std::string flat = writeHdr("flat.hdr", 4, 3, randomMap(4, 3)); // narrower: flat
+    // One RLE scanline (each channel a run of 8), then flat pixels for the whole image; and flat
+    // from the first scanline on.
+    const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 8\n";
+    const std::string rleRow = {2, 2, 0, 8, char(0x88), 90, char(0x88), 60, char(0x88), 30, char(0x88), char(130)};
+    std::string flatPixels;
+    for (int t = 0; t < 16; ++t) flatPixels += {char(200 + t), char(10 + t), char(t), char(120 + t)};
+    const std::string flatAfterRle = write("flat_after_rle.hdr", header + rleRow + flatPixels);
+    const std::string flatFromStart = write("flat_from_start.hdr", header + flatPixels);
+    for (const std::string& path : {rle, flat, flatAfterRle, flatFromStart}) {
+        int width = 0, height = 0, channels = 0;
+        float* expected = stbi_loadf(path.c_str(), &width, &height, &channels, 3);
+        ASSERT_NE(expected, nullptr) << path;
+        EnvironmentMap map = loadEnvironmentMap(path);
+        ASSERT_EQ(map.width, width);
+        ASSERT_EQ(map.height, height);
+        EXPECT_EQ(map.rgb, std::vector<float>(expected, expected + std::size_t(width) * height * 3)) << path;
+        stbi_image_free(expected);
+    }
+}
+
+// Before: stb_image refused 16384 x 16384 ("too large"), the size the documentation promised.
+TEST_F(EnvironmentMapFiles, LoadsTheLargestMapTheDocumentationPromises) {
+    const unsigned char rgbe[4] = {128, 64, 32, 129}; // (1, 0.5, 0.25): m * 2^(e - 136)
+    EnvironmentMap map = loadEnvironmentMap(write("largest.hdr", constantRleHdr(16384, 16384, rgbe)));
+    ASSERT_EQ(map.width, 16384);
+    ASSERT_EQ(map.height, 16384);
+    for (std::size_t texel : {std::size_t(0), std::size_t(16384) * 8191 + 4000, std::size_t(16384) * 16384 - 1})
+        EXPECT_EQ(glm::vec3(map.rgb[3 * texel], map.rgb[3 * texel + 1], map.rgb[3 * texel + 2]), glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_NEAR(map.meanRadiance.x, 1.0, 1e-9);
+    EXPECT_EQ(map.conditionalCdf.size(), std::size_t(16384) * 16384);
+    EXPECT_EQ(map.marginalCdf.back(), 1.0f);
+}
+
+TEST_F(EnvironmentMapFiles, RefusesDevicesAndOversizedFilesUnread) {
+    EXPECT_NE(loadError("/dev/zero").find("/dev/zero: cannot open environment map: a character device, not a regular file"),
+              std::string::npos);
+    // Sparse: larger than a flat 16384 x 16384 map and its header, and nothing on disk.
+    const std::string huge = write("huge.hdr", "");
+    fs::resize_file(huge, (std::uintmax_t(1) << 30) + (2u << 20));
+    EXPECT_NE(loadError(huge).find("environment map too large (1026 MiB; at most 1025 MiB)"), std::string::npos);
+}
+
+// Before: a valid 8192 x 8192 map under a 1.7 GB address-space limit aborted on std::bad_alloc
+// (with more memory: "ptview: std::bad_alloc", exit 1). Each allocation the map needs is an error
+// naming the file and what did not fit.
+TEST_F(EnvironmentMapFiles, MapBeyondTheMemoryLeftNamesTheFileAndWhatDidNotFit) {
+#ifdef PTVIEW_UNDER_ASAN
+    GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#endif
+    const unsigned char rgbe[4] = {128, 128, 128, 129};
+    const std::string path = write("large.hdr", constantRleHdr(8192, 8192, rgbe)); // 768 MiB of texels, 256 of CDF
+    const rlim_t inUse = testing::addressSpaceInUse();
+    ASSERT_GT(inUse, 0u);
+    auto messageCode = [&](const std::string& expected) {
+        return [&, expected] {
+            try {
+                loadEnvironmentMap(path);
+            } catch (const EnvironmentMapError& e) {
+                const std::string what = e.what();
+                return what.rfind(path + ": ", 0) == 0 && what.find(expected) != std::string::npos ? 0 : 2;
+            }
+            return 1;
+        };
+    };
+    // Room for the file's 8 MiB, not for the texels.
+    testing::ChildExit texels = testing::runInLimitedChild(RLIMIT_AS, inUse + (256u << 20),
+                                                           messageCode("not enough memory for its 8192x8192 texels (768 MiB)"));
+    EXPECT_EQ(texels.signal, 0) << "killed by a signal: an abort";
+    EXPECT_EQ(texels.code, 0) << "1: it loaded, 2: another message, 3: no limit";
+    // Room for the texels, not for the sampling distribution.
+    testing::ChildExit distribution = testing::runInLimitedChild(
+        RLIMIT_AS, inUse + (900u << 20), messageCode("not enough memory for the sampling distribution"));
+    EXPECT_EQ(distribution.signal, 0) << "killed by a signal: an abort";
+    EXPECT_EQ(distribution.code, 0) << "1: it loaded, 2: another message, 3: no limit";
+    // Memory follows what the file holds, not what its header claims: 60 bytes that claim
+    // 16384 x 16384 texels (3 GiB) are refused as truncated within the same small limit.
+    const std::string tiny = write("claims_16384.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16384 +X 16384\n" +
+                                                            std::string("\x02\x02\x40\x00\xff\x01", 6));
+    testing::ChildExit claim = testing::runInLimitedChild(RLIMIT_AS, inUse + (256u << 20), [&] {
+        try {
+            loadEnvironmentMap(tiny);
+        } catch (const EnvironmentMapError& e) {
+            return std::string(e.what()) == tiny + ": truncated (the file ends inside scanline 0)" ? 0 : 2;
+        }
+        return 1;
+    });
+    EXPECT_EQ(claim.signal, 0);
+    EXPECT_EQ(claim.code, 0) << "1: it loaded, 2: another message (not enough memory: allocated first), 3: no limit";
 }
 
 TEST_F(EnvironmentMapFiles, RefusesTexelsThatAreNotFiniteAndNonNegative) {

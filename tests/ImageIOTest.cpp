@@ -119,7 +119,8 @@ TEST(AtomicWrite, FailureNamesTheFileAndCreatesNothing) {
 
 // A write cut short halfway (here by a file-size limit, as a full disk would) leaves the file that
 // was there untouched and no temporary behind. The write runs in a child process so that the
-// limit binds only there.
+// limit binds only there; the child handles SIGXFSZ as ptview's main does (that the real binary,
+// signal disposition and all, survives the limit is CommandLineTest.FileSizeLimitIsAWriteErrorThatKeepsTheOldFile).
 TEST(AtomicWrite, WriteCutShortLeavesTheOldFileWhole) {
     fs::path dir = tempPath("cut_short");
     fs::create_directories(dir);
@@ -127,7 +128,7 @@ TEST(AtomicWrite, WriteCutShortLeavesTheOldFileWhole) {
     const std::string old = "the good file from before";
     std::ofstream(path, std::ios::binary) << old;
     const testing::ChildExit child = testing::runInLimitedChild(RLIMIT_FSIZE, 4096, [&] {
-        std::signal(SIGXFSZ, SIG_IGN); // the write then fails with EFBIG instead of killing the child
+        reportFileSizeLimitAsWriteError(); // the write then fails with EFBIG instead of killing the child
         try {
             writeFileAtomically(path, std::string(1 << 20, 'x'));
         } catch (const std::runtime_error& error) {
@@ -141,6 +142,36 @@ TEST(AtomicWrite, WriteCutShortLeavesTheOldFileWhole) {
     EXPECT_EQ(child.code, 0) << "1: the write did not fail, 2: the message did not name the file, 3: no limit";
     EXPECT_EQ(testing::readFileBytes(path), old);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "a temporary was left";
+    fs::remove_all(dir);
+}
+
+// A symbolic link is written through: the file it names is replaced, beside itself, and the link
+// stays; a chain of links and a link to a file not there yet are followed the same way.
+TEST(AtomicWrite, SymbolicLinkIsWrittenThroughToTheFileItNames) {
+    fs::path dir = tempPath("links");
+    fs::remove_all(dir);
+    fs::create_directories(dir / "real");
+    std::ofstream(dir / "real" / "target.bin") << "old";
+    fs::create_symlink("real/target.bin", dir / "link.bin");
+    fs::create_symlink("link.bin", dir / "link_to_link.bin");
+    fs::create_symlink(dir / "real" / "new.bin", dir / "dangling.bin");
+    writeFileAtomically(dir / "link_to_link.bin", "new");
+    writeFileAtomically(dir / "dangling.bin", "created");
+    EXPECT_TRUE(fs::is_symlink(dir / "link.bin"));
+    EXPECT_TRUE(fs::is_symlink(dir / "link_to_link.bin"));
+    EXPECT_TRUE(fs::is_symlink(dir / "dangling.bin"));
+    EXPECT_EQ(testing::readFileBytes(dir / "real" / "target.bin"), "new");
+    EXPECT_EQ(testing::readFileBytes(dir / "real" / "new.bin"), "created");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir / "real"), fs::directory_iterator()), 2) << "a temporary was left";
+    // A loop is an error naming the path, not a hang.
+    fs::create_symlink("loop_b", dir / "loop_a");
+    fs::create_symlink("loop_a", dir / "loop_b");
+    try {
+        writeFileAtomically(dir / "loop_a", "x");
+        ADD_FAILURE() << "a loop of links was written";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind((dir / "loop_a").string() + ": ", 0), 0u) << e.what();
+    }
     fs::remove_all(dir);
 }
 

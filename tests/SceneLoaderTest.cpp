@@ -1,7 +1,9 @@
 // Scene loading: the shipped Cornell box reads back as the reference describes it, and every kind
 // of bad input is rejected with a one-line message that names the file and the place in it.
 
+#include "LimitedChild.h"
 #include "Scene.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -229,6 +231,37 @@ TEST(SceneLoader, RejectsDirectory) {
         EXPECT_EQ(std::string(error.what()),
                   std::string(PTVIEW_ASSETS_DIR) + ": cannot open scene file: Is a directory");
     }
+}
+
+// A scene too large for the memory left is an error naming the file, not an abort: a child
+// process limits its address space to 64 MiB beyond what it uses and loads 16 MiB of JSON whose
+// 8 million numbers take far more as a document. Before, std::bad_alloc escaped loadScene.
+TEST(SceneLoader, SceneBeyondMemoryIsAnErrorNamingTheFile) {
+#ifdef PTVIEW_UNDER_ASAN
+    GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#else
+    testing::ScratchFiles files("scene_memory");
+    std::string text = R"({ "camera": { "eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8] },
+                           "materials": {}, "shapes": [], "padding": [0)";
+    text.reserve(16u << 20);
+    while (text.size() < (16u << 20)) text += ",0";
+    text += "] }";
+    const std::filesystem::path path = files.write("huge.json", text);
+    text = std::string();
+    const std::string expected = path.string() + ": not enough memory to load the scene (17 MiB on disk)";
+    const rlim_t inUse = testing::addressSpaceInUse();
+    ASSERT_GT(inUse, 0u);
+    const testing::ChildExit child = testing::runInLimitedChild(RLIMIT_AS, inUse + (64u << 20), [&] {
+        try {
+            loadScene(path);
+        } catch (const SceneError& error) {
+            return std::string(error.what()) == expected ? 0 : 2;
+        }
+        return 1;
+    });
+    ASSERT_EQ(child.signal, 0) << "the loader aborted";
+    EXPECT_EQ(child.code, 0) << "1: it loaded, 2: another message, 3: no limit could be set";
+#endif
 }
 
 TEST(SceneLoader, MalformedJsonNamesLineAndColumn) {

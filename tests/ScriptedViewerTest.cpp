@@ -314,6 +314,19 @@ TEST_F(ScriptedViewer, CameraMovesThatWouldMakeTheCameraUnusableAreRefusedAtThei
     EXPECT_NE(result.output.find("script.txt:2: camera-pan: the camera would be unusable (eye is beyond 1e9 m"),
               std::string::npos)
         << result.output;
+}
+
+// Before: `screenshot-window` to a missing directory failed after the frame, in the window's
+// code, without the script's file and line (exit 1); `screenshot` always named them.
+TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {
+    fs::path directory = freshDirectory("screenshot_dir");
+    testing::CommandResult result = runViewer(directory, kCornell, "resolution-scale 0.25\nwait-spp 1\nscreenshot-window nodir/w.png\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:3: screenshot-window: nodir/w.png: directory nodir does not exist"),
+              std::string::npos) << result.output;
+    result = runViewer(directory, kCornell, "resolution-scale 0.25\nwait-spp 1\nscreenshot nodir/i.png\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:3: screenshot: nodir/i.png"), std::string::npos) << result.output;
     fs::remove_all(directory);
 }
 

@@ -1,6 +1,6 @@
-// libFuzzer target for loadEnvironmentMap: the Radiance header and resolution line, the walk over
-// run-length encoded and flat scanlines that guards stb_image, stb_image's decoder itself, and
-// the sampling distribution built from what it decodes.
+// libFuzzer target for loadEnvironmentMap: the Radiance header and resolution line, ptview's
+// decoder of run-length encoded and flat scanlines (which replaced stb_image's, see
+// EnvironmentMap.cpp), and the sampling distribution built from what it decodes.
 //
 // loadEnvironmentMap reads a file (there is no variant that takes bytes), so each input is
 // written to a private directory first.
