@@ -1,6 +1,7 @@
 #include "CommandLine.h"
 
 #include "ConvergeCommand.h"
+#include "EditDistance.h"
 
 #include <CLI/CLI.hpp>
 
@@ -106,22 +107,6 @@ void addProgramOptions(CLI::App& app, ProgramOptions& program) {
         ->default_str("auto");
 }
 
-
-// Edits (insertions, deletions, substitutions) that turn a into b.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
 
 // The subcommand a first argument is a typo of ("rendr": "render"), or nullptr. CLI11 takes a word
 // that names no subcommand for the viewer's scene path, so "ptview rendr SCENE" said only that

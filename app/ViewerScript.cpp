@@ -1,5 +1,6 @@
 #include "ViewerScript.h"
 
+#include "EditDistance.h"
 #include "InputFile.h"
 #include "Integrator.h"
 #include "MaterialSchema.h"
@@ -372,21 +373,6 @@ std::string usageText(const char* verb, const std::vector<ArgSpec>& args) {
 std::string argumentCountText(std::size_t n, const char* noun) {
     if (n == 0) return std::string("no ") + noun + "s";
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-}
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
 }
 
 // =====================================================================================

@@ -3,6 +3,7 @@
 // the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots.
 #include "ImageIO.h"
 #include "RunCommand.h"
+#include "ScriptStatus.h"
 #include "Scene.h"
 #include "TestFiles.h"
 
@@ -19,6 +20,8 @@ namespace ptview {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::field;
+using testing::statusLines;
 
 const std::string kXvfb = "xvfb-run -a -s '-screen 0 1600x1000x24' ";
 const std::string kCornell = PTVIEW_ASSETS_DIR "/scenes/cornell.json";
@@ -37,21 +40,6 @@ testing::CommandResult runViewer(const fs::path& directory, const std::string& s
     return testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb + PTVIEW_BINARY + " " +
                                testing::shellQuoted(scene) + " --script " + testing::shellQuoted(scriptPath.string()) +
                                " " + extraArguments);
-}
-
-// The `status` lines a script printed, in order.
-std::vector<std::string> statusLines(const std::string& output) {
-    std::vector<std::string> lines;
-    std::istringstream in(output);
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("status ", 0) == 0) lines.push_back(line);
-    return lines;
-}
-
-std::string field(const std::string& statusLine, const std::string& name) {
-    std::smatch match;
-    std::regex pattern(" " + name + "=(\"[^\"]*\"|\\S+)");
-    return std::regex_search(statusLine, match, pattern) ? match[1].str() : "<missing " + name + ">";
 }
 
 glm::dvec3 regionMean(const ImageRgbF& image, int x0, int x1, int y0, int y1) {

@@ -2,6 +2,7 @@
 // opens inside the screen, Tab keeps a converged image, the F1 help is readable, and a render
 // too large for the software rasterizer shows a preview within a few frames.
 #include "RunCommand.h"
+#include "ScriptStatus.h"
 
 #include <stb_image.h>
 
@@ -18,6 +19,8 @@ namespace ptview {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::field;
+using testing::statusLines;
 
 constexpr int kSidebarWidth = 380;
 
@@ -26,20 +29,6 @@ fs::path freshDirectory(const std::string& name) {
     fs::remove_all(directory);
     fs::create_directories(directory);
     return directory;
-}
-
-std::vector<std::string> statusLines(const std::string& output) {
-    std::vector<std::string> lines;
-    std::istringstream in(output);
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("status ", 0) == 0) lines.push_back(line);
-    return lines;
-}
-
-std::string field(const std::string& statusLine, const std::string& name) {
-    std::smatch match;
-    std::regex pattern(" " + name + "=(\"[^\"]*\"|\\S+)");
-    return std::regex_search(statusLine, match, pattern) ? match[1].str() : "<missing " + name + ">";
 }
 
 struct Png {
