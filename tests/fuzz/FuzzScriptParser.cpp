@@ -116,6 +116,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["divider"] = {number(0, 1)};
         t["frames"] = {integer(1)};
         t["wait-spp"] = {integer(1)};
+        t["wait-seconds"] = {number(0, 600)};
         t["screenshot"] = {path({".png", ".pfm"})};
         t["screenshot-window"] = {path({".png"})};
         t["save-screenshots"] = {};
@@ -240,6 +241,8 @@ void checkArgs(const ptview::ScriptCommand& command, const std::vector<Arg>& arg
 // What the viewer relies on once a script has loaded (ViewerScript.h, docs/viewer-script.md).
 void checkScript(const ptview::ViewerScript& script, std::string_view text) {
     require(script.path == kSourceName, "the script's path is its source name");
+    // A UTF-8 byte-order mark at the start is skipped, as editors write one (docs/viewer-script.md).
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     const std::vector<std::string_view> lines = commandParts(text);
     int previousLine = 0;
     for (const ptview::ScriptCommand& command : script.commands) {
