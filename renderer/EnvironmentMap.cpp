@@ -1,12 +1,14 @@
 #include "EnvironmentMap.h"
 
 #include "InputFile.h"
+#include "SceneRanges.h"
 
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -202,10 +204,14 @@ EnvironmentMap makeEnvironmentMap(int width, int height, std::vector<float> rgb,
     const std::size_t w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height);
     if (rgb.size() != w * h * 3) fail("expected " + std::to_string(w * h * 3) + " floats of radiance");
     for (std::size_t k = 0; k < rgb.size(); ++k) {
-        if (std::isfinite(rgb[k]) && rgb[k] >= 0.0f) continue;
+        // Bounded like every radiance of the scene format: times an environment intensity within
+        // its range (also at most kMaxSceneRadiance) the product stays finite in float.
+        if (rgb[k] >= 0.0f && rgb[k] <= kMaxSceneRadiance) continue; // false for NaN
         std::size_t texel = k / 3;
-        fail("texel (" + std::to_string(texel % w) + ", " + std::to_string(texel / w) + ") has radiance " +
-             std::to_string(rgb[k]) + " (expected a finite number >= 0)");
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", double(rgb[k]));
+        fail("texel (" + std::to_string(texel % w) + ", " + std::to_string(texel / w) + ") has radiance " + value +
+             " (expected a number in [0, 1e9])");
     }
 
     EnvironmentMap map;

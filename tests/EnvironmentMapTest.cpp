@@ -496,8 +496,10 @@ TEST_F(EnvironmentMapFiles, MapBeyondTheMemoryLeftNamesTheFileAndWhatDidNotFit) 
     EXPECT_EQ(claim.code, 0) << "1: it loaded, 2: another message (not enough memory: allocated first), 3: no limit";
 }
 
+// A texel above the scene format's radiance bound (1e9) times an intensity within its range
+// could overflow a float (a 1.7e38 RGBE texel is a valid file): refused like a NaN.
 TEST_F(EnvironmentMapFiles, RefusesTexelsThatAreNotFiniteAndNonNegative) {
-    for (float bad : {NAN, INFINITY, -1.0f}) {
+    for (float bad : {NAN, INFINITY, -1.0f, 2e9f, 1.7e38f}) {
         std::vector<float> rgb(4 * 2 * 3, 1.0f);
         rgb[3 * 5 + 1] = bad; // texel 5 = (1, 1)
         try {
