@@ -233,12 +233,12 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
             float areaWidth = std::max(1.0f, static_cast<float>(area.size.x) / framebufferScale_.x);
             model.compare.dividerFraction = std::clamp((static_cast<float>(cursor.x) - areaLeft) / areaWidth, 0.0f, 1.0f);
         } else if (delta != glm::dvec2(0.0) && (right || (left && shift))) {
-            camera = usableCamera(panCamera(camera, static_cast<float>(-delta.x) / imageHeight, static_cast<float>(delta.y) / imageHeight), camera);
+            camera = panCamera(camera, static_cast<float>(-delta.x) / imageHeight, static_cast<float>(delta.y) / imageHeight);
         } else if (delta != glm::dvec2(0.0) && left) {
-            camera = usableCamera(orbitCamera(camera, static_cast<float>(-delta.x) * kOrbitDegreesPerPixel,
-                                 static_cast<float>(delta.y) * kOrbitDegreesPerPixel), camera);
+            camera = orbitCamera(camera, static_cast<float>(-delta.x) * kOrbitDegreesPerPixel,
+                                 static_cast<float>(delta.y) * kOrbitDegreesPerPixel);
         }
-        if (scroll != 0.0) camera = usableCamera(zoomCamera(camera, zoomFactorForWheel(static_cast<float>(scroll))), camera);
+        if (scroll != 0.0) camera = zoomCamera(camera, zoomFactorForWheel(static_cast<float>(scroll)));
     }
     if (!io.WantCaptureKeyboard) {
         glm::vec3 move(0.0f);
@@ -249,10 +249,11 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
         if (move != glm::vec3(0.0f)) {
             // A slow frame must not fling the camera: cap the step at a tenth of a second.
             float step = flyDistance(camera, static_cast<float>(std::min(seconds, 0.1))) * (shift ? kFastFlyFactor : 1.0f);
-            camera = usableCamera(flyCamera(camera, move, step), camera);
+            camera = flyCamera(camera, move, step);
         }
     }
     const CameraDesc& before = model.scene.camera;
+    camera = usableCamera(camera, before); // a move past the scene's bounds stops at the edge
     if (camera.eye != before.eye || camera.target != before.target) {
         model.scene.camera = camera;
         model.pendingChanges |= ViewerModel::kCameraChanged;
