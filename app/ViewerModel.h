@@ -3,9 +3,10 @@
 // setting. The panels, the mouse and keyboard and `--script` commands edit this model;
 // ViewerSession pushes the changes to the renderer. Nothing here knows about ImGui or OpenGL.
 
+#include "Backend.h"
 #include "EnvironmentMap.h"
 #include "Image.h"
-#include "PathTracer.h"
+#include "RenderSettings.h"
 #include "Scene.h"
 #include "ToneMapper.h"
 

@@ -6,17 +6,11 @@
 #include "GlObjects.h"
 #include "GlProgram.h"
 #include "Image.h"
+#include "PixelStatistics.h"
 
 #include <glm/glm.hpp>
 
 namespace ptview {
-
-// Per-pixel mean and the variance of that mean, estimated from the samples themselves.
-struct PixelStatistics {
-    ImageRgbF mean;
-    ImageRgbF varianceOfMean;
-    int sampleCount = 0;
-};
 
 class Accumulator {
 public:

@@ -11,8 +11,7 @@
 #include "GpuEnvironmentMap.h"
 #include "GpuScene.h"
 #include "Image.h"
-#include "Integrator.h"
-#include "SamplerMode.h"
+#include "RenderSettings.h"
 #include "Scene.h"
 #include "ShaderFeatures.h"
 #include "ToneMapper.h"
@@ -24,30 +23,6 @@
 #include <vector>
 
 namespace ptview {
-
-struct RenderSettings {
-    int maxDepth = 8;       // bounces; 0 shows only what the camera sees directly
-    std::uint32_t seed = 0; // decorrelates independent renders of the same scene
-    SamplerMode sampler = SamplerMode::Random;
-    // The samples per pixel the render is heading for: grid and stratified lay out patterns of
-    // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
-    std::uint32_t sampleBudget = 1024;
-    // The best result is the default (the viewer, `ptview render`, bench); naive is for teaching.
-    Integrator integrator = Integrator::Full;
-    DebugView debugView = DebugView::Radiance;
-
-    bool operator==(const RenderSettings& other) const {
-        return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
-               sampleBudget == other.sampleBudget && debugView == other.debugView;
-    }
-    bool operator!=(const RenderSettings& other) const { return !(*this == other); }
-};
-
-// A rectangle of framebuffer pixels, origin at the lower left as OpenGL counts.
-struct PixelRect {
-    glm::ivec2 origin{0, 0};
-    glm::ivec2 size{0, 0};
-};
 
 struct PathTracerOptions {
     bool allFeatures = false; // the uber-shader: every material model, the map and mesh code

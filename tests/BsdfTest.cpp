@@ -573,7 +573,7 @@ TEST_P(BsdfLobe, SamplesAgreeWithEvaluation) {
     EXPECT_GT(checked, 1000);
     EXPECT_EQ(failedBadly, 0) << "samples with pdf 0 but a nonzero weight";
     EXPECT_EQ(bad, 0);
-    if (ggx) EXPECT_LT(worstReference, 1e-4) << "bsdfPdf of the metal strays from its double-precision value";
+    if (ggx) { EXPECT_LT(worstReference, 1e-4) << "bsdfPdf of the metal strays from its double-precision value"; }
 }
 
 INSTANTIATE_TEST_SUITE_P(SampledModels, BsdfLobe, ::testing::ValuesIn(lobeCases()),
@@ -723,11 +723,13 @@ TEST_P(BsdfFurnace, AlbedoIsAtMostOne) {
         EXPECT_LE(albedo.mean, 1.0 + 3.0 * albedo.standardError + 1e-5)
             << "energy gain at cos(theta_o) = " << cosThetaO << ": albedo " << albedo.mean << " +- "
             << albedo.standardError;
-        if (isLossless(material, cosThetaO))
+        if (isLossless(material, cosThetaO)) {
             EXPECT_NEAR(albedo.mean, 1.0, 0.01) << "lossless model at cos(theta_o) = " << cosThetaO;
-        if (hasNonDeltaPart)
+        }
+        if (hasNonDeltaPart) {
             EXPECT_NEAR(nonDelta.mean, quadrature, 4.0 * nonDelta.standardError + 2e-3)
                 << "Monte Carlo and quadrature disagree at cos(theta_o) = " << cosThetaO;
+        }
     }
 }
 

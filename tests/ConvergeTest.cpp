@@ -83,8 +83,8 @@ TEST(Converge, UnbiasedErrorFallsAsOneOverSppAndBiasIsReported) {
     std::string summary = testing::readFileBytes(out / "summary.md");
     std::istringstream lines(summary);
     for (std::string line; std::getline(lines, line);) {
-        if (line.rfind("| full/random/1 |", 0) == 0) EXPECT_NE(line.find("**biased**"), std::string::npos) << line;
-        if (line.rfind("| full/random/4 |", 0) == 0) EXPECT_EQ(line.find("biased"), std::string::npos) << line;
+        if (line.rfind("| full/random/1 |", 0) == 0) { EXPECT_NE(line.find("**biased**"), std::string::npos) << line; }
+        if (line.rfind("| full/random/4 |", 0) == 0) { EXPECT_EQ(line.find("biased"), std::string::npos) << line; }
     }
     EXPECT_NE(summary.find("seed"), std::string::npos) << "the summary says how the reference was made";
     EXPECT_TRUE(fs::exists(out / "reference.pfm"));

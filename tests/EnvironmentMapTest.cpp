@@ -98,12 +98,6 @@ EnvironmentMap syntheticMap(int width, int height, std::uint32_t seed) {
     return makeEnvironmentMap(width, height, std::move(rgb), "synthetic");
 }
 
-EnvironmentMap constantMap(int width, int height, glm::vec3 radiance) {
-    std::vector<float> rgb;
-    for (int t = 0; t < width * height; ++t) rgb.insert(rgb.end(), {radiance.r, radiance.g, radiance.b});
-    return makeEnvironmentMap(width, height, std::move(rgb), "constant");
-}
-
 const EnvironmentMap& rooitou() {
     static const EnvironmentMap map = loadEnvironmentMap(kRooitou);
     return map;

@@ -257,7 +257,7 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
                 << relativeError(b.estimate.relativeMse) << ")";
         }
     std::printf("%s: %d clearly different pairs ordered\n", scene, pairs);
-    if (GetParam().minShownShare > 0.0) EXPECT_GT(pairs, 0);
+    if (GetParam().minShownShare > 0.0) { EXPECT_GT(pairs, 0); }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ErrorEstimateOnScene,

@@ -124,7 +124,7 @@ TEST_P(Furnace, NoEnergyGainAndNoNaNFromHeadOnToGrazing) {
         EXPECT_EQ(r.nonFinite, 0);
         for (int ch = 0; ch < 3; ++ch) {
             EXPECT_LE(r.mean[ch], 1.0 + 5.0 * r.meanSigma[ch] + 1e-4) << "energy gain, channel " << ch;
-            if (c.lossless) EXPECT_NEAR(r.mean[ch], 1.0, 5.0 * r.meanSigma[ch] + 2e-3) << "channel " << ch;
+            if (c.lossless) { EXPECT_NEAR(r.mean[ch], 1.0, 5.0 * r.meanSigma[ch] + 2e-3) << "channel " << ch; }
         }
     }
 }

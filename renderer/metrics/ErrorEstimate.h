@@ -26,7 +26,7 @@
 // three of them stay well inside a factor of 2 in relative error); before that, and for the grid
 // sampler (the same deterministic pattern in every pixel: its changes are not noise), it is not.
 
-#include "Accumulator.h"
+#include "PixelStatistics.h"
 #include "ErrorMetrics.h"
 #include "SamplerMode.h"
 

@@ -1,0 +1,40 @@
+#pragma once
+// What a render is asked for, in plain values: the settings a path tracer runs with and the
+// rectangle of pixels a pass covers. No OpenGL here, so the viewer model, the scripts and the
+// metrics can hold them.
+
+#include "DebugView.h"
+#include "Integrator.h"
+#include "SamplerMode.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace ptview {
+
+struct RenderSettings {
+    int maxDepth = 8;       // bounces; 0 shows only what the camera sees directly
+    std::uint32_t seed = 0; // decorrelates independent renders of the same scene
+    SamplerMode sampler = SamplerMode::Random;
+    // The samples per pixel the render is heading for: grid and stratified lay out patterns of
+    // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
+    std::uint32_t sampleBudget = 1024;
+    // The best result is the default (the viewer, `ptview render`, bench); naive is for teaching.
+    Integrator integrator = Integrator::Full;
+    DebugView debugView = DebugView::Radiance;
+
+    bool operator==(const RenderSettings& other) const {
+        return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
+               sampleBudget == other.sampleBudget && debugView == other.debugView;
+    }
+    bool operator!=(const RenderSettings& other) const { return !(*this == other); }
+};
+
+// A rectangle of framebuffer pixels, origin at the lower left as OpenGL counts.
+struct PixelRect {
+    glm::ivec2 origin{0, 0};
+    glm::ivec2 size{0, 0};
+};
+
+} // namespace ptview
