@@ -56,7 +56,7 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     if (stats.error.reliable)
         itemTooltip("estimated from the render itself: sqrt of the relative MSE against the image it converges to,\n"
                     "mean of (x - converged)^2 / (converged^2 + 0.01); each pixel's change since an earlier read-back,\n"
-                    "over its neighbourhood's brightness (docs/viewer.md). Measures noise, not bias");
+                    "over the brightness of the smallest neighbourhood that knows it (docs/viewer.md). Measures noise, not bias");
     else
         itemTooltip((std::string("no estimate yet: ") + stats.error.unreliableReason).c_str());
     if (stats.trueError) {

@@ -38,12 +38,14 @@ PixelStatistics uniformStatistics(int width, int height, int samples, float mean
 TEST(ErrorEstimate, IsTheChangeSinceAnEarlierMeanOverTheConvergedBrightness) {
     // 16x16 pixels of mean 1 at 64 samples; at 16 samples every pixel read 1.1 (change 0.1). With
     // independent samples E[(x_64 - x_16)^2] = Var[x_64] * (64/16 - 1), so the estimate is
-    // 0.01 / 3 / (max(1 - Var, 1) + 0.01): the neighbourhood's mean^2 is the larger.
+    // 0.01 / 3 / (1 - Var + 0.01): each pixel's own mean is known well enough (its mean^2 to 2%),
+    // and its unbiased mean^2 is 1 - Var; the neighbourhoods, uniform, say no more.
     PixelStatistics stats = uniformStatistics(16, 16, 64, 1.0f, 1e-4f);
     ImageRgbF earlier = uniformStatistics(16, 16, 16, 1.1f, 0.0f).mean;
     ErrorEstimate estimate = estimateError(stats, earlier, 16, SamplerMode::Random);
     double change = double(1.1f) - 1.0;
-    EXPECT_NEAR(estimate.relativeMse, change * change / 3.0 / (1.0 + kRelativeMseEpsilon), 1e-9);
+    double brightness = 1.0 - double(1e-4f) + kRelativeMseEpsilon;
+    EXPECT_NEAR(estimate.relativeMse, change * change / 3.0 / brightness, 1e-9);
     EXPECT_NEAR(estimate.effectivePixels, 16 * 16 * 3, 1e-6) << "all terms equal";
     EXPECT_TRUE(estimate.reliable);
     EXPECT_EQ(estimate.nonFinitePixels, 0);
@@ -51,22 +53,26 @@ TEST(ErrorEstimate, IsTheChangeSinceAnEarlierMeanOverTheConvergedBrightness) {
     stats.mean.set(3, 4, glm::vec3(NAN, 1.0f, 1.0f));
     estimate = estimateError(stats, earlier, 16, SamplerMode::Random);
     EXPECT_EQ(estimate.nonFinitePixels, 1);
-    EXPECT_NEAR(estimate.relativeMse, change * change / 3.0 / (1.0 + kRelativeMseEpsilon), 1e-9)
+    EXPECT_NEAR(estimate.relativeMse, change * change / 3.0 / brightness, 1e-9)
         << "the NaN pixel is left out, its neighbours' brightness comes from the finite ones";
 }
 
 TEST(ErrorEstimate, JudgesALoneBrightSampleAgainstTheNeighbourhood) {
     // A dark image (mean 0.001) where one pixel got one bright sample (16 of 16 samples: its mean
     // 1, its variance of the mean ~1). Its own mean would make its relative error about 1; against
-    // its neighbours' brightness it is what the true error would say, far above 1.
+    // its neighbours' brightness it is what the true error would say, far above 1. Its own mean^2
+    // (1 - Var = 0) is unknown, and so are those of its 3x3 and 5x5 neighbourhoods (their standard
+    // errors exceed a quarter of mean^2 + 0.01); the 9x9 one's is known: (1 + 80 * 0.001) / 81,
+    // less its variance 1 / 81^2.
     PixelStatistics stats = uniformStatistics(16, 16, 16, 0.001f, 0.0f);
     ImageRgbF earlier = uniformStatistics(16, 16, 8, 0.001f, 0.0f).mean;
     stats.mean.set(8, 8, glm::vec3(1.0f));
     stats.varianceOfMean.set(8, 8, glm::vec3(1.0f));
     ErrorEstimate estimate = estimateError(stats, earlier, 8, SamplerMode::Random);
-    double around = (8 * 0.001 + 1.0) / 9.0;
+    double around = (80 * double(0.001f) + 1.0) / 81.0;
+    double brightness = around * around - 1.0 / (81.0 * 81.0) + kRelativeMseEpsilon;
     double change = 1.0 - double(0.001f);
-    EXPECT_NEAR(estimate.relativeMse, change * change / (around * around + kRelativeMseEpsilon) / (16.0 * 16.0), 1e-6);
+    EXPECT_NEAR(estimate.relativeMse, change * change / brightness / (16.0 * 16.0), 1e-6);
     EXPECT_GT(estimate.relativeMse * 16 * 16, 10.0) << "the pixel's own term is large, as its true error is";
     EXPECT_FALSE(estimate.reliable) << "one pixel carries it: effective pixels " << estimate.effectivePixels;
 }
@@ -112,17 +118,22 @@ TEST(ErrorEstimate, TheViewerShowsANumberOnceItKeptAMeanAtHalfTheSamples) {
 
 // ---- Against the true error on real renders ---------------------------------------------------
 //
-// 32x32 renders of each scene with all four integrators and the random and Sobol' samplers, with
-// checkpoints at 8, 16, ..., 1024 spp; the estimate at n uses the mean at n/2. The true error is
+// Renders of each scene (32x32; mis 64x64, see SceneCase) with all four integrators and the random
+// and Sobol' samplers, with checkpoints at 8, 16, ..., 1024 spp (mis: 512); the estimate at n uses
+// the mean at n/2. The true error is
 // the relative MSE against a reference of another seed, random sampler, 2048 spp, minus the
 // reference's own relative variance (its mean of Var[ref] / (ref^2 + eps), which the random
 // sampler's per-pixel variance estimates without bias): E[(x - ref)^2] = E[(x - mu)^2] + Var[ref].
-// A checkpoint whose true error is below that noise floor cannot be judged and is skipped.
+// A checkpoint whose true error is below that noise floor cannot be judged and is skipped. Nor can
+// one whose true error is itself carried by fewer than kMinEffectivePixels pixel channels (the
+// same count the estimate needs before it shows a number): there the true error is a random
+// number of a few pixels (a standard error over 18% of itself), no yardstick for a factor of 2.
+// Over all checkpoints above the noise floor, shown or not, the estimate must also have no
+// systematic bias: the geometric mean of estimate / true per integrator and sampler stays within
+// the same factor of 2 (the former 3x3-box estimate read 0.26 of the true error for naive on mis).
 // naive and full converge to global illumination (reference: full); direct and mis each to their
 // own direct-lighting image (they differ behind mirrors and glass), so each has its own reference.
 
-constexpr int kImageSize = 32;
-constexpr int kLargestSpp = 1024;
 constexpr int kFirstCheckedSpp = 16;
 constexpr int kReferenceSpp = 2048;
 constexpr std::uint32_t kRunSeed = 1;
@@ -141,8 +152,23 @@ struct Checkpoint {
     int spp;
     ErrorEstimate estimate;
     double trueRelativeMse;
-    bool judged; // true error above the reference's noise floor
+    bool aboveNoise; // true error above the reference's noise floor
+    bool judged;     // and carried by kMinEffectivePixels pixel channels or more
 };
+
+// The true error's terms (x - ref)^2 / (ref^2 + eps): how many pixel channels effectively carry
+// it, (sum t)^2 / sum t^2, as ErrorEstimate counts its own.
+double trueEffectivePixels(const ImageRgbF& image, const ImageRgbF& reference) {
+    double sum = 0.0, sumSquares = 0.0;
+    for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+        double difference = double(image.rgb[i]) - reference.rgb[i];
+        double term = difference * difference / (double(reference.rgb[i]) * reference.rgb[i] + kRelativeMseEpsilon);
+        if (!std::isfinite(term)) continue;
+        sum += term;
+        sumSquares += term * term;
+    }
+    return sumSquares > 0.0 ? sum * sum / sumSquares : 0.0;
+}
 
 Reference renderReference(PathTracer& tracer, Integrator integrator) {
     RenderSettings settings;
@@ -173,11 +199,14 @@ std::string caseName(Integrator integrator, SamplerMode sampler) {
 
 struct SceneCase {
     const char* name;
+    int imageSize;
+    int largestSpp;
     // Of the judged checkpoints, the share that must get a number ("-" everywhere would pass the
-    // bound trivially). The mis scene's error at 32x32 lives in a handful of pixels (the plates'
-    // reflections of its small lights, found by rare samples: the true error's own effective pixel
-    // count is 4 to 25 there), so the estimate rightly declines nearly everywhere; it is checked
-    // for the numbers it does give.
+    // bound trivially). The mis scene's error lives in a handful of pixels (the spheres'
+    // reflections of its small lights and the lights themselves, found by rare samples): at 64x64
+    // its true error is carried by fewer than 64 effective pixel channels at every checkpoint, so
+    // none is judged and the estimate rightly declines nearly everywhere; there the geometric-mean
+    // bound is what holds it. (64x64 and up to 512 spp: what the test's time allows.)
     double minShownShare;
 };
 
@@ -188,7 +217,7 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
     PathTracer tracer;
     const char* scene = GetParam().name;
     tracer.setScene(loadScene(std::string(PTVIEW_ASSETS_DIR "/scenes/") + scene + ".json"));
-    tracer.setImageSize({kImageSize, kImageSize});
+    tracer.setImageSize({GetParam().imageSize, GetParam().imageSize});
     std::map<Integrator, Reference> references;
     for (Integrator integrator : {Integrator::Full, Integrator::Direct, Integrator::Mis})
         references[integrator] = renderReference(tracer, integrator);
@@ -205,14 +234,16 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
             const Reference& reference = references.at(referenceIntegrator(integrator));
             ImageRgbF earlier;
             int earlierSpp = 0;
-            for (int spp = kFirstCheckedSpp / 2; spp <= kLargestSpp; spp *= 2) {
+            for (int spp = kFirstCheckedSpp / 2; spp <= GetParam().largestSpp; spp *= 2) {
                 while (tracer.sampleCount() < spp) tracer.renderSample();
                 PixelStatistics statistics = tracer.readStatistics();
                 if (earlierSpp > 0) {
                     double measured = compareToReference(statistics.mean, reference.mean).relativeMse;
                     double trueRelativeMse = measured - reference.noise;
+                    bool aboveNoise = trueRelativeMse > reference.noise;
+                    bool judged = aboveNoise && trueEffectivePixels(statistics.mean, reference.mean) >= kMinEffectivePixels;
                     checkpoints.push_back({integrator, sampler, spp, estimateError(statistics, earlier, earlierSpp, sampler),
-                                           trueRelativeMse, trueRelativeMse > reference.noise});
+                                           trueRelativeMse, aboveNoise, judged});
                 }
                 earlier = statistics.mean;
                 earlierSpp = spp;
@@ -239,8 +270,33 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
     for (const auto& [name, range] : worst)
         std::printf("%s %-14s estimate / true relative error: %.2f .. %.2f\n", scene, name.c_str(), range.first,
                     range.second);
-    std::printf("%s: a number at %d of %d judged checkpoints (%zu in all)\n", scene, shown, judged, checkpoints.size());
+    long shownAnywhere = std::count_if(checkpoints.begin(), checkpoints.end(), [](const Checkpoint& c) { return c.estimate.reliable; });
+    std::printf("%s: a number at %d of %d judged checkpoints (at %ld of all %zu)\n", scene, shown, judged, shownAnywhere,
+                checkpoints.size());
     EXPECT_GE(shown, GetParam().minShownShare * judged) << "the estimate declines too often";
+
+    // No systematic bias: per case, the geometric mean of estimate / true over every checkpoint
+    // above the noise floor, whether it shows a number or "-".
+    struct LogRatios {
+        double sum = 0.0, lowest = INFINITY, highest = -INFINITY;
+        int count = 0;
+    };
+    std::map<std::string, LogRatios> logRatios; // of log(estimate / true)
+    for (const Checkpoint& c : checkpoints) {
+        if (!c.aboveNoise) continue;
+        LogRatios& logs = logRatios[caseName(c.integrator, c.sampler)];
+        double logRatio = std::log(relativeError(c.estimate.relativeMse) / relativeError(c.trueRelativeMse));
+        logs.sum += logRatio;
+        logs.lowest = std::min(logs.lowest, logRatio);
+        logs.highest = std::max(logs.highest, logRatio);
+        ++logs.count;
+    }
+    for (const auto& [name, logs] : logRatios) {
+        double geometricMean = std::exp(logs.sum / logs.count);
+        std::printf("%s %-14s over all %d checkpoints above the noise, shown or not: %.2f .. %.2f, geometric mean %.2f\n",
+                    scene, name.c_str(), logs.count, std::exp(logs.lowest), std::exp(logs.highest), geometricMean);
+        EXPECT_TRUE(geometricMean >= 1.0 / kFactor && geometricMean <= kFactor) << scene << " " << name << ": " << geometricMean;
+    }
 
     // The split view: two renders whose true errors differ clearly (by 1.5x in relative error)
     // are ordered the same way by their estimates, at equal spp as in an equal-samples comparison.
@@ -261,8 +317,10 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ErrorEstimateOnScene,
-                         ::testing::Values(SceneCase{"cornell", 0.5}, SceneCase{"cornell_spheres", 0.5}, SceneCase{"mis", 0.0}),
+                         ::testing::Values(SceneCase{"cornell", 32, 1024, 0.5}, SceneCase{"cornell_spheres", 32, 1024, 0.5},
+                                           SceneCase{"mis", 64, 512, 0.0}),
                          [](const ::testing::TestParamInfo<SceneCase>& info) { return std::string(info.param.name); });
 
 } // namespace
 } // namespace ptview
+

@@ -1,5 +1,6 @@
 #include "ErrorEstimate.h"
 
+#include <iterator>
 #include <vector>
 
 namespace ptview {
@@ -10,36 +11,80 @@ bool finitePixel(const ImageRgbF& image, int x, int y) {
     return std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b);
 }
 
-// Mean of the finite pixels in each pixel's 3x3 neighbourhood (clipped at the border), per
-// channel: separable running sums, so a full-window image costs a few milliseconds once a second.
-ImageRgbF neighbourhoodMeans(const ImageRgbF& image) {
-    const int w = image.width, h = image.height;
-    // Four doubles per pixel: the finite pixels' r, g, b sums and their count.
-    std::vector<double> values(size_t(w) * h * 4, 0.0), rows(values.size(), 0.0);
-    for (size_t i = 0; i < size_t(w) * h; ++i) {
-        const float* rgb = &image.rgb[3 * i];
-        if (!std::isfinite(rgb[0]) || !std::isfinite(rgb[1]) || !std::isfinite(rgb[2])) continue;
-        for (int c = 0; c < 3; ++c) values[4 * i + c] = rgb[c];
-        values[4 * i + 3] = 1.0;
+// Sums of the finite pixels' means, variances of the mean and count over any rectangle, from
+// summed-area tables: each pixel's neighbourhoods of several sizes cost a few lookups, so a
+// full-window image costs a few milliseconds once a second.
+class NeighbourhoodSums {
+public:
+    NeighbourhoodSums(const ImageRgbF& mean, const ImageRgbF& varianceOfMean)
+        : width_(mean.width), height_(mean.height), table_(size_t(width_ + 1) * (height_ + 1) * kValues, 0.0) {
+        for (int y = 0; y < height_; ++y)
+            for (int x = 0; x < width_; ++x) {
+                double values[kValues] = {};
+                if (finitePixel(mean, x, y) && finitePixel(varianceOfMean, x, y)) {
+                    glm::vec3 m = mean.at(x, y), v = varianceOfMean.at(x, y);
+                    for (int c = 0; c < 3; ++c) {
+                        values[c] = m[c];
+                        values[3 + c] = v[c];
+                    }
+                    values[6] = 1.0;
+                }
+                for (int k = 0; k < kValues; ++k)
+                    at(x + 1, y + 1)[k] = values[k] + at(x, y + 1)[k] + at(x + 1, y)[k] - at(x, y)[k];
+            }
     }
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            size_t i = size_t(y) * w + x;
-            for (int k = 0; k < 4; ++k)
-                rows[4 * i + k] = values[4 * i + k] + (x > 0 ? values[4 * (i - 1) + k] : 0.0) +
-                                  (x + 1 < w ? values[4 * (i + 1) + k] : 0.0);
+
+    // The mean of the finite pixels' means within `radius` of (x, y) (clipped at the border), and
+    // the variance of that mean (pixels are independent): sum Var / count^2.
+    void around(int x, int y, int radius, glm::dvec3& mean, glm::dvec3& varianceOfMean) const {
+        int x0 = std::max(x - radius, 0), x1 = std::min(x + radius + 1, width_);
+        int y0 = std::max(y - radius, 0), y1 = std::min(y + radius + 1, height_);
+        double sum[kValues];
+        for (int k = 0; k < kValues; ++k) sum[k] = at(x1, y1)[k] - at(x0, y1)[k] - at(x1, y0)[k] + at(x0, y0)[k];
+        double count = std::max(sum[6], 1.0);
+        mean = glm::dvec3(sum[0], sum[1], sum[2]) / count;
+        varianceOfMean = glm::dvec3(sum[3], sum[4], sum[5]) / (count * count);
+    }
+
+private:
+    static constexpr int kValues = 7; // r, g, b means; r, g, b variances of the mean; finite count
+    double* at(int x, int y) { return &table_[(size_t(y) * (width_ + 1) + x) * kValues]; }
+    const double* at(int x, int y) const { return &table_[(size_t(y) * (width_ + 1) + x) * kValues]; }
+    int width_, height_;
+    std::vector<double> table_;
+};
+
+// The neighbourhood half-widths tried, smallest first: the pixel alone, 3x3, 5x5, 9x9, 17x17.
+constexpr int kNeighbourhoodRadii[] = {0, 1, 2, 4, 8};
+// A neighbourhood's squared mean is used once its standard error is at most this share of
+// mean^2 + epsilon (the relative error it adds to the estimate is about half that).
+constexpr double kConvergedBrightnessRelativeError = 0.25;
+
+// mean^2 + epsilon of the image the pixel converges to, estimated: see the header.
+glm::dvec3 convergedBrightness(const NeighbourhoodSums& sums, int x, int y, glm::vec3 ownMean, glm::vec3 ownVariance) {
+    glm::dvec3 brightness(0.0);
+    for (int c = 0; c < 3; ++c) {
+        double own = double(ownMean[c]) * ownMean[c] - double(ownVariance[c]);
+        brightness[c] = std::max(own, 0.0) + kRelativeMseEpsilon;
+    }
+    bool settled[3] = {false, false, false};
+    for (int radius : kNeighbourhoodRadii) {
+        glm::dvec3 mean, variance;
+        sums.around(x, y, radius, mean, variance);
+        bool widest = radius == kNeighbourhoodRadii[std::size(kNeighbourhoodRadii) - 1];
+        for (int c = 0; c < 3; ++c) {
+            if (settled[c]) continue;
+            double squared = mean[c] * mean[c];
+            // Var[X^2] ~ 4 X^2 Var[X]: the standard error of the squared mean.
+            bool known = 2.0 * std::abs(mean[c]) * std::sqrt(variance[c]) <=
+                         kConvergedBrightnessRelativeError * (squared + kRelativeMseEpsilon);
+            if (!known && !widest) continue;
+            brightness[c] = std::max(brightness[c], std::max(squared - variance[c], 0.0) + kRelativeMseEpsilon);
+            settled[c] = true;
         }
-    ImageRgbF means(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            size_t i = size_t(y) * w + x;
-            double sum[4];
-            for (int k = 0; k < 4; ++k)
-                sum[k] = rows[4 * i + k] + (y > 0 ? rows[4 * (i - w) + k] : 0.0) + (y + 1 < h ? rows[4 * (i + w) + k] : 0.0);
-            if (sum[3] > 0.0)
-                for (int c = 0; c < 3; ++c) means.rgb[3 * i + c] = float(sum[c] / sum[3]);
-        }
-    return means;
+        if (settled[0] && settled[1] && settled[2]) break;
+    }
+    return brightness;
 }
 
 } // namespace
@@ -62,7 +107,7 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
         return estimate;
     // E[(x_n - x_m)^2] = Var[x_m] - Var[x_n] = Var[x_n] (n/m - 1) for independent samples.
     const double varianceScale = 1.0 / (double(n) / double(earlierSamples) - 1.0);
-    const ImageRgbF around = neighbourhoodMeans(mean);
+    const NeighbourhoodSums sums(mean, statistics.varianceOfMean);
     double sum = 0.0, sumSquares = 0.0;
     long long terms = 0;
     for (int y = 0; y < mean.height; ++y) {
@@ -71,11 +116,10 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
                 !finitePixel(earlierMean, x, y))
                 continue;
             glm::vec3 now = mean.at(x, y), before = earlierMean.at(x, y), variance = statistics.varianceOfMean.at(x, y);
-            glm::vec3 aroundHere = around.at(x, y);
+            glm::dvec3 brightness = convergedBrightness(sums, x, y, now, variance);
             for (int c = 0; c < 3; ++c) {
                 double change = double(now[c]) - double(before[c]);
-                double meanSquared = std::max(double(now[c]) * now[c] - double(variance[c]), double(aroundHere[c]) * aroundHere[c]);
-                double term = change * change * varianceScale / (meanSquared + kRelativeMseEpsilon);
+                double term = change * change * varianceScale / brightness[c];
                 sum += term;
                 sumSquares += term * term;
                 ++terms;
