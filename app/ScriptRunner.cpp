@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <utility>
 
 namespace ptview {
 namespace {
@@ -16,6 +17,7 @@ namespace {
 // Long enough for a slow software rasterizer to reach a few hundred samples of a small image.
 constexpr std::chrono::seconds kWaitTimeout{120};
 constexpr std::chrono::seconds kReloadTimeout{10};
+using Clock = std::chrono::steady_clock;
 
 Integrator integratorNamed(const std::string& name) {
     for (const IntegratorName& entry : integratorNames())
@@ -128,199 +130,282 @@ void ScriptRunner::step(ViewerSession& session, PanelState& panels) {
     }
 }
 
-bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, PanelState& panels) {
-    ViewerModel& model = session.model();
-    Scene& scene = model.scene;
-    const std::string& verb = command.verb;
-    const std::string& word = command.words.empty() ? std::string() : command.words[0];
-    try {
-        // ---- render settings
-        if (verb == "integrator") {
-            model.settings.integrator = integratorNamed(word);
-        } else if (verb == "sampler") {
-            model.settings.sampler = *parseSamplerMode(word);
-        } else if (verb == "depth") {
-            model.settings.maxDepth = command.integer(0);
-        } else if (verb == "seed") {
-            model.settings.seed = command.unsignedInteger(0);
-        } else if (verb == "exposure") {
-            model.display.exposureStops = command.number(0);
-        } else if (verb == "tone-mapper") {
-            model.display.toneMapper = toneMapperNamed(word);
-        } else if (verb == "resolution-scale") {
-            model.resolutionScale = command.number(0);
-        } else if (verb == "samples-per-frame") {
-            model.maxSamplesPerFrame = command.isWord(0, "auto") ? 0 : command.integer(0);
-        } else if (verb == "pause" || verb == "resume") {
-            model.paused = verb == "pause";
-        } else if (verb == "target-spp") {
-            model.targetSamples = command.integer(0);
-        // ---- scene edits
-        } else if (verb == "set-material") {
-            auto found = std::find_if(scene.materials.begin(), scene.materials.end(),
-                                      [&](const Material& m) { return m.name == command.target; });
-            if (found == scene.materials.end()) {
-                fail(command, "the scene has no material \"" + command.target + "\"");
-                return true;
-            }
-            Material& material = *found;
-            if (command.field == "type")
-                material = retypedMaterial(material, findMaterialSchema(word)->type);
-            else if (command.field == "color")
-                material.color = command.vec3(0);
-            else if (command.field == "emission")
-                material.radiance = command.vec3(0);
-            else if (command.field == "ior")
-                material.ior = command.number(0);
-            else if (command.field == "roughness")
-                material.roughness = command.number(0);
-            model.pendingChanges |= ViewerModel::kMaterialsChanged;
-        } else if (verb == "set-light") {
-            auto found = std::find_if(scene.lights.begin(), scene.lights.end(),
-                                      [&](const Light& l) { return l.name == command.target; });
-            if (found == scene.lights.end()) {
-                fail(command, "the scene has no light \"" + command.target + "\"");
-                return true;
-            }
-            Light& light = *found;
-            if (command.field == "intensity")
-                light.intensity = command.vec3(0);
-            else if (command.field == "position")
-                light.position = command.vec3(0);
-            else if (command.field == "direction")
-                light.direction = unitDirection(command.vec3(0));
-            else if (command.field == "inner-angle" || command.field == "outer-angle") {
-                // The file format's rule between the two (SceneRanges.h), refused here rather than at Save.
-                bool inner = command.field == "inner-angle";
-                float innerDeg = inner ? command.number(0) : light.innerAngleDeg;
-                float outerDeg = inner ? light.outerAngleDeg : command.number(0);
-                if (!ranges::coneAnglesOrdered(innerDeg, outerDeg)) {
-                    auto text = [](float degrees) {
-                        char buffer[32];
-                        std::snprintf(buffer, sizeof buffer, "%g", double(degrees));
-                        return std::string(buffer);
-                    };
-                    fail(command, command.target + (inner ? ".inner-angle " + text(innerDeg) +
-                                                                " must not exceed the outer angle (" + text(outerDeg) + ")"
-                                                          : ".outer-angle " + text(outerDeg) +
-                                                                " must not be less than the inner angle (" + text(innerDeg) + ")"));
-                    return true;
-                }
-                light.innerAngleDeg = innerDeg;
-                light.outerAngleDeg = outerDeg;
-            }
-            model.pendingChanges |= ViewerModel::kSceneChanged;
-        } else if (verb == "environment") {
-            session.setEnvironmentMap(command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(word));
-        } else if (verb == "environment-intensity") {
-            scene.environmentIntensity = command.number(0);
-            model.pendingChanges |= ViewerModel::kSceneChanged;
-        } else if (verb == "environment-rotation") {
-            scene.environmentRotationDeg = command.number(0);
-            model.pendingChanges |= ViewerModel::kSceneChanged;
-        } else if (verb == "environment-color") {
-            scene.environment = command.vec3(0);
-            model.pendingChanges |= ViewerModel::kSceneChanged;
-        // ---- camera
-        } else if (verb.rfind("camera-", 0) == 0) {
-            CameraDesc camera = scene.camera;
-            if (verb == "camera-orbit") camera = orbitCamera(camera, command.number(0), command.number(1));
-            if (verb == "camera-pan") camera = panCamera(camera, command.number(0), command.number(1));
-            if (verb == "camera-zoom") camera = zoomCamera(camera, command.number(0));
-            if (verb == "camera-fov") camera.vfovDeg = command.number(0);
-            // A move that leaves the camera unusable is refused here, at its line: "camera-zoom 1e38"
-            // made a NaN camera and the next wait-spp timed out after 120 s.
-            if (const std::string problem = cameraProblem(camera); !problem.empty()) {
-                fail(command, "the camera would be unusable (" + problem + "); it is left as it was");
-                return true;
-            }
-            scene.camera = camera;
-            if (verb == "camera-reset") session.resetCamera();
-            model.pendingChanges |= ViewerModel::kCameraChanged;
-        // ---- files
-        } else if (verb == "load-scene") {
-            std::vector<std::string> edits = session.unsavedEdits();
-            // A bad file shows in the UI (and status), as a click would, and keeps the edits.
-            if (session.openScene(word)) noteDiscardedEdits(command, edits);
-        } else if (verb == "reload") {
-            session.reloadScene();
-        } else if (verb == "save-scene") {
-            session.saveSceneAs(word);
-        } else if (verb == "copy-file") {
-            std::filesystem::copy_file(command.words[0], command.words[1],
-                                       std::filesystem::copy_options::overwrite_existing);
-        // ---- compare mode
-        } else if (verb == "compare") {
-            model.compare.enabled = command.isWord(0, "on");
-        } else if (verb == "compare-integrator") {
-            model.compare.right.integrator = integratorNamed(word);
-        } else if (verb == "compare-sampler") {
-            model.compare.right.sampler = *parseSamplerMode(word);
-        } else if (verb == "compare-depth") {
-            model.compare.right.maxDepth = command.integer(0);
-        } else if (verb == "divider") {
-            model.compare.dividerFraction = command.number(0);
-        // ---- waiting
-        } else if (verb == "frames") {
-            if (!waiting_) waiting_ = true, waitUntilFrame_ = framesDisplayed_ + command.integer(0);
-            return framesDisplayed_ >= waitUntilFrame_;
-        } else if (verb == "wait-spp") {
-            if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + kWaitTimeout;
-            session.update(); // what was asked before this line applies first
-            int target = command.integer(0);
-            bool reached = session.stats(ViewerSession::Side::Left).samples >= target &&
-                           (!session.comparing() || session.stats(ViewerSession::Side::Right).samples >= target);
-            if (reached) return true;
-            if (!session.accumulating()) fail(command, "paused or stopped at its target before " + word + " spp");
-            else if (Clock::now() > waitDeadline_) fail(command, word + " spp not reached in time");
-            return quit_;
-        } else if (verb == "wait-seconds") {
-            using Seconds = std::chrono::duration<double>;
-            if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(Seconds(command.number(0)));
-            return Clock::now() >= waitDeadline_;
-        } else if (verb == "wait-reload") {
-            if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + kReloadTimeout, reloadCountAtWait_ = session.reloadCount();
-            if (session.reloadCount() > reloadCountAtWait_) return true;
-            if (Clock::now() > waitDeadline_) fail(command, "no reload within 10 s");
-            return quit_;
-        // ---- output
-        } else if (verb == "screenshot") {
-            // Right after an edit the accumulation has started over: wait for its first complete
-            // sample, as `wait-spp 1` would, rather than fail with "nothing rendered yet".
-            if (!waiting_) waiting_ = true, waitDeadline_ = Clock::now() + kWaitTimeout;
-            session.update();
-            if (session.stats(ViewerSession::Side::Left).samples == 0) {
-                if (!session.accumulating()) fail(command, "paused before the first sample: nothing to save");
-                else if (Clock::now() > waitDeadline_) fail(command, "no complete sample in time");
-                return quit_;
-            }
-            session.writeImage(ViewerSession::Side::Left, word);
-        } else if (verb == "screenshot-window") {
-            // Written by the window after this frame, where the script's line is no longer known.
-            if (std::optional<std::string> problem = outputPathProblem(word, {".png"})) fail(command, *problem);
-            else windowScreenshot_ = std::filesystem::path(word);
-        } else if (verb == "save-screenshots") {
-            saveScreenshots(session, panels);
-            if (panels.screenshotFailed) fail(command, panels.screenshotMessage);
-            else std::printf("%s\n", panels.screenshotMessage.c_str());
-        } else if (verb == "reference") {
-            if (!session.setReference(command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(word)))
-                fail(command, session.model().sceneError);
-        } else if (verb == "open-panel") {
-            panels.panelsToOpen.push_back(word);
-        } else if (verb == "status") {
-            session.update();
-            printStatus(session, panels);
-        } else if (verb == "quit") {
-            noteDiscardedEdits(command, session.unsavedEdits());
-            quit_ = true;
-        } else {
-            fail(command, "not implemented by this viewer");
+// =====================================================================================
+// One handler per command of the script table (ViewerScript.cpp)
+// =====================================================================================
+
+struct ScriptRunner::Step {
+    Step(ScriptRunner& runner, const ScriptCommand& command, ViewerSession& session, PanelState& panels)
+        : command(command), session(session), panels(panels), model(session.model()), scene(session.model().scene),
+          word(command.words.empty() ? kNoWord : command.words[0]), runner_(runner) {}
+
+    const ScriptCommand& command;
+    ViewerSession& session;
+    PanelState& panels;
+    ViewerModel& model;
+    Scene& scene;
+    const std::string& word; // the first argument, or empty
+    bool again = false;      // the command waits: run it again next frame
+
+    // Ends the script: "FILE:LINE: verb: reason" on stderr, exit code 2.
+    void fail(const std::string& reason) { runner_.fail(command, reason); }
+    bool failed() const { return runner_.quit_; }
+    void quit() { runner_.quit_ = true; }
+    void noteDiscardedEdits(const std::vector<std::string>& edits) { runner_.noteDiscardedEdits(command, edits); }
+    void takeWindowScreenshot(const std::filesystem::path& path) { runner_.windowScreenshot_ = path; }
+    long long framesDisplayed() const { return runner_.framesDisplayed_; }
+    // What the command waits for, set on its first run (firstRun() is true once per command).
+    bool firstRun() { return !std::exchange(runner_.waiting_, true); }
+    Wait& wait() { return runner_.wait_; }
+
+private:
+    static inline const std::string kNoWord;
+    ScriptRunner& runner_;
+};
+
+namespace {
+
+using Step = ScriptRunner::Step;
+using Handler = void (*)(Step&);
+
+// ---- scene edits
+
+void sceneEdited(Step& s) { s.model.pendingChanges |= ViewerModel::kSceneChanged; }
+
+void setMaterial(Step& s) {
+    const ScriptCommand& command = s.command;
+    auto found = std::find_if(s.scene.materials.begin(), s.scene.materials.end(),
+                              [&](const Material& m) { return m.name == command.target; });
+    if (found == s.scene.materials.end()) return s.fail("the scene has no material \"" + command.target + "\"");
+    Material& material = *found;
+    if (command.field == "type")
+        material = retypedMaterial(material, findMaterialSchema(s.word)->type);
+    else if (command.field == "color")
+        material.color = command.vec3(0);
+    else if (command.field == "emission")
+        material.radiance = command.vec3(0);
+    else if (command.field == "ior")
+        material.ior = command.number(0);
+    else if (command.field == "roughness")
+        material.roughness = command.number(0);
+    s.model.pendingChanges |= ViewerModel::kMaterialsChanged;
+}
+
+void setLight(Step& s) {
+    const ScriptCommand& command = s.command;
+    auto found = std::find_if(s.scene.lights.begin(), s.scene.lights.end(),
+                              [&](const Light& l) { return l.name == command.target; });
+    if (found == s.scene.lights.end()) return s.fail("the scene has no light \"" + command.target + "\"");
+    Light& light = *found;
+    if (command.field == "intensity")
+        light.intensity = command.vec3(0);
+    else if (command.field == "position")
+        light.position = command.vec3(0);
+    else if (command.field == "direction")
+        light.direction = unitDirection(command.vec3(0));
+    else if (command.field == "inner-angle" || command.field == "outer-angle") {
+        // The file format's rule between the two (SceneRanges.h), refused here rather than at Save.
+        bool inner = command.field == "inner-angle";
+        float innerDeg = inner ? command.number(0) : light.innerAngleDeg;
+        float outerDeg = inner ? light.outerAngleDeg : command.number(0);
+        if (!ranges::coneAnglesOrdered(innerDeg, outerDeg)) {
+            auto text = [](float degrees) {
+                char buffer[32];
+                std::snprintf(buffer, sizeof buffer, "%g", double(degrees));
+                return std::string(buffer);
+            };
+            return s.fail(command.target + (inner ? ".inner-angle " + text(innerDeg) +
+                                                        " must not exceed the outer angle (" + text(outerDeg) + ")"
+                                                  : ".outer-angle " + text(outerDeg) +
+                                                        " must not be less than the inner angle (" + text(innerDeg) + ")"));
         }
+        light.innerAngleDeg = innerDeg;
+        light.outerAngleDeg = outerDeg;
+    }
+    sceneEdited(s);
+}
+
+// ---- camera
+
+// A move that leaves the camera unusable is refused here, at its line: "camera-zoom 1e38" made a
+// NaN camera and the next wait-spp timed out after 120 s.
+void moveCamera(Step& s, const CameraDesc& moved) {
+    if (const std::string problem = cameraProblem(moved); !problem.empty())
+        return s.fail("the camera would be unusable (" + problem + "); it is left as it was");
+    s.scene.camera = moved;
+    s.model.pendingChanges |= ViewerModel::kCameraChanged;
+}
+
+CameraDesc withFov(CameraDesc camera, float vfovDeg) {
+    camera.vfovDeg = vfovDeg;
+    return camera;
+}
+
+void resetCamera(Step& s) {
+    s.session.resetCamera();
+    s.model.pendingChanges |= ViewerModel::kCameraChanged;
+}
+
+// ---- waiting
+
+void waitFrames(Step& s) {
+    if (s.firstRun()) s.wait().untilFrame = s.framesDisplayed() + s.command.integer(0);
+    s.again = s.framesDisplayed() < s.wait().untilFrame;
+}
+
+void waitSpp(Step& s) {
+    if (s.firstRun()) s.wait().deadline = Clock::now() + kWaitTimeout;
+    s.session.update(); // what was asked before this line applies first
+    int target = s.command.integer(0);
+    bool reached = s.session.stats(ViewerSession::Side::Left).samples >= target &&
+                   (!s.session.comparing() || s.session.stats(ViewerSession::Side::Right).samples >= target);
+    if (reached) return;
+    if (!s.session.accumulating()) s.fail("paused or stopped at its target before " + s.word + " spp");
+    else if (Clock::now() > s.wait().deadline) s.fail(s.word + " spp not reached in time");
+    s.again = !s.failed();
+}
+
+void waitSeconds(Step& s) {
+    using Seconds = std::chrono::duration<double>;
+    if (s.firstRun())
+        s.wait().deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(Seconds(s.command.number(0)));
+    s.again = Clock::now() < s.wait().deadline;
+}
+
+void waitReload(Step& s) {
+    if (s.firstRun()) s.wait().deadline = Clock::now() + kReloadTimeout, s.wait().reloadCount = s.session.reloadCount();
+    if (s.session.reloadCount() > s.wait().reloadCount) return;
+    if (Clock::now() > s.wait().deadline) s.fail("no reload within 10 s");
+    s.again = !s.failed();
+}
+
+// ---- output
+
+// Right after an edit the accumulation has started over: wait for its first complete sample, as
+// `wait-spp 1` would, rather than fail with "nothing rendered yet".
+void screenshot(Step& s) {
+    if (s.firstRun()) s.wait().deadline = Clock::now() + kWaitTimeout;
+    s.session.update();
+    if (s.session.stats(ViewerSession::Side::Left).samples == 0) {
+        if (!s.session.accumulating()) s.fail("paused before the first sample: nothing to save");
+        else if (Clock::now() > s.wait().deadline) s.fail("no complete sample in time");
+        s.again = !s.failed();
+        return;
+    }
+    s.session.writeImage(ViewerSession::Side::Left, s.word);
+}
+
+// Written by the window after this frame, where the script's line is no longer known.
+void screenshotWindow(Step& s) {
+    if (std::optional<std::string> problem = outputPathProblem(s.word, {".png"})) s.fail(*problem);
+    else s.takeWindowScreenshot(s.word);
+}
+
+void saveScreenshotsNow(Step& s) {
+    saveScreenshots(s.session, s.panels);
+    if (s.panels.screenshotFailed) s.fail(s.panels.screenshotMessage);
+    else std::printf("%s\n", s.panels.screenshotMessage.c_str());
+}
+
+std::filesystem::path pathOrNone(const Step& s) {
+    return s.command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(s.word);
+}
+
+// Every verb of the script table and what it does: what the matching UI control does.
+const std::vector<std::pair<const char*, Handler>>& handlers() {
+    static const std::vector<std::pair<const char*, Handler>> table = {
+        // ---- render settings
+        {"integrator", [](Step& s) { s.model.settings.integrator = integratorNamed(s.word); }},
+        {"sampler", [](Step& s) { s.model.settings.sampler = *parseSamplerMode(s.word); }},
+        {"depth", [](Step& s) { s.model.settings.maxDepth = s.command.integer(0); }},
+        {"seed", [](Step& s) { s.model.settings.seed = s.command.unsignedInteger(0); }},
+        {"exposure", [](Step& s) { s.model.display.exposureStops = s.command.number(0); }},
+        {"tone-mapper", [](Step& s) { s.model.display.toneMapper = toneMapperNamed(s.word); }},
+        {"resolution-scale", [](Step& s) { s.model.resolutionScale = s.command.number(0); }},
+        {"samples-per-frame",
+         [](Step& s) { s.model.maxSamplesPerFrame = s.command.isWord(0, "auto") ? 0 : s.command.integer(0); }},
+        {"pause", [](Step& s) { s.model.paused = true; }},
+        {"resume", [](Step& s) { s.model.paused = false; }},
+        {"target-spp", [](Step& s) { s.model.targetSamples = s.command.integer(0); }},
+        // ---- scene edits
+        {"set-material", setMaterial},
+        {"set-light", setLight},
+        {"environment", [](Step& s) { s.session.setEnvironmentMap(pathOrNone(s)); }},
+        {"environment-intensity", [](Step& s) { s.scene.environmentIntensity = s.command.number(0); sceneEdited(s); }},
+        {"environment-rotation", [](Step& s) { s.scene.environmentRotationDeg = s.command.number(0); sceneEdited(s); }},
+        {"environment-color", [](Step& s) { s.scene.environment = s.command.vec3(0); sceneEdited(s); }},
+        // ---- camera
+        {"camera-orbit", [](Step& s) { moveCamera(s, orbitCamera(s.scene.camera, s.command.number(0), s.command.number(1))); }},
+        {"camera-pan", [](Step& s) { moveCamera(s, panCamera(s.scene.camera, s.command.number(0), s.command.number(1))); }},
+        {"camera-zoom", [](Step& s) { moveCamera(s, zoomCamera(s.scene.camera, s.command.number(0))); }},
+        {"camera-fov", [](Step& s) { moveCamera(s, withFov(s.scene.camera, s.command.number(0))); }},
+        {"camera-reset", resetCamera},
+        // ---- files
+        {"load-scene", [](Step& s) {
+             std::vector<std::string> edits = s.session.unsavedEdits();
+             // A bad file shows in the UI (and status), as a click would, and keeps the edits.
+             if (s.session.openScene(s.word)) s.noteDiscardedEdits(edits);
+         }},
+        {"reload", [](Step& s) { s.session.reloadScene(); }},
+        {"wait-reload", waitReload},
+        {"save-scene", [](Step& s) { s.session.saveSceneAs(s.word); }},
+        {"copy-file", [](Step& s) {
+             std::filesystem::copy_file(s.command.words[0], s.command.words[1], std::filesystem::copy_options::overwrite_existing);
+         }},
+        // ---- compare mode
+        {"compare", [](Step& s) { s.model.compare.enabled = s.command.isWord(0, "on"); }},
+        {"compare-integrator", [](Step& s) { s.model.compare.right.integrator = integratorNamed(s.word); }},
+        {"compare-sampler", [](Step& s) { s.model.compare.right.sampler = *parseSamplerMode(s.word); }},
+        {"compare-depth", [](Step& s) { s.model.compare.right.maxDepth = s.command.integer(0); }},
+        {"divider", [](Step& s) { s.model.compare.dividerFraction = s.command.number(0); }},
+        // ---- waiting and output
+        {"frames", waitFrames},
+        {"wait-spp", waitSpp},
+        {"wait-seconds", waitSeconds},
+        {"screenshot", screenshot},
+        {"screenshot-window", screenshotWindow},
+        {"save-screenshots", saveScreenshotsNow},
+        {"reference", [](Step& s) {
+             if (!s.session.setReference(pathOrNone(s))) s.fail(s.session.model().sceneError);
+         }},
+        {"open-panel", [](Step& s) { s.panels.panelsToOpen.push_back(s.word); }},
+        {"status", [](Step& s) {
+             s.session.update();
+             printStatus(s.session, s.panels);
+         }},
+        {"quit", [](Step& s) {
+             s.noteDiscardedEdits(s.session.unsavedEdits());
+             s.quit();
+         }},
+    };
+    return table;
+}
+
+Handler findHandler(const std::string& verb) {
+    for (const auto& [name, handler] : handlers())
+        if (verb == name) return handler;
+    return nullptr;
+}
+
+} // namespace
+
+std::vector<std::string> ScriptRunner::handledVerbs() {
+    std::vector<std::string> verbs;
+    for (const auto& entry : handlers()) verbs.emplace_back(entry.first);
+    return verbs;
+}
+
+bool ScriptRunner::run(const ScriptCommand& command, ViewerSession& session, PanelState& panels) {
+    Step step(*this, command, session, panels);
+    try {
+        // The parser accepts only the table's verbs, and each has a handler (ScriptRunnerTest).
+        if (Handler handler = findHandler(command.verb)) handler(step);
+        else fail(command, "not implemented by this viewer");
     } catch (const std::exception& e) {
         fail(command, e.what());
+        return true;
     }
-    return true;
+    return !step.again;
 }
 
 } // namespace ptview

@@ -32,8 +32,22 @@ public:
     bool quitRequested() const { return quit_; }
     int exitCode() const { return exitCode_; }
 
+    // The verbs that have a handler (ScriptRunner.cpp, one per command): the same as the script
+    // table's, viewerScriptVerbs() (ScriptRunner.EveryCommandOfTheScriptTableHasAHandler).
+    static std::vector<std::string> handledVerbs();
+
+    // One command being run: what its handler reads and changes (defined in ScriptRunner.cpp).
+    struct Step;
+
 private:
     using Clock = std::chrono::steady_clock;
+    // What a command that waits waits for.
+    struct Wait {
+        long long untilFrame = 0;
+        int reloadCount = 0; // at the start of the wait
+        Clock::time_point deadline{};
+    };
+
     // Returns false when the command must wait (and is to be run again next frame).
     bool run(const ScriptCommand& command, ViewerSession& session, PanelState& panels);
     void fail(const ScriptCommand& command, const std::string& reason);
@@ -47,9 +61,7 @@ private:
     long long framesDisplayed_ = 0;
     // The command waiting, and what it waits for.
     bool waiting_ = false;
-    long long waitUntilFrame_ = 0;
-    int reloadCountAtWait_ = 0;
-    Clock::time_point waitDeadline_{};
+    Wait wait_;
     std::optional<std::filesystem::path> windowScreenshot_;
 };
 

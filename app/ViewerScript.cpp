@@ -581,6 +581,12 @@ ViewerScript loadViewerScript(const std::filesystem::path& path) {
     return parseViewerScript(readInputFileAs<ScriptError>(path, kMaxScriptFileBytes, "script"), path);
 }
 
+std::vector<std::string> viewerScriptVerbs() {
+    std::vector<std::string> verbs;
+    for (const CommandSpec& spec : commandSpecs()) verbs.emplace_back(spec.verb);
+    return verbs;
+}
+
 const char* viewerScriptReference() {
     static const std::string reference = [] {
         constexpr std::size_t kColumn = 34; // where the meaning starts; the longest usage fits

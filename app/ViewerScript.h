@@ -59,4 +59,7 @@ ViewerScript parseViewerScript(const std::string& text, const std::filesystem::p
 // table the parser validates with, so the two cannot disagree.
 const char* viewerScriptReference();
 
+// The verbs of that table, in its order: the executor (ScriptRunner) has a handler for each.
+std::vector<std::string> viewerScriptVerbs();
+
 } // namespace ptview
