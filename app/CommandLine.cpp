@@ -2,6 +2,7 @@
 
 #include "ConvergeCommand.h"
 #include "EditDistance.h"
+#include "SceneRanges.h"
 
 #include <CLI/CLI.hpp>
 
@@ -108,6 +109,12 @@ void addProgramOptions(CLI::App& app, ProgramOptions& program) {
 }
 
 
+std::vector<std::pair<std::string, Warp>> warpNames() {
+    std::vector<std::pair<std::string, Warp>> names;
+    for (const WarpInfo& info : warpInfos()) names.emplace_back(info.name, info.warp);
+    return names;
+}
+
 // The subcommand a first argument is a typo of ("rendr": "render"), or nullptr. CLI11 takes a word
 // that names no subcommand for the viewer's scene path, so "ptview rendr SCENE" said only that
 // SCENE was not expected. A path that exists is a scene, whatever its name.
@@ -124,24 +131,34 @@ const CLI::App* misspeltSubcommand(const CLI::App& app, const std::string& word)
     return nearest;
 }
 
-const CLI::Validator kImageSize(
-    [](std::string& text) -> std::string {
-        static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
-        std::smatch match;
-        if (!std::regex_match(text, match, pattern)) return "expected WIDTHxHEIGHT, e.g. 640x360";
-        int width = std::stoi(match[1]), height = std::stoi(match[2]);
-        if (width < 1 || height < 1 || width > 16384 || height > 16384) return "each side must be in 1..16384";
-        return {};
-    },
-    "WxH");
+// "640x360", each side in 1..kMaxResolution (the scene format's bound): the one reading of --size.
+std::optional<glm::ivec2> parseImageSize(const std::string& text) {
+    static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
+    std::smatch match;
+    if (!std::regex_match(text, match, pattern)) return std::nullopt;
+    glm::ivec2 size(std::stoi(match[1]), std::stoi(match[2]));
+    if (size.x < 1 || size.y < 1 || size.x > kMaxResolution || size.y > kMaxResolution) return std::nullopt;
+    return size;
+}
 
-} // namespace
+void addSizeOption(CLI::App& app, std::optional<glm::ivec2>& size, const std::string& description) {
+    const CLI::Validator check(
+        [](std::string& text) -> std::string {
+            static const std::regex pattern(R"(\d{1,5}x\d{1,5})");
+            if (!std::regex_match(text, pattern)) return "expected WIDTHxHEIGHT, e.g. 640x360";
+            if (!parseImageSize(text)) return "each side must be in 1.." + std::to_string(kMaxResolution);
+            return {};
+        },
+        "WxH");
+    app.add_option_function<std::string>(
+           "--size", [&size](const std::string& text) { size = parseImageSize(text); }, description)
+        ->check(check);
+}
 
-std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
-    CLI::App app{"ptview: a real-time OpenGL path-tracing viewer"};
-    app.set_help_all_flag("--help-all", "help for every subcommand");
+// ---- the viewer (no subcommand) and each subcommand: its options, then what is decided once they
+// are parsed, which returns the exit code when they do not go together.
 
-    ViewerOptions& viewer = out.viewer;
+void addViewerOptions(CLI::App& app, ViewerOptions& viewer) {
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
     app.add_option("scene", viewer.scenePath, "scene JSON to open")->capture_default_str();
     addRenderSettings(app, viewer.settings, viewer.display);
@@ -155,79 +172,134 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::ExistingFile);
     app.add_option("--shader-dir", viewer.shaderDir, "compile (and hot-reload) the GLSL in this directory")
         ->check(CLI::ExistingDirectory)->capture_default_str();
-    std::vector<std::pair<std::string, Warp>> warpNames;
-    for (const WarpInfo& info : warpInfos()) warpNames.emplace_back(info.name, info.warp);
-    addNamedOption(app, "--warp", viewer.warp.warp, "warp", warpNames)
+    addNamedOption(app, "--warp", viewer.warp.warp, "warp", warpNames())
         ->each([&viewer](const std::string&) { viewer.showWarp = true; })
         ->description("open the warp visualizer on this warp (uses --sampler too)");
+}
 
-    RenderOptions& render = out.render;
-    std::string sizeText;
-    CLI::App* renderCommand = app.add_subcommand("render", "render a scene headless (EGL, no window) to a file");
-    renderCommand->add_option("scene", render.scenePath, "scene JSON")->required();
-    renderCommand->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)");
-    renderCommand->add_option("--spp", render.samplesPerPixel, "samples per pixel")
+std::optional<int> finishViewerOptions(ViewerOptions& viewer) {
+    viewer.warp.sampler = viewer.settings.sampler;
+    if (viewer.frames > 0 && viewer.screenshotPath.empty()) {
+        std::cerr << "ptview: --frames needs --screenshot FILE.png\n";
+        return kExitBadInput;
+    }
+    return std::nullopt;
+}
+
+CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
+    CLI::App* command = app.add_subcommand("render", "render a scene headless (EGL, no window) to a file");
+    command->add_option("scene", render.scenePath, "scene JSON")->required();
+    command->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)");
+    command->add_option("--spp", render.samplesPerPixel, "samples per pixel")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
-    renderCommand->add_option("--size", sizeText, "image size WxH (default: the scene's resolution)")
-        ->check(kImageSize);
-    addRenderSettings(*renderCommand, render.settings, render.display);
-    addProgramOptions(*renderCommand, render.program);
-    renderCommand->add_option("--dump-shader", render.dumpShaderPath, "write the exact GLSL of the path-tracing program to FILE");
-    renderCommand->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
+    addSizeOption(*command, render.size, "image size WxH (default: the scene's resolution)");
+    addRenderSettings(*command, render.settings, render.display);
+    addProgramOptions(*command, render.program);
+    command->add_option("--dump-shader", render.dumpShaderPath, "write the exact GLSL of the path-tracing program to FILE");
+    command->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
+    return command;
+}
 
-    BenchOptions& bench = out.bench;
-    std::string benchSizeText;
-    DisplaySettings unusedDisplay;
-    CLI::App* benchCommand = app.add_subcommand("bench", "time loading, BVH builds and path tracing of scenes (headless)");
-    benchCommand->add_option("scenes", bench.scenePaths, "scene files (default: cornell, cornell_bunny, meshes, dragon, cornell_bunny_1m)");
-    benchCommand->add_option("--size", benchSizeText, "image size WxH (default: each scene's resolution)")->check(kImageSize);
-    benchCommand->add_option("--seconds", bench.seconds, "rendering time per scene, at least")
+std::optional<int> finishRenderOptions(const RenderOptions& render) {
+    if (render.outPath.empty() && render.dumpShaderPath.empty() && !render.printFeatures) {
+        std::cerr << "ptview: render: --out is required (see ptview render --help)\n";
+        return kExitBadInput;
+    }
+    return std::nullopt;
+}
+
+// display: bench writes no image, so its tone mapping goes nowhere.
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& bench, DisplaySettings& display) {
+    CLI::App* command = app.add_subcommand("bench", "time loading, BVH builds and path tracing of scenes (headless)");
+    command->add_option("scenes", bench.scenePaths, "scene files (default: cornell, cornell_bunny, meshes, dragon, cornell_bunny_1m)");
+    addSizeOption(*command, bench.size, "image size WxH (default: each scene's resolution)");
+    command->add_option("--seconds", bench.seconds, "rendering time per scene, at least")
         ->check(kFiniteNumber)->check(CLI::Range(0.1, 600.0))->capture_default_str();
-    addRenderSettings(*benchCommand, bench.settings, unusedDisplay);
-    addProgramOptions(*benchCommand, bench.program);
-    benchCommand->add_flag("--variants", bench.variants,
-                           "run each scene with every program: specialized and uber, fragment and compute");
+    addRenderSettings(*command, bench.settings, display);
+    addProgramOptions(*command, bench.program);
+    command->add_flag("--variants", bench.variants,
+                      "run each scene with every program: specialized and uber, fragment and compute");
+    return command;
+}
 
-    ConvergeOptions& converge = out.converge;
-    std::string convergeSizeText, configsText = "naive/random/8,mis/random/8,full/random/8,full/sobol/8";
-    std::string convergeOut;
-    CLI::App* convergeCommand =
+void finishBenchOptions(BenchOptions& bench) {
+    if (bench.scenePaths.empty())
+        for (const char* name : {"cornell", "cornell_bunny", "meshes", "dragon", "cornell_bunny_1m"})
+            bench.scenePaths.push_back(std::string(PTVIEW_ASSETS_DIR) + "/scenes/" + name + ".json");
+}
+
+// What converge reads as text and turns into its options once parsed.
+struct ConvergeText {
+    std::string configs = "naive/random/8,mis/random/8,full/random/8,full/sobol/8";
+    std::string outDir;
+};
+
+CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeText& text) {
+    CLI::App* command =
         app.add_subcommand("converge", "measure error against time for integrators, samplers and depths (headless)");
-    convergeCommand->add_option("scene", converge.scenePath, "scene JSON")->required();
-    convergeCommand->add_option("--out,-o", convergeOut, "output directory (convergence.csv, convergence.png, summary.md)")
+    command->add_option("scene", converge.scenePath, "scene JSON")->required();
+    command->add_option("--out,-o", text.outDir, "output directory (convergence.csv, convergence.png, summary.md)")
         ->required();
-    convergeCommand->add_option("--reference", converge.referencePath, "reference image (.pfm, linear); its size is used")
+    command->add_option("--reference", converge.referencePath, "reference image (.pfm, linear); its size is used")
         ->check(CLI::ExistingFile);
-    convergeCommand->add_option("--reference-spp", converge.referenceSpp,
-                                "samples per pixel of the reference ptview renders when none is given (another seed)")
+    command->add_option("--reference-spp", converge.referenceSpp,
+                        "samples per pixel of the reference ptview renders when none is given (another seed)")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
-    convergeCommand->add_option("--reference-depth", converge.referenceDepth,
-                                "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
+    command->add_option("--reference-depth", converge.referenceDepth,
+                        "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
         ->transform(kDecimalInteger)->check(CLI::Range(0, 1024));
-    convergeCommand->add_option("--configs", configsText, "INTEGRATOR/SAMPLER/DEPTH, comma-separated")->capture_default_str();
-    convergeCommand->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
+    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH, comma-separated")->capture_default_str();
+    command->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
-    convergeCommand->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")
+    command->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
-    convergeCommand->add_option("--size", convergeSizeText, "image size WxH (default: the scene's resolution)")->check(kImageSize);
-    convergeCommand->add_option("--seed", converge.seed, "seed of the runs (the reference uses another)")
+    addSizeOption(*command, converge.size, "image size WxH (default: the scene's resolution)");
+    command->add_option("--seed", converge.seed, "seed of the runs (the reference uses another)")
         ->transform(kDecimalInteger)->capture_default_str();
-    ProgramOptions convergeProgram;
-    addProgramOptions(*convergeCommand, convergeProgram);
+    addProgramOptions(*command, converge.program);
+    return command;
+}
 
-    WarpOptions& warp = out.warp;
-    float coneAngleDeg = 60.0f;
-    CLI::App* warpCommand = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
-    addNamedOption(*warpCommand, "--warp", warp.request.warp, "warp", warpNames)->required();
-    addSamplerOption(*warpCommand, warp.request.sampler);
-    warpCommand->add_option("--count", warp.request.count, "number of points")
+std::optional<int> finishConvergeOptions(ConvergeOptions& converge, const ConvergeText& text) {
+    std::string error;
+    std::optional<std::vector<ConvergeConfig>> configs = parseConvergeConfigs(text.configs, error);
+    if (!configs) {
+        std::cerr << "ptview: converge: --configs: " << error << "\n";
+        return kExitBadInput;
+    }
+    converge.configs = *configs;
+    converge.outDir = text.outDir;
+    return std::nullopt;
+}
+
+CLI::App* addWarpCommand(CLI::App& app, WarpOptions& warp, float& coneAngleDeg) {
+    CLI::App* command = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
+    addNamedOption(*command, "--warp", warp.request.warp, "warp", warpNames())->required();
+    addSamplerOption(*command, warp.request.sampler);
+    command->add_option("--count", warp.request.count, "number of points")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 22))->capture_default_str();
-    warpCommand->add_option("--seed", warp.request.seed, "random seed")->transform(kDecimalInteger)->capture_default_str();
-    warpCommand->add_option("--cone-angle", coneAngleDeg, "half-angle of uniform-cone in degrees")
+    command->add_option("--seed", warp.request.seed, "random seed")->transform(kDecimalInteger)->capture_default_str();
+    command->add_option("--cone-angle", coneAngleDeg, "half-angle of uniform-cone in degrees")
         ->check(kFiniteNumber)->check(CLI::Range(0.1f, 180.0f))->capture_default_str();
-    warpCommand->add_option("--out,-o", warp.outPath, "output image (.png)")->required();
-    warpCommand->add_option("--image-size", warp.imageSize, "width and height of the picture in pixels")
+    command->add_option("--out,-o", warp.outPath, "output image (.png)")->required();
+    command->add_option("--image-size", warp.imageSize, "width and height of the picture in pixels")
         ->transform(kDecimalInteger)->check(CLI::Range(64, 8192))->capture_default_str();
+    return command;
+}
+
+} // namespace
+
+std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
+    CLI::App app{"ptview: a real-time OpenGL path-tracing viewer"};
+    app.set_help_all_flag("--help-all", "help for every subcommand");
+    addViewerOptions(app, out.viewer);
+    CLI::App* renderCommand = addRenderCommand(app, out.render);
+    DisplaySettings unusedBenchDisplay;
+    CLI::App* benchCommand = addBenchCommand(app, out.bench, unusedBenchDisplay);
+    ConvergeText convergeText;
+    CLI::App* convergeCommand = addConvergeCommand(app, out.converge, convergeText);
+    float coneAngleDeg = 60.0f;
+    CLI::App* warpCommand = addWarpCommand(app, out.warp, coneAngleDeg);
 
     if (argc >= 2)
         if (const CLI::App* nearest = misspeltSubcommand(app, argv[1])) {
@@ -246,51 +318,22 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         return kExitBadInput;
     }
 
-    viewer.warp.sampler = viewer.settings.sampler;
-    if (viewer.frames > 0 && viewer.screenshotPath.empty()) {
-        std::cerr << "ptview: --frames needs --screenshot FILE.png\n";
-        return kExitBadInput;
-    }
+    if (std::optional<int> exitCode = finishViewerOptions(out.viewer)) return exitCode;
     if (*warpCommand) {
         out.mode = CommandLine::Mode::Warp;
-        warp.request.cosThetaMax = std::cos(coneAngleDeg * 3.14159265358979f / 180.0f);
+        out.warp.request.cosThetaMax = std::cos(coneAngleDeg * 3.14159265358979f / 180.0f);
     }
     if (*convergeCommand) {
         out.mode = CommandLine::Mode::Converge;
-        std::string error;
-        std::optional<std::vector<ConvergeConfig>> configs = parseConvergeConfigs(configsText, error);
-        if (!configs) {
-            std::cerr << "ptview: converge: --configs: " << error << "\n";
-            return kExitBadInput;
-        }
-        converge.configs = *configs;
-        converge.outDir = convergeOut;
-        converge.backend = convergeProgram.backend;
-        if (!convergeSizeText.empty()) {
-            size_t x = convergeSizeText.find('x');
-            converge.size = glm::ivec2(std::stoi(convergeSizeText.substr(0, x)), std::stoi(convergeSizeText.substr(x + 1)));
-        }
+        if (std::optional<int> exitCode = finishConvergeOptions(out.converge, convergeText)) return exitCode;
     }
     if (*benchCommand) {
         out.mode = CommandLine::Mode::Bench;
-        if (bench.scenePaths.empty())
-            for (const char* name : {"cornell", "cornell_bunny", "meshes", "dragon", "cornell_bunny_1m"})
-                bench.scenePaths.push_back(std::string(PTVIEW_ASSETS_DIR) + "/scenes/" + name + ".json");
-        if (!benchSizeText.empty()) {
-            size_t x = benchSizeText.find('x');
-            bench.size = glm::ivec2(std::stoi(benchSizeText.substr(0, x)), std::stoi(benchSizeText.substr(x + 1)));
-        }
+        finishBenchOptions(out.bench);
     }
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;
-        if (render.outPath.empty() && render.dumpShaderPath.empty() && !render.printFeatures) {
-            std::cerr << "ptview: render: --out is required (see ptview render --help)\n";
-            return kExitBadInput;
-        }
-        if (!sizeText.empty()) {
-            size_t x = sizeText.find('x');
-            render.size = glm::ivec2(std::stoi(sizeText.substr(0, x)), std::stoi(sizeText.substr(x + 1)));
-        }
+        if (std::optional<int> exitCode = finishRenderOptions(out.render)) return exitCode;
     }
     return std::nullopt;
 }

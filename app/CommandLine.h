@@ -18,7 +18,7 @@ namespace ptview {
 constexpr int kExitRuntimeError = 1;
 constexpr int kExitBadInput = 2;
 
-// How the path-tracing program is built: shared by the viewer, `render` and `bench`.
+// How the path-tracing program is built: shared by the viewer, `render`, `bench` and `converge`.
 struct ProgramOptions {
     bool allFeatures = false;       // --all-features: the uber-shader
     std::optional<Backend> backend; // --backend; nullopt ("auto"): measured per device
@@ -76,7 +76,7 @@ struct ConvergeOptions {
     int maxSpp = 1 << 16;
     std::optional<glm::ivec2> size;
     std::uint32_t seed = 1;
-    std::optional<Backend> backend;
+    ProgramOptions program;
 };
 
 struct WarpOptions {

@@ -143,9 +143,10 @@ bool looksBiased(const ConfigResult& result, double floor) {
 }
 
 std::string summary(const std::string& scene, const std::vector<ConfigResult>& results, const std::string& referenceText,
-                    double floor) {
+                    double floor, const std::string& programText) {
     std::ostringstream out;
     out << "# Convergence of " << scene << "\n\n"
+        << "Program: " << programText << ".\n\n"
         << "Reference: " << referenceText << "; its own noise floor is relMSE " << number(floor)
         << " (errors below it cannot be measured). Errors are against that reference: relative MSE = mean of "
            "(x - ref)^2 / (ref^2 + 0.01); time is GPU time (glFinish after each checkpoint); efficiency = "
@@ -256,6 +257,15 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
     return configs;
 }
 
+// What the runs were compiled for, as the tracer has it (--all-features: every feature): "the
+// fragment backend, compiled for materials: diffuse emitter; lights: area; ...".
+std::string programText(const PathTracer& tracer) {
+    std::string features = tracer.features().describe();
+    if (!features.empty() && features.back() == '\n') features.pop_back();
+    for (std::size_t newline; (newline = features.find('\n')) != std::string::npos;) features.replace(newline, 1, "; ");
+    return std::string("the ") + backendName(tracer.backend()) + " backend, compiled for " + features;
+}
+
 int runConvergeCommand(const ConvergeOptions& options) {
     std::optional<SceneInput> input = loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;
@@ -281,7 +291,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
     }
     try {
         HeadlessContext context;
-        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{false, options.backend});
+        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{options.program.allFeatures, options.program.backend});
         tracer.setScene(input->scene, input->environmentMapOrNull());
         tracer.setImageSize(size);
 
@@ -326,7 +336,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
                        number(c.error.meanBias.g, "%.6g") + "," + number(c.error.meanBias.b, "%.6g") + "," +
                        number(c.error.nonFiniteShare, "%.6g") + "\n";
         writeFileAtomically(options.outDir / "convergence.csv", csv);
-        writeFileAtomically(options.outDir / "summary.md", summary(options.scenePath, results, referenceText, floor));
+        writeFileAtomically(options.outDir / "summary.md", summary(options.scenePath, results, referenceText, floor, programText(tracer)));
 
         std::vector<std::string> plot = {pythonForPlots(), std::string(PTVIEW_SOURCE_DIR) + "/scripts/plot_convergence.py",
                                          (options.outDir / "convergence.csv").string(),

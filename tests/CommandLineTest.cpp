@@ -93,6 +93,17 @@ TEST_F(CommandLineTest, WrongTypeNamesJsonPointer) {
     expectRefused("render " + shellQuoted(scene) + " --out " + shellQuoted(path("out.png")), scene + ": /camera/vfov_deg");
 }
 
+// render, bench and converge read WxH with the one parser, bounded as a scene file's resolution is.
+TEST_F(CommandLineTest, EverySizeOptionTakesTheSceneFormatsBound) {
+    for (const std::string& command : {"render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")),
+                                       std::string("bench"),
+                                       "converge " + shellQuoted(kCornell) + " --out " + shellQuoted(path("c"))}) {
+        expectRefused(command + " --size 16385x4", "--size: each side must be in 1..16384");
+        expectRefused(command + " --size 4x0", "--size: each side must be in 1..16384");
+        expectRefused(command + " --size 12by4", "--size: expected WIDTHxHEIGHT, e.g. 640x360");
+    }
+}
+
 TEST_F(CommandLineTest, BadArgumentsAndOutputFormat) {
     expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --size 12by4", "--size");
     expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --spp 0", "--spp");

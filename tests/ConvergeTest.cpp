@@ -111,6 +111,30 @@ TEST(Converge, BadConfigurationsAreRefused) {
     EXPECT_FALSE(fs::exists("/tmp/never/convergence.csv"));
 }
 
+// --all-features was accepted and ignored: the runs used the program specialized to the scene. The
+// summary says what the runs were compiled for, as the tracer has it; the empty Cornell box has no
+// mesh, the uber-shader has the mesh code.
+TEST(Converge, AllFeaturesCompilesEveryFeature) {
+    testing::ScratchFiles files("converge_program");
+    const fs::path dir = files.write("unused", "").parent_path();
+    auto summaryOf = [&](const std::string& name, const std::string& flags) {
+        const fs::path out = dir / name;
+        testing::CommandResult result = testing::runCommand(
+            std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+            " --out " + testing::shellQuoted(out.string()) +
+            " --size 16x16 --reference-spp 2 --max-spp 2 --configs naive/random/1 --backend fragment" + flags);
+        EXPECT_EQ(result.exitCode, 0) << result.output;
+        return testing::readFileBytes(out / "summary.md");
+    };
+    const std::string specialized = summaryOf("specialized", "");
+    EXPECT_NE(specialized.find("Program: the fragment backend, compiled for materials: diffuse"), std::string::npos)
+        << specialized;
+    EXPECT_NE(specialized.find("; meshes: no;"), std::string::npos) << specialized;
+    const std::string uber = summaryOf("uber", " --all-features");
+    EXPECT_NE(uber.find("; meshes: yes (BVH);"), std::string::npos) << uber;
+    EXPECT_NE(uber.find("; environment: map;"), std::string::npos) << uber;
+}
+
 // A reference with a NaN pixel gave a CSV of nan and a summary claiming every error target reached
 // at the first checkpoint. It is refused before any rendering, naming the file and the pixel.
 TEST(Converge, ReferenceWithANaNPixelIsRefused) {

@@ -43,7 +43,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Pointer = Json::json_pointer;
 
-constexpr int kMaxResolution = 16384;
 // Scene files are hand-written or saved text that names its meshes and maps; the largest in
 // assets/ is a few KiB. A limit far above any real scene keeps /dev/zero or a mistyped multi-GiB
 // file from being read into memory whole.
