@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -327,7 +328,6 @@ void ViewerWindow::drawSidebar() {
 void ViewerWindow::drawCompareLabels() {
     if (!session_.comparing()) return;
     ImDrawList* draw = ImGui::GetForegroundDrawList();
-    PixelRect area = session_.imageArea();
     float top = 8.0f;
     auto label = [&](ViewerSession::Side side, float x, bool alignRight) {
         const RenderSettings& settings = session_.settings(side);
@@ -346,7 +346,6 @@ void ViewerWindow::drawCompareLabels() {
     float divider = static_cast<float>(session_.dividerX()) / framebufferScale_.x;
     label(ViewerSession::Side::Left, divider, true);
     label(ViewerSession::Side::Right, divider, false);
-    (void)area;
 }
 
 // What the image shows when it is not simply the render at the window's size: a low-resolution
@@ -492,6 +491,94 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
     return script ? script->exitCode() : 0;
 }
 
+// ---- The viewer's phases, as Dear ImGui's example_glfw_opengl3 has them: init the window, init
+// ImGui, loop, shut down. The shutdown is the destructors' work, so every return takes it.
+
+// GLFW from glfwInit to glfwTerminate.
+class GlfwLibrary {
+public:
+    GlfwLibrary() : initialized_(glfwInit() == GLFW_TRUE) {}
+    ~GlfwLibrary() {
+        if (initialized_) glfwTerminate();
+    }
+    GlfwLibrary(const GlfwLibrary&) = delete;
+    GlfwLibrary& operator=(const GlfwLibrary&) = delete;
+    bool initialized() const { return initialized_; }
+
+private:
+    bool initialized_;
+};
+
+using WindowHandle = std::unique_ptr<GLFWwindow, void (*)(GLFWwindow*)>;
+
+// A window for the scene's camera, centred in the monitor's work area, its OpenGL 4.1 core context
+// current and loaded; null, with the reason on stderr, when there is none.
+WindowHandle openWindow(glm::ivec2 cameraResolution) {
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE); // required on macOS
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);      // HiDPI: window size in logical units
+    glm::ivec2 workOrigin(0), workArea(0); // none known: only the 768-row rule applies
+    float monitorScale = 1.0f;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        glfwGetMonitorWorkarea(monitor, &workOrigin.x, &workOrigin.y, &workArea.x, &workArea.y);
+        glfwGetMonitorContentScale(monitor, &monitorScale, nullptr);
+    }
+    // GLFW_SCALE_TO_MONITOR multiplies the size asked for by the content scale.
+    glm::ivec2 windowSize = initialWindowSize(cameraResolution, kSidebarWidth,
+                                              glm::ivec2(glm::vec2(workArea) / std::max(monitorScale, 1.0f)));
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE); // shown once placed in the work area
+    WindowHandle window(glfwCreateWindow(windowSize.x, windowSize.y, "ptview", nullptr, nullptr), glfwDestroyWindow);
+    if (!window) {
+        std::cerr << "ptview: cannot create an OpenGL 4.1 core window\n";
+        return window;
+    }
+    if (workArea.x > 0) {
+        glm::ivec2 actual;
+        glfwGetWindowSize(window.get(), &actual.x, &actual.y);
+        glfwSetWindowPos(window.get(), workOrigin.x + std::max(0, (workArea.x - actual.x) / 2),
+                         workOrigin.y + std::max(0, (workArea.y - kDecorationAllowance - actual.y) / 2));
+    }
+    glfwShowWindow(window.get());
+    glfwMakeContextCurrent(window.get());
+    glfwSwapInterval(0); // the frame budget paces us; vsync would cap the sample rate
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {
+        std::cerr << "ptview: cannot load OpenGL functions\n";
+        window.reset();
+    }
+    return window;
+}
+
+// Our callbacks on the window; set before ImGui's, which chain to them.
+void listenToInput(GLFWwindow* window, InputEvents& inputEvents) {
+    glfwSetWindowUserPointer(window, &inputEvents);
+    glfwSetKeyCallback(window, onKey);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetWindowContentScaleCallback(window, onContentScale);
+    glfwGetWindowContentScale(window, &inputEvents.contentScale, nullptr);
+    inputEvents.contentScaleChanged = true;
+}
+
+// Dear ImGui on the window, from its context's creation to its destruction.
+class ImGuiOnWindow {
+public:
+    explicit ImGuiOnWindow(GLFWwindow* window) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr; // no imgui.ini litter in the user's directory
+        ImGui_ImplGlfw_InitForOpenGL(window, true);
+        ImGui_ImplOpenGL3_Init("#version 410 core");
+    }
+    ~ImGuiOnWindow() {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+    ImGuiOnWindow(const ImGuiOnWindow&) = delete;
+    ImGuiOnWindow& operator=(const ImGuiOnWindow&) = delete;
+};
+
 } // namespace
 
 int runViewer(const ViewerOptions& options) {
@@ -510,82 +597,35 @@ int runViewer(const ViewerOptions& options) {
     std::optional<SceneInput> input = loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;
 
+    // Init the window. Destroyed in the reverse order: ImGui, the window, GLFW.
     glfwSetErrorCallback(reportGlfwError);
-    if (!glfwInit()) {
+    GlfwLibrary glfw;
+    if (!glfw.initialized()) {
         std::cerr << "ptview: cannot open a window (no display?); `ptview render` renders without one\n";
         return kExitRuntimeError;
     }
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE); // required on macOS
-    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);      // HiDPI: window size in logical units
-    glm::ivec2 workOrigin(0), workArea(0); // none known: only the 768-row rule applies
-    float monitorScale = 1.0f;
-    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
-        glfwGetMonitorWorkarea(monitor, &workOrigin.x, &workOrigin.y, &workArea.x, &workArea.y);
-        glfwGetMonitorContentScale(monitor, &monitorScale, nullptr);
-    }
-    // GLFW_SCALE_TO_MONITOR multiplies the size asked for by the content scale.
-    glm::ivec2 windowSize = initialWindowSize(input->scene.camera.resolution, kSidebarWidth,
-                                              glm::ivec2(glm::vec2(workArea) / std::max(monitorScale, 1.0f)));
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE); // shown once placed in the work area
-    GLFWwindow* window = glfwCreateWindow(windowSize.x, windowSize.y, "ptview", nullptr, nullptr);
-    if (!window) {
-        std::cerr << "ptview: cannot create an OpenGL 4.1 core window\n";
-        glfwTerminate();
-        return kExitRuntimeError;
-    }
-    if (workArea.x > 0)
-    {
-        glm::ivec2 actual;
-        glfwGetWindowSize(window, &actual.x, &actual.y);
-        glfwSetWindowPos(window, workOrigin.x + std::max(0, (workArea.x - actual.x) / 2),
-                         workOrigin.y + std::max(0, (workArea.y - kDecorationAllowance - actual.y) / 2));
-    }
-    glfwShowWindow(window);
-    glfwMakeContextCurrent(window);
-    glfwSwapInterval(0); // the frame budget paces us; vsync would cap the sample rate
-    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {
-        std::cerr << "ptview: cannot load OpenGL functions\n";
-        glfwTerminate();
-        return kExitRuntimeError;
-    }
-
+    WindowHandle window = openWindow(input->scene.camera.resolution);
+    if (!window) return kExitRuntimeError;
     InputEvents inputEvents;
-    glfwSetWindowUserPointer(window, &inputEvents);
-    glfwSetKeyCallback(window, onKey);
-    glfwSetScrollCallback(window, onScroll);
-    glfwSetWindowContentScaleCallback(window, onContentScale);
-    glfwGetWindowContentScale(window, &inputEvents.contentScale, nullptr);
-    inputEvents.contentScaleChanged = true;
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini litter in the user's directory
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 410 core");
+    listenToInput(window.get(), inputEvents);
 
-    int exitCode = 0;
+    // Init ImGui.
+    ImGuiOnWindow imgui(window.get());
+
+    // Loop, until the user or the script quits.
     try {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
                               PathTracerOptions{options.program.allFeatures, options.program.backend});
         if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
             std::cerr << "ptview: " << session.model().sceneError << "\n";
-            exitCode = kExitBadInput;
+            return kExitBadInput;
         }
-        ViewerWindow viewer(window, session, options);
-        if (exitCode == 0) exitCode = viewer.run(script);
+        ViewerWindow viewer(window.get(), session, options);
+        return viewer.run(script);
     } catch (const std::exception& e) {
         std::cerr << "ptview: " << e.what() << "\n";
-        exitCode = kExitRuntimeError;
+        return kExitRuntimeError;
     }
-
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return exitCode;
 }
 
 } // namespace ptview
