@@ -6,6 +6,7 @@
 #include "ImageIO.h"
 #include "PathTracer.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 #include "ErrorEstimate.h"
 #include "GlTestContext.h"
 #include "PathTracer.h"
+#include "SceneLoader.h"
 
 #include <gtest/gtest.h>
 
