@@ -5,6 +5,7 @@
 #include "GlTestContext.h"
 #include "ImageIO.h"
 #include "PathTracer.h"
+#include "PrintSettings.h"
 #include "Scene.h"
 #include "SceneLoader.h"
 

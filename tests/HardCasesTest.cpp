@@ -103,6 +103,8 @@ struct FurnaceCase {
     bool lossless; // then every pixel's expectation is exactly 1
 };
 
+void PrintTo(const FurnaceCase& furnace, std::ostream* out) { *out << furnace.name; }
+
 class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
 
 // A sphere seen whole, and a plane seen at grazing angles (the camera 1 mm above a 1 km floor,
