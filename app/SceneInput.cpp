@@ -1,5 +1,7 @@
 #include "SceneInput.h"
 
+#include "SceneLoader.h"
+
 #include <iostream>
 
 namespace ptview {

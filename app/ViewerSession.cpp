@@ -2,6 +2,7 @@
 
 #include "ImageIO.h"
 #include "Image.h"
+#include "SceneLoader.h"
 #include "SceneMerge.h"
 #include "SceneWriter.h"
 

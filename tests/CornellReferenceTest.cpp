@@ -5,7 +5,9 @@
 #include "GlTestContext.h"
 #include "ImageIO.h"
 #include "PathTracer.h"
+#include "PrintSettings.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 
 #include <gtest/gtest.h>
 

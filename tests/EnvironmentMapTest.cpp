@@ -12,6 +12,7 @@
 #include "ProbePass.h"
 #include "RunCommand.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 #include "SceneWriter.h"
 #include "ShaderAssembler.h"
 

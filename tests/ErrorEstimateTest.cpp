@@ -6,6 +6,7 @@
 #include "GlTestContext.h"
 #include "PathTracer.h"
 #include "SceneInput.h"
+#include "SceneLoader.h"
 #include "ViewerSession.h"
 
 #include <gtest/gtest.h>

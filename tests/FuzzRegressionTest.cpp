@@ -8,6 +8,7 @@
 #include "LimitedChild.h"
 #include "ObjLoader.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 #include "TestFiles.h"
 #include "ViewerScript.h"
 

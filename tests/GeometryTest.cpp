@@ -2,6 +2,7 @@
 #include "GlTestContext.h"
 #include "PathTracer.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 
 #include <gtest/gtest.h>
 

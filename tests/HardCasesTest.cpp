@@ -4,6 +4,7 @@
 #include "ErrorEstimate.h"
 #include "GlTestContext.h"
 #include "PathTracer.h"
+#include "SceneLoader.h"
 
 #include <gtest/gtest.h>
 
@@ -101,6 +102,8 @@ struct FurnaceCase {
     Material material;
     bool lossless; // then every pixel's expectation is exactly 1
 };
+
+void PrintTo(const FurnaceCase& furnace, std::ostream* out) { *out << furnace.name; }
 
 class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
 

@@ -9,7 +9,9 @@
 // only where the answer does not depend on the sample positions at all.
 #include "GlTestContext.h"
 #include "PathTracer.h"
+#include "PrintSettings.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 
 #include <gtest/gtest.h>
 
@@ -48,6 +50,8 @@ struct RenderConfig {
         return std::string(integratorName(integrator)) + "_" + samplerModeName(sampler) + "_depth" + std::to_string(maxDepth);
     }
 };
+
+void PrintTo(const RenderConfig& config, std::ostream* out) { *out << config.name(); }
 
 // Renders from a fresh start; every value of the result must be finite.
 PixelStatistics render(const Scene& scene, const RenderConfig& config, int samplesPerPixel, std::uint32_t seed) {
@@ -722,15 +726,17 @@ TEST(DeltaLightsAllIntegrators, PointLightIsInvisibleToTheCamera) {
 
 const glm::vec3 kLampRadiance(4.0f, 2.0f, 1.0f);
 
-struct DiskGeometry {
+// Where an area light hangs (its centre `height` above the floor's origin) and where the camera
+// that looks at the point below it stands.
+struct AreaLightGeometry {
     float radius, height;
     glm::vec3 cameraEye;
 };
 
-const DiskGeometry kSmallHighDisk{0.5f, 1.0f, {1.5f, 0.8f, 0.0f}};
-const DiskGeometry kLargeLowDisk{1.5f, 0.5f, {1.2f, 0.45f, 0.0f}};
+const AreaLightGeometry kSmallHighDisk{0.5f, 1.0f, {1.5f, 0.8f, 0.0f}};
+const AreaLightGeometry kLargeLowDisk{1.5f, 0.5f, {1.2f, 0.45f, 0.0f}};
 
-Shape downwardDisk(const DiskGeometry& geometry) {
+Shape downwardDisk(const AreaLightGeometry& geometry) {
     Shape disk;
     disk.type = ShapeType::Disk;
     disk.center = {0.0f, geometry.height, 0.0f};
@@ -760,36 +766,6 @@ const RenderConfig kAreaLightConfigs[] = {
     {Integrator::Full, SamplerMode::Random, 4},
 };
 
-class DiskLight : public ::testing::TestWithParam<RenderConfig> {};
-
-TEST_P(DiskLight, FloorBelowReceivesOnAxisIrradiance) {
-    const RenderConfig& config = GetParam();
-    for (const DiskGeometry& geometry : {kSmallHighDisk, kLargeLowDisk}) {
-        Scene scene = floorScene();
-        scene.camera.eye = geometry.cameraEye;
-        scene.camera.up = {0.0f, 1.0f, 0.0f};
-        scene.camera.vfovDeg = 1.0f;
-        scene.camera.resolution = {16, 16};
-        scene.materials.push_back(lampEmitter());
-        scene.shapes.push_back(downwardDisk(geometry));
-        PixelStatistics stats = render(scene, config, 512, 51);
-
-        double r2 = geometry.radius * geometry.radius;
-        glm::dvec3 expected =
-            glm::dvec3(kFloorAlbedo) * glm::dvec3(kLampRadiance) * r2 / (geometry.height * geometry.height + r2);
-        std::string what = config.name() + " R " + std::to_string(geometry.radius) + " h " + std::to_string(geometry.height);
-        Estimate centre = regionEstimate(stats, [](int x, int y) { return x >= 6 && x < 10 && y >= 6 && y < 10; });
-        double worst = expectNear(centre, expected, what + " below the disk");
-        std::printf("disk light %-24s R %.1f h %.1f: got %.5f %.5f %.5f expected %.5f %.5f %.5f se %.5f %.5f %.5f "
-                    "(worst %.2f of tolerance)\n",
-                    config.name().c_str(), geometry.radius, geometry.height, centre.mean.r, centre.mean.g, centre.mean.b,
-                    expected.r, expected.g, expected.b, centre.standardError.r, centre.standardError.g,
-                    centre.standardError.b, worst);
-    }
-}
-
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, DiskLight, ::testing::ValuesIn(kAreaLightConfigs), configParamName);
-
 TEST(DiskLightSides, BlackFromBehindRadianceInFront) {
     // A bright environment behind the disk: from behind, the disk hides it and shows nothing.
     Scene scene;
@@ -816,49 +792,81 @@ TEST(DiskLightSides, BlackFromBehindRadianceInFront) {
 // ---- Sphere area light -------------------------------------------------------------------------
 // A sphere of radius R and radiance L whose centre is at height d above a surface facing it
 // gives irradiance pi L (R / d)^2 (it subtends a cone of sin(half-angle) = R / d, wholly above the
-// horizon); a diffuse floor reflects a / pi of it. Again a small high sphere and a large low one.
+// horizon); a diffuse floor reflects a / pi of it. Again a small high sphere and a large low one,
+// the camera seeing the point below the centre past the sphere.
 
-struct SphereGeometry {
-    float radius, height;
-    glm::vec3 cameraEye; // sees the point below the centre past the sphere
+const AreaLightGeometry kSmallHighSphere{0.1f, 1.0f, {1.5f, 0.8f, 0.0f}};
+const AreaLightGeometry kLargeLowSphere{0.4f, 0.5f, {1.0f, 0.25f, 0.0f}};
+
+Shape sphereAbove(const AreaLightGeometry& geometry) {
+    Shape sphere;
+    sphere.type = ShapeType::Sphere;
+    sphere.center = {0.0f, geometry.height, 0.0f};
+    sphere.radius = geometry.radius;
+    sphere.material = 1;
+    return sphere;
+}
+
+// ---- Both area lights: the floor point below the light -----------------------------------------
+
+struct AreaLightCase {
+    const char* name;
+    Shape (*emitter)(const AreaLightGeometry&);
+    // The irradiance at the floor point below the centre over pi L (so the floor's radiance there
+    // is its albedo times L times this): R^2 / (h^2 + R^2) for the disk, (R / d)^2 for the sphere.
+    double (*irradianceOverPiL)(const AreaLightGeometry&);
+    AreaLightGeometry geometries[2];
+    std::uint32_t seed;
 };
 
-const SphereGeometry kSmallHighSphere{0.1f, 1.0f, {1.5f, 0.8f, 0.0f}};
-const SphereGeometry kLargeLowSphere{0.4f, 0.5f, {1.0f, 0.25f, 0.0f}};
+const AreaLightCase kAreaLights[] = {
+    {"disk", downwardDisk,
+     [](const AreaLightGeometry& g) {
+         double r2 = g.radius * g.radius;
+         return r2 / (g.height * g.height + r2);
+     },
+     {kSmallHighDisk, kLargeLowDisk}, 51},
+    {"sphere", sphereAbove,
+     [](const AreaLightGeometry& g) { return double(g.radius) * g.radius / (double(g.height) * g.height); },
+     {kSmallHighSphere, kLargeLowSphere}, 61},
+};
 
-class SphereLight : public ::testing::TestWithParam<RenderConfig> {};
+void PrintTo(const AreaLightCase& light, std::ostream* out) { *out << light.name; }
 
-TEST_P(SphereLight, FloorBelowReceivesPiLSinSquared) {
-    const RenderConfig& config = GetParam();
-    for (const SphereGeometry& geometry : {kSmallHighSphere, kLargeLowSphere}) {
+class AreaLight : public ::testing::TestWithParam<std::tuple<AreaLightCase, RenderConfig>> {};
+
+std::string areaLightName(const ::testing::TestParamInfo<AreaLight::ParamType>& info) {
+    return std::string(std::get<0>(info.param).name) + "_" + std::get<1>(info.param).name();
+}
+
+TEST_P(AreaLight, FloorBelowReceivesClosedFormIrradiance) {
+    const AreaLightCase& light = std::get<0>(GetParam());
+    const RenderConfig& config = std::get<1>(GetParam());
+    for (const AreaLightGeometry& geometry : light.geometries) {
         Scene scene = floorScene();
         scene.camera.eye = geometry.cameraEye;
         scene.camera.up = {0.0f, 1.0f, 0.0f};
         scene.camera.vfovDeg = 1.0f;
         scene.camera.resolution = {16, 16};
         scene.materials.push_back(lampEmitter());
-        Shape sphere;
-        sphere.type = ShapeType::Sphere;
-        sphere.center = {0.0f, geometry.height, 0.0f};
-        sphere.radius = geometry.radius;
-        sphere.material = 1;
-        scene.shapes.push_back(sphere);
-        PixelStatistics stats = render(scene, config, 512, 61);
+        scene.shapes.push_back(light.emitter(geometry));
+        PixelStatistics stats = render(scene, config, 512, light.seed);
 
-        double sin2 = double(geometry.radius) * geometry.radius / (double(geometry.height) * geometry.height);
-        glm::dvec3 expected = glm::dvec3(kFloorAlbedo) * glm::dvec3(kLampRadiance) * sin2;
-        std::string what = config.name() + " R " + std::to_string(geometry.radius) + " d " + std::to_string(geometry.height);
+        glm::dvec3 expected = glm::dvec3(kFloorAlbedo) * glm::dvec3(kLampRadiance) * light.irradianceOverPiL(geometry);
+        std::string what = config.name() + " R " + std::to_string(geometry.radius) + " h " + std::to_string(geometry.height);
         Estimate centre = regionEstimate(stats, [](int x, int y) { return x >= 6 && x < 10 && y >= 6 && y < 10; });
-        double worst = expectNear(centre, expected, what + " below the sphere");
-        std::printf("sphere light %-24s R %.1f d %.1f: got %.5f %.5f %.5f expected %.5f %.5f %.5f se %.5f %.5f %.5f "
+        double worst = expectNear(centre, expected, what + " below the " + light.name);
+        std::printf("%s light %-24s R %.1f h %.1f: got %.5f %.5f %.5f expected %.5f %.5f %.5f se %.5f %.5f %.5f "
                     "(worst %.2f of tolerance)\n",
-                    config.name().c_str(), geometry.radius, geometry.height, centre.mean.r, centre.mean.g, centre.mean.b,
-                    expected.r, expected.g, expected.b, centre.standardError.r, centre.standardError.g,
+                    light.name, config.name().c_str(), geometry.radius, geometry.height, centre.mean.r, centre.mean.g,
+                    centre.mean.b, expected.r, expected.g, expected.b, centre.standardError.r, centre.standardError.g,
                     centre.standardError.b, worst);
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, SphereLight, ::testing::ValuesIn(kAreaLightConfigs), configParamName);
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, AreaLight,
+                         ::testing::Combine(::testing::ValuesIn(kAreaLights), ::testing::ValuesIn(kAreaLightConfigs)),
+                         areaLightName);
 
 } // namespace
 } // namespace ptview

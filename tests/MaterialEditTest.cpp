@@ -5,6 +5,7 @@
 #include "GlTestContext.h"
 #include "PathTracer.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // scene's names, overrides), what a bad mesh reference says, transforms baked into analytic
 // shapes, and the round trip through the writer.
 #include "Scene.h"
+#include "SceneLoader.h"
 #include "SceneWriter.h"
 #include "TestFiles.h"
 

@@ -7,6 +7,7 @@
 #include "GpuScene.h"
 #include "PathTracer.h"
 #include "ProbePass.h"
+#include "SceneLoader.h"
 #include "ShaderAssembler.h"
 #include "TriangleIntersect.h"
 

@@ -3,11 +3,14 @@
 
 #include "LimitedChild.h"
 #include "Scene.h"
+#include "SceneLoader.h"
+#include "ShapeSchema.h"
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -378,6 +381,31 @@ TEST(SceneLoader, RejectsUnknownKey) {
     // Keys that belong to another type are unknown too.
     expectPlaceError(errorFrom(validSceneWith("\"radiance\"", "\"albedo\"")),
                      "/materials/light/albedo", "unknown key");
+}
+
+// The keys a shape may have come from ShapeSchema.h, for each type and, while the type is not
+// known, for all of them (in the order this message had when each list was written out by hand).
+TEST(SceneLoader, UnknownShapeKeysListTheSchemasKeys) {
+    for (const ShapeSchema& schema : kShapeSchemas) {
+        SCOPED_TRACE(schema.name);
+        std::string expected;
+        for (const char* key : shapeKeys(schema)) expected += (expected.empty() ? "" : ", ") + std::string(key);
+        std::string shape = std::string(R"({ "type": ")") + schema.name + R"(", "bogus": 1 },)";
+        EXPECT_EQ(errorFrom(validSceneWith("\"shapes\": [", "\"shapes\": [" + shape)),
+                  std::string(kSource) + ": /shapes/0/bogus: unknown key (expected one of: " + expected + ")");
+    }
+    EXPECT_EQ(errorFrom(validSceneWith("\"type\": \"sphere\"", "\"typ\": \"sphere\"")),
+              std::string(kSource) + ": /shapes/1/typ: unknown key (expected one of: name, type, material, center, "
+                                     "radius, u, v, half_size, rotation, normal, mesh, materials, transform)");
+}
+
+TEST(ShapeSchema, TableIsInShapeTypeOrder) {
+    ASSERT_EQ(std::size(kShapeSchemas), static_cast<std::size_t>(ShapeType::Mesh) + 1);
+    for (ShapeType type : {ShapeType::Sphere, ShapeType::Quad, ShapeType::Box, ShapeType::Disk, ShapeType::Mesh}) {
+        EXPECT_EQ(shapeSchema(type).type, type) << shapeSchema(type).name;
+        EXPECT_EQ(findShapeSchema(shapeSchema(type).name), &shapeSchema(type));
+    }
+    EXPECT_EQ(findShapeSchema("cone"), nullptr);
 }
 
 TEST(SceneLoader, EscapesKeysInPointer) {

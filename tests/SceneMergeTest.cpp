@@ -2,6 +2,7 @@
 // that triggers it.
 
 #include "FileWatcher.h"
+#include "SceneLoader.h"
 #include "SceneMerge.h"
 
 #include <gtest/gtest.h>

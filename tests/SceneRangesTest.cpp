@@ -2,6 +2,7 @@
 // and just inside an open one loads with the value exact, one just outside is refused, at the
 // value's place, with the table's words. The writer and the script checker read the same table.
 #include "Scene.h"
+#include "SceneLoader.h"
 #include "SceneRanges.h"
 #include "SceneWriter.h"
 

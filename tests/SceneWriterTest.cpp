@@ -3,6 +3,7 @@
 
 #include "MaterialSchema.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 #include "SceneWriter.h"
 #include "TestFiles.h"
 

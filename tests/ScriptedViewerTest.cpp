@@ -3,8 +3,9 @@
 // the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots.
 #include "ImageIO.h"
 #include "RunCommand.h"
-#include "ScriptStatus.h"
 #include "Scene.h"
+#include "SceneLoader.h"
+#include "ScriptStatus.h"
 #include "TestFiles.h"
 
 #include <stb_image.h>

@@ -4,6 +4,7 @@
 #include "GlTestContext.h"
 #include "PathTracer.h"
 #include "RunCommand.h"
+#include "SceneLoader.h"
 #include "ShaderFeatures.h"
 
 #include <gtest/gtest.h>

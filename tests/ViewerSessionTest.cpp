@@ -3,6 +3,7 @@
 #include "GlTestContext.h"
 #include "ImageIO.h"
 #include "SceneInput.h"
+#include "SceneLoader.h"
 #include "TestFiles.h"
 #include "UnsavedEditsPrompt.h"
 #include "ViewerSession.h"

@@ -53,12 +53,10 @@ struct Aabb {
     }
 };
 
-// One node: two 16-byte texels of a buffer texture, node i at texels 2i and 2i + 1:
-//   texel 2i:     xyz = boundsMin (float), w = firstOrRight (uint bits)
-//   texel 2i + 1: xyz = boundsMax (float), w = primitiveCount (uint bits)
-// The uints are stored as raw bits. Read through an RGBA32F view they are denormal floats, which
-// floatBitsToUint recovers only if nothing flushed them; a second, RGBA32UI view of the same
-// buffer (usamplerBuffer) reads them as integers for certain.
+// One node, 32 bytes: bounds and two integers, laid out as the two 16-byte texels of the GPU's
+// node (GpuBvhNode in GpuMeshes.h). The GPU copy is not these bytes: GpuMeshes.cpp makes the
+// indices absolute and stores each integer as a float of the same value (exact below 2^24, which
+// it checks), read through an RGBA32F view and converted back with int() in mesh_intersect.glsl.
 struct BvhNode {
     glm::vec3 boundsMin;
     std::uint32_t firstOrRight;   // leaf: first index into primitiveOrder; interior: right child

@@ -36,7 +36,8 @@ struct Expander {
         expandText(readText(path, displayName), displayName, canonical.string());
     }
 
-    // An include's name may stand for another file or for generated text (ShaderAssembler::replace).
+    // An include's name may stand for another file or for generated text (ShaderAssembler::
+    // replaceWithFile and replaceWithText).
     void expandInclude(const std::string& name, const std::string& from, int lineNumber) {
         auto replacement = replacements.find(name);
         if (replacement != replacements.end() && replacement->second.isGenerated) {

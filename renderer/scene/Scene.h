@@ -9,7 +9,6 @@
 
 #include <filesystem>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -113,18 +112,6 @@ struct Scene {
     std::vector<std::string> warnings;
 };
 
-// A scene file that cannot be used. what() reads "FILE: /json/pointer: reason" or, for
-// malformed JSON, "FILE:LINE:COLUMN: reason", on one line.
-class SceneError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-// Throws SceneError naming the file and the place in it.
-Scene loadScene(const std::filesystem::path& path);
-// Same, for text already in memory; sourceName is used in error messages and as Scene::path.
-Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName);
-
 // The rotation of a box as a matrix (local to world).
 glm::mat3 boxRotation(const Shape& box);
 // v at unit length, with the length taken in double: a float's squares underflow below about
@@ -133,5 +120,12 @@ glm::mat3 boxRotation(const Shape& box);
 glm::vec3 unitDirection(glm::dvec3 v);
 // Rodrigues' rotation about axis (any length; zero: none) by degrees.
 glm::mat3 rotationMatrix(glm::vec3 axis, float degrees);
+// Whether a scale is the same along every axis, up to sign (a mirroring).
+bool isUniform(const glm::vec3& scale);
+// Puts an analytic shape where transform places it, in its own parameters (a mesh keeps its
+// transform instead: this leaves it as it is). Spheres and disks take only a uniform scale, boxes
+// only a positive one, and a rotated box a uniform one: other transforms would change what the
+// shape is, so the loader refuses them before it gets here.
+void bakeTransform(Shape& shape, const Transform& transform);
 
 } // namespace ptview

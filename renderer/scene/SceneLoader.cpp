@@ -5,11 +5,13 @@
 // finite) is an error rather than silently ignored: a typo such as "radus" would otherwise give a
 // default radius and a puzzling image instead of a message.
 
+#include "SceneLoader.h"
+
 #include "InputFile.h"
 #include "MaterialSchema.h"
 #include "ObjLoader.h"
-#include "Scene.h"
 #include "SceneRanges.h"
+#include "ShapeSchema.h"
 
 #include <nlohmann/json.hpp>
 
@@ -31,9 +33,6 @@
 #include <map>
 #include <new>
 #include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 namespace ptview {
 namespace {
@@ -476,12 +475,16 @@ void checkKeys(const Json& object, const Pointer& at, std::initializer_list<cons
     checkKeys<std::initializer_list<const char*>>(object, at, allowed);
 }
 
-void requireType(const Json& object, const Pointer& at,
-                 std::initializer_list<const char*> anyType) {
+template <typename Names>
+void requireType(const Json& object, const Pointer& at, const Names& anyType) {
     if (!object.contains("type")) {
-        checkKeys(object, at, anyType);
+        checkKeys<Names>(object, at, anyType);
         fail(at / "type", "missing required key");
     }
+}
+
+void requireType(const Json& object, const Pointer& at, std::initializer_list<const char*> anyType) {
+    requireType<std::initializer_list<const char*>>(object, at, anyType);
 }
 
 // --- Scene parts --------------------------------------------------------------------------------
@@ -606,53 +609,23 @@ Transform readTransform(const Json& value, const Pointer& at) {
     return transform;
 }
 
-bool isUniform(const glm::vec3& scale) {
-    return std::abs(scale.x) == std::abs(scale.y) && std::abs(scale.y) == std::abs(scale.z);
-}
-
-// Bakes a transform into an analytic shape's parameters. Spheres, disks and rotated boxes stay
-// what they are only under a uniform scale, so anything else is an error, not a silent change.
-void applyTransform(Shape& shape, const Transform& transform, const Pointer& at) {
-    glm::mat3 rotation = rotationMatrix(transform.rotationAxis, transform.rotationDeg);
-    glm::mat3 linear = rotation * glm::mat3(glm::scale(glm::mat4(1.0f), transform.scale));
-    auto place = [&](glm::vec3 point) { return linear * point + transform.translate; };
-    float uniformScale = std::abs(transform.scale.x);
+// Spheres, disks and rotated boxes stay what they are only under a uniform scale, and boxes only
+// under a positive one, so anything else is an error, not a silent change (bakeTransform's terms).
+void checkTransformable(const Shape& shape, const Transform& transform, const Pointer& at) {
     switch (shape.type) {
     case ShapeType::Sphere:
         if (!isUniform(transform.scale)) fail(at / "scale", "a sphere takes only a uniform scale");
-        shape.center = place(shape.center);
-        shape.radius *= uniformScale;
-        break;
-    case ShapeType::Quad:
-        shape.center = place(shape.center);
-        shape.u = linear * shape.u;
-        shape.v = linear * shape.v;
         break;
     case ShapeType::Disk:
         if (!isUniform(transform.scale)) fail(at / "scale", "a disk takes only a uniform scale");
-        shape.center = place(shape.center);
-        // Under a uniform scale s the inverse transpose is the rotation divided by s, so the normal
-        // is turned and, for a mirroring s < 0, flipped. Inverting the matrix instead took s^3,
-        // which underflows at s = 1e-30 and made the normal NaN.
-        shape.normal = unitDirection(glm::dvec3(rotation * shape.normal) * (transform.scale.x < 0.0f ? -1.0 : 1.0));
-        shape.radius *= uniformScale;
         break;
-    case ShapeType::Box: {
-        bool rotated = shape.rotationDeg != 0.0f;
-        if (!isUniform(transform.scale) && rotated)
+    case ShapeType::Box:
+        if (!isUniform(transform.scale) && shape.rotationDeg != 0.0f)
             fail(at / "scale", "a rotated box takes only a uniform scale (a sheared box is not a box)");
         if (transform.scale.x < 0.0f || transform.scale.y < 0.0f || transform.scale.z < 0.0f)
             fail(at / "scale", "a box takes only a positive scale");
-        shape.center = place(shape.center);
-        shape.halfSize *= glm::abs(transform.scale);
-        // Compose the rotations and store the result as axis and angle again.
-        glm::quat combined = glm::quat_cast(rotation * boxRotation(shape));
-        float angle = glm::angle(combined);
-        glm::vec3 axis = glm::axis(combined);
-        shape.rotationDeg = glm::degrees(angle);
-        shape.rotationAxis = glm::length(axis) > 0.0f && angle != 0.0f ? axis : glm::vec3(0.0f, 1.0f, 0.0f);
         break;
-    }
+    case ShapeType::Quad:
     case ShapeType::Mesh:
         break;
     }
@@ -698,28 +671,12 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
                 std::vector<MeshMaterialRequest>& meshRequests) {
     requireObject(value, at);
     Shape shape;
-    requireType(value, at,
-                {"name", "type", "material", "center", "radius", "u", "v", "half_size",
-                 "rotation", "normal", "mesh", "materials", "transform"});
+    requireType(value, at, anyShapeKeys());
     std::string type = readString(value.at("type"), at / "type");
-    if (type == "sphere") {
-        shape.type = ShapeType::Sphere;
-        checkKeys(value, at, {"name", "type", "material", "center", "radius", "transform"});
-    } else if (type == "quad") {
-        shape.type = ShapeType::Quad;
-        checkKeys(value, at, {"name", "type", "material", "center", "u", "v", "transform"});
-    } else if (type == "box") {
-        shape.type = ShapeType::Box;
-        checkKeys(value, at, {"name", "type", "material", "center", "half_size", "rotation", "transform"});
-    } else if (type == "disk") {
-        shape.type = ShapeType::Disk;
-        checkKeys(value, at, {"name", "type", "material", "center", "normal", "radius", "transform"});
-    } else if (type == "mesh") {
-        shape.type = ShapeType::Mesh;
-        checkKeys(value, at, {"name", "type", "mesh", "material", "materials", "transform"});
-    } else {
-        fail(at / "type", "unknown shape type \"" + type + "\" (expected sphere, quad, box, disk or mesh)");
-    }
+    const ShapeSchema* schema = findShapeSchema(type);
+    if (!schema) fail(at / "type", "unknown shape type \"" + type + "\" (expected " + shapeTypeList() + ")");
+    shape.type = schema->type;
+    checkKeys(value, at, shapeKeys(*schema));
 
     const Json* name = optionalKey(value, "name");
     shape.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
@@ -782,7 +739,8 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
         break;
     }
     if (transform) {
-        applyTransform(shape, shape.transform, at / "transform");
+        checkTransformable(shape, shape.transform, at / "transform");
+        bakeTransform(shape, shape.transform);
         shape.transform = Transform{};
         checkTransformedShape(shape, at);
     }
@@ -1039,35 +997,6 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         // The whole document has the empty pointer, which would read as a stray ": ".
         throw oneLineError(file + ": " + (where.empty() ? "" : where + ": ") + error.what());
     }
-}
-
-glm::mat3 boxRotation(const Shape& box) {
-    return rotationMatrix(box.rotationAxis, box.rotationDeg);
-}
-
-glm::mat4 Transform::objectToWorld() const {
-    glm::mat4 matrix(rotationMatrix(rotationAxis, rotationDeg) * glm::mat3(glm::scale(glm::mat4(1.0f), scale)));
-    matrix[3] = glm::vec4(translate, 1.0f);
-    return matrix;
-}
-
-glm::vec3 unitDirection(glm::dvec3 v) {
-    return glm::vec3(v / glm::length(v));
-}
-
-glm::mat3 rotationMatrix(glm::vec3 axis, float degrees) {
-    // Only scenes built in code can get here with a zero axis; no rotation beats NaNs.
-    if (axis == glm::vec3(0.0f))
-        return glm::mat3(1.0f);
-    glm::vec3 k = unitDirection(axis);
-    float angle = glm::radians(degrees);
-    float c = std::cos(angle);
-    float s = std::sin(angle);
-    // Rodrigues: R = c I + s [k]x + (1 - c) k k^T. glm takes columns, so [k]x reads transposed.
-    glm::mat3 crossMatrix(0.0f, k.z, -k.y,
-                          -k.z, 0.0f, k.x,
-                          k.y, -k.x, 0.0f);
-    return c * glm::mat3(1.0f) + s * crossMatrix + (1.0f - c) * glm::outerProduct(k, k);
 }
 
 } // namespace ptview

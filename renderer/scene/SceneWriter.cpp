@@ -8,7 +8,9 @@
 
 #include "ImageIO.h"
 #include "MaterialSchema.h"
+#include "SceneLoader.h"
 #include "SceneRanges.h"
+#include "ShapeSchema.h"
 
 #include <nlohmann/json.hpp>
 
@@ -215,7 +217,7 @@ Json transformJson(const Transform& transform) {
 Json meshShapeJson(const Shape& shape, const Scene& scene, const std::string& pointer) {
     Json json;
     json["name"] = shape.name;
-    json["type"] = "mesh";
+    json["type"] = shapeSchema(ShapeType::Mesh).name;
     if (shape.mesh < 0 || static_cast<std::size_t>(shape.mesh) >= scene.meshes.size())
         fail(pointer + "/mesh", "mesh index " + std::to_string(shape.mesh) + " is out of range");
     const SceneMesh& mesh = scene.meshes[static_cast<std::size_t>(shape.mesh)];
@@ -240,27 +242,24 @@ Json shapeJson(const Shape& shape, const Scene& scene, const std::string& pointe
     const std::vector<Material>& materials = scene.materials;
     Json json;
     json["name"] = shape.name;
+    json["type"] = shapeSchema(shape.type).name;
     switch (shape.type) {
     case ShapeType::Sphere:
-        json["type"] = "sphere";
         json["center"] = vec3(shape.center);
         json["radius"] = number(shape.radius);
         break;
     case ShapeType::Quad:
-        json["type"] = "quad";
         json["center"] = vec3(shape.center);
         json["u"] = vec3(shape.u);
         json["v"] = vec3(shape.v);
         break;
     case ShapeType::Box:
-        json["type"] = "box";
         json["center"] = vec3(shape.center);
         json["half_size"] = vec3(shape.halfSize);
         if (shape.rotationDeg != 0.0f)
             json["rotation"] = Json{{"axis", vec3(shape.rotationAxis)}, {"degrees", number(shape.rotationDeg)}};
         break;
     case ShapeType::Disk:
-        json["type"] = "disk";
         json["center"] = vec3(shape.center);
         json["normal"] = vec3(shape.normal);
         json["radius"] = number(shape.radius);

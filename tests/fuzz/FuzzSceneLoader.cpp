@@ -14,6 +14,7 @@
 
 #include "FuzzScratch.h"
 #include "Scene.h"
+#include "SceneLoader.h"
 
 #include <cmath>
 #include <cstddef>
