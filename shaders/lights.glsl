@@ -16,14 +16,8 @@
 #include "warps.glsl"
 #include "shading_frame.glsl"
 #include "environment.glsl"
-
-const uint kLightQuad = 0u;
-const uint kLightSphere = 1u;
-const uint kLightDisk = 2u;
-const uint kLightEnvironment = 3u;
-const uint kLightPoint = 4u;
-const uint kLightSpot = 5u;
-const uint kLightTriangle = 6u;
+// kLightQuad, ...: generated from the table of LightKind (renderer/GpuScene.h, GlslEnums.cpp).
+#include "enums.glsl"
 
 struct LightSample {
     vec3 wi;             // unit, from the shading point toward the light
