@@ -65,21 +65,17 @@ CLI::Option* addNamedOption(CLI::App& app, const std::string& flag, Value& value
 }
 
 void addSamplerOption(CLI::App& app, SamplerMode& sampler) {
-    std::vector<std::pair<std::string, SamplerMode>> names;
-    for (const SamplerModeName& entry : samplerModeNames()) names.emplace_back(entry.name, entry.mode);
     std::string description = "sampler:";
-    for (const SamplerModeName& entry : samplerModeNames())
+    for (const EnumEntry<SamplerMode>& entry : samplerModeNames())
         description += std::string("\n  ") + entry.name + ": " + entry.description;
-    addNamedOption(app, "--sampler", sampler, "sampler", names)
+    addNamedOption(app, "--sampler", sampler, "sampler", samplerModeNames().namesAndValues())
         ->description(description)
         ->default_str(samplerModeName(sampler));
 }
 
 void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings& display) {
     addSamplerOption(app, settings.sampler);
-    std::vector<std::pair<std::string, Integrator>> integrators;
-    for (const IntegratorName& entry : integratorNames()) integrators.emplace_back(entry.name, entry.integrator);
-    addNamedOption(app, "--integrator", settings.integrator, "integrator", integrators)
+    addNamedOption(app, "--integrator", settings.integrator, "integrator", integratorNames().namesAndValues())
         ->default_str(integratorName(settings.integrator));
     app.add_option("--depth", settings.maxDepth, "maximum number of bounces (0: emitters only)")
         ->transform(kDecimalInteger)->check(CLI::Range(0, 1024))->capture_default_str();
@@ -87,13 +83,9 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
         ->transform(kDecimalInteger)->capture_default_str();
     app.add_option("--exposure", display.exposureStops, "exposure in stops applied before tone mapping")
         ->check(kFiniteNumber)->check(CLI::Range(-20.0f, 20.0f))->capture_default_str();
-    std::vector<std::pair<std::string, ToneMapper>> toneMappers;
-    for (const ToneMapperName& entry : toneMapperNames()) toneMappers.emplace_back(entry.name, entry.toneMapper);
-    addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMappers)
+    addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMapperNames().namesAndValues())
         ->default_str(toneMapperName(display.toneMapper));
-    std::vector<std::pair<std::string, DebugView>> views;
-    for (const DebugViewName& entry : debugViewNames()) views.emplace_back(entry.name, entry.view);
-    addNamedOption(app, "--view", settings.debugView, "view", views)
+    addNamedOption(app, "--view", settings.debugView, "view", debugViewNames().namesAndValues())
         ->description("view: radiance (the render), normals or albedo (of the first surface seen)")
         ->default_str("radiance");
 }
@@ -102,7 +94,7 @@ void addProgramOptions(CLI::App& app, ProgramOptions& program) {
     app.add_flag("--all-features", program.allFeatures,
                  "compile every material model, the environment map and mesh code, whatever the scene uses");
     std::vector<std::pair<std::string, std::optional<Backend>>> backends = {{"auto", std::nullopt}};
-    for (const BackendName& entry : backendNames()) backends.emplace_back(entry.name, entry.backend);
+    for (const EnumEntry<Backend>& entry : backendNames()) backends.emplace_back(entry.name, entry.value);
     addNamedOption(app, "--backend", program.backend, "backend", backends)
         ->description("backend: auto (the faster on this device, measured), fragment or compute (OpenGL 4.3)")
         ->default_str("auto");

@@ -240,9 +240,8 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         const std::string depth = parts.size() == 3 && parts[2].find_first_not_of("0123456789") == std::string::npos &&
                                           parts[2].size() <= 4 ? parts[2] : std::string();
         ConvergeConfig config;
-        bool knownIntegrator = false;
-        for (const IntegratorName& entry : integratorNames())
-            if (integrator == entry.name) config.integrator = entry.integrator, knownIntegrator = true;
+        std::optional<Integrator> knownIntegrator = integratorNames().parse(integrator);
+        if (knownIntegrator) config.integrator = *knownIntegrator;
         std::optional<SamplerMode> mode = parseSamplerMode(sampler);
         char* end = nullptr;
         long maxDepth = depth.empty() ? -1 : std::strtol(depth.c_str(), &end, 10);

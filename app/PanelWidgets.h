@@ -2,6 +2,8 @@
 // Small widgets the sidebar's panels share: hover help, message text, a file picker for an
 // assets folder and a typed path with its button. Header only: each is a few lines of ImGui.
 
+#include "EnumTable.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -16,6 +18,25 @@ namespace ptview {
 
 inline void itemTooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+// A combo over an enum's table: each entry's label, with its description (where it has one) on
+// hover, in the list and on the closed combo. Returns whether an entry was picked.
+template <typename E>
+bool enumCombo(const char* label, const EnumTable<E>& table, E& value) {
+    bool picked = false;
+    if (ImGui::BeginCombo(label, table.entry(value).displayLabel())) {
+        for (const EnumEntry<E>& entry : table) {
+            if (ImGui::Selectable(entry.displayLabel(), entry.value == value)) {
+                value = entry.value;
+                picked = true;
+            }
+            if (*entry.description) itemTooltip(entry.description);
+        }
+        ImGui::EndCombo();
+    }
+    if (*table.entry(value).description) itemTooltip(table.entry(value).description);
+    return picked;
 }
 
 // Messages carry whole file paths, so they wrap at the panel's edge instead of widening it.

@@ -10,50 +10,16 @@
 namespace ptview {
 namespace {
 
-void integratorCombo(const char* label, Integrator& integrator) {
-    const IntegratorName* current = &integratorNames()[0];
-    for (const IntegratorName& entry : integratorNames())
-        if (entry.integrator == integrator) current = &entry;
-    if (ImGui::BeginCombo(label, current->label)) {
-        for (const IntegratorName& entry : integratorNames())
-            if (ImGui::Selectable(entry.label, entry.integrator == integrator)) integrator = entry.integrator;
-        ImGui::EndCombo();
-    }
-}
-
-// Each choice says what it is and whether it is biased, in the list and on the closed combo.
-void samplerCombo(const char* label, SamplerMode& sampler) {
-    if (ImGui::BeginCombo(label, samplerModeName(sampler))) {
-        for (const SamplerModeName& entry : samplerModeNames()) {
-            if (ImGui::Selectable(entry.name, entry.mode == sampler)) sampler = entry.mode;
-            itemTooltip(entry.description);
-        }
-        ImGui::EndCombo();
-    }
-    itemTooltip(samplerModeInfo(sampler).description);
-}
-
 // Grid and stratified are meant to stop at a complete pattern; say where this one stops.
 void patternNote(const ViewerModel& model) {
-    bool anyPattern = samplerModeInfo(model.settings.sampler).needsTarget ||
-                      (model.compare.enabled && samplerModeInfo(model.compare.right.sampler).needsTarget);
+    bool anyPattern = needsPatternTarget(model.settings.sampler) ||
+                      (model.compare.enabled && needsPatternTarget(model.compare.right.sampler));
     if (!anyPattern) return;
     if (model.targetSamples > 0)
         noteText("the pattern is complete at the target, " + std::to_string(model.targetSamples) + " spp");
     else
         noteText("no target spp: the pattern is incomplete (patchy) until " +
                  std::to_string(model.settings.sampleBudget) + " spp");
-}
-
-void toneMapperCombo(ToneMapper& toneMapper) {
-    const ToneMapperName* current = &toneMapperNames()[0];
-    for (const ToneMapperName& entry : toneMapperNames())
-        if (entry.toneMapper == toneMapper) current = &entry;
-    if (ImGui::BeginCombo("tone mapper", current->label)) {
-        for (const ToneMapperName& entry : toneMapperNames())
-            if (ImGui::Selectable(entry.label, entry.toneMapper == toneMapper)) toneMapper = entry.toneMapper;
-        ImGui::EndCombo();
-    }
 }
 
 } // namespace
@@ -75,10 +41,10 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     RenderSettings& settings = model.settings;
     // Short labels, so the combos have room for whole entries; in compare mode these are the
     // left side's, and the right side's follow a "right side" line below.
-    integratorCombo("integrator", settings.integrator);
+    enumCombo("integrator", integratorNames(), settings.integrator);
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
     itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
-    samplerCombo("sampler", settings.sampler);
+    enumCombo("sampler", samplerModeNames(), settings.sampler);
     patternNote(model);
 
     int perFrame = model.maxSamplesPerFrame;
@@ -95,11 +61,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;
     // The backend, where there is a choice; the program is specialized to the scene either way.
     ImGui::BeginDisabled(!PathTracer::computeSupported());
-    if (ImGui::BeginCombo("backend", backendName(model.backend))) {
-        for (const BackendName& entry : backendNames())
-            if (ImGui::Selectable(entry.name, entry.backend == model.backend)) model.backend = entry.backend;
-        ImGui::EndCombo();
-    }
+    enumCombo("backend", backendNames(), model.backend);
     ImGui::EndDisabled();
     itemTooltip("fragment: a full-screen triangle (OpenGL 4.1); compute: a dispatch (OpenGL 4.3), which uses all of a\n"
                 "data-centre GPU's cores. At start the viewer measured both on this scene and took the faster.");
@@ -109,25 +71,21 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 2.0f, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
-    if (ImGui::BeginCombo("view", debugViewName(settings.debugView))) {
-        for (const DebugViewName& entry : debugViewNames())
-            if (ImGui::Selectable(entry.name, entry.view == settings.debugView)) settings.debugView = entry.view;
-        ImGui::EndCombo();
-    }
+    enumCombo("view", debugViewNames(), settings.debugView);
     itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
     ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
 
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");
-    toneMapperCombo(model.display.toneMapper);
+    enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper);
 
     ImGui::Separator();
     ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
     itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
     if (model.compare.enabled) {
         ImGui::TextDisabled("right side (above: the left side):");
-        integratorCombo("integrator##right", model.compare.right.integrator);
-        samplerCombo("sampler##right", model.compare.right.sampler);
+        enumCombo("integrator##right", integratorNames(), model.compare.right.integrator);
+        enumCombo("sampler##right", samplerModeNames(), model.compare.right.sampler);
         ImGui::SliderInt("MAX_DEPTH##right", &model.compare.right.maxDepth, 0, 64);
         ImGui::Checkbox("equal time", &model.compare.equalTime);
         itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"

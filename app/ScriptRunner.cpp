@@ -19,17 +19,9 @@ constexpr std::chrono::seconds kWaitTimeout{120};
 constexpr std::chrono::seconds kReloadTimeout{10};
 using Clock = std::chrono::steady_clock;
 
-Integrator integratorNamed(const std::string& name) {
-    for (const IntegratorName& entry : integratorNames())
-        if (name == entry.name) return entry.integrator;
-    return Integrator::Naive; // unreachable: the parser checked the name
-}
-
-ToneMapper toneMapperNamed(const std::string& name) {
-    for (const ToneMapperName& entry : toneMapperNames())
-        if (name == entry.name) return entry.toneMapper;
-    return ToneMapper::Reinhard;
-}
+// The parser checked the names: the fallbacks are unreachable.
+Integrator integratorNamed(const std::string& name) { return integratorNames().parse(name).value_or(Integrator::Naive); }
+ToneMapper toneMapperNamed(const std::string& name) { return toneMapperNames().parse(name).value_or(ToneMapper::Reinhard); }
 
 // Quoted for the status line: one line, quotes and backslashes escaped.
 std::string quoted(const std::string& text) {

@@ -104,21 +104,9 @@ std::vector<ArgSpec> vec3Args(const char* x, const char* y, const char* z, doubl
 }
 
 // The name tables live with the enums; these only turn them into words.
-std::vector<std::string> integratorChoices() {
-    std::vector<std::string> names;
-    for (const IntegratorName& entry : integratorNames()) names.emplace_back(entry.name);
-    return names;
-}
-std::vector<std::string> samplerChoices() {
-    std::vector<std::string> names;
-    for (const SamplerModeName& entry : samplerModeNames()) names.emplace_back(entry.name);
-    return names;
-}
-std::vector<std::string> toneMapperChoices() {
-    std::vector<std::string> names;
-    for (const ToneMapperName& entry : toneMapperNames()) names.emplace_back(entry.name);
-    return names;
-}
+std::vector<std::string> integratorChoices() { return integratorNames().names(); }
+std::vector<std::string> samplerChoices() { return samplerModeNames().names(); }
+std::vector<std::string> toneMapperChoices() { return toneMapperNames().names(); }
 std::vector<std::string> materialTypeChoices() {
     std::vector<std::string> names;
     for (const MaterialSchema& schema : kMaterialSchemas) names.emplace_back(schema.name);

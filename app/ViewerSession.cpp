@@ -404,7 +404,7 @@ void ViewerSession::setPatternTarget() {
     bool chosen = false;
     for (int side = 0; side < 2; ++side) {
         bool used = side == 0 || model_.compare.enabled;
-        if (used && samplers[side] != seenSampler_[side] && samplerModeInfo(samplers[side]).needsTarget) chosen = true;
+        if (used && samplers[side] != seenSampler_[side] && needsPatternTarget(samplers[side])) chosen = true;
         if (used) seenSampler_[side] = samplers[side];
     }
     if (!chosen || model_.targetSamples != 0) return;

@@ -1,5 +1,7 @@
 #include "WarpVisualizer.h"
 
+#include "PanelWidgets.h"
+
 #include <imgui.h>
 
 #include <cmath>
@@ -26,14 +28,7 @@ void WarpVisualizer::drawControls() {
         }
         ImGui::EndCombo();
     }
-    if (ImGui::BeginCombo("sampler", samplerModeName(request_.sampler))) {
-        for (const SamplerModeName& entry : samplerModeNames())
-            if (ImGui::Selectable(entry.name, entry.mode == request_.sampler)) {
-                request_.sampler = entry.mode;
-                dirty_ = true;
-            }
-        ImGui::EndCombo();
-    }
+    if (enumCombo("sampler", samplerModeNames(), request_.sampler)) dirty_ = true;
     dirty_ |= ImGui::SliderInt("points", &request_.count, 16, 65536, "%d", ImGuiSliderFlags_Logarithmic);
     if (request_.warp == Warp::UniformCone && ImGui::SliderFloat("half-angle", &coneAngleDeg_, 1.0f, 180.0f, "%.0f deg")) {
         request_.cosThetaMax = std::cos(glm::radians(coneAngleDeg_));

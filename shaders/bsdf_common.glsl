@@ -42,6 +42,17 @@ vec3 reflectLocal(vec3 woLocal) {
     return vec3(-woLocal.xy, woLocal.z);
 }
 
+// Two-sided models are evaluated as if wo were on the front side (an isotropic BSDF is symmetric
+// under flipping both z's): frontSide(woLocal) is the sign that takes wo there, and
+// flipToSide(w, side) applies it to a direction, and undoes it (it is its own inverse).
+float frontSide(vec3 woLocal) {
+    return woLocal.z > 0.0 ? 1.0 : -1.0;
+}
+
+vec3 flipToSide(vec3 wLocal, float side) {
+    return vec3(wLocal.xy, wLocal.z * side);
+}
+
 float luminance(vec3 rgb) {
     return dot(rgb, vec3(0.2126, 0.7152, 0.0722));
 }

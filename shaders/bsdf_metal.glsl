@@ -9,9 +9,9 @@
 vec3 metalF(vec3 reflectance, float roughness, vec3 woLocal, vec3 wiLocal) {
     float alpha = ggxAlpha(roughness);
     if (!sameHemisphere(woLocal, wiLocal) || ggxIsEffectivelySmooth(alpha)) return vec3(0.0);
-    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
-    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
-    vec3 wi = vec3(wiLocal.xy, wiLocal.z * side);
+    float side = frontSide(woLocal);
+    vec3 wo = flipToSide(woLocal, side);
+    vec3 wi = flipToSide(wiLocal, side);
     vec3 h = wo + wi;
     if (dot(h, h) == 0.0) return vec3(0.0);
     h = normalize(h);
@@ -20,14 +20,14 @@ vec3 metalF(vec3 reflectance, float roughness, vec3 woLocal, vec3 wiLocal) {
 
 float metalPdf(float roughness, vec3 woLocal, vec3 wiLocal) {
     if (!sameHemisphere(woLocal, wiLocal) || ggxIsEffectivelySmooth(ggxAlpha(roughness))) return 0.0;
-    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
-    return ggxReflectionPdf(vec3(woLocal.xy, woLocal.z * side), vec3(wiLocal.xy, wiLocal.z * side), ggxAlpha(roughness));
+    float side = frontSide(woLocal);
+    return ggxReflectionPdf(flipToSide(woLocal, side), flipToSide(wiLocal, side), ggxAlpha(roughness));
 }
 
 BsdfSample sampleMetal(vec3 reflectance, float roughness, vec3 woLocal, vec2 u) {
     if (woLocal.z == 0.0) return failedBsdfSample();
-    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
-    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
+    float side = frontSide(woLocal);
+    vec3 wo = flipToSide(woLocal, side);
     float alpha = ggxAlpha(roughness);
     if (ggxIsEffectivelySmooth(alpha))
         return BsdfSample(reflectLocal(woLocal), fresnelSchlick(reflectance, wo.z), 1.0, true);
@@ -38,5 +38,5 @@ BsdfSample sampleMetal(vec3 reflectance, float roughness, vec3 woLocal, vec2 u) 
     // f cos / pdf with pdf = G1(wo) D (wo.h) / (wo.z 4 (wo.h)): D and the cosines cancel.
     vec3 weight = fresnelSchlick(reflectance, woDotH) * (ggxG2(wo, wi, alpha) / ggxG1(wo, alpha));
     float pdf = ggxVisibleNormalPdf(wo, h, alpha) / (4.0 * woDotH);
-    return BsdfSample(vec3(wi.xy, wi.z * side), weight, pdf, false);
+    return BsdfSample(flipToSide(wi, side), weight, pdf, false);
 }

@@ -20,9 +20,9 @@ float plasticCoatProbability(vec3 albedo, float ior, float cosThetaO) {
 
 vec3 plasticF(vec3 albedo, float ior, float roughness, vec3 woLocal, vec3 wiLocal) {
     if (!sameHemisphere(woLocal, wiLocal)) return vec3(0.0);
-    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
-    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
-    vec3 wi = vec3(wiLocal.xy, wiLocal.z * side);
+    float side = frontSide(woLocal);
+    vec3 wo = flipToSide(woLocal, side);
+    vec3 wi = flipToSide(wiLocal, side);
     vec3 base = (1.0 - fresnelDielectric(wo.z, ior)) * (1.0 - fresnelDielectric(wi.z, ior)) * albedo * kInvPi;
     if (plasticIsSmooth(roughness)) return base; // the smooth coat is a delta lobe
     vec3 h = wo + wi;
@@ -35,9 +35,9 @@ vec3 plasticF(vec3 albedo, float ior, float roughness, vec3 woLocal, vec3 wiLoca
 
 float plasticPdf(vec3 albedo, float ior, float roughness, vec3 woLocal, vec3 wiLocal) {
     if (!sameHemisphere(woLocal, wiLocal)) return 0.0;
-    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
-    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
-    vec3 wi = vec3(wiLocal.xy, wiLocal.z * side);
+    float side = frontSide(woLocal);
+    vec3 wo = flipToSide(woLocal, side);
+    vec3 wi = flipToSide(wiLocal, side);
     float coatProbability = plasticCoatProbability(albedo, ior, wo.z);
     float pdf = (1.0 - coatProbability) * cosineHemispherePdf(wi.z);
     if (!plasticIsSmooth(roughness)) pdf += coatProbability * ggxReflectionPdf(wo, wi, ggxAlpha(roughness));
@@ -46,8 +46,8 @@ float plasticPdf(vec3 albedo, float ior, float roughness, vec3 woLocal, vec3 wiL
 
 BsdfSample samplePlastic(vec3 albedo, float ior, float roughness, vec3 woLocal, float uLobe, vec2 u) {
     if (woLocal.z == 0.0) return failedBsdfSample();
-    float side = woLocal.z > 0.0 ? 1.0 : -1.0;
-    vec3 wo = vec3(woLocal.xy, woLocal.z * side);
+    float side = frontSide(woLocal);
+    vec3 wo = flipToSide(woLocal, side);
     float coatProbability = plasticCoatProbability(albedo, ior, wo.z);
     vec3 wi;
     if (uLobe < coatProbability) {
@@ -61,7 +61,7 @@ BsdfSample samplePlastic(vec3 albedo, float ior, float roughness, vec3 woLocal, 
         wi = sampleCosineHemisphere(u);
     }
     if (wi.z <= 0.0) return failedBsdfSample();
-    vec3 wiLocal = vec3(wi.xy, wi.z * side);
+    vec3 wiLocal = flipToSide(wi, side);
     // One-sample MIS over the lobes: weigh by the density of the whole mixture.
     float pdf = plasticPdf(albedo, ior, roughness, woLocal, wiLocal);
     if (pdf == 0.0) return failedBsdfSample();

@@ -2,10 +2,8 @@
 // its shading normal (mapped from [-1, 1] to [0, 1]) or its albedo (the material's colour; an
 // emitter's radiance scaled to at most 1). Nothing hit: black.
 #include "intersect.glsl"
-
-const uint kDebugViewRadiance = 0u;
-const uint kDebugViewNormals = 1u;
-const uint kDebugViewAlbedo = 2u;
+// kDebugViewRadiance, ...: generated from the C++ table (renderer/GlslEnums.cpp).
+#include "enums.glsl"
 
 vec3 debugViewValue(Ray ray, uint view) {
     Hit hit;

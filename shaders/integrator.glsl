@@ -20,11 +20,8 @@
 #include "emission.glsl"
 #include "lights.glsl"
 #include "environment.glsl"
-
-const uint kIntegratorNaive = 0u;
-const uint kIntegratorDirect = 1u;
-const uint kIntegratorMis = 2u;
-const uint kIntegratorFull = 3u;
+// kIntegratorNaive, ...: generated from the C++ table (renderer/GlslEnums.cpp).
+#include "enums.glsl"
 
 const int kRussianRouletteStart = 3; // bounces before roulette may end a path
 

@@ -16,14 +16,8 @@
 #include "warps.glsl"
 #include "shading_frame.glsl"
 #include "environment.glsl"
-
-const uint kLightQuad = 0u;
-const uint kLightSphere = 1u;
-const uint kLightDisk = 2u;
-const uint kLightEnvironment = 3u;
-const uint kLightPoint = 4u;
-const uint kLightSpot = 5u;
-const uint kLightTriangle = 6u;
+// kLightQuad, ...: generated from the table of LightKind (renderer/GpuScene.h, GlslEnums.cpp).
+#include "enums.glsl"
 
 struct LightSample {
     vec3 wi;             // unit, from the shading point toward the light
@@ -58,8 +52,12 @@ int chooseLight(float u) {
     return low;
 }
 
-uvec2 lightKindAndPrimitive(int light) {
-    return uvec2(texelFetch(uLights, 4 * light).xy); // exact small integers, stored as float values
+// ---- Shared by the area lights --------------------------------------------------------------
+
+// Solid-angle density at a shading point distance2 away of a point sampled with area density
+// 1 / area on a surface whose normal makes cosLight (> 0) with the direction.
+float areaToSolidAnglePdf(float distance2, float cosLight, float area) {
+    return distance2 / (cosLight * area);
 }
 
 // An area light's point: radiance toward the shading point and the solid-angle density of having
@@ -71,90 +69,179 @@ LightSample areaLightSample(vec3 posWorld, vec3 pointWorld, vec3 normal, float a
     vec3 wi = toLight / distance;
     float cosLight = abs(dot(normal, wi));
     if (cosLight == 0.0) return failedLightSample();
-    return LightSample(wi, distance, emittedRadiance(material, normal, -wi), distance * distance / (cosLight * area), false);
+    return LightSample(wi, distance, emittedRadiance(material, normal, -wi),
+                       areaToSolidAnglePdf(distance * distance, cosLight, area), false);
+}
+
+// Each kind below: sampleXLight(..., posWorld, u), the sample, and xLightPdf(...), the density
+// with which it produces a direction that reaches the light distance2 away where the light's
+// normal makes cosLight (> 0) with it.
+
+// ---- Quad: uniform by area ------------------------------------------------------------------
+
+float quadLightArea(vec3 edgeU, vec3 edgeV) {
+    return 4.0 * length(cross(edgeU, edgeV)); // edges are half-extents
+}
+
+LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
+    vec3 center = texelFetch(uQuads, 4 * primitive).xyz;
+    vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
+    vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
+    vec3 point = center + (2.0 * u.x - 1.0) * edgeU + (2.0 * u.y - 1.0) * edgeV;
+    Material material = fetchMaterial(quadIds(primitive).x);
+    return areaLightSample(posWorld, point, normalize(cross(edgeU, edgeV)), quadLightArea(edgeU, edgeV), material);
+}
+
+float quadLightPdf(int primitive, float distance2, float cosLight) {
+    float area = quadLightArea(texelFetch(uQuads, 4 * primitive + 1).xyz, texelFetch(uQuads, 4 * primitive + 2).xyz);
+    return areaToSolidAnglePdf(distance2, cosLight, area);
+}
+
+// ---- Disk: uniform by area (concentric map) ---------------------------------------------------
+
+float diskLightArea(float radius) {
+    return kPi * radius * radius;
+}
+
+LightSample sampleDiskLight(int primitive, vec3 posWorld, vec2 u) {
+    vec4 centerAndRadius = texelFetch(uDisks, 2 * primitive);
+    vec3 normal = texelFetch(uDisks, 2 * primitive + 1).xyz;
+    ShadingFrame frame = makeShadingFrame(normal);
+    vec2 onDisk = centerAndRadius.w * sampleUniformDiskConcentric(u);
+    vec3 point = centerAndRadius.xyz + onDisk.x * frame.tangent + onDisk.y * frame.bitangent;
+    Material material = fetchMaterial(diskIds(primitive).x);
+    return areaLightSample(posWorld, point, normal, diskLightArea(centerAndRadius.w), material);
+}
+
+float diskLightPdf(int primitive, float distance2, float cosLight) {
+    return areaToSolidAnglePdf(distance2, cosLight, diskLightArea(texelFetch(uDisks, 2 * primitive).w));
+}
+
+// ---- Mesh triangle: uniform by area; the light table holds its world-space corners -----------
+
+void triangleLightCorners(int light, out vec3 p0, out vec3 p1, out vec3 p2) {
+    p0 = texelFetch(uLights, 4 * light + 1).xyz;
+    p1 = texelFetch(uLights, 4 * light + 2).xyz;
+    p2 = texelFetch(uLights, 4 * light + 3).xyz;
+}
+
+// The primitive is the material.
+LightSample sampleTriangleLight(int light, int primitive, vec3 posWorld, vec2 u) {
+    vec3 p0, p1, p2;
+    triangleLightCorners(light, p0, p1, p2);
+    vec2 b = sampleUniformTriangle(u);
+    vec3 point = b.x * p0 + b.y * p1 + (1.0 - b.x - b.y) * p2;
+    vec3 crossEdges = cross(p1 - p0, p2 - p0);
+    float doubleArea = length(crossEdges);
+    if (doubleArea == 0.0) return failedLightSample();
+    return areaLightSample(posWorld, point, crossEdges / doubleArea, 0.5 * doubleArea, fetchMaterial(primitive));
+}
+
+float triangleLightPdf(int light, float distance2, float cosLight) {
+    vec3 p0, p1, p2;
+    triangleLightCorners(light, p0, p1, p2);
+    float area = 0.5 * length(cross(p1 - p0, p2 - p0));
+    return area > 0.0 ? areaToSolidAnglePdf(distance2, cosLight, area) : 0.0;
+}
+
+// ---- Sphere: within the cone it subtends from outside, by area from inside -------------------
+
+// The sphere as seen from the shading point.
+struct SphereView {
+    vec3 toCenter;
+    float centerDistance2;
+    float radius2;
+    bool inside;       // (or on it): sampled by area
+    float cosThetaMax; // outside: the cone the sphere subtends; 1 when too small for float to see
+};
+
+SphereView viewSphere(vec4 sphere, vec3 posWorld) {
+    SphereView view;
+    view.toCenter = sphere.xyz - posWorld;
+    view.centerDistance2 = dot(view.toCenter, view.toCenter);
+    view.radius2 = sphere.w * sphere.w;
+    view.inside = view.centerDistance2 <= view.radius2 * 1.0001;
+    view.cosThetaMax = view.inside ? 1.0 : sqrt(max(0.0, 1.0 - view.radius2 / view.centerDistance2));
+    return view;
+}
+
+LightSample sampleSphereLight(int primitive, vec3 posWorld, vec2 u) {
+    vec4 sphere = texelFetch(uSpheres, primitive);
+    Material material = fetchMaterial(sphereIds(primitive).x);
+    SphereView view = viewSphere(sphere, posWorld);
+    if (view.inside) {
+        // The inside is the back side of a one-sided emitter, so this only matters for the
+        // density; the radiance is black.
+        vec3 normal = sampleUniformSphere(u);
+        return areaLightSample(posWorld, sphere.xyz + sphere.w * normal, normal, 4.0 * kPi * view.radius2, material);
+    }
+    if (view.cosThetaMax >= 1.0) return failedLightSample();
+    float centerDistance = sqrt(view.centerDistance2);
+    ShadingFrame frame = makeShadingFrame(view.toCenter / centerDistance);
+    vec3 wi = toWorld(frame, sampleUniformCone(u, view.cosThetaMax));
+    // Distance to the near intersection; at the cone's rim the ray grazes the sphere.
+    float along = dot(wi, view.toCenter);
+    float distance = along - sqrt(max(0.0, view.radius2 - (view.centerDistance2 - along * along)));
+    vec3 normal = normalize(posWorld + distance * wi - sphere.xyz);
+    return LightSample(wi, distance, emittedRadiance(material, normal, -wi),
+                       uniformConePdf(vec3(0.0, 0.0, 1.0), view.cosThetaMax), false);
+}
+
+float sphereLightPdf(int primitive, vec3 posWorld, float distance2, float cosLight) {
+    SphereView view = viewSphere(texelFetch(uSpheres, primitive), posWorld);
+    if (view.inside) return areaToSolidAnglePdf(distance2, cosLight, 4.0 * kPi * view.radius2);
+    return view.cosThetaMax < 1.0 ? uniformConePdf(vec3(0.0, 0.0, 1.0), view.cosThetaMax) : 0.0;
+}
+
+// ---- Point and spot: delta, toward the position (no density) ----------------------------------
+
+// A spot's smooth falloff in cos between the outer and inner cones; a hard edge when they coincide.
+float spotFalloff(int light, vec3 wi, float cosInner) {
+    vec4 directionAndCosOuter = texelFetch(uLights, 4 * light + 2);
+    float cosAxis = dot(-wi, directionAndCosOuter.xyz);
+    float cosOuter = directionAndCosOuter.w;
+    return cosInner > cosOuter ? smoothstep(cosOuter, cosInner, cosAxis) : (cosAxis >= cosInner ? 1.0 : 0.0);
+}
+
+LightSample samplePointLight(int light, vec3 posWorld, bool spot) {
+    vec4 positionAndCosInner = texelFetch(uLights, 4 * light + 1);
+    vec3 toLight = positionAndCosInner.xyz - posWorld;
+    float distance2 = dot(toLight, toLight);
+    if (distance2 == 0.0) return failedLightSample(); // the light lies on the surface: no direction
+    float distance = sqrt(distance2);
+    vec3 wi = toLight / distance;
+    vec3 intensity = texelFetch(uLights, 4 * light + 3).rgb;
+    if (spot) intensity *= spotFalloff(light, wi, positionAndCosInner.w);
+    return LightSample(wi, distance, intensity / distance2, 1.0, true);
+}
+
+// ---- Environment: by luminance for a map, uniform for a constant colour (environment.glsl) ----
+
+LightSample sampleEnvironmentLight(vec2 u) {
+    float pdfSolidAngle;
+    vec3 wi = sampleEnvironment(u, pdfSolidAngle);
+    return LightSample(wi, kInfinity, environmentRadiance(wi), pdfSolidAngle, false);
+}
+
+// ---- Dispatch on the light's kind -------------------------------------------------------------
+
+uvec2 lightKindAndPrimitive(int light) {
+    return uvec2(texelFetch(uLights, 4 * light).xy); // exact small integers, stored as float values
 }
 
 LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
     uvec2 kindAndPrimitive = lightKindAndPrimitive(light);
-    uint kind = kindAndPrimitive.x;
     int primitive = int(kindAndPrimitive.y);
-    if (kind == kLightEnvironment) {
-        float pdfSolidAngle;
-        vec3 wi = sampleEnvironment(u, pdfSolidAngle);
-        return LightSample(wi, kInfinity, environmentRadiance(wi), pdfSolidAngle, false);
+    switch (kindAndPrimitive.x) {
+    case kLightEnvironment: return sampleEnvironmentLight(u);
+    case kLightPoint: return samplePointLight(light, posWorld, false);
+    case kLightSpot: return samplePointLight(light, posWorld, true);
+    case kLightQuad: return sampleQuadLight(primitive, posWorld, u);
+    case kLightTriangle: return sampleTriangleLight(light, primitive, posWorld, u);
+    case kLightDisk: return sampleDiskLight(primitive, posWorld, u);
+    case kLightSphere: return sampleSphereLight(primitive, posWorld, u);
     }
-    if (kind == kLightPoint || kind == kLightSpot) {
-        vec4 positionAndCosInner = texelFetch(uLights, 4 * light + 1);
-        vec3 toLight = positionAndCosInner.xyz - posWorld;
-        float distance2 = dot(toLight, toLight);
-        if (distance2 == 0.0) return failedLightSample(); // the light lies on the surface: no direction
-        float distance = sqrt(distance2);
-        vec3 wi = toLight / distance;
-        vec3 intensity = texelFetch(uLights, 4 * light + 3).rgb;
-        if (kind == kLightSpot) {
-            vec4 directionAndCosOuter = texelFetch(uLights, 4 * light + 2);
-            float cosAxis = dot(-wi, directionAndCosOuter.xyz);
-            float cosInner = positionAndCosInner.w;
-            float cosOuter = directionAndCosOuter.w;
-            // Smooth falloff in cos between the outer and inner cones; a hard edge when they coincide.
-            float falloff = cosInner > cosOuter ? smoothstep(cosOuter, cosInner, cosAxis) : (cosAxis >= cosInner ? 1.0 : 0.0);
-            intensity *= falloff;
-        }
-        return LightSample(wi, distance, intensity / distance2, 1.0, true);
-    }
-    if (kind == kLightQuad) {
-        vec3 center = texelFetch(uQuads, 4 * primitive).xyz;
-        vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
-        vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
-        vec3 point = center + (2.0 * u.x - 1.0) * edgeU + (2.0 * u.y - 1.0) * edgeV;
-        Material material = fetchMaterial(quadIds(primitive).x);
-        return areaLightSample(posWorld, point, normalize(cross(edgeU, edgeV)), 4.0 * length(cross(edgeU, edgeV)), material);
-    }
-    if (kind == kLightTriangle) {
-        // World-space corners; the primitive is the material.
-        vec3 p0 = texelFetch(uLights, 4 * light + 1).xyz;
-        vec3 p1 = texelFetch(uLights, 4 * light + 2).xyz;
-        vec3 p2 = texelFetch(uLights, 4 * light + 3).xyz;
-        vec2 b = sampleUniformTriangle(u);
-        vec3 point = b.x * p0 + b.y * p1 + (1.0 - b.x - b.y) * p2;
-        vec3 crossEdges = cross(p1 - p0, p2 - p0);
-        float doubleArea = length(crossEdges);
-        if (doubleArea == 0.0) return failedLightSample();
-        return areaLightSample(posWorld, point, crossEdges / doubleArea, 0.5 * doubleArea, fetchMaterial(primitive));
-    }
-    if (kind == kLightDisk) {
-        vec4 centerAndRadius = texelFetch(uDisks, 2 * primitive);
-        vec3 normal = texelFetch(uDisks, 2 * primitive + 1).xyz;
-        ShadingFrame frame = makeShadingFrame(normal);
-        vec2 onDisk = centerAndRadius.w * sampleUniformDiskConcentric(u);
-        vec3 point = centerAndRadius.xyz + onDisk.x * frame.tangent + onDisk.y * frame.bitangent;
-        Material material = fetchMaterial(diskIds(primitive).x);
-        return areaLightSample(posWorld, point, normal, kPi * centerAndRadius.w * centerAndRadius.w, material);
-    }
-    // Sphere.
-    vec4 sphere = texelFetch(uSpheres, primitive);
-    Material material = fetchMaterial(sphereIds(primitive).x);
-    vec3 toCenter = sphere.xyz - posWorld;
-    float centerDistance2 = dot(toCenter, toCenter);
-    float radius2 = sphere.w * sphere.w;
-    if (centerDistance2 <= radius2 * 1.0001) {
-        // Inside: by area. The inside is the back side of a one-sided emitter, so this only
-        // matters for the density; the radiance is black.
-        vec3 normal = sampleUniformSphere(u);
-        return areaLightSample(posWorld, sphere.xyz + sphere.w * normal, normal, 4.0 * kPi * radius2, material);
-    }
-    // Outside: uniformly within the cone of directions the sphere subtends.
-    float centerDistance = sqrt(centerDistance2);
-    float cosThetaMax = sqrt(max(0.0, 1.0 - radius2 / centerDistance2));
-    if (cosThetaMax >= 1.0) return failedLightSample(); // too small for float to see
-    ShadingFrame frame = makeShadingFrame(toCenter / centerDistance);
-    vec3 wi = toWorld(frame, sampleUniformCone(u, cosThetaMax));
-    // Distance to the near intersection; at the cone's rim the ray grazes the sphere.
-    float along = dot(wi, toCenter);
-    float distance = along - sqrt(max(0.0, radius2 - (centerDistance2 - along * along)));
-    vec3 normal = normalize(posWorld + distance * wi - sphere.xyz);
-    return LightSample(wi, distance, emittedRadiance(material, normal, -wi),
-                       uniformConePdf(vec3(0.0, 0.0, 1.0), cosThetaMax), false);
+    return failedLightSample();
 }
 
 // Solid-angle density with which sampleLight(light, posWorld, .) produces direction wi that
@@ -169,25 +256,11 @@ float lightPdf(int light, vec3 posWorld, vec3 wi, float hitDistance, vec3 hitNor
     float cosLight = abs(dot(hitNormal, wi));
     if (cosLight == 0.0) return 0.0;
     float distance2 = hitDistance * hitDistance;
-    if (kind == kLightQuad) {
-        vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
-        vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
-        return distance2 / (cosLight * 4.0 * length(cross(edgeU, edgeV)));
+    switch (kind) {
+    case kLightQuad: return quadLightPdf(primitive, distance2, cosLight);
+    case kLightDisk: return diskLightPdf(primitive, distance2, cosLight);
+    case kLightTriangle: return triangleLightPdf(light, distance2, cosLight);
+    case kLightSphere: return sphereLightPdf(primitive, posWorld, distance2, cosLight);
     }
-    if (kind == kLightDisk) {
-        float radius = texelFetch(uDisks, 2 * primitive).w;
-        return distance2 / (cosLight * kPi * radius * radius);
-    }
-    if (kind == kLightTriangle) {
-        vec3 p0 = texelFetch(uLights, 4 * light + 1).xyz;
-        float area = 0.5 * length(cross(texelFetch(uLights, 4 * light + 2).xyz - p0, texelFetch(uLights, 4 * light + 3).xyz - p0));
-        return area > 0.0 ? distance2 / (cosLight * area) : 0.0;
-    }
-    vec4 sphere = texelFetch(uSpheres, primitive);
-    vec3 toCenter = sphere.xyz - posWorld;
-    float centerDistance2 = dot(toCenter, toCenter);
-    float radius2 = sphere.w * sphere.w;
-    if (centerDistance2 <= radius2 * 1.0001) return distance2 / (cosLight * 4.0 * kPi * radius2);
-    float cosThetaMax = sqrt(max(0.0, 1.0 - radius2 / centerDistance2));
-    return cosThetaMax < 1.0 ? uniformConePdf(vec3(0.0, 0.0, 1.0), cosThetaMax) : 0.0;
+    return 0.0;
 }

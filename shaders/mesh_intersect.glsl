@@ -123,6 +123,32 @@ int triangleMaterial(int instance, int triangle) {
     return int(texelFetch(uMeshInstances, kInstanceTexels * uMeshInstanceCount + instanceIds(instance).z + slot).x);
 }
 
+// One step of a front-to-back BVH walk (both levels take it): after visiting `node`, which holds
+// `count` items (0: an inner node), the next node to visit. From an inner node, its nearer child
+// that the ray enters within tBest (the farther one waits on the stack); else the top of the
+// stack, skipping nodes that a hit found meanwhile has put out of reach. False when none is left.
+bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int stack[kBvhStackSize], inout int stackSize) {
+    if (count == 0) {
+        int left = node + 1;
+        int right = nodeFirstOrRight(node);
+        float tLeft = enterNode(ray, left, tBest);
+        float tRight = enterNode(ray, right, tBest);
+        if (tLeft != kInfinity && tRight != kInfinity) {
+            bool leftFirst = tLeft <= tRight;
+            stack[stackSize++] = leftFirst ? right : left;
+            node = leftFirst ? left : right;
+            return true;
+        }
+        if (tLeft != kInfinity) { node = left; return true; }
+        if (tRight != kInfinity) { node = right; return true; }
+    }
+    while (stackSize > 0) {
+        int candidate = stack[--stackSize];
+        if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; return true; }
+    }
+    return false;
+}
+
 // The nearest triangle of one instance closer than tBest (which it lowers), or, for anyHit, any
 // triangle closer than tBest that is not light `excludedLight`. Returns whether it found one.
 bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
@@ -132,8 +158,9 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
     int node = instanceIds(instance).x;
     bool found = false;
     if (enterNode(ray, node, tBest) == kInfinity) return false;
-    for (;;) {
-        int count = nodeCount(node);
+    int count;
+    do {
+        count = nodeCount(node);
         if (count > 0) {
             int first = nodeFirstOrRight(node);
             for (int i = first; i < first + count; ++i) {
@@ -152,28 +179,8 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 best = MeshHit(instance, i, barycentric);
                 found = true;
             }
-        } else {
-            int left = node + 1;
-            int right = nodeFirstOrRight(node);
-            float tLeft = enterNode(ray, left, tBest);
-            float tRight = enterNode(ray, right, tBest);
-            if (tLeft != kInfinity && tRight != kInfinity) {
-                bool leftFirst = tLeft <= tRight;
-                stack[stackSize++] = leftFirst ? right : left;
-                node = leftFirst ? left : right;
-                continue;
-            }
-            if (tLeft != kInfinity) { node = left; continue; }
-            if (tRight != kInfinity) { node = right; continue; }
         }
-        // Pop, skipping nodes that a hit found meanwhile has put out of reach.
-        node = -1;
-        while (stackSize > 0) {
-            int candidate = stack[--stackSize];
-            if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; break; }
-        }
-        if (node < 0) return found;
-    }
+    } while (nextBvhNode(ray, tBest, count, node, stack, stackSize));
     return found;
 }
 
@@ -186,8 +193,9 @@ bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool an
     int node = uTopLevelRoot;
     bool found = false;
     if (enterNode(ray, node, tBest) == kInfinity) return false;
-    for (;;) {
-        int count = nodeCount(node);
+    int count;
+    do {
+        count = nodeCount(node);
         if (count > 0) {
             int first = nodeFirstOrRight(node);
             for (int instance = first; instance < first + count; ++instance) {
@@ -196,27 +204,8 @@ bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool an
                     found = true;
                 }
             }
-        } else {
-            int left = node + 1;
-            int right = nodeFirstOrRight(node);
-            float tLeft = enterNode(ray, left, tBest);
-            float tRight = enterNode(ray, right, tBest);
-            if (tLeft != kInfinity && tRight != kInfinity) {
-                bool leftFirst = tLeft <= tRight;
-                stack[stackSize++] = leftFirst ? right : left;
-                node = leftFirst ? left : right;
-                continue;
-            }
-            if (tLeft != kInfinity) { node = left; continue; }
-            if (tRight != kInfinity) { node = right; continue; }
         }
-        node = -1;
-        while (stackSize > 0) {
-            int candidate = stack[--stackSize];
-            if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; break; }
-        }
-        if (node < 0) return found;
-    }
+    } while (nextBvhNode(ray, tBest, count, node, stack, stackSize));
     return found;
 }
 

@@ -10,11 +10,8 @@
 // grid and stratified cover one pattern of n^2 samples per pixel, then start another; sobol is
 // best at power-of-two sample counts.
 #include "rng.glsl"
-
-const uint kSamplerRandom = 0u;
-const uint kSamplerGrid = 1u;
-const uint kSamplerStratified = 2u;
-const uint kSamplerSobol = 3u;
+// kSamplerRandom, ...: generated from the C++ table (renderer/GlslEnums.cpp).
+#include "enums.glsl"
 
 // Dimension layout of a path: the camera jitter, then a fixed block per bounce, so that a given
 // bounce's BSDF sample is the same dimension in every path whatever happened before.

@@ -1,8 +1,6 @@
-// Display transform: exposure, then a tone mapper, then gamma 2.2. The tone mappers are numbered
-// as renderer/ToneMapper.h numbers them.
-const uint kToneMapperReinhard = 0u;
-const uint kToneMapperAces = 1u;
-const uint kToneMapperClamp = 2u;
+// Display transform: exposure, then a tone mapper, then gamma 2.2.
+// kToneMapperReinhard, ...: generated from the table of renderer/ToneMapper.h (GlslEnums.cpp).
+#include "enums.glsl"
 
 vec3 toneMapReinhard(vec3 radiance) {
     return radiance / (1.0 + radiance);

@@ -187,12 +187,12 @@ TEST(PathTracer, ToneMappersMatchTheirFormulas) {
     auto reinhard = [](double x) { return x / (1.0 + x); };
     auto aces = [](double x) { return (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14); };
     const float exposureStops = 1.0f; // doubles the radiance first
-    for (const ToneMapperName& entry : toneMapperNames()) {
-        ImageRgba8 image = tracer.readToneMapped(DisplaySettings{exposureStops, entry.toneMapper});
+    for (const EnumEntry<ToneMapper>& entry : toneMapperNames()) {
+        ImageRgba8 image = tracer.readToneMapped(DisplaySettings{exposureStops, entry.value});
         for (int c = 0; c < 3; ++c) {
             double x = 2.0 * scene.environment[c];
-            double expected = entry.toneMapper == ToneMapper::Reinhard ? encode(reinhard(x))
-                            : entry.toneMapper == ToneMapper::Aces     ? encode(aces(x))
+            double expected = entry.value == ToneMapper::Reinhard ? encode(reinhard(x))
+                            : entry.value == ToneMapper::Aces     ? encode(aces(x))
                                                                        : encode(x);
             EXPECT_NEAR(image.rgba[static_cast<size_t>(c)], expected, 1.0) << entry.name << " channel " << c;
         }

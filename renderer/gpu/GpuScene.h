@@ -3,6 +3,7 @@
 // light table, and everything goes into buffer textures that shaders/scene_data.glsl reads.
 
 #include "BufferTexture.h"
+#include "EnumTable.h"
 #include "GpuLayout.h"
 #include "GlProgram.h"
 #include "GpuMeshes.h"
@@ -25,8 +26,21 @@ struct ScenePrimitives {
     std::vector<GpuMaterial> materials;
 };
 
-// Values match the kLight* constants of shaders/lights.glsl.
+// The kinds of the light table; shaders/lights.glsl gets their constants from this table (GlslEnums.h).
 enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5, Triangle = 6 };
+
+inline const EnumTable<LightKind>& lightKindNames() {
+    static const EnumTable<LightKind> table = {
+        {LightKind::Quad, "quad", nullptr, "", "kLightQuad"},
+        {LightKind::Sphere, "sphere", nullptr, "", "kLightSphere"},
+        {LightKind::Disk, "disk", nullptr, "", "kLightDisk"},
+        {LightKind::Environment, "environment", nullptr, "", "kLightEnvironment"},
+        {LightKind::Point, "point", nullptr, "", "kLightPoint"},
+        {LightKind::Spot, "spot", nullptr, "", "kLightSpot"},
+        {LightKind::Triangle, "triangle", nullptr, "", "kLightTriangle"},
+    };
+    return table;
+}
 
 // Every light the integrators can sample, chosen in proportion to its emitted power.
 struct LightTable {

@@ -1,5 +1,6 @@
 #include "WarpProbe.h"
 
+#include "GlslEnums.h"
 #include "ProbePass.h"
 
 namespace ptview {
@@ -12,6 +13,7 @@ constexpr int kProbePdf = 1;
 
 WarpProbe::WarpProbe(const std::filesystem::path& shaderDir) {
     ShaderAssembler assembler(shaderDir);
+    addGlslEnums(assembler); // the sample generators
     program_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("warp_probe.frag"));
     program_->bindSamplerUnit("uPoints", 0);
 }

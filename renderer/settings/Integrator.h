@@ -1,36 +1,24 @@
 #pragma once
 // The integrators of shaders/integrator.glsl, and their names on the command line and in the UI.
 
+#include "EnumTable.h"
+
 #include <cstdint>
-#include <optional>
-#include <string>
-#include <vector>
 
 namespace ptview {
 
-// Values match the kIntegrator* constants of shaders/integrator.glsl.
 enum class Integrator : std::uint32_t { Naive = 0, Direct = 1, Mis = 2, Full = 3 };
 
-struct IntegratorName {
-    Integrator integrator;
-    const char* name;
-    const char* label; // for the UI
-};
-
-inline const std::vector<IntegratorName>& integratorNames() {
-    static const std::vector<IntegratorName> names = {
-        {Integrator::Naive, "naive", "Naive (BSDF sampling)"},
-        {Integrator::Direct, "direct", "Direct (light sampling)"},
-        {Integrator::Mis, "mis", "DirectMIS (light + BSDF, MIS)"},
-        {Integrator::Full, "full", "Full (global illumination)"},
+inline const EnumTable<Integrator>& integratorNames() {
+    static const EnumTable<Integrator> table = {
+        {Integrator::Naive, "naive", "Naive (BSDF sampling)", "", "kIntegratorNaive"},
+        {Integrator::Direct, "direct", "Direct (light sampling)", "", "kIntegratorDirect"},
+        {Integrator::Mis, "mis", "DirectMIS (light + BSDF, MIS)", "", "kIntegratorMis"},
+        {Integrator::Full, "full", "Full (global illumination)", "", "kIntegratorFull"},
     };
-    return names;
+    return table;
 }
 
-inline const char* integratorName(Integrator integrator) {
-    for (const IntegratorName& entry : integratorNames())
-        if (entry.integrator == integrator) return entry.name;
-    return "?";
-}
+inline const char* integratorName(Integrator integrator) { return integratorNames().name(integrator); }
 
 } // namespace ptview

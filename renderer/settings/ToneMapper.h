@@ -1,19 +1,13 @@
 #pragma once
 // The display transforms of shaders/tonemap.glsl, and their names on the command line and in the UI.
 
+#include "EnumTable.h"
+
 #include <cstdint>
-#include <vector>
 
 namespace ptview {
 
-// Values match the kToneMapper* constants of shaders/tonemap.glsl.
 enum class ToneMapper : std::uint32_t { Reinhard = 0, Aces = 1, Clamp = 2 };
-
-struct ToneMapperName {
-    ToneMapper toneMapper;
-    const char* name;
-    const char* label; // for the UI
-};
 
 // How the mean radiance becomes a displayed colour: scaled by 2^exposureStops, tone mapped, then
 // gamma 2.2.
@@ -23,19 +17,15 @@ struct DisplaySettings {
     bool highlightNonFinite = false; // show pixels whose mean is NaN or infinite in magenta
 };
 
-inline const std::vector<ToneMapperName>& toneMapperNames() {
-    static const std::vector<ToneMapperName> names = {
-        {ToneMapper::Reinhard, "reinhard", "Reinhard (x / (1 + x))"},
-        {ToneMapper::Aces, "aces", "ACES filmic (Narkowicz fit)"},
-        {ToneMapper::Clamp, "clamp", "None (clamp to 1)"},
+inline const EnumTable<ToneMapper>& toneMapperNames() {
+    static const EnumTable<ToneMapper> table = {
+        {ToneMapper::Reinhard, "reinhard", "Reinhard (x / (1 + x))", "", "kToneMapperReinhard"},
+        {ToneMapper::Aces, "aces", "ACES filmic (Narkowicz fit)", "", "kToneMapperAces"},
+        {ToneMapper::Clamp, "clamp", "None (clamp to 1)", "", "kToneMapperClamp"},
     };
-    return names;
+    return table;
 }
 
-inline const char* toneMapperName(ToneMapper toneMapper) {
-    for (const ToneMapperName& entry : toneMapperNames())
-        if (entry.toneMapper == toneMapper) return entry.name;
-    return "?";
-}
+inline const char* toneMapperName(ToneMapper toneMapper) { return toneMapperNames().name(toneMapper); }
 
 } // namespace ptview
