@@ -73,6 +73,7 @@ const char* colorTooltip(MaterialType type) {
     case MaterialType::Glass: return "multiplies both the reflected and the refracted light";
     case MaterialType::Metal: return "reflectance at normal incidence (Schlick Fresnel)";
     case MaterialType::Plastic: return "albedo of the Lambertian base under the coat";
+    case MaterialType::Principled: return "base colour: the diffuse albedo of the dielectric part, the metal's F0";
     case MaterialType::Emitter: break;
     }
     return "";

@@ -36,6 +36,7 @@ inline const MaterialSchema kMaterialSchemas[] = {
     {"glass", MaterialType::Glass, "tint", glm::vec3(1.0f), true, false, "emission", false},
     {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true, "emission", false},
     {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true, "emission", false},
+    {"principled", MaterialType::Principled, "base_color", glm::vec3(1.0f), true, true, "emission", false},
 };
 
 inline const MaterialSchema& materialSchema(MaterialType type) {

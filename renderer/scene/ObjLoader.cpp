@@ -480,7 +480,8 @@ private:
     }
 
     void addTexcoord(float u, float v) {
-        const glm::vec2 uv(u, v);
+        // OBJ counts v up from the image's bottom row; the model counts it down from the top (Texture.h).
+        const glm::vec2 uv(u, 1.0f - v);
         const bool usable = isFinite(uv) && fieldsAreNumbers(record(), 1, 2);
         texcoords_.add(usable, mesh_.texcoords.size(), here());
         if (usable) mesh_.texcoords.push_back(uv);

@@ -3,6 +3,7 @@
 // The UI edits this model and the renderer uploads it; neither knows about JSON.
 
 #include "SceneRanges.h"
+#include "Texture.h"
 #include "TriangleMesh.h"
 
 #include <glm/glm.hpp>
@@ -23,7 +24,10 @@ struct CameraDesc {
 };
 
 // The order is the GPU's: shaders/material.glsl numbers the types the same way.
-enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic };
+enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic, Principled };
+
+// Principled: how the base colour's alpha cuts the surface (glTF's alphaMode).
+enum class AlphaMode { Opaque, Mask, Blend };
 
 struct Material {
     std::string name;
@@ -36,7 +40,26 @@ struct Material {
     // nothing); any other type may emit too ("emission" in the file), on top of reflecting.
     glm::vec3 radiance{0.0f};
     float ior = 1.5f;         // SpecularTransmission, Glass, Plastic (coat): inside / outside, in [1, 4]
-    float roughness = 0.0f;   // Metal, Plastic (coat): in [0, 1], GGX alpha = roughness^2; 0 = smooth
+    float roughness = 0.0f;   // Metal, Plastic (coat), Principled: in [0, 1], GGX alpha = roughness^2; 0 = smooth
+
+    // Principled (glTF metallic-roughness; docs/materials.md has the exact model). `color` is the
+    // base colour factor, `radiance` the emission (emissiveFactor x KHR_materials_emissive_strength).
+    float metallic = 0.0f;     // in [0, 1]
+    float transmission = 0.0f; // KHR_materials_transmission, in [0, 1]: the dielectric part's share that is glass-like
+    float alpha = 1.0f;        // base colour alpha factor, in [0, 1]
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;  // Mask: alpha below this is cut away
+    float normalScale = 1.0f;  // glTF normalTexture.scale: scales the map's x and y
+    TextureSlot baseColorTexture; // RGB x color, A x alpha; sRGB
+    TextureSlot roughnessTexture; // G x roughness; linear (glTF: the metallicRoughness texture)
+    TextureSlot metallicTexture;  // B x metallic; linear (glTF: the same texture)
+    TextureSlot normalTexture;    // tangent-space normal, RGB; linear
+    TextureSlot emissionTexture;  // RGB x radiance; sRGB
+
+    bool hasTextures() const {
+        return baseColorTexture.used() || roughnessTexture.used() || metallicTexture.used() || normalTexture.used() ||
+               emissionTexture.used();
+    }
 };
 
 enum class ShapeType { Sphere, Quad, Box, Disk, Mesh };
@@ -80,14 +103,16 @@ struct SceneMesh {
 };
 
 // Lights that are points rather than surfaces (delta lights: only light sampling reaches them).
-enum class LightType { Point, Spot };
+// Directional (glTF KHR_lights_punctual): parallel light from infinitely far, `intensity` is then
+// the irradiance it gives a surface facing it (W m^-2 per channel) and `direction` where it travels.
+enum class LightType { Point, Spot, Directional };
 
 struct Light {
     std::string name;
     LightType type = LightType::Point;
     glm::vec3 position{0.0f};
     glm::vec3 intensity{1.0f};            // radiant intensity, W sr^-1 per channel
-    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // Spot: unit, where the cone points
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // Spot: unit, where the cone points; Directional: where the light travels
     float innerAngleDeg = 20.0f;          // Spot: full intensity within this angle of the axis,
     float outerAngleDeg = 30.0f;          //   none beyond this one, smooth in between (inner <= outer)
 };
@@ -104,6 +129,7 @@ struct Scene {
     float environmentIntensity = 1.0f;   // >= 0
     float environmentRotationDeg = 0.0f; // about +Y, right-hand rule
     std::vector<Material> materials;
+    std::vector<SceneTexture> textures; // what materials' TextureSlots index
     std::vector<SceneMesh> meshes;
     std::vector<Shape> shapes;
     std::vector<Light> lights;

@@ -35,7 +35,7 @@ struct TriangleMesh {
     std::string source; // the file it came from, for messages
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;   // unit
-    std::vector<glm::vec2> texcoords;
+    std::vector<glm::vec2> texcoords; // glTF's convention, (0, 0) at the image's top left (Texture.h)
     std::vector<MeshTriangle> triangles;
     // The material names faces use (OBJ `usemtl`), in order of first use; slot 0 is "" for faces
     // before any usemtl. A scene maps each slot to one of its materials.
