@@ -1,6 +1,6 @@
 #version 410 core
 // Runs the product's BSDFs on a grid of work items and writes what they produce, for the
-// statistical tests (renderer/BsdfProbe.cpp). The material is uniform over the pass; each item
+// statistical tests (renderer/probes/BsdfProbe.cpp). The material is uniform over the pass; each item
 // has its own wo (uWo texture, local frame) and, in eval mode, its own wi (uWi texture).
 //
 // uProbeMode 0 (sample): item i samples the BSDF with sample i of the sampler, then writes

@@ -1,8 +1,8 @@
-// The debug views of renderer/DebugView.h: the first surface the camera ray hits, seen through
+// The debug views of renderer/settings/DebugView.h: the first surface the camera ray hits, seen through
 // its shading normal (mapped from [-1, 1] to [0, 1]) or its albedo (the material's colour; an
 // emitter's radiance scaled to at most 1). Nothing hit: black.
 #include "intersect.glsl"
-// kDebugViewRadiance, ...: generated from the C++ table (renderer/GlslEnums.cpp).
+// kDebugViewRadiance, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
 vec3 debugViewValue(Ray ray, uint view) {

@@ -1,6 +1,6 @@
 // Environment maps: radiance from an equirectangular image around the scene, importance sampled
 // in proportion to luminance with a piecewise-constant 2D distribution (pbrt's Distribution2D,
-// built by renderer/EnvironmentMap.cpp). Without a map the environment is the constant colour
+// built by renderer/scene/EnvironmentMap.cpp). Without a map the environment is the constant colour
 // uEnvironmentRadiance, sampled uniformly over the sphere.
 //
 // Orientation (docs/scene-format.md). Texel (i, j) of a W x H map, row j = 0 the TOP row of the

@@ -1,4 +1,4 @@
-// Per-frame values shared by every pass. Mirrored by FrameUniforms in renderer/GpuLayout.h
+// Per-frame values shared by every pass. Mirrored by FrameUniforms in renderer/gpu/GpuLayout.h
 // (std140: each vec3 is followed by the scalar that fills its 16-byte slot).
 layout(std140) uniform FrameBlock {
     vec3 uCameraEye;          float uTanHalfFovY;

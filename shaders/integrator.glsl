@@ -20,7 +20,7 @@
 #include "emission.glsl"
 #include "lights.glsl"
 #include "environment.glsl"
-// kIntegratorNaive, ...: generated from the C++ table (renderer/GlslEnums.cpp).
+// kIntegratorNaive, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
 const int kRussianRouletteStart = 3; // bounces before roulette may end a path

@@ -9,14 +9,14 @@
 // lights radiate from their front side only. Densities are in solid angle at the shading point.
 //
 // uLights holds four texels per light: (kind, primitive, cumulative selection probability, -),
-// then three that depend on the kind; see GpuLight in renderer/GpuLayout.h.
+// then three that depend on the kind; see GpuLight in renderer/gpu/GpuLayout.h.
 #include "constants.glsl"
 #include "intersect.glsl"
 #include "emission.glsl"
 #include "warps.glsl"
 #include "shading_frame.glsl"
 #include "environment.glsl"
-// kLightQuad, ...: generated from the table of LightKind (renderer/GpuScene.h, GlslEnums.cpp).
+// kLightQuad, ...: generated from the table of LightKind (renderer/gpu/GpuScene.h, GlslEnums.cpp).
 #include "enums.glsl"
 
 struct LightSample {

@@ -1,4 +1,4 @@
-// A surface's material as the shaders see it (mirrors GpuMaterial in renderer/GpuLayout.h; the
+// A surface's material as the shaders see it (mirrors GpuMaterial in renderer/gpu/GpuLayout.h; the
 // type values follow ptview::MaterialType).
 const uint kMaterialDiffuse = 0u;              // color = albedo
 const uint kMaterialEmitter = 1u;              // radiance; reflects nothing

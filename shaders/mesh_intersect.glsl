@@ -1,4 +1,4 @@
-// Rays against the scene's triangle meshes: a two-level BVH (renderer/GpuMeshes.h) read from
+// Rays against the scene's triangle meshes: a two-level BVH (renderer/gpu/GpuMeshes.h) read from
 // buffer textures. The top level holds the instances by their world bounds; at an instance the ray
 // moves into the mesh's object space (its direction is not renormalized, so t stays the world t)
 // and descends that mesh's own tree. Both traversals are ordered (nearer child first) with a
@@ -12,7 +12,7 @@ uniform samplerBuffer uMeshInstances; // per instance: 8 texels, then the materi
 uniform int uMeshInstanceCount;
 uniform int uTopLevelRoot;            // -1: no meshes
 
-const int kBvhStackSize = 64; // renderer/Bvh.h: kMaxBvhDepth, so the stack never overflows
+const int kBvhStackSize = 64; // renderer/geometry/Bvh.h: kMaxBvhDepth, so the stack never overflows
 const int kTriangleTexels = 7;
 const int kInstanceTexels = 8;
 
@@ -52,7 +52,7 @@ MeshRay makeMeshRay(vec3 origin, vec3 direction) {
 }
 
 // Woop, Benthin and Wald's watertight test (JCGT 2013), line for line as
-// renderer/TriangleIntersect.h but without its double-precision retry. `precise` keeps a driver
+// renderer/geometry/TriangleIntersect.h but without its double-precision retry. `precise` keeps a driver
 // from fusing a product into an FMA on one triangle and not on its neighbour, which would break
 // the exact antisymmetry of shared edges that makes the test watertight.
 bool intersectTriangle(MeshRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, out float t, out vec3 barycentric) {
@@ -95,7 +95,7 @@ float enterNode(MeshRay ray, int node, float tMax) {
     return enter <= exit ? enter : kInfinity;
 }
 
-// Integers are stored as float values, exact below 2^24 (see renderer/GpuLayout.h).
+// Integers are stored as float values, exact below 2^24 (see renderer/gpu/GpuLayout.h).
 int nodeFirstOrRight(int node) { return int(texelFetch(uMeshNodes, 2 * node).w); }
 int nodeCount(int node) { return int(texelFetch(uMeshNodes, 2 * node + 1).w); }
 

@@ -1,5 +1,5 @@
 // Ray queries for a scene without triangle meshes: the same two functions as mesh_intersect.glsl,
-// which specialization (renderer/ShaderSpecialization.cpp) replaces by these, so such a scene's
+// which specialization (renderer/gpu/ShaderFeatures.cpp) replaces by these, so such a scene's
 // program carries no BVH traversal at all.
 #include "constants.glsl"
 #include "ray.glsl"

@@ -10,7 +10,7 @@
 // grid and stratified cover one pattern of n^2 samples per pixel, then start another; sobol is
 // best at power-of-two sample counts.
 #include "rng.glsl"
-// kSamplerRandom, ...: generated from the C++ table (renderer/GlslEnums.cpp).
+// kSamplerRandom, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
 // Dimension layout of a path: the camera jitter, then a fixed block per bounce, so that a given

@@ -1,4 +1,4 @@
-// Scene data as the GPU sees it: buffer textures filled by renderer/GpuScene.cpp. Buffer textures
+// Scene data as the GPU sees it: buffer textures filled by renderer/gpu/GpuScene.cpp. Buffer textures
 // (not SSBOs) keep the fragment path within OpenGL 4.1.
 #include "material.glsl"
 

@@ -1,5 +1,5 @@
 // The integrator and sampler a program runs. PathTracer compiles one program per choice and puts
-// generated constants in this file's place (renderer/ShaderFeatures.cpp), so the compiler drops the
+// generated constants in this file's place (renderer/gpu/ShaderFeatures.cpp), so the compiler drops the
 // other integrators' and samplers' code; as written here they are chosen per frame instead.
 #include "frame_uniforms.glsl"
 #define kIntegrator uIntegrator

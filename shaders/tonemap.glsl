@@ -1,5 +1,5 @@
 // Display transform: exposure, then a tone mapper, then gamma 2.2.
-// kToneMapperReinhard, ...: generated from the table of renderer/ToneMapper.h (GlslEnums.cpp).
+// kToneMapperReinhard, ...: generated from the table of renderer/settings/ToneMapper.h (GlslEnums.cpp).
 #include "enums.glsl"
 
 vec3 toneMapReinhard(vec3 radiance) {

@@ -1,6 +1,6 @@
 #version 410 core
 // Runs the product's sampler and warps on a grid of fragments and writes what they produce, for
-// the statistical tests and the warp visualizer (renderer/WarpProbe.cpp).
+// the statistical tests and the warp visualizer (renderer/probes/WarpProbe.cpp).
 //
 // uProbeMode 0 (warp): fragment i draws sample i % uSamplesPerPixel of "pixel" i / uSamplesPerPixel
 //   from the sampler, warps it, and writes (point.xyz, pdf(point)) and (u.xy, inverse(point).xy).

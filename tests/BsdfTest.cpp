@@ -1,4 +1,4 @@
-// The BSDFs of shaders/bsdf*.glsl, run on the GPU through the BSDF probe (renderer/BsdfProbe.h),
+// The BSDFs of shaders/bsdf*.glsl, run on the GPU through the BSDF probe (renderer/probes/BsdfProbe.h),
 // checked against the conventions of shaders/bsdf_common.glsl:
 //   - sampled directions follow bsdfPdf (chi-square against counts integrated from the GPU pdf,
 //     never from the sampler), failed samples and delta lobes in bins of their own;

@@ -1,4 +1,4 @@
-// The live error estimate (renderer/ErrorEstimate.h): its formula on synthetic statistics, when it
+// The live error estimate (renderer/metrics/ErrorEstimate.h): its formula on synthetic statistics, when it
 // declines to give a number, and on real renders that it tracks the true error against a
 // reference and orders two renders (the two sides of a split view) as the true error does.
 #include "ErrorEstimate.h"

@@ -1,4 +1,4 @@
-// The table of ranges (renderer/SceneRanges.h) is what the loader accepts: a scene at each bound
+// The table of ranges (renderer/scene/SceneRanges.h) is what the loader accepts: a scene at each bound
 // and just inside an open one loads with the value exact, one just outside is refused, at the
 // value's place, with the table's words. The writer and the script checker read the same table.
 #include "Scene.h"

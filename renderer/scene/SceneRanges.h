@@ -58,7 +58,7 @@ private:
 // Pixels a side of an image: a camera's resolution in a scene file, --size on the command line.
 inline constexpr int kMaxResolution = 16384;
 
-// Bounds that keep every image finite (renderer/SceneLoader.cpp says why): positions and lengths
+// Bounds that keep every image finite (renderer/scene/SceneLoader.cpp says why): positions and lengths
 // (the loader, the script, the camera controls) and every radiance-like range below.
 inline constexpr float kMaxSceneExtent = 1e9f;   // metres: |coordinate|, radius, half size, edge length
 inline constexpr float kMaxSceneRadiance = 1e9f; // radiance, emission, light intensity, environment intensity
