@@ -7,9 +7,18 @@
 namespace ptview {
 namespace {
 
+Material makeMaterial(const char* name, MaterialType type, glm::vec3 color, glm::vec3 radiance) {
+    Material material;
+    material.name = name;
+    material.type = type;
+    material.color = color;
+    material.radiance = radiance;
+    return material;
+}
+
 TEST(FlattenScene, BoxBecomesSixOutwardQuadsCoveringItsSurface) {
     Scene scene;
-    scene.materials.push_back(Material{"white", MaterialType::Diffuse, glm::vec3(0.5f), glm::vec3(0.0f)});
+    scene.materials.push_back(makeMaterial("white", MaterialType::Diffuse, glm::vec3(0.5f), glm::vec3(0.0f)));
     Shape box;
     box.type = ShapeType::Box;
     box.center = {0.3f, 0.6f, -0.3f};
@@ -34,8 +43,8 @@ TEST(FlattenScene, BoxBecomesSixOutwardQuadsCoveringItsSurface) {
 
 TEST(FlattenScene, KeepsMaterialsAndSphereRecords) {
     Scene scene;
-    scene.materials.push_back(Material{"white", MaterialType::Diffuse, glm::vec3(0.5f), glm::vec3(0.0f)});
-    scene.materials.push_back(Material{"lamp", MaterialType::Emitter, glm::vec3(0.0f), glm::vec3(17, 12, 4)});
+    scene.materials.push_back(makeMaterial("white", MaterialType::Diffuse, glm::vec3(0.5f), glm::vec3(0.0f)));
+    scene.materials.push_back(makeMaterial("lamp", MaterialType::Emitter, glm::vec3(0.0f), glm::vec3(17, 12, 4)));
     Shape sphere;
     sphere.type = ShapeType::Sphere;
     sphere.center = {1, 2, 3};
