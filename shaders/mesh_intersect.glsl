@@ -123,11 +123,18 @@ int triangleMaterial(int instance, int triangle) {
     return int(texelFetch(uMeshInstances, kInstanceTexels * uMeshInstanceCount + instanceIds(instance).z + slot).x);
 }
 
+// The nodes both walks have still to visit, on one stack: an instance's walk pushes above the
+// entries of the top level's walk and pops back down to where it began. One global array rather
+// than one passed to nextBvhNode, because GLSL copies array parameters in and out: passing it
+// made meshes render 4x slower on llvmpipe.
+int bvhStack[2 * kBvhStackSize];
+
 // One step of a front-to-back BVH walk (both levels take it): after visiting `node`, which holds
 // `count` items (0: an inner node), the next node to visit. From an inner node, its nearer child
 // that the ray enters within tBest (the farther one waits on the stack); else the top of the
-// stack, skipping nodes that a hit found meanwhile has put out of reach. False when none is left.
-bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int stack[kBvhStackSize], inout int stackSize) {
+// walk's part of the stack (above stackBottom), skipping nodes that a hit found meanwhile has put
+// out of reach. False when none is left.
+bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int stackSize, int stackBottom) {
     if (count == 0) {
         int left = node + 1;
         int right = nodeFirstOrRight(node);
@@ -135,15 +142,15 @@ bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int 
         float tRight = enterNode(ray, right, tBest);
         if (tLeft != kInfinity && tRight != kInfinity) {
             bool leftFirst = tLeft <= tRight;
-            stack[stackSize++] = leftFirst ? right : left;
+            bvhStack[stackSize++] = leftFirst ? right : left;
             node = leftFirst ? left : right;
             return true;
         }
         if (tLeft != kInfinity) { node = left; return true; }
         if (tRight != kInfinity) { node = right; return true; }
     }
-    while (stackSize > 0) {
-        int candidate = stack[--stackSize];
+    while (stackSize > stackBottom) {
+        int candidate = bvhStack[--stackSize];
         if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; return true; }
     }
     return false;
@@ -151,10 +158,10 @@ bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int 
 
 // The nearest triangle of one instance closer than tBest (which it lowers), or, for anyHit, any
 // triangle closer than tBest that is not light `excludedLight`. Returns whether it found one.
-bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
+// Its walk uses bvhStack above stackBottom.
+bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight, int stackBottom) {
     MeshRay ray = makeMeshRay(instanceToObject(instance, vec4(worldRay.origin, 1.0)), instanceToObject(instance, vec4(worldRay.direction, 0.0)));
-    int stack[kBvhStackSize];
-    int stackSize = 0;
+    int stackSize = stackBottom;
     int node = instanceIds(instance).x;
     bool found = false;
     if (enterNode(ray, node, tBest) == kInfinity) return false;
@@ -180,7 +187,7 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 found = true;
             }
         }
-    } while (nextBvhNode(ray, tBest, count, node, stack, stackSize));
+    } while (nextBvhNode(ray, tBest, count, node, stackSize, stackBottom));
     return found;
 }
 
@@ -188,7 +195,6 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
 bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
     if (uTopLevelRoot < 0) return false;
     MeshRay ray = makeMeshRay(worldRay.origin, worldRay.direction);
-    int stack[kBvhStackSize];
     int stackSize = 0;
     int node = uTopLevelRoot;
     bool found = false;
@@ -199,13 +205,13 @@ bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool an
         if (count > 0) {
             int first = nodeFirstOrRight(node);
             for (int instance = first; instance < first + count; ++instance) {
-                if (traverseInstance(instance, worldRay, tBest, best, anyHit, excludedLight)) {
+                if (traverseInstance(instance, worldRay, tBest, best, anyHit, excludedLight, stackSize)) {
                     if (anyHit) return true;
                     found = true;
                 }
             }
         }
-    } while (nextBvhNode(ray, tBest, count, node, stack, stackSize));
+    } while (nextBvhNode(ray, tBest, count, node, stackSize, 0));
     return found;
 }
 
