@@ -10,7 +10,9 @@ window=$(timeout 30 xdotool search --sync --name '^ptview' | head -1)
 if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
 xdotool windowfocus "$window" 2>/dev/null
 # A screenshot needs a finished sample; a press before that is refused (and said so in the panel).
-for attempt in 1 2 3 4 5 6 7 8 9 10; do
+# Up to two minutes of presses: on a loaded 2-core machine the first 768x768 sample took longer
+# than the ten seconds this loop once allowed.
+for attempt in $(seq 1 80); do
   sleep 1
   xdotool key F12
   sleep 0.5
