@@ -16,8 +16,8 @@ namespace {
 
 constexpr GLuint kFrameBlockBinding = 0;
 constexpr int kAccumulationUnit = 0;                             // units 0..2
-constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..11
-constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // units 12..14
+constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..12
+constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // units 13..15
 static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
 static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
 

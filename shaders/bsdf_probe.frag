@@ -16,6 +16,8 @@ uniform uint uMaterialType;
 uniform vec3 uColor;
 uniform float uIor;
 uniform float uRoughness;
+uniform float uMetallic;
+uniform float uTransmission;
 uniform uint uSamplerMode;
 uniform uint uSeed;
 uniform sampler2D uWo;
@@ -33,7 +35,7 @@ void main() {
     outThird = vec4(0.0);
     if (index >= uCount) return;
 
-    Material material = Material(uMaterialType, uColor, uIor, vec3(0.0), uRoughness);
+    Material material = Material(uMaterialType, uColor, uIor, vec3(0.0), uRoughness, uMetallic, uTransmission);
     vec3 woLocal = texelFetch(uWo, texel, 0).xyz;
     if (uProbeMode == 1) {
         vec3 wiLocal = texelFetch(uWi, texel, 0).xyz;

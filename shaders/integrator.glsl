@@ -95,7 +95,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             }
             break;
         }
-        Material material = fetchMaterial(hit.material);
+        Material material = fetchSurfaceMaterial(hit.material, hit.uv);
         if (countEmission) {
             vec3 emitted = emittedRadiance(material, hit.normalGeom, -ray.direction);
             if (any(greaterThan(emitted, vec3(0.0)))) {

@@ -4,6 +4,7 @@
 #include "ray.glsl"
 #include "scene_data.glsl"
 #include "mesh_intersect.glsl"
+#include "surface_textures.glsl"
 
 // Ray offsets (spawnRay): relative to the hit position's magnitude and to the scene's size.
 const float kRelativeOffset = 1e-4;
@@ -27,6 +28,7 @@ struct Hit {
                         // interpolated vertex normal; normalGeom elsewhere)
     int material;
     int light;          // light index of the surface hit, or -1
+    vec2 uv;            // texture coordinates (surface_textures.glsl); 0 in programs without textures
 };
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
@@ -123,22 +125,26 @@ bool intersectScene(Ray ray, out Hit hit) {
     if (hit.t == kInfinity) return false;
 
     hit.posWorld = ray.origin + hit.t * ray.direction;
+    hit.uv = vec2(0.0);
     if (onMesh) {
         meshSurface(meshHit, hit.normalGeom, hit.normalShading, hit.material, hit.light);
+        hit.uv = meshSurfaceUv(meshHit);
         return true;
     }
     ivec2 ids;
     if (sphereHit >= 0) {
         vec4 sphere = texelFetch(uSpheres, sphereHit);
         hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
+        hit.uv = sphereSurfaceUv(hit.normalGeom);
         ids = sphereIds(sphereHit);
     } else if (quadHit >= 0) {
         vec3 center = texelFetch(uQuads, 4 * quadHit).xyz;
         vec3 u = texelFetch(uQuads, 4 * quadHit + 1).xyz;
         vec3 v = texelFetch(uQuads, 4 * quadHit + 2).xyz;
+        vec3 dual = texelFetch(uQuads, 4 * quadHit + 3).xyz;
         hit.normalGeom = normalize(cross(u, v));
-        hit.posWorld = quadSurfacePoint(hit.posWorld, center, u, v, texelFetch(uQuads, 4 * quadHit + 3).xyz,
-                                        spawnOffset(hit.posWorld));
+        hit.uv = quadSurfaceUv(hit.posWorld, center, u, v, dual);
+        hit.posWorld = quadSurfacePoint(hit.posWorld, center, u, v, dual, spawnOffset(hit.posWorld));
         ids = quadIds(quadHit);
     } else {
         hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;

@@ -8,6 +8,7 @@ const uint kMaterialSpecularTransmission = 4u; // color = transmittance, ior
 const uint kMaterialGlass = 5u;                // color = tint, ior
 const uint kMaterialMetal = 6u;                // color = reflectance at normal incidence, roughness
 const uint kMaterialPlastic = 7u;              // color = albedo of the base, ior and roughness of the coat
+const uint kMaterialPrincipled = 8u;           // color = base colour, ior, roughness, metallic, transmission
 
 struct Material {
     uint type;
@@ -15,4 +16,6 @@ struct Material {
     float ior;
     vec3 radiance;
     float roughness;
+    float metallic;     // principled
+    float transmission; // principled
 };

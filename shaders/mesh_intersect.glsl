@@ -244,3 +244,14 @@ void meshSurface(MeshHit hit, out vec3 normalGeom, out vec3 normalShading, out i
     material = triangleMaterial(hit.instance, hit.triangle);
     light = triangleLight(hit.instance, hit.triangle);
 }
+
+// The hit's texture coordinates, interpolated from its triangle's corners (GpuTriangle:
+// u0 in texel 3's w, v0 in 4's, u1 in 5's, then (v1, u2, v2) in texel 6).
+vec2 meshUv(MeshHit hit) {
+    int base = kTriangleTexels * hit.triangle;
+    float u0 = texelFetch(uMeshTriangles, base + 3).w;
+    float v0 = texelFetch(uMeshTriangles, base + 4).w;
+    float u1 = texelFetch(uMeshTriangles, base + 5).w;
+    vec3 v1U2V2 = texelFetch(uMeshTriangles, base + 6).xyz;
+    return hit.barycentric.x * vec2(u0, v0) + hit.barycentric.y * vec2(u1, v1U2V2.x) + hit.barycentric.z * v1U2V2.yz;
+}

@@ -20,3 +20,7 @@ void meshSurface(MeshHit hit, out vec3 normalGeom, out vec3 normalShading, out i
     material = 0;
     light = -1;
 }
+
+vec2 meshUv(MeshHit hit) {
+    return vec2(0.0);
+}

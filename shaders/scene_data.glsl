@@ -7,7 +7,7 @@ uniform samplerBuffer uSpheres;        // per sphere: (center.xyz, radius)
 uniform samplerBuffer uQuads;          // per quad: center, u, v, dual = cross(u, v) / |cross(u, v)|^2
 uniform samplerBuffer uDisks;          // per disk: (center, radius), (unit normal, -)
 uniform isamplerBuffer uPrimitiveIds;  // per sphere, then quad, then disk: (material, light index or -1)
-uniform samplerBuffer uMaterials;      // per material: (color, ior), (radiance, roughness), (type, -)
+uniform samplerBuffer uMaterials;      // per material: kMaterialTexels texels; then the texture records (textures.glsl)
 uniform samplerBuffer uLights;         // per light: 4 texels, see lights.glsl
 uniform int uSphereCount;
 uniform int uQuadCount;
@@ -15,11 +15,17 @@ uniform int uDiskCount;
 uniform int uLightCount;
 uniform int uEnvironmentLight;         // light index of the environment, or -1 when it is black
 
+// GpuMaterial (GpuLayout.h): (color, ior), (radiance, roughness), (type, metallic, transmission,
+// alpha), (alpha mode, alpha cutoff, normal scale, emission texture), (base colour, roughness,
+// metallic, normal texture), then per texture slot in that order (scale.xy, offset.xy).
+const int kMaterialTexels = 10;
+
 Material fetchMaterial(int index) {
-    vec4 colorAndIor = texelFetch(uMaterials, 3 * index);
-    vec4 radianceAndRoughness = texelFetch(uMaterials, 3 * index + 1);
-    return Material(uint(texelFetch(uMaterials, 3 * index + 2).x), colorAndIor.rgb, colorAndIor.a,
-                    radianceAndRoughness.rgb, radianceAndRoughness.a);
+    vec4 colorAndIor = texelFetch(uMaterials, kMaterialTexels * index);
+    vec4 radianceAndRoughness = texelFetch(uMaterials, kMaterialTexels * index + 1);
+    vec4 typeMetallicTransmissionAlpha = texelFetch(uMaterials, kMaterialTexels * index + 2);
+    return Material(uint(typeMetallicTransmissionAlpha.x), colorAndIor.rgb, colorAndIor.a, radianceAndRoughness.rgb,
+                    radianceAndRoughness.a, typeMetallicTransmissionAlpha.y, typeMetallicTransmissionAlpha.z);
 }
 
 ivec2 sphereIds(int sphere) { return texelFetch(uPrimitiveIds, sphere).rg; }

@@ -80,15 +80,39 @@ struct GpuLight {
 };
 static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
 
-// shaders/scene_data.glsl: three RGBA32F texels per material.
+// shaders/scene_data.glsl: ten RGBA32F texels per material. Texture indices are into
+// Scene::textures, -1 for none; slots (scale.xy, offset.xy) in the order base colour, roughness,
+// metallic, normal, emission. The texture fields are read only by programs with textures.
 struct GpuMaterial {
     glm::vec3 color;
     float ior;
     glm::vec3 radiance;
     float roughness;
     float type; // MaterialType
-    float pad[3];
+    float metallic;
+    float transmission;
+    float alpha;
+    float alphaMode; // AlphaMode
+    float alphaCutoff;
+    float normalScale;
+    float emissionTexture;
+    glm::vec4 textures; // base colour, roughness, metallic, normal
+    glm::vec4 slots[5];
 };
-static_assert(sizeof(GpuMaterial) == 48, "three RGBA32F texels");
+static_assert(sizeof(GpuMaterial) == 160, "ten RGBA32F texels");
+
+// shaders/textures.glsl: two RGBA32F texels per texture, after the materials in their buffer.
+// Where the texture lies in the atlas (layer, texel origin, size) and how it is read.
+struct GpuTextureRecord {
+    float layer;
+    float originX;
+    float originY;
+    float width;
+    float height;
+    float wrapU; // TextureWrap
+    float wrapV;
+    float flags; // 1: sRGB, 2: bilinear
+};
+static_assert(sizeof(GpuTextureRecord) == 32, "two RGBA32F texels");
 
 } // namespace ptview

@@ -3,6 +3,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <limits>
 
@@ -69,6 +70,18 @@ void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& o
         gpu.radiance = material.radiance;
         gpu.roughness = material.roughness;
         gpu.type = static_cast<float>(material.type);
+        gpu.metallic = material.metallic;
+        gpu.transmission = material.transmission;
+        gpu.alpha = material.alpha;
+        gpu.alphaMode = static_cast<float>(material.alphaMode);
+        gpu.alphaCutoff = material.alphaCutoff;
+        gpu.normalScale = material.normalScale;
+        const TextureSlot* slots[5] = {&material.baseColorTexture, &material.roughnessTexture, &material.metallicTexture,
+                                       &material.normalTexture, &material.emissionTexture};
+        gpu.textures = glm::vec4(float(slots[0]->texture), float(slots[1]->texture), float(slots[2]->texture),
+                                 float(slots[3]->texture));
+        gpu.emissionTexture = float(slots[4]->texture);
+        for (int i = 0; i < 5; ++i) gpu.slots[i] = glm::vec4(slots[i]->scale, slots[i]->offset);
         out.materials.push_back(gpu);
     }
 }
@@ -79,6 +92,13 @@ float luminance(glm::vec3 rgb) {
     return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
 }
 
+// What a surface of this material adds to the light table: an emission texture varies over the
+// surface, which light sampling does not know, so such a surface is no light: only BSDF samples
+// find it (with MIS weight 1), which is unbiased (docs/materials.md).
+float lightEmission(const Material& material) {
+    return material.emissionTexture.used() ? 0.0f : luminance(material.radiance);
+}
+
 // Appends the emitting primitives of one kind: ids for all, a light for each that emits.
 template <typename Primitive, typename Area>
 void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<std::int32_t>& materialOf,
@@ -87,7 +107,7 @@ void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<s
     ids.clear();
     for (size_t i = 0; i < primitives.size(); ++i) {
         std::int32_t material = materialOf[i];
-        float emitted = luminance(materials[static_cast<size_t>(material)].radiance);
+        float emitted = lightEmission(materials[static_cast<size_t>(material)]);
         if (emitted <= 0.0f) {
             ids.push_back({material, -1});
             continue;
@@ -138,7 +158,7 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
     for (const MeshInstance& instance : meshInstances) {
         bool emits = false;
         for (int material : instance.slotMaterials)
-            emits = emits || luminance(materials[static_cast<size_t>(material)].radiance) > 0.0f;
+            emits = emits || lightEmission(materials[static_cast<size_t>(material)]) > 0.0f;
         if (!emits) {
             table.meshInstanceLightBase.push_back(-1);
             continue;
@@ -159,7 +179,7 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
             light.texels[2] = glm::vec4(p2, 0.0f);
             table.lights.push_back(light);
             double area = 0.5 * glm::length(glm::cross(glm::dvec3(p1 - p0), glm::dvec3(p2 - p0)));
-            power.push_back(area * glm::pi<double>() * luminance(materials[static_cast<size_t>(material)].radiance));
+            power.push_back(area * glm::pi<double>() * lightEmission(materials[static_cast<size_t>(material)]));
         }
     }
 
@@ -206,7 +226,7 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
     "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights",
-    GpuMeshes::kSamplerNames[0], GpuMeshes::kSamplerNames[1], GpuMeshes::kSamplerNames[2]};
+    GpuMeshes::kSamplerNames[0], GpuMeshes::kSamplerNames[1], GpuMeshes::kSamplerNames[2], GpuTextures::kSamplerName};
 
 void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMeanRadiance) {
     geometry_ = flattenScene(scene);
@@ -214,6 +234,7 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
     textures_[1].fill(GL_RGBA32F, 16, geometry_.quads);
     textures_[2].fill(GL_RGBA32F, 16, geometry_.disks);
     meshes_.upload(scene);
+    atlas_.upload(scene.textures);
     sceneRadius_ = sceneBoundingRadius(geometry_, meshes_.worldBounds());
     environmentRadiance_ = environmentMeanRadiance.value_or(scene.environment);
     uploadMaterials(scene.materials);
@@ -222,7 +243,16 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);
-    textures_[4].fill(GL_RGBA32F, 16, primitives.materials);
+    // The texture records follow the materials in one buffer (textures.glsl), which saves a unit.
+    std::vector<glm::vec4> texels(primitives.materials.size() * (sizeof(GpuMaterial) / 16) +
+                                  atlas_.records().size() * (sizeof(GpuTextureRecord) / 16));
+    if (!primitives.materials.empty())
+        std::memcpy(texels.data(), primitives.materials.data(), primitives.materials.size() * sizeof(GpuMaterial));
+    textureRecordStart_ = static_cast<int>(primitives.materials.size() * (sizeof(GpuMaterial) / 16));
+    if (!atlas_.records().empty())
+        std::memcpy(texels.data() + textureRecordStart_, atlas_.records().data(),
+                    atlas_.records().size() * sizeof(GpuTextureRecord));
+    textures_[4].fill(GL_RGBA32F, 16, texels);
     lights_ = buildLightTable(geometry_, materials, environmentRadiance_, meshes_.instances(), meshes_.worldBounds());
     // One id buffer: spheres, then quads, then disks (scene_data.glsl adds the offsets).
     std::vector<GpuPrimitiveIds> ids = lights_.sphereIds;
@@ -243,11 +273,14 @@ void GpuScene::attach(const GlProgram& program, int firstUnit) {
     environmentLightLocation_ = program.uniformLocation("uEnvironmentLight");
     meshInstanceCountLocation_ = program.uniformLocation("uMeshInstanceCount");
     topLevelRootLocation_ = program.uniformLocation("uTopLevelRoot");
+    textureRecordStartLocation_ = program.uniformLocation(GpuTextures::kRecordStartName);
 }
 
 void GpuScene::bind() const {
     for (int i = 0; i < kOwnTextureCount; ++i) textures_[i].bind(firstUnit_ + i);
     meshes_.bind(firstUnit_ + kOwnTextureCount);
+    atlas_.bind(firstUnit_ + kOwnTextureCount + GpuMeshes::kTextureCount);
+    glUniform1i(textureRecordStartLocation_, textureRecordStart_);
     glUniform1i(sphereCountLocation_, sphereCount());
     glUniform1i(quadCountLocation_, quadCount());
     glUniform1i(diskCountLocation_, diskCount());

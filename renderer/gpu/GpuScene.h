@@ -7,6 +7,7 @@
 #include "GpuLayout.h"
 #include "GlProgram.h"
 #include "GpuMeshes.h"
+#include "GpuTextures.h"
 #include "Scene.h"
 
 #include <cstdint>
@@ -65,7 +66,7 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
 class GpuScene {
 public:
     static constexpr int kOwnTextureCount = 6;
-    static constexpr int kTextureCount = kOwnTextureCount + GpuMeshes::kTextureCount;
+    static constexpr int kTextureCount = kOwnTextureCount + GpuMeshes::kTextureCount + 1; // + the texture atlas
     // The sampler uniforms of shaders/scene_data.glsl, in the order bind() uses units.
     static const char* const kSamplerNames[kTextureCount];
 
@@ -89,11 +90,15 @@ public:
     int lightCount() const { return static_cast<int>(lights_.lights.size()); }
     int environmentLight() const { return lights_.environmentLight; }
     const GpuMeshes& meshes() const { return meshes_; }
+    const GpuTextures& textures() const { return atlas_; }
     float sceneRadius() const { return sceneRadius_; }
 
 private:
     BufferTexture textures_[kOwnTextureCount];
     GpuMeshes meshes_;
+    GpuTextures atlas_;
+    int textureRecordStart_ = 0;
+    GLint textureRecordStartLocation_ = -1;
     float sceneRadius_ = 1.0f;
     int firstUnit_ = 0;
     GLint sphereCountLocation_ = -1;

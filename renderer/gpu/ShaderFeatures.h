@@ -23,6 +23,7 @@ struct ShaderFeatures {
     bool spotLights = false;
     bool environmentMap = false;      // else the constant colour
     bool meshes = false;
+    bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
 
     static ShaderFeatures all(); // the uber-shader: every model, map and meshes
 

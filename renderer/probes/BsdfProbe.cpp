@@ -35,6 +35,8 @@ void BsdfProbe::setMaterial(const Material& material) const {
     glUniform3f(program_->uniformLocation("uColor"), material.color.r, material.color.g, material.color.b);
     glUniform1f(program_->uniformLocation("uIor"), material.ior);
     glUniform1f(program_->uniformLocation("uRoughness"), material.roughness);
+    glUniform1f(program_->uniformLocation("uMetallic"), material.metallic);
+    glUniform1f(program_->uniformLocation("uTransmission"), material.transmission);
 }
 
 std::vector<BsdfProbeSample> BsdfProbe::sample(const Material& material, const std::vector<glm::vec3>& woLocal,

@@ -9,6 +9,7 @@
 
 #include "InputFile.h"
 #include "MaterialSchema.h"
+#include "TextureLoader.h"
 #include "ObjLoader.h"
 #include "SceneRanges.h"
 #include "ShapeSchema.h"
@@ -533,12 +534,88 @@ void readEnvironment(const Json& value, const Pointer& at, Scene& scene) {
         scene.environmentRotationDeg = readInRange(*rotation, at / "rotation_deg", ranges::kEnvironmentRotation);
 }
 
-Material readMaterial(const std::string& name, const Json& value, const Pointer& at) {
+// A texture a material input names, decoded once the whole file is read (resolveTextures).
+struct TextureRequest {
+    std::size_t material;             // in Scene::materials
+    TextureSlot Material::*slot;
+    std::filesystem::path file;       // as written; resolved against the scene file's directory
+    TextureColorSpace colorSpace;
+    TextureWrap wrapU = TextureWrap::Repeat;
+    TextureWrap wrapV = TextureWrap::Repeat;
+    bool bilinear = true;
+    Pointer at;                       // the "texture" key (or the input, when it is a bare path)
+};
+
+// The words of docs/scene-format.md for TextureWrap, in its order.
+constexpr const char* kTextureWrapNames[] = {"repeat", "clamp", "mirror"};
+
+TextureWrap readTextureWrap(const Json& value, const Pointer& at) {
+    std::string name = readString(value, at);
+    for (int i = 0; i < 3; ++i)
+        if (name == kTextureWrapNames[i]) return static_cast<TextureWrap>(i);
+    fail(at, "unknown wrap mode \"" + name + "\" (expected one of: repeat, clamp, mirror)");
+}
+
+glm::vec2 readVec2(const Json& value, const Pointer& at) {
+    if (!value.is_array() || value.size() != 2) fail(at, "expected an array of 2 numbers");
+    return {readNumber(value[0], at / 0), readNumber(value[1], at / 1)};
+}
+
+// A material input that may be textured: its plain value (readFactor), a texture's path (the
+// factor is then 1), or {"texture": path, "factor": value, "scale": [su, sv], "offset": [ou, ov],
+// "wrap": "repeat" | "clamp" | "mirror" | [u mode, v mode], "filter": "linear" | "nearest"}.
+// Returns the factor; a texture becomes a request for the slot.
+template <typename T, typename ReadFactor>
+T readTexturedInput(const Json& value, const Pointer& at, ReadFactor readFactor, T one, TextureColorSpace colorSpace,
+                    std::size_t materialIndex, TextureSlot Material::*slot, std::vector<TextureRequest>& requests) {
+    if (!value.is_string() && !value.is_object()) return readFactor(value, at);
+    TextureRequest request{materialIndex, slot, {}, colorSpace, TextureWrap::Repeat, TextureWrap::Repeat, true, at};
+    T factor = one;
+    if (value.is_string()) {
+        request.file = std::filesystem::u8path(readString(value, at));
+    } else {
+        checkKeys(value, at, {"texture", "factor", "scale", "offset", "wrap", "filter"});
+        request.at = at / "texture";
+        request.file = std::filesystem::u8path(readString(requireKey(value, at, "texture"), at / "texture"));
+        if (const Json* f = optionalKey(value, "factor")) factor = readFactor(*f, at / "factor");
+        if (const Json* scale = optionalKey(value, "scale")) readVec2(*scale, at / "scale");
+        if (const Json* offset = optionalKey(value, "offset")) readVec2(*offset, at / "offset");
+        if (const Json* wrap = optionalKey(value, "wrap")) {
+            if (wrap->is_array()) {
+                if (wrap->size() != 2) fail(at / "wrap", "expected a wrap mode or an array of 2 (u, v)");
+                request.wrapU = readTextureWrap((*wrap)[0], at / "wrap" / 0);
+                request.wrapV = readTextureWrap((*wrap)[1], at / "wrap" / 1);
+            } else {
+                request.wrapU = request.wrapV = readTextureWrap(*wrap, at / "wrap");
+            }
+        }
+        if (const Json* filter = optionalKey(value, "filter")) {
+            std::string name = readString(*filter, at / "filter");
+            if (name != "linear" && name != "nearest")
+                fail(at / "filter", "unknown filter \"" + name + "\" (expected linear or nearest)");
+            request.bilinear = name == "linear";
+        }
+    }
+    if (request.file.empty()) fail(request.at, "expected a file name, got an empty string");
+    requests.push_back(request);
+    return factor;
+}
+
+// The scale and offset of a textured input's object form, applied to its slot once it is made.
+void readTextureTransform(const Json& value, const Pointer& at, TextureSlot& slot) {
+    if (!value.is_object()) return;
+    if (const Json* scale = optionalKey(value, "scale")) slot.scale = readVec2(*scale, at / "scale");
+    if (const Json* offset = optionalKey(value, "offset")) slot.offset = readVec2(*offset, at / "offset");
+}
+
+Material readMaterial(const std::string& name, const Json& value, const Pointer& at, std::size_t index,
+                      std::vector<TextureRequest>& textures) {
     requireObject(value, at);
     Material material;
     material.name = name;
     requireType(value, at,
-                {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "ior", "roughness", "emission"});
+                {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "base_color", "ior", "roughness",
+                 "emission", "metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff", "emission_strength"});
     std::string type = readString(value.at("type"), at / "type");
     const MaterialSchema* schema = findMaterialSchema(type);
     if (!schema) {
@@ -548,6 +625,7 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
         fail(at / "type", "unknown material type \"" + type + "\" (expected one of: " + typeList + ")");
     }
     material.type = schema->type;
+    const bool principled = schema->type == MaterialType::Principled;
 
     std::vector<const char*> keys = {"type"};
     if (schema->radianceRequired) keys.push_back(schema->radianceKey);
@@ -555,24 +633,67 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     if (schema->hasIor) keys.push_back("ior");
     if (schema->hasRoughness) keys.push_back("roughness");
     if (!schema->radianceRequired) keys.push_back(schema->radianceKey);
+    if (principled)
+        for (const char* key : {"metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff", "emission_strength"})
+            keys.push_back(key);
     checkKeys(value, at, keys);
+
+    auto readColor = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kColor); };
+    auto readRadiance = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kRadiance); };
+    auto readUnit = [](const Json& v, const Pointer& p) { return readInRange(v, p, ranges::kRoughness); };
+    // Any input may be textured but an emitter's radiance (its light table entry needs one value).
+    auto textured = [&](const char* key, auto read, auto one, TextureColorSpace space, TextureSlot Material::*slot) {
+        const Json& input = value.at(key);
+        auto factor = readTexturedInput(input, at / key, read, one, space, index, slot, textures);
+        readTextureTransform(input, at / key, material.*slot);
+        return factor;
+    };
 
     const Json* radiance = schema->radianceRequired ? &requireKey(value, at, schema->radianceKey)
                                                     : optionalKey(value, schema->radianceKey);
     if (radiance) {
-        material.radiance = readVec3InRange(*radiance, at / schema->radianceKey, ranges::kRadiance);
+        material.radiance = schema->radianceRequired
+                                ? readRadiance(*radiance, at / schema->radianceKey)
+                                : textured(schema->radianceKey, readRadiance, glm::vec3(1.0f), TextureColorSpace::Srgb,
+                                           &Material::emissionTexture);
     }
     if (schema->colorKey) {
         const Json* color = schema->colorDefault ? optionalKey(value, schema->colorKey)
                                                  : &requireKey(value, at, schema->colorKey);
-        material.color = color ? readVec3InRange(*color, at / schema->colorKey, ranges::kColor) : *schema->colorDefault;
+        material.color = color ? textured(schema->colorKey, readColor, glm::vec3(1.0f), TextureColorSpace::Srgb,
+                                          &Material::baseColorTexture)
+                               : *schema->colorDefault;
     }
     if (schema->hasIor) {
         if (const Json* ior = optionalKey(value, "ior")) material.ior = readInRange(*ior, at / "ior", ranges::kIor);
     }
     if (schema->hasRoughness) {
-        if (const Json* roughness = optionalKey(value, "roughness"))
-            material.roughness = readInRange(*roughness, at / "roughness", ranges::kRoughness);
+        if (optionalKey(value, "roughness"))
+            material.roughness = textured("roughness", readUnit, 1.0f, TextureColorSpace::Linear, &Material::roughnessTexture);
+    }
+    if (principled) {
+        // glTF's defaults: fully metallic and rough when the file says nothing would surprise in
+        // a hand-written scene, so ours are a smooth-ish dielectric: metallic 0, roughness 0.5.
+        if (!optionalKey(value, "roughness")) material.roughness = 0.5f;
+        if (optionalKey(value, "metallic"))
+            material.metallic = textured("metallic", readUnit, 1.0f, TextureColorSpace::Linear, &Material::metallicTexture);
+        if (const Json* t = optionalKey(value, "transmission")) material.transmission = readUnit(*t, at / "transmission");
+        if (const Json* a = optionalKey(value, "alpha")) material.alpha = readUnit(*a, at / "alpha");
+        if (const Json* c = optionalKey(value, "alpha_cutoff")) material.alphaCutoff = readUnit(*c, at / "alpha_cutoff");
+        if (const Json* mode = optionalKey(value, "alpha_mode")) {
+            std::string name = readString(*mode, at / "alpha_mode");
+            if (name == "opaque") material.alphaMode = AlphaMode::Opaque;
+            else if (name == "mask") material.alphaMode = AlphaMode::Mask;
+            else if (name == "blend") material.alphaMode = AlphaMode::Blend;
+            else fail(at / "alpha_mode", "unknown alpha mode \"" + name + "\" (expected one of: opaque, mask, blend)");
+        }
+        if (const Json* strength = optionalKey(value, "emission_strength")) {
+            float s = readInRange(*strength, at / "emission_strength", ranges::kRadiance);
+            material.radiance *= s;
+            if (!ranges::kRadiance.contains(material.radiance.r) || !ranges::kRadiance.contains(material.radiance.g) ||
+                !ranges::kRadiance.contains(material.radiance.b))
+                fail(at / "emission_strength", "emission x strength is out of range (" + ranges::kRadiance.text() + ")");
+        }
     }
     return material;
 }
@@ -797,6 +918,7 @@ struct SceneDraft {
     Scene scene;
     std::vector<Pointer> meshPlaces; // where each of scene.meshes was declared
     std::vector<MeshMaterialRequest> meshRequests;
+    std::vector<TextureRequest> textureRequests;
 };
 
 SceneDraft readScene(const Json& root) {
@@ -814,7 +936,8 @@ SceneDraft readScene(const Json& root) {
     const Pointer materialsAt = top / "materials";
     const Json& materials = requireObject(requireKey(root, top, "materials"), materialsAt);
     for (auto it = materials.begin(); it != materials.end(); ++it)
-        scene.materials.push_back(readMaterial(it.key(), it.value(), materialsAt / it.key()));
+        scene.materials.push_back(
+            readMaterial(it.key(), it.value(), materialsAt / it.key(), scene.materials.size(), draft.textureRequests));
 
     std::map<std::string, int> meshIndex;
     if (const Json* meshes = optionalKey(root, "meshes")) {
@@ -941,6 +1064,40 @@ void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
     }
 }
 
+// Decodes every texture the materials name, each file once (TextureLoader.h), relative to the
+// scene file; textures of the same file and sampler are one Scene::textures entry.
+void resolveTextures(SceneDraft& draft, const std::filesystem::path& sceneFile) {
+    Scene& scene = draft.scene;
+    TextureImageCache cache;
+    for (const TextureRequest& request : draft.textureRequests) {
+        std::filesystem::path file = request.file.is_relative() ? sceneFile.parent_path() / request.file : request.file;
+        int index = -1;
+        for (std::size_t t = 0; t < scene.textures.size() && index < 0; ++t) {
+            const SceneTexture& known = scene.textures[t];
+            if (known.file == file && known.colorSpace == request.colorSpace && known.wrapU == request.wrapU &&
+                known.wrapV == request.wrapV && known.bilinear == request.bilinear)
+                index = static_cast<int>(t);
+        }
+        if (index < 0) {
+            SceneTexture texture;
+            texture.source = file.string();
+            texture.file = file;
+            texture.colorSpace = request.colorSpace;
+            texture.wrapU = request.wrapU;
+            texture.wrapV = request.wrapV;
+            texture.bilinear = request.bilinear;
+            try {
+                texture.image = cache.load(file);
+            } catch (const TextureError& error) {
+                fail(request.at, error.what());
+            }
+            index = static_cast<int>(scene.textures.size());
+            scene.textures.push_back(std::move(texture));
+        }
+        (scene.materials[request.material].*request.slot).texture = index;
+    }
+}
+
 } // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
@@ -966,6 +1123,7 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         Json::sax_parse(jsonText, &builder, Json::input_format_t::json, /*strict=*/true);
         SceneDraft draft = readScene(builder.root);
         resolveMeshes(draft, sourceName);
+        resolveTextures(draft, sourceName);
         Scene scene = std::move(draft.scene);
         scene.path = sourceName;
         // Relative to the scene file, as people write them; not normalised, so that ".." means

@@ -182,19 +182,60 @@ Json cameraJson(const CameraDesc& camera) {
     return json;
 }
 
-Json materialJson(const Material& material, const std::string& pointer) {
+std::string relativePathText(const std::filesystem::path& map, const std::filesystem::path& fileDirectory);
+
+// A textured input as the loader reads it (readTexturedInput): the plain value when there is no
+// texture, else {"texture", "factor", and scale, offset, wrap, filter where not the defaults}.
+Json texturedJson(Json factor, const TextureSlot& slot, const Scene& scene, const std::string& pointer) {
+    if (!slot.used()) return factor;
+    if (static_cast<std::size_t>(slot.texture) >= scene.textures.size())
+        fail(pointer, "texture index " + std::to_string(slot.texture) + " is out of range");
+    const SceneTexture& texture = scene.textures[static_cast<std::size_t>(slot.texture)];
+    if (texture.file.empty())
+        fail(pointer, "the texture " + texture.source + " is embedded in another file, which a scene file cannot name");
+    static const char* const wrapNames[] = {"repeat", "clamp", "mirror"};
+    Json json;
+    json["texture"] = relativePathText(texture.file, scene.path.parent_path());
+    json["factor"] = std::move(factor);
+    if (slot.scale != glm::vec2(1.0f)) json["scale"] = Json::array({slot.scale.x, slot.scale.y});
+    if (slot.offset != glm::vec2(0.0f)) json["offset"] = Json::array({slot.offset.x, slot.offset.y});
+    if (texture.wrapU != TextureWrap::Repeat || texture.wrapV != TextureWrap::Repeat) {
+        if (texture.wrapU == texture.wrapV) json["wrap"] = wrapNames[static_cast<int>(texture.wrapU)];
+        else json["wrap"] = Json::array({wrapNames[static_cast<int>(texture.wrapU)], wrapNames[static_cast<int>(texture.wrapV)]});
+    }
+    if (!texture.bilinear) json["filter"] = "nearest";
+    return json;
+}
+
+Json materialJson(const Material& material, const std::string& pointer, const Scene& scene) {
     const MaterialSchema& schema = materialSchema(material.type);
     auto at = [&pointer](const char* key) { return pointer + "/" + key; };
     Json json;
     json["type"] = schema.name;
     if (schema.radianceRequired)
         json[schema.radianceKey] = vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey));
-    if (schema.colorKey) json[schema.colorKey] = vec3InRange(material.color, ranges::kColor, at(schema.colorKey));
+    if (schema.colorKey)
+        json[schema.colorKey] = texturedJson(vec3InRange(material.color, ranges::kColor, at(schema.colorKey)),
+                                             material.baseColorTexture, scene, at(schema.colorKey));
     if (schema.hasIor) json["ior"] = numberInRange(material.ior, ranges::kIor, at("ior"));
-    if (schema.hasRoughness) json["roughness"] = numberInRange(material.roughness, ranges::kRoughness, at("roughness"));
+    if (schema.hasRoughness)
+        json["roughness"] = texturedJson(numberInRange(material.roughness, ranges::kRoughness, at("roughness")),
+                                         material.roughnessTexture, scene, at("roughness"));
     // Black is the default, and most surfaces do not glow.
-    if (!schema.radianceRequired && material.radiance != glm::vec3(0.0f))
-        json[schema.radianceKey] = vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey));
+    if (!schema.radianceRequired && (material.radiance != glm::vec3(0.0f) || material.emissionTexture.used()))
+        json[schema.radianceKey] = texturedJson(vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey)),
+                                                material.emissionTexture, scene, at(schema.radianceKey));
+    if (material.type == MaterialType::Principled) {
+        json["metallic"] = texturedJson(numberInRange(material.metallic, ranges::kRoughness, at("metallic")),
+                                        material.metallicTexture, scene, at("metallic"));
+        if (material.transmission != 0.0f)
+            json["transmission"] = numberInRange(material.transmission, ranges::kRoughness, at("transmission"));
+        if (material.alpha != 1.0f) json["alpha"] = numberInRange(material.alpha, ranges::kRoughness, at("alpha"));
+        static const char* const modes[] = {"opaque", "mask", "blend"};
+        if (material.alphaMode != AlphaMode::Opaque) json["alpha_mode"] = modes[static_cast<int>(material.alphaMode)];
+        if (material.alphaCutoff != 0.5f)
+            json["alpha_cutoff"] = numberInRange(material.alphaCutoff, ranges::kRoughness, at("alpha_cutoff"));
+    }
     return json;
 }
 
@@ -321,7 +362,7 @@ std::string sceneToJson(const Scene& scene) {
         // Shapes name their material, so a second one of the same name could not be told apart.
         if (materials.contains(material.name))
             fail(joinPointer("/materials", material.name), "two materials have this name");
-        materials[material.name] = materialJson(material, joinPointer("/materials", material.name));
+        materials[material.name] = materialJson(material, joinPointer("/materials", material.name), scene);
     }
     root["materials"] = std::move(materials);
 

@@ -1,0 +1,65 @@
+// The scene's textures (renderer/gpu/GpuTextures.h): one RGBA8 atlas of square pages, and per
+// texture two texels of records after the materials in uMaterials: (page, origin x, origin y,
+// width), (height, wrap u, wrap v, flags: 1 sRGB, 2 bilinear). Texels are read with texelFetch
+// and filtered here, so that wrap modes work inside the atlas, sRGB is decoded per texel BEFORE
+// filtering, and every GPU returns the same value.
+//
+// Texture coordinates follow glTF: (0, 0) is the top-left corner of the image as stored (its
+// first row), u right, v down; texel (i, j) covers [i, i + 1] x [j, j + 1] / size, and bilinear
+// filtering interpolates between texel centres.
+#include "scene_data.glsl"
+
+uniform sampler2DArray uTextureAtlas;
+uniform int uTextureRecordStart; // texel of texture 0's record in uMaterials
+
+// ptview::TextureWrap (renderer/scene/Texture.h)
+const int kTextureWrapRepeat = 0;
+const int kTextureWrapClampToEdge = 1;
+const int kTextureWrapMirroredRepeat = 2;
+
+// A texel index in [0, n) for any integer i, as the wrap mode says.
+int wrapTexel(int i, int n, int mode) {
+    if (mode == kTextureWrapClampToEdge) return clamp(i, 0, n - 1);
+    int period = mode == kTextureWrapMirroredRepeat ? 2 * n : n;
+    int m = i - period * int(floor(float(i) / float(period)));
+    m = m < 0 ? m + period : (m >= period ? m - period : m); // rounding of the float division
+    return m < n ? m : period - 1 - m;
+}
+
+// The exact sRGB transfer function (IEC 61966-2-1), per channel.
+vec3 srgbToLinear(vec3 c) {
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+}
+
+vec4 atlasTexel(vec4 place, ivec2 texel, bool srgb) {
+    vec4 c = texelFetch(uTextureAtlas, ivec3(int(place.y) + texel.x, int(place.z) + texel.y, int(place.x)), 0);
+    if (srgb) c.rgb = srgbToLinear(c.rgb);
+    return c;
+}
+
+// The texture's value at uv: RGBA, colours linear.
+vec4 sampleTexture(int texture, vec2 uv) {
+    vec4 place = texelFetch(uMaterials, uTextureRecordStart + 2 * texture);
+    vec4 reading = texelFetch(uMaterials, uTextureRecordStart + 2 * texture + 1);
+    ivec2 size = ivec2(int(place.w), int(reading.x));
+    int wrapU = int(reading.y);
+    int wrapV = int(reading.z);
+    int flags = int(reading.w);
+    bool srgb = (flags & 1) != 0;
+    if (any(isnan(uv)) || any(isinf(uv))) uv = vec2(0.0);
+    uv = clamp(uv, vec2(-1e6), vec2(1e6)); // keeps texel indices within int range
+    vec2 p = uv * vec2(size);
+    if ((flags & 2) == 0) {
+        ivec2 i = ivec2(floor(p));
+        return atlasTexel(place, ivec2(wrapTexel(i.x, size.x, wrapU), wrapTexel(i.y, size.y, wrapV)), srgb);
+    }
+    p -= 0.5;
+    vec2 cell = floor(p);
+    vec2 t = p - cell;
+    ivec2 i0 = ivec2(cell);
+    int x0 = wrapTexel(i0.x, size.x, wrapU), x1 = wrapTexel(i0.x + 1, size.x, wrapU);
+    int y0 = wrapTexel(i0.y, size.y, wrapV), y1 = wrapTexel(i0.y + 1, size.y, wrapV);
+    vec4 top = mix(atlasTexel(place, ivec2(x0, y0), srgb), atlasTexel(place, ivec2(x1, y0), srgb), t.x);
+    vec4 bottom = mix(atlasTexel(place, ivec2(x0, y1), srgb), atlasTexel(place, ivec2(x1, y1), srgb), t.x);
+    return mix(top, bottom, t.y);
+}
