@@ -62,6 +62,7 @@ const char* typeName(MaterialType type) {
     case MaterialType::Glass: return "glass";
     case MaterialType::Metal: return "metal";
     case MaterialType::Plastic: return "plastic";
+    case MaterialType::Principled: return "principled";
     }
     return "?";
 }
@@ -75,6 +76,21 @@ Material makeMaterial(MaterialType type, float roughness = 0.0f, float ior = 1.5
     material.roughness = roughness;
     material.radiance = type == MaterialType::Emitter ? glm::vec3(1.0f) : glm::vec3(0.0f);
     return material;
+}
+
+Material makePrincipled(float metallic, float roughness, glm::vec3 color = glm::vec3(1.0f), float transmission = 0.0f) {
+    Material material = makeMaterial(MaterialType::Principled, roughness, 1.5f, color);
+    material.metallic = metallic;
+    material.transmission = transmission;
+    return material;
+}
+
+// "principled_m0.5_t0" in front of the labels' roughness and ior, so that cases differ by name.
+std::string typeLabel(const Material& material) {
+    if (material.type != MaterialType::Principled) return typeName(material.type);
+    char label[64];
+    std::snprintf(label, sizeof label, "principled_m%g_t%g", double(material.metallic), double(material.transmission));
+    return label;
 }
 
 // The direction with cos(theta) = cosTheta at azimuth phi, in the local frame.
@@ -141,6 +157,22 @@ double plasticCoatProbabilityReference(const Material& material, double cosTheta
     double coat = fresnelReference(std::abs(cosThetaO), material.ior);
     double base = (1.0 - coat) * luminance(glm::dvec3(material.color));
     return coat + base > 0.0 ? coat / (coat + base) : 1.0;
+}
+
+// Principled picks its parts (plastic, glass, metal) in proportion to weight x max(albedo
+// estimate, 0.05) (bsdf_principled.glsl); when smooth, the delta share is the plastic's coat
+// (its own coat probability) and the whole metal part.
+double principledDeltaProbabilityReference(const Material& material, double cosThetaO) {
+    const double m = material.metallic, t = material.transmission;
+    const double weights[3] = {(1.0 - m) * (1.0 - t), (1.0 - m) * t, m};
+    const double coat = fresnelReference(std::abs(cosThetaO), material.ior);
+    const glm::dvec3 base(material.color);
+    const double x5 = std::pow(1.0 - std::abs(cosThetaO), 5.0);
+    const double albedo[3] = {coat + (1.0 - coat) * luminance(base), luminance(base),
+                              luminance(base + (glm::dvec3(1.0) - base) * x5)};
+    double p[3], total = 0.0;
+    for (int i = 0; i < 3; ++i) total += p[i] = weights[i] * std::max(albedo[i], 0.05);
+    return (p[0] * plasticCoatProbabilityReference(material, cosThetaO) + p[1] + p[2]) / total;
 }
 
 // GGX reflection pdf (visible normals, height-correlated Smith) at the float directions given,
@@ -396,7 +428,8 @@ double projectedFIntegrand(const BsdfProbeValue& value, const glm::dvec3& wi) {
 // The chart to integrate a model's non-delta part in: GGX lobes by their half vector, the rest
 // (Lambertian lobes, and the smooth plastic's base) on the (z, phi) sphere.
 bool usesHalfVectorChart(const Material& material) {
-    return (material.type == MaterialType::Metal || material.type == MaterialType::Plastic) &&
+    return (material.type == MaterialType::Metal || material.type == MaterialType::Plastic ||
+            material.type == MaterialType::Principled) &&
            !isSmooth(material.roughness);
 }
 
@@ -426,11 +459,17 @@ const std::vector<LobeCase>& lobeCases() {
         materials.push_back(makeMaterial(MaterialType::Plastic, 0.0f, 1.5f, {0.7f, 0.5f, 0.3f}));
         for (float roughness : kRoughRoughness)
             materials.push_back(makeMaterial(MaterialType::Plastic, roughness, 1.5f, {0.7f, 0.5f, 0.3f}));
+        // Principled: metallic 0, 0.5, 1 from smooth (roughness 1e-3: a delta coat over the base)
+        // to rough; the fully metallic smooth one is a delta lobe only (BsdfFurnace covers it).
+        for (float metallic : {0.0f, 0.5f, 1.0f})
+            for (float roughness : {1e-3f, 0.0317f, 0.5477226f, 1.0f})
+                if (!(metallic == 1.0f && isSmooth(roughness)))
+                    materials.push_back(makePrincipled(metallic, roughness, {0.8f, 0.5f, 0.3f}));
         std::vector<LobeCase> list;
         for (const Material& material : materials)
             for (double cosThetaO : kLobeCosines) {
                 char label[96];
-                std::snprintf(label, sizeof label, "%s_r%g_%s", typeName(material.type), double(material.roughness),
+                std::snprintf(label, sizeof label, "%s_r%g_%s", typeLabel(material).c_str(), double(material.roughness),
                               cosLabel(cosThetaO).c_str());
                 list.push_back({material, cosThetaO, testName(label), 0});
             }
@@ -454,8 +493,11 @@ TEST_P(BsdfLobe, SamplesFollowThePdf) {
     HalfVectorChart halfVector(wo, ggxAlpha(material.roughness), kPi / 32.0);
     const Binning binning{usesHalfVectorChart(material) ? static_cast<const Chart*>(&halfVector) : &sphere, 32, 32};
     const std::size_t failedBin = std::size_t(binning.size()), deltaBin = failedBin + 1;
-    const bool hasDelta = material.type == MaterialType::Plastic && isSmooth(material.roughness);
-    const double deltaProbability = hasDelta ? plasticCoatProbabilityReference(material, wo.z) : 0.0;
+    const bool principled = material.type == MaterialType::Principled;
+    const bool hasDelta = (material.type == MaterialType::Plastic || principled) && isSmooth(material.roughness);
+    const double deltaProbability = !hasDelta ? 0.0
+                                    : principled ? principledDeltaProbabilityReference(material, wo.z)
+                                                 : plasticCoatProbabilityReference(material, wo.z);
 
     std::vector<double> observed(deltaBin + 1, 0.0);
     int outside = 0, badDelta = 0;
@@ -467,9 +509,11 @@ TEST_P(BsdfLobe, SamplesFollowThePdf) {
             // The coat's mirror direction, chosen with the coat's probability, weighted F / P.
             glm::vec3 mirror(-wo.x, -wo.y, wo.z);
             double fresnel = fresnelReference(std::abs(wo.z), material.ior);
+            // (Principled: the mirror direction; its share is the delta bin's count.)
             bool good = hasDelta && glm::length(sample.wiLocal - mirror) < 1e-6f &&
-                        std::abs(sample.pdfSolidAngle - deltaProbability) < 1e-5 &&
-                        std::abs(sample.weight.x - fresnel / deltaProbability) < 1e-4 * fresnel / deltaProbability;
+                        (principled || std::abs(sample.pdfSolidAngle - deltaProbability) < 1e-5) &&
+                        (principled ||
+                        std::abs(sample.weight.x - fresnel / deltaProbability) < 1e-4 * fresnel / deltaProbability);
             if (!good && ++badDelta <= 3)
                 ADD_FAILURE() << "delta sample: wi (" << sample.wiLocal.x << ", " << sample.wiLocal.y << ", "
                               << sample.wiLocal.z << "), pdf " << sample.pdfSolidAngle << " (coat probability "
@@ -527,6 +571,8 @@ TEST_P(BsdfLobe, SamplesAgreeWithEvaluation) {
     const Material& material = lobe.material;
     const glm::vec3 wo = directionAt(lobe.cosThetaO);
     const bool ggx = material.type == MaterialType::Metal && !isSmooth(material.roughness);
+    // The principled mixture's pdf is as ill-conditioned as its GGX part at most.
+    const bool ggxBound = (ggx || material.type == MaterialType::Principled) && !isSmooth(material.roughness);
     const double alpha = ggxAlpha(material.roughness);
 
     int checked = 0, failedBadly = 0, beyond1e3 = 0, bad = 0;
@@ -541,8 +587,8 @@ TEST_P(BsdfLobe, SamplesAgreeWithEvaluation) {
         double pdf = sample.pdfSolidAngle, pdfAtWi = sample.pdfAtWi;
         double pdfError = std::abs(pdf - pdfAtWi) / pdf;
         double pdfTolerance = kPdfTolerance;
+        if (ggxBound) pdfTolerance += kConditioning * ggxPdfRoundingBound(glm::dvec3(wo), sample.wiLocal, alpha);
         if (ggx) {
-            pdfTolerance += kConditioning * ggxPdfRoundingBound(glm::dvec3(wo), sample.wiLocal, alpha);
             // The re-evaluation itself is accurate: it matches double precision at the float wi.
             double reference = ggxReflectionPdfReference(glm::dvec3(wo), glm::dvec3(sample.wiLocal), alpha);
             worstReference = std::max(worstReference, std::abs(pdfAtWi - reference) / reference);
@@ -633,10 +679,13 @@ const std::vector<FurnaceCase>& furnaceCases() {
         for (float roughness : kFurnaceRoughness) materials.push_back(makeMaterial(MaterialType::Metal, roughness));
         for (float roughness : kFurnaceRoughness)
             for (float ior : kFurnaceIors) materials.push_back(makeMaterial(MaterialType::Plastic, roughness, ior));
+        for (float roughness : kFurnaceRoughness)
+            for (float metallic : {0.0f, 0.5f, 1.0f}) materials.push_back(makePrincipled(metallic, roughness));
+        for (float transmission : {0.5f, 1.0f}) materials.push_back(makePrincipled(0.0f, 0.3f, glm::vec3(1.0f), transmission));
         std::vector<FurnaceCase> list;
         for (const Material& material : materials) {
             char label[96];
-            std::snprintf(label, sizeof label, "%s_r%g_ior%g", typeName(material.type), double(material.roughness),
+            std::snprintf(label, sizeof label, "%s_r%g_ior%g", typeLabel(material).c_str(), double(material.roughness),
                           double(material.ior));
             list.push_back({material, testName(label)});
         }
@@ -657,6 +706,10 @@ bool isLossless(const Material& material, double cosThetaO) {
         return cosThetaO > 0.0 || std::sqrt(1.0 - cosThetaO * cosThetaO) * material.ior < 1.0;
     case MaterialType::Metal: return isSmooth(material.roughness); // Schlick(1) = 1: a perfect mirror
     case MaterialType::Plastic: return material.ior == 1.0f;       // no coat: the white Lambertian base
+    // Principled: lossless where its parts are: the smooth white metal, and pure glass.
+    case MaterialType::Principled:
+        return (material.metallic == 1.0f && isSmooth(material.roughness)) ||
+               (material.metallic == 0.0f && material.transmission == 1.0f);
     case MaterialType::Emitter: return false;
     }
     return false;
@@ -693,7 +746,9 @@ TEST_P(BsdfFurnace, AlbedoIsAtMostOne) {
     const bool hasNonDeltaPart = material.type == MaterialType::Diffuse ||
                                  material.type == MaterialType::DiffuseTransmission ||
                                  (material.type == MaterialType::Metal && !isSmooth(material.roughness)) ||
-                                 material.type == MaterialType::Plastic;
+                                 material.type == MaterialType::Plastic ||
+                                 (material.type == MaterialType::Principled &&
+                                  !(isSmooth(material.roughness) && material.metallic == 1.0f) && material.transmission < 1.0f);
     for (std::size_t k = 0; k < wos.size(); ++k) {
         const double cosThetaO = kFurnaceCosines[k];
         double sum = 0.0, sumSquares = 0.0, sumNonDelta = 0.0, sumNonDeltaSquares = 0.0;
@@ -842,10 +897,13 @@ const std::vector<ReciprocityCase>& reciprocityCases() {
             for (float roughness : kRoughRoughness)
                 materials.push_back(makeMaterial(MaterialType::Plastic, roughness, ior, {0.7f, 0.5f, 0.3f}));
         }
+        for (float metallic : {0.0f, 0.5f, 1.0f})
+            for (float roughness : {0.0317f, 0.5477226f, 1.0f})
+                materials.push_back(makePrincipled(metallic, roughness, {0.8f, 0.5f, 0.3f}));
         std::vector<ReciprocityCase> list;
         for (const Material& material : materials) {
             char label[96];
-            std::snprintf(label, sizeof label, "%s_r%g_ior%g", typeName(material.type), double(material.roughness),
+            std::snprintf(label, sizeof label, "%s_r%g_ior%g", typeLabel(material).c_str(), double(material.roughness),
                           double(material.ior));
             list.push_back({material, testName(label)});
         }
@@ -959,6 +1017,8 @@ TEST(Bsdf, NoNanOrInfForAnyMaterialOrDirection) {
         for (float roughness : roughnesses) {
             materials.push_back(makeMaterial(MaterialType::Metal, roughness, 1.5f, color));
             for (float ior : iors) materials.push_back(makeMaterial(MaterialType::Plastic, roughness, ior, color));
+            for (float metallic : {0.0f, 0.5f, 1.0f})
+                for (float transmission : {0.0f, 0.5f}) materials.push_back(makePrincipled(metallic, roughness, color, transmission));
         }
     }
     std::vector<glm::vec3> directions;
