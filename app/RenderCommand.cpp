@@ -137,10 +137,15 @@ int runRenderCommand(const RenderOptions& options) {
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
                      seconds, samples / seconds * 1e-6, backendName(tracer.backend()), nonFinite,
                      context.description().c_str());
+        const std::string textures = tracer.gpuScene().textures().describe();
+        if (!textures.empty()) std::fprintf(stderr, "ptview: textures: %s\n", textures.c_str());
     } catch (const std::invalid_argument& e) {
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;
     } catch (const EnvironmentMapError& e) { // too large for this GPU
+        std::cerr << "ptview: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const TextureLimitError& e) { // a texture beyond this GPU's limits
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;
     } catch (const std::bad_alloc&) {

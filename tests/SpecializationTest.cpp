@@ -35,6 +35,8 @@ const char* const kDielectricCode = "BsdfSample sampleGlass(";
 const char* const kMicrofacetCode = "float ggxD(";
 const char* const kEnvironmentMapCode = "float environmentMapPdf(";
 const char* const kBvhCode = "bool traverseInstance(";
+const char* const kTextureCode = "vec4 sampleTexture(";
+const char* const kPrincipledCode = "BsdfSample samplePrincipled(";
 
 TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode) {
     Scene cornell = shippedScene("cornell");
@@ -47,13 +49,38 @@ TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode)
     std::string source = programSource(cornell);
     EXPECT_TRUE(contains(source, "vec3 lambertianReflectionF(")) << "the diffuse model is there";
     for (const char* absent : {kDielectricCode, "float fresnelDielectric(", kMicrofacetCode, kEnvironmentMapCode,
-                               "uEnvironmentMap", kBvhCode, "uMeshNodes"})
+                               "uEnvironmentMap", kBvhCode, "uMeshNodes", kTextureCode, "uTextureAtlas", kPrincipledCode})
         EXPECT_FALSE(contains(source, absent)) << absent;
+    EXPECT_FALSE(features.textures);
 
     // The uber-shader has all of it, for the same scene.
     std::string uber = programSource(cornell, PathTracerOptions{true, std::nullopt});
-    for (const char* present : {kDielectricCode, kMicrofacetCode, kEnvironmentMapCode, kBvhCode})
+    for (const char* present : {kDielectricCode, kMicrofacetCode, kEnvironmentMapCode, kBvhCode, kTextureCode, kPrincipledCode})
         EXPECT_TRUE(contains(uber, present)) << present;
+}
+
+// The principled grid has the model but no texture; a textured material brings the texture code.
+TEST(Specialization, PrincipledAndTexturesBringTheirCode) {
+    Scene grid = shippedScene("principled_grid");
+    EXPECT_TRUE(sceneFeatures(grid).usesModel(MaterialType::Principled));
+    EXPECT_FALSE(sceneFeatures(grid).textures);
+    std::string source = programSource(grid);
+    EXPECT_TRUE(contains(source, kPrincipledCode));
+    EXPECT_FALSE(contains(source, kTextureCode));
+
+    Scene textured = shippedScene("cornell");
+    auto image = std::make_shared<TextureImage>();
+    image->width = image->height = 1;
+    image->rgba = {255, 128, 0, 255};
+    SceneTexture texture;
+    texture.source = "white.png";
+    texture.image = image;
+    textured.textures.push_back(texture);
+    textured.materials[0].baseColorTexture.texture = 0;
+    EXPECT_TRUE(sceneFeatures(textured).textures);
+    std::string withTextures = programSource(textured);
+    EXPECT_TRUE(contains(withTextures, kTextureCode));
+    EXPECT_FALSE(contains(withTextures, kPrincipledCode));
 }
 
 TEST(Specialization, EachFeatureBringsItsCode) {
