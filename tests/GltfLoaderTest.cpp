@@ -3,6 +3,7 @@
 #include "GltfLoader.h"
 #include "Scene.h"
 #include "SceneLoader.h"
+#include "SceneWriter.h"
 #include "TestFiles.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -520,6 +521,41 @@ TEST(GltfLoader, SceneJsonPlacesAGltfNextToItsOwnShapes) {
         "materials": {}, "shapes": [], "gltf": [{"file": "missing.glb"}]})"));
     EXPECT_NE(error.find("bad.json: /gltf/0/file: "), std::string::npos) << error;
     EXPECT_NE(error.find("missing.glb: cannot open glTF file"), std::string::npos) << error;
+}
+
+// What a glTF file expanded to is written back as the reference to it, with its placement.
+TEST(GltfLoader, SavingWritesTheReferenceNotTheExpandedParts) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    b.node({{"mesh", unitTriangle(b)}});
+    b.doc["materials"] = Json::array({{{"name", "red"}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    files.write("triangle.gltf", b.gltfWithDataUri());
+    Scene scene = loadScene(files.write("scene.json", R"({
+        "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {"white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "white"}],
+        "gltf": [{"file": "triangle.gltf", "transform": {"translate": [0, 0, -2]}}]
+    })"));
+    std::filesystem::path saved = files.write("saved.json", "");
+    const std::filesystem::path dir = saved.parent_path();
+    saveScene(scene, saved);
+    Json written = Json::parse(testing::readFileBytes(saved));
+    EXPECT_EQ(written["gltf"], Json::parse(R"([{"file": "triangle.gltf", "transform": {"translate": [0, 0, -2]}}])"));
+    EXPECT_FALSE(written["materials"].contains("triangle/red")) << written.dump();
+    EXPECT_EQ(written["shapes"].size(), 1u) << "the sphere alone";
+    EXPECT_FALSE(written.contains("meshes"));
+    Scene again = loadScene(saved);
+    EXPECT_EQ(again.shapes.size(), scene.shapes.size());
+    EXPECT_EQ(again.materials.size(), scene.materials.size());
+
+    // A glTF opened on its own has the .gltf as its path; saving there must not replace it.
+    Scene alone = loadScene(dir / "triangle.gltf");
+    EXPECT_THROW(saveScene(alone, alone.path), std::runtime_error);
+    EXPECT_NO_THROW(loadScene(dir / "triangle.gltf")) << "the file is left as it was";
+    std::filesystem::path asJson = dir / "triangle.json";
+    saveScene(alone, asJson);
+    EXPECT_EQ(loadScene(asJson).shapes.size(), 1u);
 }
 
 TEST(GltfLoader, DamagedHelmetLoadsWithItsTexturesAndOneMaterial) {
