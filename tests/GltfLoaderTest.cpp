@@ -574,5 +574,13 @@ TEST(GltfLoader, DamagedHelmetLoadsWithItsTexturesAndOneMaterial) {
     EXPECT_TRUE(hasWarning(scene, "occlusion means nothing to a path tracer"));
 }
 
+TEST(GltfLoader, HelmetSceneLoadsTheHelmetUnderTheStudioMap) {
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/helmet.json");
+    ASSERT_EQ(scene.imports.size(), 1u);
+    EXPECT_EQ(scene.shapes.size(), 2u) << "the floor and the helmet";
+    EXPECT_EQ(scene.shapes[1].importedFrom, 0);
+    EXPECT_EQ(scene.environmentMap.filename(), "studio_small_03_1k.hdr");
+}
+
 } // namespace
 } // namespace ptview
