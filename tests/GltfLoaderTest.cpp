@@ -490,6 +490,20 @@ TEST(GltfLoader, BadFilesNameFileAndPlace) {
         b.scene({0});
         expectError(files.write("cycle.gltf", b.gltfWithDataUri()), "/nodes/0: reached twice");
     }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["bufferViews"][0]["byteOffset"] = 4.5; // tinygltf might read it as 4 and skip the check
+        expectError(files.write("viewoffset.gltf", b.gltfWithDataUri()), "/bufferViews/0/byteOffset: expected an unsigned integer");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        Json deep = 1;
+        for (int i = 0; i < 100; ++i) deep = Json::array({deep});
+        b.doc["extras"] = deep; // tinygltf copies extras recursively
+        expectError(files.write("deep.gltf", b.gltfWithDataUri()), "JSON nested deeper than 64 levels");
+    }
     expectError(files.write("notjson.gltf", "{\"asset\": "), "malformed JSON");
 }
 

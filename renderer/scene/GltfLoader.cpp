@@ -136,9 +136,35 @@ GlbChunks splitGlb(const std::string& bytes) {
     return chunks;
 }
 
-std::uint64_t unsignedOr(const Json& object, const char* key, std::uint64_t fallback) {
+// A byte count or index the checks below rely on: one that is there but no unsigned integer
+// (4.5, -1) would be read one way here and another by tinygltf, so it is refused.
+std::uint64_t unsignedOr(const Json& object, const char* key, std::uint64_t fallback, const std::string& where) {
     auto it = object.find(key);
-    return it != object.end() && it->is_number_unsigned() ? it->get<std::uint64_t>() : fallback;
+    if (it == object.end()) return fallback;
+    if (!it->is_number_unsigned()) fail(where + "/" + key, "expected an unsigned integer");
+    return it->get<std::uint64_t>();
+}
+
+// tinygltf turns "extras" and "extensions" into its own values recursively, so a deep enough
+// nesting would overflow the stack; no glTF needs more than a few levels.
+constexpr int kMaxJsonDepth = 64;
+
+void checkNesting(const std::string& text) {
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > kMaxJsonDepth) fail("", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        } else if (c == '}' || c == ']') {
+            --depth;
+        }
+    }
 }
 
 void checkResourceFile(const std::filesystem::path& file, const std::string& where, const char* kind) {
@@ -172,7 +198,7 @@ void checkDocument(const Json& root, const std::filesystem::path& file, const Gl
         for (std::size_t i = 0; i < buffers->size(); ++i) {
             const Json& buffer = (*buffers)[i];
             if (!buffer.is_object()) fail(at("buffers", i), "expected an object");
-            std::uint64_t byteLength = unsignedOr(buffer, "byteLength", 0);
+            std::uint64_t byteLength = unsignedOr(buffer, "byteLength", 0, at("buffers", i));
             bufferLengths.push_back(byteLength);
             auto uri = buffer.find("uri");
             if (uri == buffer.end() || !uri->is_string()) {
@@ -205,10 +231,10 @@ void checkDocument(const Json& root, const std::filesystem::path& file, const Gl
         for (std::size_t i = 0; i < views->size(); ++i) {
             const Json& view = (*views)[i];
             if (!view.is_object()) fail(at("bufferViews", i), "expected an object");
-            std::uint64_t buffer = unsignedOr(view, "buffer", UINT64_MAX);
+            std::uint64_t buffer = unsignedOr(view, "buffer", UINT64_MAX, at("bufferViews", i));
             if (buffer >= bufferLengths.size()) fail(at("bufferViews", i) + "/buffer", "names no buffer");
-            std::uint64_t offset = unsignedOr(view, "byteOffset", 0);
-            std::uint64_t length = unsignedOr(view, "byteLength", 0);
+            std::uint64_t offset = unsignedOr(view, "byteOffset", 0, at("bufferViews", i));
+            std::uint64_t length = unsignedOr(view, "byteLength", 0, at("bufferViews", i));
             if (offset > bufferLengths[buffer] || length > bufferLengths[buffer] - offset)
                 fail(at("bufferViews", i), "bytes " + std::to_string(offset) + " to " + std::to_string(offset + length) +
                                                " run past the end of buffer " + std::to_string(buffer) + " (" +
@@ -1042,6 +1068,7 @@ GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& plac
         GlbChunks chunks;
         if (binary) chunks = splitGlb(bytes);
         const std::string& jsonText = binary ? chunks.json : bytes;
+        checkNesting(jsonText);
         Json root = Json::parse(jsonText, nullptr, /*allow_exceptions=*/false);
         if (root.is_discarded()) fail("", std::string("malformed JSON") + (binary ? " in the .glb's JSON chunk" : ""));
         checkDocument(root, path, binary ? &chunks : nullptr);
