@@ -90,7 +90,9 @@ void drawLightsPanel(ViewerSession& session) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& light = scene.lights[i];
         // "###": the node keeps its open state when a reload renames the light.
-        std::string label = light.name + (light.type == LightType::Spot ? "  (spot)" : "  (point)") + "###light";
+        std::string label = light.name +
+                            (light.type == LightType::Spot ? "  (spot)" : light.type == LightType::Directional ? "  (directional)" : "  (point)") +
+                            "###light";
         ImGui::PushID(static_cast<int>(i));
         if (ImGui::TreeNode(label.c_str())) {
             changed |= drawLight(light, dragSpeed);

@@ -4,8 +4,10 @@
 // Kinds: emissive quads, disks and mesh triangles (sampled uniformly by area), emissive spheres (sampled within
 // the cone of directions they subtend when seen from outside, which wastes no sample on the
 // hidden half; by area from inside), the environment (by luminance for a map, uniform over the
-// sphere for a constant colour: environment_map.glsl), and point and spot lights (delta: one
-// direction, no density; BSDF sampling never finds them, so they never take part in MIS). Area
+// sphere for a constant colour: environment_map.glsl), and point, spot and directional lights
+// (delta: one direction, no density; BSDF sampling never finds them, so they never take part in
+// MIS; a directional light is infinitely far, and its factor is the irradiance it gives a surface
+// facing it). Area
 // lights radiate from their front side only. Densities are in solid angle at the shading point.
 //
 // uLights holds four texels per light: (kind, primitive, cumulative selection probability, -),
@@ -215,6 +217,15 @@ LightSample samplePointLight(int light, vec3 posWorld, bool spot) {
     return LightSample(wi, distance, intensity / distance2, 1.0, true);
 }
 
+// ---- Directional: delta, one direction from infinitely far (no density) ------------------------
+
+// texel 2: the unit direction toward the light; texel 3: the irradiance on a surface facing it.
+LightSample sampleDirectionalLight(int light) {
+    vec3 towardLight = texelFetch(uLights, 4 * light + 2).xyz;
+    vec3 irradiance = texelFetch(uLights, 4 * light + 3).rgb;
+    return LightSample(towardLight, kInfinity, irradiance, 1.0, true);
+}
+
 // ---- Environment: by luminance for a map, uniform for a constant colour (environment.glsl) ----
 
 LightSample sampleEnvironmentLight(vec2 u) {
@@ -236,6 +247,7 @@ LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
     case kLightEnvironment: return sampleEnvironmentLight(u);
     case kLightPoint: return samplePointLight(light, posWorld, false);
     case kLightSpot: return samplePointLight(light, posWorld, true);
+    case kLightDirectional: return sampleDirectionalLight(light);
     case kLightQuad: return sampleQuadLight(primitive, posWorld, u);
     case kLightTriangle: return sampleTriangleLight(light, primitive, posWorld, u);
     case kLightDisk: return sampleDiskLight(primitive, posWorld, u);
@@ -252,7 +264,7 @@ float lightPdf(int light, vec3 posWorld, vec3 wi, float hitDistance, vec3 hitNor
     uint kind = kindAndPrimitive.x;
     int primitive = int(kindAndPrimitive.y);
     if (kind == kLightEnvironment) return environmentPdf(wi);
-    if (kind == kLightPoint || kind == kLightSpot) return 0.0;
+    if (kind == kLightPoint || kind == kLightSpot || kind == kLightDirectional) return 0.0;
     float cosLight = abs(dot(hitNormal, wi));
     if (cosLight == 0.0) return 0.0;
     float distance2 = hitDistance * hitDistance;

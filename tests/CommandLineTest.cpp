@@ -69,6 +69,16 @@ TEST_F(CommandLineTest, MalformedJsonNamesLineAndColumn) {
     expectRefused("render " + shellQuoted(scene) + " --out " + shellQuoted(path("out.png")), scene + ":3:");
 }
 
+// A glTF file opened directly is read like a scene: a bad one is exit 2 naming it and the place.
+TEST_F(CommandLineTest, BadGltfFilesNameFileAndJsonPointer) {
+    std::string truncated = write("cut.glb", std::string("glTF\x02\0\0\0\xe8\x03\0\0", 12) + std::string(20, ' '));
+    expectRefused("render " + shellQuoted(truncated) + " --out " + shellQuoted(path("out.png")),
+                  truncated + ": truncated .glb: its header says 1000 bytes, the file has 32");
+    std::string missingBin = write("nobin.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "gone.bin"}]})");
+    expectRefused("render " + shellQuoted(missingBin) + " --out " + shellQuoted(path("out.png")),
+                  missingBin + ": /buffers/0/uri: " + path("gone.bin") + ": cannot open glTF buffer");
+}
+
 TEST_F(CommandLineTest, NegativeRadiusNamesJsonPointer) {
     std::string scene = write("neg.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
         "materials": { "white": { "type": "diffuse", "albedo": [0.5,0.5,0.5] } },

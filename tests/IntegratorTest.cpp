@@ -682,6 +682,29 @@ TEST_P(DeltaLights, SpotLightIsFullInsideZeroOutsideSmoothBetween) {
                 outside);
 }
 
+// A directional light (glTF's KHR_lights_punctual "directional") of irradiance E, slanted so the
+// floor sees it at cos(theta) = 2 / sqrt(5): every floor point has L = a / pi * E * cos(theta).
+TEST_P(DeltaLights, DirectionalLightGivesAlbedoTimesIrradianceOverPiTimesCosine) {
+    Scene scene = floorScene();
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(1.0f, -2.0f, 0.0f));
+    sun.intensity = kDeltaIntensity; // W m^-2 on a surface facing it
+    scene.lights.push_back(sun);
+    PixelStatistics stats = render(scene, GetParam(), 16, 44);
+    const double cosTheta = 2.0 / std::sqrt(5.0);
+    glm::dvec3 expected = glm::dvec3(kFloorAlbedo) / M_PI * glm::dvec3(kDeltaIntensity) * cosTheta;
+    Estimate whole = regionEstimate(stats, [](int, int) { return true; });
+    expectNear(whole, expected, GetParam().name() + " whole floor");
+    // No falloff with distance: the near and the far half agree.
+    Estimate left = regionEstimate(stats, [](int x, int) { return x < 16; });
+    Estimate right = regionEstimate(stats, [](int x, int) { return x >= 16; });
+    expectNear(left, expected, GetParam().name() + " left half");
+    expectNear(right, expected, GetParam().name() + " right half");
+    std::printf("directional light %-24s got %.5f %.5f %.5f expected %.5f %.5f %.5f\n", GetParam().name().c_str(),
+                whole.mean.r, whole.mean.g, whole.mean.b, expected.r, expected.g, expected.b);
+}
+
 INSTANTIATE_TEST_SUITE_P(LightSampling, DeltaLights, ::testing::ValuesIn(kLightSamplingConfigs), configParamName);
 
 TEST(DeltaLightsNaive, PointAndSpotLitFloorIsBlack) {

@@ -190,6 +190,13 @@ LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Ma
             light.kind = static_cast<float>(LightKind::Point);
             light.texels[0] = glm::vec4(source.position, 0.0f);
             power.push_back(4.0 * glm::pi<double>() * luminance(source.intensity));
+        } else if (source.type == LightType::Directional) {
+            // texels[1]: the unit direction toward the light; texels[2]: the irradiance.
+            light.kind = static_cast<float>(LightKind::Directional);
+            light.texels[1] = glm::vec4(-glm::normalize(source.direction), 0.0f);
+            // What crosses the scene's bounding disc, as for the environment below.
+            double radius = std::max(double(sceneBoundingRadius(geometry, meshBounds)), 1e-3);
+            power.push_back(glm::pi<double>() * radius * radius * luminance(source.intensity));
         } else {
             light.kind = static_cast<float>(LightKind::Spot);
             float cosInner = std::cos(glm::radians(source.innerAngleDeg));

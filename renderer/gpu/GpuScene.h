@@ -28,7 +28,7 @@ struct ScenePrimitives {
 };
 
 // The kinds of the light table; shaders/lights.glsl gets their constants from this table (GlslEnums.h).
-enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5, Triangle = 6 };
+enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5, Triangle = 6, Directional = 7 };
 
 inline const EnumTable<LightKind>& lightKindNames() {
     static const EnumTable<LightKind> table = {
@@ -39,6 +39,7 @@ inline const EnumTable<LightKind>& lightKindNames() {
         {LightKind::Point, "point", nullptr, "", "kLightPoint"},
         {LightKind::Spot, "spot", nullptr, "", "kLightSpot"},
         {LightKind::Triangle, "triangle", nullptr, "", "kLightTriangle"},
+        {LightKind::Directional, "directional", nullptr, "", "kLightDirectional"},
     };
     return table;
 }

@@ -78,8 +78,8 @@ std::string generateBsdfDispatch(const ShaderFeatures& features) {
 }
 
 auto tied(const ShaderFeatures& f) {
-    return std::make_tuple(f.materialModels, f.areaLights, f.pointLights, f.spotLights, f.environmentMap, f.meshes,
-                           f.textures);
+    return std::make_tuple(f.materialModels, f.areaLights, f.pointLights, f.spotLights, f.directionalLights, f.environmentMap,
+                           f.meshes, f.textures);
 }
 
 } // namespace
@@ -87,7 +87,7 @@ auto tied(const ShaderFeatures& f) {
 ShaderFeatures ShaderFeatures::all() {
     ShaderFeatures features;
     for (const BsdfCode& code : kBsdfCode) features.materialModels |= 1u << static_cast<int>(code.type);
-    features.areaLights = features.pointLights = features.spotLights = true;
+    features.areaLights = features.pointLights = features.spotLights = features.directionalLights = true;
     features.environmentMap = features.meshes = features.textures = true;
     return features;
 }
@@ -100,6 +100,7 @@ bool ShaderFeatures::transmission() const {
 bool ShaderFeatures::covers(const ShaderFeatures& other) const {
     return (other.materialModels & ~materialModels) == 0 && (areaLights || !other.areaLights) &&
            (pointLights || !other.pointLights) && (spotLights || !other.spotLights) &&
+           (directionalLights || !other.directionalLights) &&
            (environmentMap || !other.environmentMap) && (meshes || !other.meshes) &&
            (textures || !other.textures);
 }
@@ -111,7 +112,8 @@ std::string ShaderFeatures::describe() const {
     std::string materials;
     for (const MaterialSchema& schema : kMaterialSchemas)
         if (usesModel(schema.type)) materials += std::string(" ") + schema.name;
-    std::string lights = std::string(areaLights ? " area" : "") + (pointLights ? " point" : "") + (spotLights ? " spot" : "");
+    std::string lights = std::string(areaLights ? " area" : "") + (pointLights ? " point" : "") + (spotLights ? " spot" : "") +
+                         (directionalLights ? " directional" : "");
     return "materials:" + (materials.empty() ? std::string(" none") : materials) + "\n" +
            "lights:" + (lights.empty() ? std::string(" none") : lights) + "\n" +
            "environment: " + (environmentMap ? "map" : "constant") + "\n" +
@@ -135,7 +137,10 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
             useMaterial(shape.material);
         }
     }
-    for (const Light& light : scene.lights) (light.type == LightType::Point ? features.pointLights : features.spotLights) = true;
+    for (const Light& light : scene.lights)
+        (light.type == LightType::Point ? features.pointLights
+         : light.type == LightType::Spot ? features.spotLights
+                                         : features.directionalLights) = true;
     features.environmentMap = !scene.environmentMap.empty();
     return features;
 }

@@ -21,6 +21,7 @@ struct ShaderFeatures {
     bool areaLights = false;          // emitting surfaces (shapes or mesh triangles)
     bool pointLights = false;
     bool spotLights = false;
+    bool directionalLights = false;
     bool environmentMap = false;      // else the constant colour
     bool meshes = false;
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)

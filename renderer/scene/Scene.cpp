@@ -11,6 +11,7 @@
 namespace ptview {
 
 glm::mat4 Transform::objectToWorld() const {
+    if (matrix) return *matrix;
     glm::mat4 matrix(rotationMatrix(rotationAxis, rotationDeg) * glm::mat3(glm::scale(glm::mat4(1.0f), scale)));
     matrix[3] = glm::vec4(translate, 1.0f);
     return matrix;

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,7 @@ struct Material {
     TextureSlot metallicTexture;  // B x metallic; linear (glTF: the same texture)
     TextureSlot normalTexture;    // tangent-space normal, RGB; linear
     TextureSlot emissionTexture;  // RGB x radiance; sRGB
+    int importedFrom = -1; // into Scene::imports when a glTF file made it (the writer skips it)
 
     bool hasTextures() const {
         return baseColorTexture.used() || roughnessTexture.used() || metallicTexture.used() || normalTexture.used() ||
@@ -72,6 +74,9 @@ struct Transform {
     glm::vec3 rotationAxis{0.0f, 1.0f, 0.0f}; // right-hand rule
     float rotationDeg = 0.0f;
     glm::vec3 scale{1.0f};                    // nonzero components
+    // When set, the whole object-to-world matrix, and the fields above are unused: a glTF node's
+    // world matrix (a product down its hierarchy) may shear, which no scale-rotate-translate holds.
+    std::optional<glm::mat4> matrix;
 
     glm::mat4 objectToWorld() const;
 };
@@ -93,6 +98,7 @@ struct Shape {
     int mesh = -1;
     Transform transform;
     std::vector<int> slotMaterials;
+    int importedFrom = -1; // into Scene::imports when a glTF file made it (the writer skips it)
 };
 
 // A mesh file the scene uses, loaded once however many shapes instance it.
@@ -100,6 +106,7 @@ struct SceneMesh {
     std::string name; // the key in the file's "meshes"
     std::filesystem::path file;
     std::shared_ptr<const TriangleMesh> data;
+    int importedFrom = -1; // into Scene::imports when a glTF file made it (the writer skips it)
 };
 
 // Lights that are points rather than surfaces (delta lights: only light sampling reaches them).
@@ -115,6 +122,15 @@ struct Light {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // Spot: unit, where the cone points; Directional: where the light travels
     float innerAngleDeg = 20.0f;          // Spot: full intensity within this angle of the axis,
     float outerAngleDeg = 30.0f;          //   none beyond this one, smooth in between (inner <= outer)
+    int importedFrom = -1; // into Scene::imports when a glTF file made it (the writer skips it)
+};
+
+// A glTF file the scene places ("gltf" in the scene JSON, or the file opened on its own). Its
+// meshes, materials, textures, shapes and lights are appended to the scene, each marked with
+// this import's index, so that saving writes this reference back rather than what it expanded to.
+struct SceneImport {
+    std::filesystem::path file; // as resolved on loading (relative to the working directory, or absolute)
+    Transform transform;        // placement of the file's scene in ours
 };
 
 struct Scene {
@@ -133,6 +149,7 @@ struct Scene {
     std::vector<SceneMesh> meshes;
     std::vector<Shape> shapes;
     std::vector<Light> lights;
+    std::vector<SceneImport> imports;
     // What loading repaired or skipped (a mesh's degenerate triangles, polylines), one line each
     // naming the file; the scene is usable, but the user should hear about it.
     std::vector<std::string> warnings;

@@ -7,6 +7,7 @@
 
 #include "SceneLoader.h"
 
+#include "GltfLoader.h"
 #include "InputFile.h"
 #include "MaterialSchema.h"
 #include "TextureLoader.h"
@@ -919,13 +920,34 @@ struct SceneDraft {
     std::vector<Pointer> meshPlaces; // where each of scene.meshes was declared
     std::vector<MeshMaterialRequest> meshRequests;
     std::vector<TextureRequest> textureRequests;
+    std::vector<Pointer> importPlaces; // where each of scene.imports was declared
 };
+
+// "gltf": [{"file": "helmet.glb", "transform": {...}}]: glTF files placed in the scene, read
+// once the rest is (resolveImports).
+void readImports(const Json& value, const Pointer& at, SceneDraft& draft) {
+    if (!value.is_array()) fail(at, "expected an array, got " + describe(value));
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const Pointer entryAt = at / i;
+        requireObject(value[i], entryAt);
+        checkKeys(value[i], entryAt, {"file", "transform"});
+        SceneImport entry;
+        std::string file = readString(requireKey(value[i], entryAt, "file"), entryAt / "file");
+        if (!isGltfFile(std::filesystem::u8path(file)))
+            fail(entryAt / "file", "expected a .gltf or .glb file, got \"" + file + "\"");
+        entry.file = std::filesystem::u8path(file);
+        if (const Json* transform = optionalKey(value[i], "transform"))
+            entry.transform = readTransform(*transform, entryAt / "transform");
+        draft.scene.imports.push_back(entry);
+        draft.importPlaces.push_back(entryAt / "file");
+    }
+}
 
 SceneDraft readScene(const Json& root) {
     const Pointer top;
     if (!root.is_object())
         fail(top, "expected an object at the top level, got " + describe(root));
-    checkKeys(root, top, {"camera", "environment", "materials", "meshes", "shapes", "lights"});
+    checkKeys(root, top, {"camera", "environment", "materials", "meshes", "shapes", "lights", "gltf"});
 
     SceneDraft draft;
     Scene& scene = draft.scene;
@@ -969,6 +991,7 @@ SceneDraft readScene(const Json& root) {
         for (std::size_t i = 0; i < lights->size(); ++i)
             scene.lights.push_back(readLight((*lights)[i], lightsAt / i, i));
     }
+    if (const Json* gltf = optionalKey(root, "gltf")) readImports(*gltf, top / "gltf", draft);
     return draft;
 }
 
@@ -1098,9 +1121,25 @@ void resolveTextures(SceneDraft& draft, const std::filesystem::path& sceneFile) 
     }
 }
 
+// Appends each glTF file the scene places, after the scene's own parts, so that their indices
+// (and the file's own order) are those of the file.
+void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile) {
+    Scene& scene = draft.scene;
+    for (std::size_t i = 0; i < scene.imports.size(); ++i) {
+        SceneImport& entry = scene.imports[i];
+        if (entry.file.is_relative()) entry.file = sceneFile.parent_path() / entry.file;
+        try {
+            appendGltf(entry.file, entry.transform.objectToWorld(), static_cast<int>(i), scene);
+        } catch (const SceneError& error) {
+            fail(draft.importPlaces[i], error.what());
+        }
+    }
+}
+
 } // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
+    if (isGltfFile(path)) return loadGltfScene(path);
     std::string text;
     try {
         text = readInputFile(path, kMaxSceneFileBytes, "scene file");
@@ -1124,6 +1163,7 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         SceneDraft draft = readScene(builder.root);
         resolveMeshes(draft, sourceName);
         resolveTextures(draft, sourceName);
+        resolveImports(draft, sourceName);
         Scene scene = std::move(draft.scene);
         // Read into the model (and written back), but the renderer does not cut or blend yet.
         for (const Material& material : scene.materials)

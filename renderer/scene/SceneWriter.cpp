@@ -6,6 +6,7 @@
 
 #include "SceneWriter.h"
 
+#include "GltfLoader.h"
 #include "ImageIO.h"
 #include "MaterialSchema.h"
 #include "SceneLoader.h"
@@ -359,6 +360,7 @@ std::string sceneToJson(const Scene& scene) {
 
     Json materials = Json::object();
     for (const Material& material : scene.materials) {
+        if (material.importedFrom >= 0) continue; // written as its glTF file, below
         // Shapes name their material, so a second one of the same name could not be told apart.
         if (materials.contains(material.name))
             fail(joinPointer("/materials", material.name), "two materials have this name");
@@ -366,23 +368,31 @@ std::string sceneToJson(const Scene& scene) {
     }
     root["materials"] = std::move(materials);
 
-    if (!scene.meshes.empty()) {
-        Json meshes = Json::object();
-        for (const SceneMesh& mesh : scene.meshes)
-            meshes[mesh.name] = Json{{"file", relativePathText(mesh.file, scene.path.parent_path())}};
-        root["meshes"] = std::move(meshes);
-    }
+    Json meshes = Json::object();
+    for (const SceneMesh& mesh : scene.meshes)
+        if (mesh.importedFrom < 0) meshes[mesh.name] = Json{{"file", relativePathText(mesh.file, scene.path.parent_path())}};
+    if (!meshes.empty()) root["meshes"] = std::move(meshes);
 
     Json shapes = Json::array();
-    for (std::size_t i = 0; i < scene.shapes.size(); ++i)
-        shapes.push_back(shapeJson(scene.shapes[i], scene, "/shapes/" + std::to_string(i)));
+    for (const Shape& shape : scene.shapes)
+        if (shape.importedFrom < 0) shapes.push_back(shapeJson(shape, scene, "/shapes/" + std::to_string(shapes.size())));
     root["shapes"] = std::move(shapes);
 
-    if (!scene.lights.empty()) {
-        Json lights = Json::array();
-        for (std::size_t i = 0; i < scene.lights.size(); ++i)
-            lights.push_back(lightJson(scene.lights[i], "/lights/" + std::to_string(i)));
-        root["lights"] = std::move(lights);
+    Json lights = Json::array();
+    for (const Light& light : scene.lights)
+        if (light.importedFrom < 0) lights.push_back(lightJson(light, "/lights/" + std::to_string(lights.size())));
+    if (!lights.empty()) root["lights"] = std::move(lights);
+
+    // A glTF file's parts are written as the reference to it (edits to them are not kept).
+    if (!scene.imports.empty()) {
+        Json imports = Json::array();
+        for (const SceneImport& entry : scene.imports) {
+            Json json{{"file", relativePathText(entry.file, scene.path.parent_path())}};
+            Json transform = transformJson(entry.transform);
+            if (!transform.empty()) json["transform"] = std::move(transform);
+            imports.push_back(std::move(json));
+        }
+        root["gltf"] = std::move(imports);
     }
 
     std::string text;
@@ -391,6 +401,9 @@ std::string sceneToJson(const Scene& scene) {
 }
 
 void saveScene(const Scene& scene, const std::filesystem::path& path) {
+    // A glTF file opened on its own has it as its path; our JSON must not replace it.
+    if (isGltfFile(path))
+        throw std::runtime_error(path.string() + ": a glTF file is not overwritten with a scene; save as a .json (not saved)");
     std::string text;
     try {
         Scene placed = scene; // the environment map's path is written relative to the new file

@@ -1,0 +1,600 @@
+// The glTF loader (renderer/scene/GltfLoader.*): small files written by each test (JSON with
+// base64 data URIs, or a .bin / .glb beside it), checked against values computed by hand here.
+#include "GltfLoader.h"
+#include "Scene.h"
+#include "SceneLoader.h"
+#include "SceneWriter.h"
+#include "TestFiles.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+#include <stb_image_write.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace ptview {
+namespace {
+
+using Json = nlohmann::json;
+using testing::ScratchFiles;
+
+constexpr int kFloat = 5126;
+constexpr int kUnsignedByte = 5121;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+
+std::string base64(const std::string& bytes) {
+    static const char* kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        unsigned v = unsigned(static_cast<unsigned char>(bytes[i])) << 16 | unsigned(static_cast<unsigned char>(bytes[i + 1])) << 8 |
+                     static_cast<unsigned char>(bytes[i + 2]);
+        for (int k = 3; k >= 0; --k) out += kDigits[(v >> (6 * k)) & 63];
+    }
+    if (i + 1 == bytes.size()) {
+        unsigned v = unsigned(static_cast<unsigned char>(bytes[i])) << 16;
+        out += kDigits[(v >> 18) & 63];
+        out += kDigits[(v >> 12) & 63];
+        out += "==";
+    } else if (i + 2 == bytes.size()) {
+        unsigned v = unsigned(static_cast<unsigned char>(bytes[i])) << 16 | unsigned(static_cast<unsigned char>(bytes[i + 1])) << 8;
+        out += kDigits[(v >> 18) & 63];
+        out += kDigits[(v >> 12) & 63];
+        out += kDigits[(v >> 6) & 63];
+        out += '=';
+    }
+    return out;
+}
+
+template <class T>
+std::string bytesOf(const std::vector<T>& values) {
+    return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+}
+
+// A glTF document with one buffer, built view by view.
+struct GltfBuilder {
+    Json doc = {{"asset", {{"version", "2.0"}}}};
+    std::string bin;
+
+    int view(const std::string& bytes) {
+        while (bin.size() % 4) bin += '\0';
+        Json v = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes.size()}};
+        bin += bytes;
+        doc["bufferViews"].push_back(v);
+        return static_cast<int>(doc["bufferViews"].size()) - 1;
+    }
+    int accessor(int bufferView, int componentType, std::size_t count, const char* type, bool normalized = false) {
+        Json a = {{"bufferView", bufferView}, {"componentType", componentType}, {"count", count}, {"type", type}};
+        if (normalized) a["normalized"] = true;
+        doc["accessors"].push_back(a);
+        return static_cast<int>(doc["accessors"].size()) - 1;
+    }
+    int positions(const std::vector<float>& xyz) { return accessor(view(bytesOf(xyz)), kFloat, xyz.size() / 3, "VEC3"); }
+    // A mesh of one triangle list primitive; returns its index.
+    int mesh(Json primitive) {
+        doc["meshes"].push_back({{"primitives", Json::array({std::move(primitive)})}});
+        return static_cast<int>(doc["meshes"].size()) - 1;
+    }
+    int node(Json node) {
+        doc["nodes"].push_back(std::move(node));
+        return static_cast<int>(doc["nodes"].size()) - 1;
+    }
+    void scene(std::vector<int> roots) { doc["scenes"] = Json::array({{{"nodes", roots}}}); doc["scene"] = 0; }
+
+    std::string gltfWithDataUri() {
+        Json d = doc;
+        d["buffers"] = Json::array({{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+        return d.dump();
+    }
+    std::string gltfWithBin(const std::string& binName) {
+        Json d = doc;
+        d["buffers"] = Json::array({{{"byteLength", bin.size()}, {"uri", binName}}});
+        return d.dump();
+    }
+    std::string glb() {
+        Json d = doc;
+        std::string body = bin;
+        while (body.size() % 4) body += '\0';
+        d["buffers"] = Json::array({{{"byteLength", bin.size()}}});
+        std::string json = d.dump();
+        while (json.size() % 4) json += ' ';
+        auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+        std::string out = "glTF" + u32(2) + u32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + body.size()));
+        out += u32(static_cast<std::uint32_t>(json.size())) + "JSON" + json;
+        out += u32(static_cast<std::uint32_t>(body.size())) + std::string("BIN\0", 4) + body;
+        return out;
+    }
+};
+
+// The unit right triangle (0,0,0), (1,0,0), (0,1,0), facing +Z.
+int unitTriangle(GltfBuilder& b) {
+    return b.mesh({{"attributes", {{"POSITION", b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0})}}}});
+}
+
+glm::vec3 worldVertex(const Scene& scene, const Shape& shape, int triangle, int corner) {
+    const TriangleMesh& mesh = *scene.meshes[static_cast<std::size_t>(shape.mesh)].data;
+    glm::vec3 p = mesh.positions[mesh.triangles[static_cast<std::size_t>(triangle)].position[static_cast<std::size_t>(corner)]];
+    return glm::vec3(shape.transform.objectToWorld() * glm::vec4(p, 1.0f));
+}
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance, const std::string& what) {
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;
+}
+
+std::string loadError(const std::filesystem::path& path) {
+    try {
+        loadScene(path);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(loaded without an error)";
+}
+
+bool hasWarning(const Scene& scene, const std::string& text) {
+    for (const std::string& w : scene.warnings)
+        if (w.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST(GltfLoader, NestedNodesPlaceInstancesAsComputedByHand) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    int mesh = unitTriangle(b);
+    // child: a column-major matrix translating by (0, 1, 0) and scaling x by 3.
+    int child = b.node({{"mesh", mesh}, {"matrix", {3, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1}}});
+    // parent: T(1, 0, 0) R(90 deg about +Z) S(2): x -> y, y -> -x.
+    double h = std::sqrt(0.5);
+    int parent = b.node({{"children", {child}}, {"translation", {1, 0, 0}}, {"rotation", {0, 0, h, h}}, {"scale", {2, 2, 2}}});
+    int alone = b.node({{"mesh", mesh}, {"translation", {0, 0, -4}}});
+    b.scene({parent, alone});
+    Scene scene = loadScene(files.write("nested.gltf", b.gltfWithDataUri()));
+
+    ASSERT_EQ(scene.meshes.size(), 1u) << "one glTF mesh, read once for its two instances";
+    ASSERT_EQ(scene.shapes.size(), 2u);
+    const Shape& nested = scene.shapes[0];
+    EXPECT_EQ(nested.mesh, 0);
+    EXPECT_EQ(nested.importedFrom, 0);
+    // (1,0,0): child -> (3,1,0); scale 2 -> (6,2,0); rotate -> (-2,6,0); translate -> (-1,6,0).
+    expectNear(worldVertex(scene, nested, 0, 1), glm::vec3(-1, 6, 0), 1e-5f, "nested (1,0,0)");
+    // (0,1,0): child -> (0,2,0); scale -> (0,4,0); rotate -> (-4,0,0); translate -> (-3,0,0).
+    expectNear(worldVertex(scene, nested, 0, 2), glm::vec3(-3, 0, 0), 1e-5f, "nested (0,1,0)");
+    expectNear(worldVertex(scene, scene.shapes[1], 0, 1), glm::vec3(1, 0, -4), 1e-6f, "root (1,0,0)");
+}
+
+class GltfIndexTypes : public ::testing::TestWithParam<int> {};
+
+// A quad of two triangles, indices {0,1,2, 0,2,3} in each integer type, or none (six vertices).
+TEST_P(GltfIndexTypes, ReadTrianglesInOrder) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    const int type = GetParam();
+    Json primitive;
+    if (type == 0) {
+        primitive["attributes"]["POSITION"] = b.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0});
+    } else {
+        primitive["attributes"]["POSITION"] = b.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+        std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
+        std::string bytes;
+        for (std::uint32_t i : indices) {
+            if (type == kUnsignedByte) bytes += static_cast<char>(i);
+            if (type == kUnsignedShort) bytes += std::string(reinterpret_cast<const char*>(&i), 2);
+            if (type == kUnsignedInt) bytes += std::string(reinterpret_cast<const char*>(&i), 4);
+        }
+        primitive["indices"] = b.accessor(b.view(bytes), type, 6, "SCALAR");
+    }
+    b.node({{"mesh", b.mesh(primitive)}});
+    Scene scene = loadScene(files.write("quad.gltf", b.gltfWithDataUri()));
+    ASSERT_EQ(scene.shapes.size(), 1u);
+    const TriangleMesh& mesh = *scene.meshes[0].data;
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    const glm::vec3 expected[2][3] = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+    for (int t = 0; t < 2; ++t)
+        for (int c = 0; c < 3; ++c)
+            expectNear(worldVertex(scene, scene.shapes[0], t, c), expected[t][c], 0.0f,
+                       "triangle " + std::to_string(t) + " corner " + std::to_string(c));
+    EXPECT_EQ(mesh.triangles[0].normal[0], -1) << "no NORMAL: flat shading";
+}
+
+INSTANTIATE_TEST_SUITE_P(, GltfIndexTypes, ::testing::Values(0, kUnsignedByte, kUnsignedShort, kUnsignedInt),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                             switch (info.param) {
+                             case kUnsignedByte: return std::string("uint8");
+                             case kUnsignedShort: return std::string("uint16");
+                             case kUnsignedInt: return std::string("uint32");
+                             default: return std::string("none");
+                             }
+                         });
+
+TEST(GltfLoader, NormalsAndNormalizedTexcoordsAreRead) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    int normals = b.accessor(b.view(bytesOf(std::vector<float>{0, 0, 2, 0, 0, 2, 0, 0, 2})), kFloat, 3, "VEC3");
+    std::vector<std::uint16_t> uv{0, 0, 65535, 0, 0, 32768};
+    int texcoords = b.accessor(b.view(bytesOf(uv)), kUnsignedShort, 3, "VEC2", /*normalized=*/true);
+    b.node({{"mesh", b.mesh({{"attributes",
+                             {{"POSITION", b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0})}, {"NORMAL", normals}, {"TEXCOORD_0", texcoords}}}})}});
+    Scene scene = loadScene(files.write("attributes.gltf", b.gltfWithDataUri()));
+    const TriangleMesh& mesh = *scene.meshes[0].data;
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    expectNear(mesh.normals[static_cast<std::size_t>(mesh.triangles[0].normal[0])], glm::vec3(0, 0, 1), 0.0f, "unit normal");
+    glm::vec2 uv1 = mesh.texcoords[static_cast<std::size_t>(mesh.triangles[0].texcoord[1])];
+    glm::vec2 uv2 = mesh.texcoords[static_cast<std::size_t>(mesh.triangles[0].texcoord[2])];
+    EXPECT_EQ(uv1, glm::vec2(1.0f, 0.0f));
+    EXPECT_NEAR(uv2.y, 32768.0 / 65535.0, 1e-7) << "v kept as glTF stores it (down from the top row)";
+}
+
+TEST(GltfLoader, CameraComesFromItsNode) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    int mesh = unitTriangle(b);
+    b.doc["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"aspectRatio", 2.0}, {"znear", 0.1}}}}});
+    int camera = b.node({{"camera", 0}, {"translation", {0.25, 0.25, 5}}});
+    int triangle = b.node({{"mesh", mesh}});
+    b.scene({camera, triangle});
+    Scene scene = loadScene(files.write("camera.gltf", b.gltfWithDataUri()));
+    expectNear(scene.camera.eye, glm::vec3(0.25f, 0.25f, 5.0f), 1e-6f, "eye");
+    glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+    expectNear(forward, glm::vec3(0, 0, -1), 1e-6f, "looks down -Z");
+    expectNear(scene.camera.up, glm::vec3(0, 1, 0), 1e-6f, "up");
+    EXPECT_NEAR(scene.camera.vfovDeg, 0.5 * 180.0 / M_PI, 1e-4);
+    EXPECT_EQ(scene.camera.resolution, glm::ivec2(1024, 512)) << "aspect ratio 2";
+    EXPECT_EQ(scene.environment, glm::vec3(1.0f)) << "the default studio environment";
+}
+
+TEST(GltfLoader, WithoutCameraTheViewFramesTheBounds) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    b.node({{"mesh", unitTriangle(b)}, {"translation", {10, 0, 0}}});
+    Scene scene = loadScene(files.write("nocamera.gltf", b.gltfWithDataUri()));
+    expectNear(scene.camera.target, glm::vec3(10.5f, 0.5f, 0.0f), 1e-6f, "target at the bounds' centre");
+    EXPECT_GT(scene.camera.eye.z, 0.5f * std::sqrt(2.0f) / std::sin(glm::radians(20.0f))) << "the bounding sphere fits";
+    EXPECT_EQ(scene.camera.eye.x, scene.camera.target.x);
+}
+
+TEST(GltfLoader, PunctualLightsOfTheThreeKinds) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    b.node({{"mesh", unitTriangle(b)}});
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array(
+        {{{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 10.0}},
+         {{"type", "spot"}, {"intensity", 3.0}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.4}}}},
+         {{"type", "directional"}, {"intensity", 2.0}, {"name", "sun"}}});
+    double h = std::sqrt(0.5);
+    b.node({{"translation", {0, 2, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.node({{"translation", {1, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    // -90 degrees about +X turns -Z (where glTF lights shine) into -Y.
+    b.node({{"rotation", {-h, 0, 0, h}}, {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    b.scene({0, 1, 2, 3});
+    Scene scene = loadScene(files.write("lights.gltf", b.gltfWithDataUri()));
+    ASSERT_EQ(scene.lights.size(), 3u);
+    const Light& point = scene.lights[0];
+    EXPECT_EQ(point.type, LightType::Point);
+    expectNear(point.position, glm::vec3(0, 2, 0), 0.0f, "point position");
+    expectNear(point.intensity, glm::vec3(10.0f, 5.0f, 2.5f), 1e-6f, "candela read as W/sr");
+    const Light& spot = scene.lights[1];
+    EXPECT_EQ(spot.type, LightType::Spot);
+    expectNear(spot.direction, glm::vec3(0, 0, -1), 1e-6f, "spot axis");
+    EXPECT_NEAR(spot.innerAngleDeg, 0.2 * 180.0 / M_PI, 1e-4) << "half-angles from the axis, as ours";
+    EXPECT_NEAR(spot.outerAngleDeg, 0.4 * 180.0 / M_PI, 1e-4);
+    const Light& sun = scene.lights[2];
+    EXPECT_EQ(sun.type, LightType::Directional);
+    EXPECT_EQ(sun.name, "lights/sun");
+    expectNear(sun.direction, glm::vec3(0, -1, 0), 1e-6f, "directional travels along the node's -Z");
+    expectNear(sun.intensity, glm::vec3(2.0f), 0.0f, "lux read as W/m^2");
+}
+
+std::string pngBytes(int width, int height, const std::vector<std::uint8_t>& rgba) {
+    std::string out;
+    stbi_write_png_to_func([](void* context, void* data, int size) { static_cast<std::string*>(context)->append(static_cast<char*>(data), static_cast<std::size_t>(size)); },
+                           &out, width, height, 4, rgba.data(), width * 4);
+    return out;
+}
+
+TEST(GltfLoader, MaterialsAndTexturesAreRead) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    b.doc["images"] = Json::array({{{"uri", "data:image/png;base64," + base64(pngBytes(2, 1, {255, 0, 0, 255, 0, 0, 255, 128}))}}});
+    b.doc["samplers"] = Json::array({{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}}});
+    b.doc["textures"] = Json::array({{{"source", 0}, {"sampler", 0}}});
+    b.doc["materials"] = Json::array(
+        {{{"name", "painted"},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {0.5, 0.25, 1.0, 0.75}},
+            {"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0}}, {"scale", {2, 3}}}}}}}},
+            {"metallicFactor", 0.25},
+            {"roughnessFactor", 0.5},
+            {"metallicRoughnessTexture", {{"index", 0}}}}},
+          {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+          {"occlusionTexture", {{"index", 0}}},
+          {"emissiveFactor", {1, 0.5, 0}},
+          {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}, {"KHR_materials_ior", {{"ior", 1.33}}},
+                          {"KHR_materials_transmission", {{"transmissionFactor", 0.75}}}}},
+          {"alphaMode", "MASK"},
+          {"alphaCutoff", 0.25}},
+         {{"name", "second"}, {"occlusionTexture", {{"index", 0}}}, {"alphaMode", "BLEND"}}});
+    int mesh = unitTriangle(b);
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", b.positions({0, 0, 1, 1, 0, 1, 0, 1, 1})}}}, {"material", 1}});
+    b.node({{"mesh", mesh}});
+    Scene scene = loadScene(files.write("materials.gltf", b.gltfWithDataUri()));
+
+    ASSERT_EQ(scene.materials.size(), 2u);
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.name, "materials/painted");
+    EXPECT_EQ(m.type, MaterialType::Principled);
+    EXPECT_EQ(m.color, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_EQ(m.alpha, 0.75f);
+    EXPECT_EQ(m.metallic, 0.25f);
+    EXPECT_EQ(m.roughness, 0.5f);
+    EXPECT_EQ(m.normalScale, 0.5f);
+    expectNear(m.radiance, glm::vec3(4.0f, 2.0f, 0.0f), 0.0f, "emissiveFactor x emissiveStrength");
+    EXPECT_FLOAT_EQ(m.ior, 1.33f);
+    EXPECT_EQ(m.transmission, 0.75f);
+    EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(m.alphaCutoff, 0.25f);
+    EXPECT_EQ(m.baseColorTexture.offset, glm::vec2(0.5f, 0.0f));
+    EXPECT_EQ(m.baseColorTexture.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_EQ(m.roughnessTexture.texture, m.metallicTexture.texture) << "one metallicRoughness texture";
+    EXPECT_EQ(scene.materials[1].alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(scene.materials[1].color, glm::vec3(1.0f)) << "glTF's default base colour";
+
+    // The same image as colour (sRGB) and as data (linear): two scene textures sharing one decode.
+    ASSERT_EQ(scene.textures.size(), 2u);
+    const SceneTexture& color = scene.textures[static_cast<std::size_t>(m.baseColorTexture.texture)];
+    const SceneTexture& data = scene.textures[static_cast<std::size_t>(m.normalTexture.texture)];
+    EXPECT_EQ(color.colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(data.colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(color.image, data.image);
+    EXPECT_EQ(color.wrapU, TextureWrap::ClampToEdge);
+    EXPECT_EQ(color.wrapV, TextureWrap::MirroredRepeat);
+    EXPECT_FALSE(color.bilinear) << "magFilter NEAREST";
+    ASSERT_EQ(color.image->width, 2);
+    EXPECT_EQ(color.image->rgba, (std::vector<std::uint8_t>{255, 0, 0, 255, 0, 0, 255, 128}));
+    EXPECT_NE(color.source.find("#/images/0"), std::string::npos) << color.source;
+
+    const TriangleMesh& triangles = *scene.meshes[0].data;
+    ASSERT_EQ(triangles.materialSlots.size(), 2u) << "one slot per primitive";
+    EXPECT_EQ(scene.shapes[0].slotMaterials, (std::vector<int>{0, 1}));
+    int occlusionWarnings = 0;
+    for (const std::string& w : scene.warnings) occlusionWarnings += w.find("occlusion means nothing") != std::string::npos;
+    EXPECT_EQ(occlusionWarnings, 1) << "said once per file";
+}
+
+TEST(GltfLoader, StripsAndFansBecomeTriangles) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    // The same square as a strip (zigzag order) and as a fan (around the rim).
+    int strip = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+    int fan = b.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", strip}}}, {"mode", 5}})}});
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", fan}}}, {"mode", 6}})}});
+    Scene scene = loadScene(files.write("strips.gltf", b.gltfWithDataUri()));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    ASSERT_EQ(scene.meshes[0].data->triangles.size(), 2u);
+    // The strip's second triangle (1, 2, 3) is flipped to (2, 1, 3): both face +Z.
+    for (const SceneMesh& mesh : scene.meshes)
+        for (const MeshTriangle& t : mesh.data->triangles) {
+            glm::vec3 p0 = mesh.data->positions[t.position[0]], p1 = mesh.data->positions[t.position[1]],
+                      p2 = mesh.data->positions[t.position[2]];
+            EXPECT_GT(glm::cross(p1 - p0, p2 - p0).z, 0.0f) << mesh.name;
+        }
+    EXPECT_EQ(scene.meshes[1].data->triangles.size(), 2u);
+}
+
+TEST(GltfLoader, UnsupportedFeaturesAreWarnedAboutWithTheirPlace) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    int positions = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    int triangle = b.mesh({{"attributes", {{"POSITION", positions}}}, {"targets", Json::array({{{"POSITION", positions}}})}});
+    int points = b.mesh({{"attributes", {{"POSITION", positions}}}, {"mode", 0}});
+    b.node({{"mesh", triangle}, {"skin", 0}});
+    b.node({{"mesh", points}});
+    b.doc["skins"] = Json::array({{{"joints", {0}}}});
+    b.doc["animations"] = Json::array({{{"channels", Json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})},
+                                        {"samplers", Json::array({{{"input", positions}, {"output", positions}}})}}});
+    Scene scene = loadScene(files.write("unsupported.gltf", b.gltfWithDataUri()));
+    EXPECT_TRUE(hasWarning(scene, "unsupported.gltf: /meshes/1/primitives/0/mode: points (0) are not supported"));
+    EXPECT_TRUE(hasWarning(scene, "/meshes/0/primitives/0/targets: morph targets ignored"));
+    EXPECT_TRUE(hasWarning(scene, "/skins: 1 skin(s) ignored"));
+    EXPECT_TRUE(hasWarning(scene, "/animations: 1 animation(s) ignored"));
+    EXPECT_EQ(scene.shapes.size(), 1u) << "the points mesh has no triangle to show";
+}
+
+TEST(GltfLoader, UnsupportedFeaturesThatWouldChangeTheImageAreRefused) {
+    ScratchFiles files("gltf");
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+        b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+        std::string error = loadError(files.write("draco.gltf", b.gltfWithDataUri()));
+        EXPECT_NE(error.find("draco.gltf: /extensionsRequired/0: the file requires KHR_draco_mesh_compression"), std::string::npos)
+            << error;
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["accessors"][0]["sparse"] = {{"count", 1},
+                                           {"indices", {{"bufferView", 0}, {"componentType", kUnsignedInt}}},
+                                           {"values", {{"bufferView", 0}}}};
+        std::string error = loadError(files.write("sparse.gltf", b.gltfWithDataUri()));
+        EXPECT_NE(error.find("sparse.gltf: /accessors/0/sparse: sparse accessors are not supported"), std::string::npos) << error;
+    }
+}
+
+// Every bad file is a SceneError naming the file and the JSON path, never a crash.
+TEST(GltfLoader, BadFilesNameFileAndPlace) {
+    ScratchFiles files("gltf");
+    auto expectError = [&](const std::filesystem::path& path, const std::string& expected) {
+        std::string error = loadError(path);
+        EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << path << ": " << error;
+        EXPECT_NE(error.find(expected), std::string::npos) << path << ": " << error;
+    };
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        std::string glb = b.glb();
+        ASSERT_NO_THROW(loadScene(files.write("whole.glb", glb)));
+        expectError(files.write("truncated.glb", glb.substr(0, glb.size() - 10)), "truncated .glb: its header says");
+        expectError(files.write("header.glb", glb.substr(0, 11)), "truncated .glb");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["bufferViews"][0]["byteLength"] = 400;
+        expectError(files.write("shortbuffer.gltf", b.gltfWithDataUri()), "/bufferViews/0: bytes 0 to 400 run past the end of buffer 0");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["accessors"][0]["count"] = 4; // the view holds 3 VEC3s
+        expectError(files.write("accessor.gltf", b.gltfWithDataUri()), "/accessors/0: 4 elements of 12 bytes from byte 0 run past");
+    }
+    {
+        GltfBuilder b;
+        int positions = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+        int indices = b.accessor(b.view(std::string("\0\1\3\0", 4)), kUnsignedByte, 3, "SCALAR");
+        b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", positions}}}, {"indices", indices}})}});
+        expectError(files.write("index.gltf", b.gltfWithDataUri()), "/accessors/1: element 2 is vertex 3, past the primitive's 3 vertices");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["images"] = Json::array({{{"uri", "data:image/png;base64," + base64("this is no PNG")}}});
+        b.doc["textures"] = Json::array({{{"source", 0}}});
+        b.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+        b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+        expectError(files.write("image.gltf", b.gltfWithDataUri()), "/images/0: image: cannot decode image (not a PNG or JPEG");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        expectError(files.write("nobin.gltf", b.gltfWithBin("missing.bin")), "/buffers/0/uri: ");
+        expectError(files.write("nobin.gltf", b.gltfWithBin("missing.bin")), "missing.bin: cannot open glTF buffer");
+        files.write("short.bin", b.bin.substr(0, 10));
+        expectError(files.write("shortbin.gltf", b.gltfWithBin("short.bin")), "/buffers/0/byteLength: 36 bytes, but");
+        files.write("whole.bin", b.bin);
+        EXPECT_NO_THROW(loadScene(files.write("bin.gltf", b.gltfWithBin("whole.bin"))));
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}, {"children", {0}}});
+        expectError(files.write("rootless.gltf", b.gltfWithDataUri()), "/nodes: every node is a child of another (a cycle)");
+        b.scene({0});
+        expectError(files.write("cycle.gltf", b.gltfWithDataUri()), "/nodes/0: reached twice");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["bufferViews"][0]["byteOffset"] = 4.5; // tinygltf might read it as 4 and skip the check
+        expectError(files.write("viewoffset.gltf", b.gltfWithDataUri()), "/bufferViews/0/byteOffset: expected an unsigned integer");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        Json deep = 1;
+        for (int i = 0; i < 100; ++i) deep = Json::array({deep});
+        b.doc["extras"] = deep; // tinygltf copies extras recursively
+        expectError(files.write("deep.gltf", b.gltfWithDataUri()), "JSON nested deeper than 64 levels");
+    }
+    expectError(files.write("notjson.gltf", "{\"asset\": "), "malformed JSON");
+}
+
+TEST(GltfLoader, SceneJsonPlacesAGltfNextToItsOwnShapes) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    b.node({{"mesh", unitTriangle(b)}});
+    b.doc["materials"] = Json::array({{{"name", "red"}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    files.write("triangle.gltf", b.gltfWithDataUri());
+    std::filesystem::path scenePath = files.write("scene.json", R"({
+        "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {"white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "white"}],
+        "gltf": [{"file": "triangle.gltf", "transform": {"translate": [0, 0, -2], "scale": 2}}]
+    })");
+    Scene scene = loadScene(scenePath);
+    ASSERT_EQ(scene.imports.size(), 1u);
+    EXPECT_EQ(scene.imports[0].file, scenePath.parent_path() / "triangle.gltf");
+    ASSERT_EQ(scene.shapes.size(), 2u);
+    EXPECT_EQ(scene.shapes[0].importedFrom, -1);
+    EXPECT_EQ(scene.shapes[1].importedFrom, 0);
+    ASSERT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.materials[1].name, "triangle/red");
+    EXPECT_EQ(scene.shapes[1].slotMaterials, std::vector<int>{1});
+    expectNear(worldVertex(scene, scene.shapes[1], 0, 1), glm::vec3(2, 0, -2), 0.0f, "placed by the scene's transform");
+
+    std::string error = loadError(files.write("bad.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {}, "shapes": [], "gltf": [{"file": "missing.glb"}]})"));
+    EXPECT_NE(error.find("bad.json: /gltf/0/file: "), std::string::npos) << error;
+    EXPECT_NE(error.find("missing.glb: cannot open glTF file"), std::string::npos) << error;
+}
+
+// What a glTF file expanded to is written back as the reference to it, with its placement.
+TEST(GltfLoader, SavingWritesTheReferenceNotTheExpandedParts) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    b.node({{"mesh", unitTriangle(b)}});
+    b.doc["materials"] = Json::array({{{"name", "red"}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    files.write("triangle.gltf", b.gltfWithDataUri());
+    Scene scene = loadScene(files.write("scene.json", R"({
+        "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {"white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "white"}],
+        "gltf": [{"file": "triangle.gltf", "transform": {"translate": [0, 0, -2]}}]
+    })"));
+    std::filesystem::path saved = files.write("saved.json", "");
+    const std::filesystem::path dir = saved.parent_path();
+    saveScene(scene, saved);
+    Json written = Json::parse(testing::readFileBytes(saved));
+    EXPECT_EQ(written["gltf"], Json::parse(R"([{"file": "triangle.gltf", "transform": {"translate": [0, 0, -2]}}])"));
+    EXPECT_FALSE(written["materials"].contains("triangle/red")) << written.dump();
+    EXPECT_EQ(written["shapes"].size(), 1u) << "the sphere alone";
+    EXPECT_FALSE(written.contains("meshes"));
+    Scene again = loadScene(saved);
+    EXPECT_EQ(again.shapes.size(), scene.shapes.size());
+    EXPECT_EQ(again.materials.size(), scene.materials.size());
+
+    // A glTF opened on its own has the .gltf as its path; saving there must not replace it.
+    Scene alone = loadScene(dir / "triangle.gltf");
+    EXPECT_THROW(saveScene(alone, alone.path), std::runtime_error);
+    EXPECT_NO_THROW(loadScene(dir / "triangle.gltf")) << "the file is left as it was";
+    std::filesystem::path asJson = dir / "triangle.json";
+    saveScene(alone, asJson);
+    EXPECT_EQ(loadScene(asJson).shapes.size(), 1u);
+}
+
+TEST(GltfLoader, DamagedHelmetLoadsWithItsTexturesAndOneMaterial) {
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/gltf/DamagedHelmet/DamagedHelmet.gltf");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.meshes[0].data->triangles.size(), 15452u);
+    EXPECT_EQ(scene.meshes[0].data->positions.size(), 14556u);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.name, "DamagedHelmet/Material_MR");
+    // Base colour and emission (sRGB), metallic-roughness and normal (linear); occlusion is not read.
+    EXPECT_EQ(scene.textures.size(), 4u);
+    EXPECT_TRUE(m.baseColorTexture.used() && m.roughnessTexture.used() && m.normalTexture.used() && m.emissionTexture.used());
+    EXPECT_EQ(scene.textures[static_cast<std::size_t>(m.baseColorTexture.texture)].image->width, 2048);
+    EXPECT_EQ(scene.shapes.size(), 1u);
+    EXPECT_TRUE(hasWarning(scene, "occlusion means nothing to a path tracer"));
+}
+
+TEST(GltfLoader, HelmetSceneLoadsTheHelmetUnderTheStudioMap) {
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/helmet.json");
+    ASSERT_EQ(scene.imports.size(), 1u);
+    EXPECT_EQ(scene.shapes.size(), 2u) << "the floor and the helmet";
+    EXPECT_EQ(scene.shapes[1].importedFrom, 0);
+    EXPECT_EQ(scene.environmentMap.filename(), "studio_small_03_1k.hdr");
+}
+
+} // namespace
+} // namespace ptview

@@ -1,0 +1,100 @@
+// libFuzzer target for the glTF loader (renderer/scene/GltfLoader.*): the .glb container, the JSON
+// that tinygltf parses, and every index and accessor range the loader checks itself.
+//
+// The loader reads files, so each input is written to a private directory first, as in.gltf (the
+// loader tells a .glb by its magic, not its name). An input may carry a buffer file too: the bytes
+// after the first "\n#bin\n" become in.bin, which the JSON reaches with "uri": "in.bin".
+//
+// A SceneError is the documented refusal; anything else (a sanitizer report, another exception, a
+// scene that breaks the promises of Scene.h and TriangleMesh.h) is a finding.
+
+#include "FuzzScratch.h"
+#include "GltfLoader.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path gDirectory;
+
+void require(bool holds, const char* promise) {
+    if (holds) return;
+    std::fprintf(stderr, "fuzz_gltf_loader: loaded scene breaks a promise: %s\n", promise);
+    std::abort();
+}
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+void checkScene(const ptview::Scene& scene) {
+    for (const ptview::SceneMesh& mesh : scene.meshes) {
+        const ptview::TriangleMesh& data = *mesh.data;
+        require(!data.triangles.empty(), "every mesh has a triangle");
+        for (const ptview::MeshTriangle& t : data.triangles)
+            for (int c = 0; c < 3; ++c) {
+                require(t.position[c] < data.positions.size(), "position indices in range");
+                require(t.normal[c] >= -1 && t.normal[c] < static_cast<std::int32_t>(data.normals.size()), "normal index");
+                require(t.texcoord[c] >= -1 && t.texcoord[c] < static_cast<std::int32_t>(data.texcoords.size()), "texcoord index");
+                require(t.materialSlot >= 0 && static_cast<std::size_t>(t.materialSlot) < data.materialSlots.size(), "slot");
+                require(finite(data.positions[t.position[c]]), "finite positions of triangles");
+            }
+    }
+    for (const ptview::Shape& shape : scene.shapes) {
+        require(shape.mesh >= 0 && static_cast<std::size_t>(shape.mesh) < scene.meshes.size(), "shape's mesh in range");
+        for (int m : shape.slotMaterials) require(m >= 0 && static_cast<std::size_t>(m) < scene.materials.size(), "slot material");
+        glm::mat4 matrix = shape.transform.objectToWorld();
+        for (int c = 0; c < 4; ++c) require(finite(glm::vec3(matrix[c])), "finite placement");
+    }
+    for (const ptview::Material& material : scene.materials)
+        for (const ptview::TextureSlot* slot : {&material.baseColorTexture, &material.roughnessTexture, &material.metallicTexture,
+                                                &material.normalTexture, &material.emissionTexture})
+            if (slot->used()) {
+                require(static_cast<std::size_t>(slot->texture) < scene.textures.size(), "texture index in range");
+                const ptview::TextureImage& image = *scene.textures[static_cast<std::size_t>(slot->texture)].image;
+                require(image.rgba.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4,
+                        "decoded image size");
+            }
+    for (const ptview::Light& light : scene.lights) require(finite(light.position) && finite(light.intensity), "finite light");
+    require(finite(scene.camera.eye) && finite(scene.camera.target), "finite camera");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    gDirectory = ptview::fuzz::makeScratchDirectory("gltf");
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const char* bytes = reinterpret_cast<const char*>(data);
+    static const char kBinMarker[] = "\n#bin\n";
+    const std::size_t markerSize = sizeof kBinMarker - 1;
+    const void* marker = ::memmem(bytes, size, kBinMarker, markerSize);
+    const std::size_t gltfSize = marker ? static_cast<std::size_t>(static_cast<const char*>(marker) - bytes) : size;
+
+    const fs::path gltf = gDirectory / "in.gltf";
+    const fs::path bin = gDirectory / "in.bin";
+    ptview::fuzz::writeInput(gltf, std::string_view(bytes, gltfSize));
+    if (marker) {
+        ptview::fuzz::writeInput(bin, std::string_view(bytes + gltfSize + markerSize, size - gltfSize - markerSize));
+    } else {
+        std::error_code ignored;
+        fs::remove(bin, ignored);
+    }
+    try {
+        checkScene(ptview::loadGltfScene(gltf));
+    } catch (const ptview::SceneError&) {
+        // The documented refusal of a file that cannot be used.
+    }
+    return 0;
+}
