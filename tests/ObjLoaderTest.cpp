@@ -2,8 +2,10 @@
 // what is skipped or dropped and the warning that says so, what is refused and the message that
 // names the file), and the project's meshes load with their known triangle counts.
 
+#include "ImageIO.h"
 #include "LimitedChild.h"
 #include "ObjLoader.h"
+#include "SceneLoader.h"
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>
@@ -179,6 +181,193 @@ TEST(ObjLoader, MtlProblemsAreWarningsNamingTheFileAndLine) {
     EXPECT_EQ(warningWith(bad, "Ns"), mtl.string() + ":3: Ns has no value; it reads as 0");
     EXPECT_EQ(warningWith(bad, "map_Kd").rfind(mtl.string() + ":4: map_Kd wood.png not found (looked for ", 0), 0u);
     EXPECT_EQ(bad.warnings.size(), 3u) << "map_Ks names a file that is there";
+}
+
+// --- MTL texture maps ---------------------------------------------------------------------------
+
+// A 2x1 PNG: left texel (r, g, b), right texel their complements, so a row or column mix-up shows.
+fs::path writeTexture(const testing::ScratchFiles& files, const std::string& name, std::uint8_t r, std::uint8_t g,
+                      std::uint8_t b) {
+    ImageRgba8 image;
+    image.width = 2;
+    image.height = 1;
+    image.rgba = {r, g, b, 255, std::uint8_t(255 - r), std::uint8_t(255 - g), std::uint8_t(255 - b), 255};
+    const fs::path path = files.write(name, "");
+    writePng(path, image);
+    return path;
+}
+
+// The index of the scene material of that name, -1 for none.
+int materialIndex(const Scene& scene, const std::string& name) {
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+const std::string kTexturedObj = "mtllib m.mtl\n" + std::string(kSquare) + "vt 0 0\nvt 1 0\nvt 1 1\nusemtl cow\nf 1/1 2/2 3/3\n";
+
+// Each map ptview reads is kept with its file (resolved against the MTL's directory), its
+// decoded pixels, its -s/-o moved into the model's texture coordinates (v counted down: an
+// OBJ offset o_v with scale s_v becomes 1 - s_v - o_v) and -clamp; one file named twice decodes once.
+TEST(ObjLoader, MtlTextureMapsAreReadWithTheirOptions) {
+    testing::ScratchFiles files("obj");
+    fs::create_directories(files.write("m.mtl", "").parent_path() / "maps");
+    const fs::path colour = writeTexture(files, "maps/colour.png", 200, 100, 50);
+    writeTexture(files, "maps/data.png", 10, 20, 30);
+    files.write("m.mtl", "newmtl cow\nKd 0.5 0.25 1\nPr 0.3\nPm 0.7\n"
+                         "map_Kd -s 2 3 1 -o 0.25 0.5 0 maps/colour.png\n"
+                         "map_Ke maps/colour.png\nmap_Pr -clamp on maps/data.png\nmap_Pm maps/data.png\n"
+                         "norm -bm 0.5 maps/data.png\n");
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(files.write("cow.obj", kTexturedObj), &report);
+    EXPECT_TRUE(report.warnings.empty()) << report.warnings.front();
+    ASSERT_EQ(mesh.fileMaterials.size(), 1u);
+    const MeshMaterial& cow = mesh.fileMaterials[0];
+    EXPECT_EQ(cow.diffuse, glm::vec3(0.5f, 0.25f, 1.0f));
+    ASSERT_TRUE(cow.roughness && cow.metallic);
+    EXPECT_FLOAT_EQ(*cow.roughness, 0.3f);
+    EXPECT_FLOAT_EQ(*cow.metallic, 0.7f);
+    EXPECT_EQ(cow.diffuseMap.file, colour.parent_path().parent_path() / "maps/colour.png");
+    EXPECT_EQ(cow.diffuseMap.place, (colour.parent_path().parent_path() / "m.mtl").string() + ":5");
+    EXPECT_EQ(cow.diffuseMap.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_EQ(cow.diffuseMap.offset, glm::vec2(0.25f, 1.0f - 3.0f - 0.5f));
+    EXPECT_FALSE(cow.diffuseMap.clamp);
+    EXPECT_TRUE(cow.roughnessMap.clamp);
+    EXPECT_FLOAT_EQ(cow.normalMap.bumpMultiplier, 0.5f);
+    EXPECT_EQ(cow.emissionMap.offset, glm::vec2(0.0f)) << "no -s, no -o: the identity in either convention";
+    ASSERT_TRUE(cow.diffuseMap.image && cow.roughnessMap.image && cow.metallicMap.image && cow.normalMap.image);
+    EXPECT_EQ(cow.diffuseMap.image, cow.emissionMap.image) << "one file, decoded once";
+    EXPECT_EQ(cow.roughnessMap.image, cow.normalMap.image);
+    const TextureImage& image = *cow.diffuseMap.image;
+    ASSERT_EQ(image.width, 2);
+    ASSERT_EQ(image.height, 1);
+    EXPECT_EQ(image.rgba, (std::vector<std::uint8_t>{200, 100, 50, 255, 55, 155, 205, 255}));
+}
+
+// map_Bump (or bump) is the normal map when there is no norm; norm wins over it.
+TEST(ObjLoader, BumpIsTheNormalMapUnlessNormIsGiven) {
+    testing::ScratchFiles files("obj");
+    const fs::path a = writeTexture(files, "a.png", 1, 2, 3);
+    const fs::path b = writeTexture(files, "b.png", 4, 5, 6);
+    files.write("m.mtl", "newmtl cow\nmap_Bump a.png\nnewmtl calf\nbump a.png\nnorm b.png\n");
+    const TriangleMesh mesh = loadObjMesh(files.write("cow.obj", kTexturedObj));
+    ASSERT_EQ(mesh.fileMaterials.size(), 2u);
+    EXPECT_EQ(mesh.fileMaterials[0].normalMap.file, a);
+    EXPECT_EQ(mesh.fileMaterials[1].normalMap.file, b);
+    EXPECT_FALSE(mesh.fileMaterials[0].roughness) << "no Pr: the scene loader uses Ns";
+}
+
+// A map whose file is missing, or does not decode, is a warning naming the MTL file and line;
+// the map keeps its name with no image (the material renders with its factor alone).
+TEST(ObjLoader, MissingOrUndecodableTextureIsAWarningNamingTheMtlLine) {
+    testing::ScratchFiles files("obj");
+    files.write("broken.png", "not a png at all");
+    const fs::path mtl = files.write("m.mtl", "newmtl cow\nKd 1 1 1\n\nmap_Kd gone.png\nmap_Pr broken.png\nmap_Ns x.png\n");
+    MeshLoadReport report;
+    const TriangleMesh mesh = loadObjMesh(files.write("cow.obj", kTexturedObj), &report);
+    ASSERT_EQ(mesh.fileMaterials.size(), 1u);
+    const MeshMaterial& cow = mesh.fileMaterials[0];
+    EXPECT_TRUE(cow.diffuseMap.named());
+    EXPECT_FALSE(cow.diffuseMap.image);
+    EXPECT_FALSE(cow.roughnessMap.image);
+    EXPECT_EQ(warningWith(report, "gone.png").rfind(mtl.string() + ":4: map_Kd gone.png not found (looked for ", 0), 0u);
+    EXPECT_TRUE(contains(warningWith(report, "gone.png"), "rendered with the factor alone"));
+    const std::string broken = warningWith(report, "broken.png");
+    EXPECT_EQ(broken.rfind(mtl.string() + ":5: map_Pr ", 0), 0u) << broken;
+    EXPECT_TRUE(contains(broken, "not a PNG or JPEG")) << broken;
+    EXPECT_EQ(warningWith(report, "map_Ns"), mtl.string() + ":6: map_Ns (a shininess map) is not read; roughness maps are map_Pr");
+}
+
+// A factor the entry leaves out would make its map black (tinyobjloader's Kd and Ke default to 0),
+// so with map_Kd or map_Ke it is 1; a factor that is given multiplies the map.
+TEST(ObjLoader, MapWithoutItsFactorGetsAFactorOfOne) {
+    testing::ScratchFiles files("obj");
+    writeTexture(files, "t.png", 1, 2, 3);
+    files.write("m.mtl", "newmtl cow\nmap_Kd t.png\nmap_Ke t.png\nnewmtl calf\nKd 0.5 0.5 0.5\nmap_Kd t.png\nnewmtl plain\n");
+    const TriangleMesh mesh = loadObjMesh(files.write("cow.obj", kTexturedObj));
+    ASSERT_EQ(mesh.fileMaterials.size(), 3u);
+    EXPECT_EQ(mesh.fileMaterials[0].diffuse, glm::vec3(1.0f));
+    EXPECT_EQ(mesh.fileMaterials[0].emission, glm::vec3(1.0f));
+    EXPECT_EQ(mesh.fileMaterials[1].diffuse, glm::vec3(0.5f));
+    EXPECT_EQ(mesh.fileMaterials[1].emission, glm::vec3(0.0f));
+    EXPECT_EQ(mesh.fileMaterials[2].diffuse, glm::vec3(0.0f)) << "no map: tinyobjloader's default, as before";
+}
+
+// An MTL entry with maps becomes a principled scene material (docs/scene-format.md): Kd the base
+// colour factor, Pr/Pm the roughness and metallic (without them: 1 under a map, else Ns and 0), each map a scene texture
+// in its colour space (colours sRGB, data linear), -clamp as clamp-to-edge, one scene texture per
+// image and colour space; an entry without maps keeps the old mapping.
+TEST(ObjLoader, MtlEntryWithMapsBecomesAPrincipledSceneMaterial) {
+    testing::ScratchFiles files("obj");
+    writeTexture(files, "t.png", 1, 2, 3);
+    files.write("m.mtl", "newmtl cow\nKd 0.5 0.25 1\nNs 98\nmap_Kd -s 2 2 1 t.png\nmap_Pm -clamp on t.png\nnorm t.png\n"
+                         "newmtl calf\nPr 0.2\nPm 0.9\nmap_Ke t.png\nmap_Kd gone.png\nnewmtl plain\nKd 0.3 0.3 0.3\n");
+    files.write("cow.obj", "mtllib m.mtl\n" + std::string(kSquare) + "vt 0 0\nvt 1 0\nvt 1 1\n"
+                           "usemtl cow\nf 1/1 2/2 3/3\nusemtl calf\nf 1/1 3/3 4/2\nusemtl plain\nf 2 3 4\n");
+    const fs::path scenePath = files.write(
+        "scene.json", R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "vfov_deg": 40, "resolution": [8, 8]},
+          "materials": {}, "meshes": {"m": {"file": "cow.obj"}}, "shapes": [{"type": "mesh", "mesh": "m"}]})");
+    const Scene scene = loadScene(scenePath);
+    auto material = [&](const std::string& name) -> const Material& {
+        const int index = materialIndex(scene, name);
+        EXPECT_GE(index, 0) << name;
+        return scene.materials[static_cast<std::size_t>(std::max(index, 0))];
+    };
+    const Material& cow = material("m/cow");
+    EXPECT_EQ(cow.type, MaterialType::Principled);
+    EXPECT_EQ(cow.color, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_FLOAT_EQ(cow.roughness, std::sqrt(std::sqrt(2.0f / 100.0f))) << "from Ns, as for plastic";
+    EXPECT_FLOAT_EQ(cow.metallic, 1.0f) << "map_Pm without Pm: the factor is 1, the map gives the value";
+    EXPECT_FLOAT_EQ(cow.ior, 1.5f) << "no Ni";
+    ASSERT_TRUE(cow.baseColorTexture.used() && cow.metallicTexture.used() && cow.normalTexture.used());
+    EXPECT_FALSE(cow.roughnessTexture.used());
+    EXPECT_EQ(cow.baseColorTexture.scale, glm::vec2(2.0f));
+    EXPECT_EQ(cow.baseColorTexture.offset, glm::vec2(0.0f, -1.0f));
+    const SceneTexture& base = scene.textures[static_cast<std::size_t>(cow.baseColorTexture.texture)];
+    const SceneTexture& metal = scene.textures[static_cast<std::size_t>(cow.metallicTexture.texture)];
+    const SceneTexture& normal = scene.textures[static_cast<std::size_t>(cow.normalTexture.texture)];
+    EXPECT_EQ(base.colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(base.wrapU, TextureWrap::Repeat);
+    EXPECT_EQ(metal.colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(metal.wrapV, TextureWrap::ClampToEdge);
+    EXPECT_EQ(normal.colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(normal.wrapV, TextureWrap::Repeat);
+    EXPECT_EQ(base.image, metal.image) << "one decoded image behind every texture of the file";
+    EXPECT_EQ(base.file, files.write("t.png", "").parent_path() / "t.png");
+
+    const Material& calf = material("m/calf");
+    EXPECT_EQ(calf.type, MaterialType::Principled) << "a map that did not load still makes it principled";
+    EXPECT_FLOAT_EQ(calf.roughness, 0.2f);
+    EXPECT_FLOAT_EQ(calf.metallic, 0.9f);
+    EXPECT_FALSE(calf.baseColorTexture.used()) << "gone.png: the factor alone";
+    ASSERT_TRUE(calf.emissionTexture.used());
+    EXPECT_EQ(calf.radiance, glm::vec3(1.0f)) << "map_Ke without Ke: factor 1";
+    EXPECT_EQ(scene.textures[static_cast<std::size_t>(calf.emissionTexture.texture)].colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(calf.emissionTexture.texture, cow.baseColorTexture.texture) << "same image, colour space and wrap";
+    EXPECT_EQ(scene.textures.size(), 3u) << "sRGB repeat, linear clamped, linear repeat";
+
+    EXPECT_EQ(material("m/plain").type, MaterialType::Diffuse);
+}
+
+// The shipped spot cow names its own texture: its material is principled with a 1024x1024 sRGB
+// base colour texture, and the Cornell scene with it loads without a warning.
+TEST(ObjLoader, CornellSpotSceneHasTheCowsTexture) {
+    const Scene scene = loadScene(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell_spot.json");
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    const int index = materialIndex(scene, "spot/spot");
+    ASSERT_GE(index, 0);
+    const Material& cow = scene.materials[static_cast<std::size_t>(index)];
+    EXPECT_EQ(cow.type, MaterialType::Principled);
+    EXPECT_EQ(cow.color, glm::vec3(1.0f));
+    EXPECT_FLOAT_EQ(cow.metallic, 0.0f);
+    ASSERT_TRUE(cow.baseColorTexture.used());
+    const SceneTexture& texture = scene.textures[static_cast<std::size_t>(cow.baseColorTexture.texture)];
+    EXPECT_EQ(texture.colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(texture.wrapU, TextureWrap::Repeat);
+    EXPECT_TRUE(texture.bilinear);
+    ASSERT_TRUE(texture.image);
+    EXPECT_EQ(texture.image->width, 1024);
+    EXPECT_EQ(texture.image->height, 1024);
 }
 
 TEST(ObjLoader, PolylinesAndPointsAreSkippedWithOneWarning) {

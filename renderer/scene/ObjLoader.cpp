@@ -1,5 +1,6 @@
 #include "ObjLoader.h"
 
+#include "ImageDecode.h"
 #include "InputFile.h"
 
 #include <tiny_obj_loader.h>
@@ -59,6 +60,8 @@ std::string counted(std::size_t count, const char* noun) {
 constexpr std::uintmax_t kMaxObjFileBytes = 8192 * kMiB;
 // A material library is a few lines per material.
 constexpr std::uintmax_t kMaxMtlFileBytes = 64 * kMiB;
+// A compressed 16384^2 RGBA image (the largest that decodes, ImageDecode.h) stays well below this.
+constexpr std::uintmax_t kMaxTextureFileBytes = 1024 * kMiB;
 
 // tinyobjloader (2.0.0rc10) reads a number's exponent into an int and checks for overflow one
 // digit too late: "1e2147483648" overflows it, which is undefined behaviour, and a longer exponent
@@ -269,6 +272,21 @@ void repairNonFiniteValues(MeshMaterial& material, const std::string& mtlFile, s
     repairNumber(material.shininess, defaults.shininess, "Ns");
     repairNumber(material.ior, defaults.ior, "Ni");
     repairNumber(material.dissolve, defaults.dissolve, "d (or Tr)");
+    auto repairOptional = [&](std::optional<float>& value, const char* key) {
+        if (!value || std::isfinite(*value)) return;
+        value.reset();
+        warn(key);
+    };
+    repairOptional(material.roughness, "Pr");
+    repairOptional(material.metallic, "Pm");
+}
+
+// The texture keys ptview reads, by the name MtlReader files them under; empty for any other key.
+// tinyobjloader reads map_Bump, map_bump and bump as one map.
+std::string_view readTextureKey(std::string_view key) {
+    if (key == "map_Kd" || key == "map_Ke" || key == "map_Pr" || key == "map_Pm" || key == "norm") return key;
+    if (key == "bump" || key == "map_Bump" || key == "map_bump") return "bump";
+    return {};
 }
 
 // Looks for each `mtllib` file in the OBJ's directory (tinyobjloader's own file reader splits its
@@ -314,9 +332,39 @@ public:
             for (std::size_t i = before; i < materials->size(); ++i) nameToIndex->erase((*materials)[i].name);
             materials->resize(before);
         }
+        // tinyobjloader keeps one material per named newmtl, so the lines line up with its entries
+        // unless a newmtl names nothing; then messages name the file alone.
+        const bool linesKnown = materials->size() - before == keyLines_.size();
         for (std::size_t i = before; i < materials->size(); ++i) {
-            mesh_.fileMaterials.push_back(toMeshMaterial((*materials)[i]));
-            repairNonFiniteValues(mesh_.fileMaterials.back(), path.string(), warnings_);
+            const tinyobj::material_t& entry = (*materials)[i];
+            MeshMaterial material = toMeshMaterial(entry);
+            const KeyLines noLines;
+            const KeyLines& lines = linesKnown ? keyLines_[i - before] : noLines;
+            if (lines.count("Pr")) material.roughness = entry.roughness;
+            if (lines.count("Pm")) material.metallic = entry.metallic;
+            // A map multiplies its factor (the MTL convention); a factor left out would make it
+            // black, so an entry with map_Kd or map_Ke but no Kd or Ke gets a factor of 1.
+            if (!entry.diffuse_texname.empty() && linesKnown && !lines.count("Kd")) material.diffuse = glm::vec3(1.0f);
+            if (!entry.emissive_texname.empty() && linesKnown && !lines.count("Ke")) material.emission = glm::vec3(1.0f);
+            repairNonFiniteValues(material, path.string(), warnings_);
+            auto map = [&](const std::string& texname, const tinyobj::texture_option_t& options, const char* key,
+                           MeshTextureMap& out) {
+                if (texname.empty()) return;
+                auto line = lines.find(key);
+                const std::string place =
+                    path.string() + (line == lines.end() ? std::string() : ":" + std::to_string(line->second.first));
+                const std::string keyText = line == lines.end() ? std::string(key) : line->second.second;
+                out = readTextureMap(texname, options, place, keyText, path.parent_path());
+            };
+            map(entry.diffuse_texname, entry.diffuse_texopt, "map_Kd", material.diffuseMap);
+            map(entry.emissive_texname, entry.emissive_texopt, "map_Ke", material.emissionMap);
+            map(entry.roughness_texname, entry.roughness_texopt, "map_Pr", material.roughnessMap);
+            map(entry.metallic_texname, entry.metallic_texopt, "map_Pm", material.metallicMap);
+            if (!entry.normal_texname.empty())
+                map(entry.normal_texname, entry.normal_texopt, "norm", material.normalMap);
+            else
+                map(entry.bump_texname, entry.bump_texopt, "bump", material.normalMap);
+            mesh_.fileMaterials.push_back(std::move(material));
         }
         return true;
     }
@@ -332,8 +380,10 @@ private:
         };
         static const NumericKey kNumericKeys[] = {{"Ka", 1, 3}, {"Kd", 1, 3}, {"Ks", 1, 3}, {"Ke", 1, 3},
                                                   {"Kt", 1, 3}, {"Tf", 1, 3}, {"Ns", 1, 1}, {"Ni", 1, 1},
-                                                  {"d", 1, 1},  {"Tr", 1, 1}, {"illum", 1, 1}};
+                                                  {"d", 1, 1},  {"Tr", 1, 1}, {"illum", 1, 1},
+                                                  {"Pr", 1, 1}, {"Pm", 1, 1}};
         std::size_t materials = 0, lineNumber = 0, begin = 0;
+        keyLines_.clear();
         while (begin < bytes.size()) {
             std::size_t end = begin;
             while (end < bytes.size() && !isLineEnd(bytes[end])) ++end;
@@ -352,15 +402,26 @@ private:
             const std::string place = path.string() + ":" + std::to_string(lineNumber) + ": ";
             if (key == "newmtl") {
                 ++materials;
+                keyLines_.emplace_back();
                 continue;
             }
+            const std::string_view textureKey = readTextureKey(key);
+            const bool factorKey = key == "Kd" || key == "Ke" || key == "Pr" || key == "Pm";
+            if (!keyLines_.empty() && (!textureKey.empty() || factorKey))
+                keyLines_.back()[std::string(textureKey.empty() ? key : textureKey)] = {lineNumber, std::string(key)};
             for (const NumericKey& numeric : kNumericKeys)
                 if (key == numeric.key && !fieldsAreNumbers(line, numeric.required, numeric.most))
                     warnings_.push_back(place + std::string(key) +
                                         (rest.empty() ? std::string(" has no value")
                                                       : " \"" + std::string(rest) + "\" is not a number") +
                                         "; it reads as 0");
-            if (key.substr(0, 4) == "map_" || key == "bump" || key == "disp" || key == "decal" || key == "refl") {
+            // The maps ptview reads are looked for when they are decoded (readTextureMap).
+            const bool read = !textureKey.empty();
+            if (key == "map_Ns") {
+                warnings_.push_back(place + "map_Ns (a shininess map) is not read; roughness maps are map_Pr");
+                continue;
+            }
+            if (!read && (key.substr(0, 4) == "map_" || key == "bump" || key == "disp" || key == "decal" || key == "refl")) {
                 // The file name is the last word: options such as "-s 1 1 1" come before it.
                 const std::size_t lastBlank = rest.find_last_of(" \t");
                 const std::string_view name = lastBlank == std::string_view::npos ? rest : rest.substr(lastBlank + 1);
@@ -371,11 +432,72 @@ private:
                 else if (!std::filesystem::exists(texture, ignored))
                     warnings_.push_back(place + std::string(key) + " " + std::string(name) + " not found (looked for " +
                                         texture.string() +
-                                        "); ptview uses no texture maps, but the model may need it");
+                                        "); ptview does not read this map, but the model may need it");
             }
         }
         return materials;
     }
+
+    // A texture map's file, options and decoded image. A file that is missing or does not decode
+    // is a warning naming the MTL line; the map keeps its file name (so the material still becomes
+    // one that takes textures) with no image, and renders with its factor alone.
+    MeshTextureMap readTextureMap(const std::string& texname, const tinyobj::texture_option_t& options,
+                                  const std::string& place, const std::string& key,
+                                  const std::filesystem::path& directory) {
+        MeshTextureMap map;
+        map.file = directory / std::filesystem::u8path(texname);
+        map.place = place;
+        // MTL's -s and -o act on OBJ's coordinates (v up); the model's v is 1 - v (Texture.h), so
+        // v_model' = 1 - (s (1 - v_model) + o) = s v_model + (1 - s - o).
+        const glm::vec2 scale(options.scale[0], options.scale[1]);
+        const glm::vec2 offset(options.origin_offset[0], options.origin_offset[1]);
+        if (std::isfinite(scale.x) && std::isfinite(scale.y) && std::isfinite(offset.x) && std::isfinite(offset.y)) {
+            map.scale = scale;
+            map.offset = {offset.x, 1.0f - scale.y - offset.y};
+        } else {
+            warnings_.push_back(place + ": " + key + ": -s or -o is not a finite number; using none");
+        }
+        map.clamp = options.clamp;
+        map.bumpMultiplier = std::isfinite(options.bump_multiplier) ? options.bump_multiplier : 1.0f;
+        const std::string why = "; rendered with the factor alone";
+        std::error_code ignored;
+        if (!std::filesystem::exists(map.file, ignored)) {
+            warnings_.push_back(place + ": " + key + " " + texname + " not found (looked for " + map.file.string() +
+                                ")" + why);
+            return map;
+        }
+        const std::string file = map.file.string();
+        auto cached = decoded_.find(file);
+        if (cached != decoded_.end()) {
+            map.image = cached->second;
+            if (!map.image) warnings_.push_back(place + ": " + key + " " + texname + ": see above" + why);
+            return map;
+        }
+        try {
+            std::string bytes = readInputFile(map.file, kMaxTextureFileBytes, "texture");
+            ImageRgba8 rgba =
+                decodeImageRgba8(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+            auto image = std::make_shared<TextureImage>();
+            image->width = rgba.width;
+            image->height = rgba.height;
+            image->rgba = std::move(rgba.rgba);
+            map.image = std::move(image);
+        } catch (const InputFileError& e) {
+            warnings_.push_back(place + ": " + key + ": " + e.what() + why);
+        } catch (const ImageDecodeError& e) {
+            warnings_.push_back(place + ": " + key + " " + file + ": " + e.what() + why);
+        }
+        decoded_.emplace(file, map.image);
+        return map;
+    }
+
+    // For each newmtl of the file being read, in order: the line of each texture key it gives
+    // (readTextureKey's names) and of the factors that go with them (Kd, Ke, Pr, Pm), with the
+    // key as written.
+    using KeyLines = std::map<std::string, std::pair<std::size_t, std::string>>;
+    std::vector<KeyLines> keyLines_;
+    // Each image file decodes once per OBJ, however many maps name it; null: it did not decode.
+    std::map<std::string, std::shared_ptr<const TextureImage>> decoded_;
 
     std::filesystem::path directory_;
     std::string objFile_;

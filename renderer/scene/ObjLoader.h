@@ -2,7 +2,9 @@
 // Wavefront OBJ meshes, with the MTL materials they name, read into a TriangleMesh.
 //
 // What is kept: positions, normals (made unit length), texture coordinates, each face's `usemtl`
-// name (as a material slot) and the MTL entries' Kd, Ks, Ke, Ns, Ni, d (or 1 - Tr) and illum.
+// name (as a material slot) and the MTL entries' Kd, Ks, Ke, Ns, Ni, d (or 1 - Tr), illum, Pr, Pm
+// and the texture maps map_Kd, map_Ke, map_Pr, map_Pm, norm and map_Bump (decoded here, with
+// -s, -o and -clamp; a missing or undecodable image is a warning naming the MTL line).
 // Polygons are split into triangles as fans from their first corner, which covers the convex,
 // planar polygons that OBJ asks for exactly.
 //

@@ -995,17 +995,80 @@ SceneDraft readScene(const Json& root) {
     return draft;
 }
 
+// A texture slot for an MTL map: one scene texture per image, colour space and wrap, however
+// many materials use it; the map's -s/-o in the slot. A map without an image (missing or not
+// decoded, already warned about) leaves the slot empty: the factor alone.
+TextureSlot textureSlotFromMap(const MeshTextureMap& map, TextureColorSpace colorSpace, Scene& scene) {
+    TextureSlot slot;
+    if (!map.image) return slot;
+    const TextureWrap wrap = map.clamp ? TextureWrap::ClampToEdge : TextureWrap::Repeat;
+    slot.scale = map.scale;
+    slot.offset = map.offset;
+    for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+        const SceneTexture& texture = scene.textures[i];
+        if (texture.image == map.image && texture.colorSpace == colorSpace && texture.wrapU == wrap && texture.wrapV == wrap) {
+            slot.texture = static_cast<int>(i);
+            return slot;
+        }
+    }
+    SceneTexture texture;
+    texture.source = map.file.string();
+    texture.file = map.file;
+    texture.colorSpace = colorSpace;
+    texture.wrapU = texture.wrapV = wrap;
+    texture.image = map.image;
+    slot.texture = static_cast<int>(scene.textures.size());
+    scene.textures.push_back(std::move(texture));
+    return slot;
+}
+
+// An MTL entry with texture maps as a principled material (docs/scene-format.md, "MTL
+// materials"): Kd x map_Kd the base colour, Ke x map_Ke the emission, Pr x map_Pr the roughness
+// (without Pr, 1 with a map, else from Ns as for plastic), Pm x map_Pm the metallic (without Pm,
+// 1 with a map, else 0), norm or map_Bump
+// the normal map (-bm its scale), d the alpha (blended below 1), illum 4, 6 or 7 full transmission.
+Material principledFromMeshFile(const MeshMaterial& source, float roughnessFromNs, Scene& scene) {
+    Material material;
+    material.type = MaterialType::Principled;
+    material.color = glm::clamp(source.diffuse, 0.0f, 1.0f);
+    // A map multiplies its factor; without Pr or Pm a map that loaded has the factor 1, so that it
+    // gives the value (a metallic factor of 0 would make map_Pm do nothing).
+    material.roughness = std::clamp(source.roughness.value_or(source.roughnessMap.image ? 1.0f : roughnessFromNs), 0.0f, 1.0f);
+    material.metallic = std::clamp(source.metallic.value_or(source.metallicMap.image ? 1.0f : 0.0f), 0.0f, 1.0f);
+    // tinyobjloader's Ni is 1 when the entry leaves it out, and exporters write 1 for "not set":
+    // an index of 1 would give a dielectric no reflection at all.
+    material.ior = source.ior > 1.0f ? std::min(source.ior, 4.0f) : 1.5f;
+    material.alpha = std::clamp(source.dissolve, 0.0f, 1.0f);
+    material.alphaMode = material.alpha < 1.0f ? AlphaMode::Blend : AlphaMode::Opaque;
+    if (source.illum == 4 || source.illum == 6 || source.illum == 7) material.transmission = 1.0f;
+    material.normalScale = source.normalMap.bumpMultiplier;
+    material.baseColorTexture = textureSlotFromMap(source.diffuseMap, TextureColorSpace::Srgb, scene);
+    material.emissionTexture = textureSlotFromMap(source.emissionMap, TextureColorSpace::Srgb, scene);
+    material.roughnessTexture = textureSlotFromMap(source.roughnessMap, TextureColorSpace::Linear, scene);
+    material.metallicTexture = textureSlotFromMap(source.metallicMap, TextureColorSpace::Linear, scene);
+    material.normalTexture = textureSlotFromMap(source.normalMap, TextureColorSpace::Linear, scene);
+    return material;
+}
+
 // A scene material made from a mesh file's own (MTL) material, for slots the scene file does
-// not map: the closest of our models, named "MESH/NAME" so it shows as the mesh's.
-Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& source) {
+// not map: the closest of our models, named "MESH/NAME" so it shows as the mesh's. An entry
+// with texture maps is principled; its textures are added to the scene.
+Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& source, Scene& scene) {
+    // Phong exponent to roughness: alpha = sqrt(2 / (Ns + 2)) and alpha = roughness^2.
+    const float roughnessFromNs = std::sqrt(std::sqrt(2.0f / (std::max(source.shininess, 0.0f) + 2.0f)));
+    if (source.hasTextureMaps()) {
+        Material material = principledFromMeshFile(source, roughnessFromNs, scene);
+        material.name = meshName + "/" + source.name;
+        material.radiance = glm::clamp(source.emission, 0.0f, kMaxRadiance);
+        return material;
+    }
     Material material;
     material.name = meshName + "/" + source.name;
     glm::vec3 diffuse = glm::clamp(source.diffuse, 0.0f, 1.0f);
     glm::vec3 specular = glm::clamp(source.specular, 0.0f, 1.0f);
     float specularLevel = std::max(specular.r, std::max(specular.g, specular.b));
     float diffuseLevel = std::max(diffuse.r, std::max(diffuse.g, diffuse.b));
-    // Phong exponent to roughness: alpha = sqrt(2 / (Ns + 2)) and alpha = roughness^2.
-    float roughness = std::sqrt(std::sqrt(2.0f / (std::max(source.shininess, 0.0f) + 2.0f)));
+    const float roughness = roughnessFromNs;
     if (source.dissolve < 1.0f || source.illum == 4 || source.illum == 6 || source.illum == 7) {
         material.type = MaterialType::Glass;
         material.color = glm::vec3(1.0f);
@@ -1069,11 +1132,11 @@ void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
                 auto own = std::find_if(data.fileMaterials.begin(), data.fileMaterials.end(),
                                         [&](const MeshMaterial& candidate) { return candidate.name == slotName; });
                 if (own != data.fileMaterials.end()) {
-                    Material made = materialFromMeshFile(mesh.name, *own);
-                    material = findMaterial(scene.materials, made.name);
+                    const std::string madeName = mesh.name + "/" + own->name;
+                    material = findMaterial(scene.materials, madeName);
                     if (material < 0) {
                         material = static_cast<int>(scene.materials.size());
-                        scene.materials.push_back(made);
+                        scene.materials.push_back(materialFromMeshFile(mesh.name, *own, scene));
                     }
                 }
             }

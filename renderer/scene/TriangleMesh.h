@@ -3,10 +3,15 @@
 // share. Attributes are indexed per corner, as OBJ indexes them, so a vertex can have different
 // normals or texture coordinates in different faces (a crease, a UV seam).
 
+#include "Texture.h"
+
 #include <glm/glm.hpp>
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +24,22 @@ struct MeshTriangle {
     std::int32_t materialSlot = 0;          // into TriangleMesh::materialSlots
 };
 
+// A texture map an MTL entry names (map_Kd, norm, ...), read when the MTL is.
+struct MeshTextureMap {
+    std::filesystem::path file; // resolved against the MTL file's directory; empty: no map
+    std::string place;          // "FILE.mtl:LINE" of the key, for messages
+    // -s and -o, already turned into the model's texture coordinates (v down, Texture.h).
+    glm::vec2 scale{1.0f};
+    glm::vec2 offset{0.0f};
+    bool clamp = false;          // -clamp on
+    float bumpMultiplier = 1.0f; // -bm (normal maps)
+    // The decoded image; null when the file is missing or does not decode (already warned about:
+    // the material then renders with its factor alone).
+    std::shared_ptr<const TextureImage> image;
+
+    bool named() const { return !file.empty(); }
+};
+
 // A material the mesh's own file describes (an MTL entry), in the terms of its file.
 struct MeshMaterial {
     std::string name;
@@ -29,6 +50,18 @@ struct MeshMaterial {
     float ior = 1.5f;             // Ni
     float dissolve = 1.0f;        // d (1 - Tr): below 1, the surface lets light through
     int illum = 2;                // illumination model
+    std::optional<float> roughness; // Pr (the PBR extension of MTL), when the entry gives it
+    std::optional<float> metallic;  // Pm, likewise
+    MeshTextureMap diffuseMap;   // map_Kd: base colour, sRGB
+    MeshTextureMap emissionMap;  // map_Ke: emission, sRGB
+    MeshTextureMap roughnessMap; // map_Pr: roughness, linear
+    MeshTextureMap metallicMap;  // map_Pm: metallic, linear
+    MeshTextureMap normalMap;    // norm, else map_Bump / bump: a tangent-space normal map, linear
+
+    bool hasTextureMaps() const {
+        return diffuseMap.named() || emissionMap.named() || roughnessMap.named() || metallicMap.named() ||
+               normalMap.named();
+    }
 };
 
 struct TriangleMesh {
