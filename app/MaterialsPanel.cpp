@@ -1,6 +1,8 @@
 #include "MaterialsPanel.h"
 
 #include "MaterialSchema.h"
+#include "MaterialTextures.h"
+#include "SceneLoader.h"
 #include "SceneRanges.h"
 
 #include "PanelWidgets.h"
@@ -9,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <exception>
 
 namespace ptview {
@@ -94,6 +97,8 @@ void MaterialsPanel::draw(ViewerSession& session) {
                             std::to_string(i);
         if (!ImGui::TreeNode(label.c_str())) continue;
         changed |= drawMaterial(material, emitters_[i]);
+        if (material.type == MaterialType::Principled && drawTextures(scene, material, i))
+            session.model().pendingChanges |= ViewerModel::kSceneChanged;
         ImGui::TreePop();
     }
     ImGui::PopItemWidth();
@@ -164,6 +169,110 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
                                       ranges::kRoughness.panelHi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         itemTooltip("GGX alpha = roughness^2; 0 is perfectly smooth");
         ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
+    }
+    if (material.type == MaterialType::Principled) {
+        constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+        changed |= ImGui::SliderFloat("metallic", &material.metallic, 0.0f, 1.0f, "%.3f", kClamp);
+        itemTooltip("0: dielectric (diffuse + 4% specular), 1: metal; times the metallic texture's B");
+        changed |= ImGui::SliderFloat("transmission", &material.transmission, 0.0f, 1.0f, "%.3f", kClamp);
+        itemTooltip("the dielectric part's share that is glass-like (KHR_materials_transmission)");
+        changed |= ImGui::SliderFloat("alpha", &material.alpha, 0.0f, 1.0f, "%.3f", kClamp);
+        itemTooltip("base colour alpha factor, times the base colour texture's A");
+        changed |= ImGui::SliderFloat("normal scale", &material.normalScale, 0.0f, 2.0f, "%.3f");
+        itemTooltip("scales the normal map's x and y");
+    }
+    return changed;
+}
+
+GLuint MaterialsPanel::thumbnail(const std::shared_ptr<const TextureImage>& image) {
+    auto found = thumbnails_.find(image.get());
+    if (found != thumbnails_.end()) return found->second.second.id();
+    // At most 64 texels a side, nearest texel: enough to tell which image it is.
+    constexpr int kSide = 64;
+    const int width = std::max(1, std::min(kSide, image->width * kSide / std::max(image->width, image->height)));
+    const int height = std::max(1, std::min(kSide, image->height * kSide / std::max(image->width, image->height)));
+    std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t from = (static_cast<std::size_t>(y * image->height / height) * static_cast<std::size_t>(image->width) +
+                                      static_cast<std::size_t>(x * image->width / width)) * 4;
+            std::copy_n(image->rgba.begin() + static_cast<std::ptrdiff_t>(from), 4,
+                        texels.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(y) * width + x) * 4));
+        }
+    // The renderer binds its own textures on its own units; the one bound here is put back.
+    GLint activeUnit = 0, bound = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &activeUnit);
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    GlTexture texture = createTexture();
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
+    glActiveTexture(static_cast<GLenum>(activeUnit));
+    const GLuint id = texture.id();
+    thumbnails_.emplace(image.get(), std::make_pair(image, std::move(texture)));
+    return id;
+}
+
+bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t index) {
+    bool changed = false;
+    for (int k = 0; k < int(std::size(kMaterialTextureInputs)); ++k) {
+        const MaterialTextureInput& input = kMaterialTextureInputs[k];
+        ImGui::PushID(k);
+        TextureSlot& slot = material.*input.slot;
+        const bool used = slot.used() && static_cast<std::size_t>(slot.texture) < scene.textures.size();
+        ImGui::Text("%s texture", input.label);
+        if (used) {
+            const SceneTexture& texture = scene.textures[static_cast<std::size_t>(slot.texture)];
+            if (texture.image) {
+                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(thumbnail(texture.image))),
+                             ImVec2(48.0f, 48.0f));
+                ImGui::SameLine();
+            }
+            ImGui::BeginGroup();
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextDisabled("%s", texture.source.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::TextDisabled("%dx%d, %s, uv x (%.3g, %.3g) + (%.3g, %.3g)", texture.image ? texture.image->width : 0,
+                                texture.image ? texture.image->height : 0,
+                                texture.colorSpace == TextureColorSpace::Srgb ? "sRGB" : "linear", slot.scale.x,
+                                slot.scale.y, slot.offset.x, slot.offset.y);
+            if (ImGui::SmallButton("Remove")) {
+                setMaterialTexture(scene, material, input, {});
+                changed = true;
+            }
+            ImGui::EndGroup();
+        } else {
+            ImGui::SameLine();
+            ImGui::TextDisabled("none (the factor alone)");
+        }
+        const auto key = std::make_pair(index, k);
+        std::string& path = texturePaths_[key];
+        ImGui::SetNextItemWidth(-60.0f);
+        bool load = ImGui::InputTextWithHint("##texture", "image file (PNG or JPEG)", &path,
+                                             ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::SameLine();
+        load |= ImGui::Button("Load");
+        if (load && !path.empty()) {
+            // A file that does not load leaves the material and the scene as they were.
+            try {
+                setMaterialTexture(scene, material, input, std::filesystem::u8path(path));
+                textureErrors_.erase(key);
+                changed = true;
+            } catch (const SceneError& error) {
+                textureErrors_[key] = error.what();
+            }
+        }
+        auto error = textureErrors_.find(key);
+        if (error != textureErrors_.end()) {
+            ImGui::PushTextWrapPos(0.0f);
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error->second.c_str());
+            ImGui::PopTextWrapPos();
+        }
+        ImGui::PopID();
     }
     return changed;
 }

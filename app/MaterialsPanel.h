@@ -1,14 +1,19 @@
 #pragma once
 // The viewer's "Materials" panel: every material of the scene under its own tree node,
-// with its type, colour and the parameters its type has, edited live; and "Save scene as".
+// with its type, colour and the parameters its type has, edited live, a principled material's
+// textures (thumbnail, source, size, colour space; replace or remove); and "Save scene as".
 // It edits the session's scene model and flags the change; the session re-sends the materials to
 // the renderer (PathTracer::setMaterials, which recompiles nothing).
 
+#include "GlObjects.h"
 #include "ViewerSession.h"
 
 #include <glm/glm.hpp>
 
+#include <map>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ptview {
@@ -34,10 +39,21 @@ private:
     };
 
     bool drawMaterial(Material& material, EmitterControls& emitter);
+    // A principled material's texture inputs: a thumbnail, the source, size and colour space of
+    // each, a path field with Load, and Remove. Returns whether a texture changed (which may need
+    // another program: the session uploads the scene again).
+    bool drawTextures(Scene& scene, Material& material, std::size_t index);
+    // A small GL texture of the image for ImGui::Image, made once per image.
+    GLuint thumbnail(const std::shared_ptr<const TextureImage>& image);
     void save(ViewerSession& session);
     void saveTo(ViewerSession& session, const std::string& path);
 
     std::vector<EmitterControls> emitters_; // one per material, used by emitters only
+    // Thumbnails by image; the entry holds the image, so its address is not reused while cached.
+    std::map<const TextureImage*, std::pair<std::shared_ptr<const TextureImage>, GlTexture>> thumbnails_;
+    // The path typed into each (material, input)'s field, and the last Load's error there.
+    std::map<std::pair<std::size_t, int>, std::string> texturePaths_;
+    std::map<std::pair<std::size_t, int>, std::string> textureErrors_;
     std::string saveStatus_; // the outcome of the last save, shown under the button
     bool saveFailed_ = false;
 };

@@ -2,7 +2,9 @@
 
 #include "CameraController.h"
 #include "MaterialSchema.h"
+#include "MaterialTextures.h"
 #include "MaterialsPanel.h"
+#include "SceneLoader.h"
 #include "OutputPath.h"
 #include "SceneRanges.h"
 
@@ -164,6 +166,26 @@ using Handler = void (*)(Step&);
 
 void sceneEdited(Step& s) { s.model.pendingChanges |= ViewerModel::kSceneChanged; }
 
+// set-material NAME.INPUT-texture PATH|none: what the Materials panel's Load and Remove do. A
+// file that does not load fails the script (naming it); the material stays as it was.
+void setMaterialTextureField(Step& s, Material& material) {
+    for (const MaterialTextureInput& input : kMaterialTextureInputs) {
+        if (s.command.field != std::string(input.name) + "-texture") continue;
+        try {
+            Material edited = material;
+            if (!s.command.isWord(0, "none") && edited.type != MaterialType::Principled)
+                edited = retypedMaterial(edited, MaterialType::Principled);
+            setMaterialTexture(s.scene, edited, input, s.command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(s.word));
+            material = edited;
+        } catch (const SceneError& error) {
+            return s.fail(error.what());
+        }
+        // A texture where the program had none needs another program: upload the scene again.
+        s.model.pendingChanges |= ViewerModel::kSceneChanged | ViewerModel::kMaterialsChanged;
+        return;
+    }
+}
+
 void setMaterial(Step& s) {
     const ScriptCommand& command = s.command;
     auto found = std::find_if(s.scene.materials.begin(), s.scene.materials.end(),
@@ -180,6 +202,16 @@ void setMaterial(Step& s) {
         material.ior = command.number(0);
     else if (command.field == "roughness")
         material.roughness = command.number(0);
+    else if (command.field == "metallic")
+        material.metallic = command.number(0);
+    else if (command.field == "transmission")
+        material.transmission = command.number(0);
+    else if (command.field == "alpha")
+        material.alpha = command.number(0);
+    else if (command.field == "normal-scale")
+        material.normalScale = command.number(0);
+    else
+        return setMaterialTextureField(s, material);
     s.model.pendingChanges |= ViewerModel::kMaterialsChanged;
 }
 

@@ -4,6 +4,7 @@
 #include "InputFile.h"
 #include "Integrator.h"
 #include "MaterialSchema.h"
+#include "MaterialTextures.h"
 #include "SamplerMode.h"
 #include "SceneRanges.h"
 #include "ToneMapper.h"
@@ -144,8 +145,26 @@ const std::vector<FieldSpec>& materialFields() {
         {"emission", vec3RangeArgs("R", "G", "B", ranges::kRadiance), false, "emitted radiance (an emitter's radiance)"},
         {"ior", {rangeArg("IOR", ranges::kIor)}, false, "index of refraction"},
         {"roughness", {rangeArg("R", ranges::kRoughness)}, false, "microfacet roughness"},
+        // Principled materials (docs/materials.md); textures: one field per input of kMaterialTextureInputs.
+        {"metallic", {numberArg("F", 0.0, 1.0)}, false, "principled: the metallic factor"},
+        {"transmission", {numberArg("F", 0.0, 1.0)}, false, "principled: the glass-like share of the dielectric part"},
+        {"alpha", {numberArg("F", 0.0, 1.0)}, false, "principled: the base colour's alpha factor"},
+        {"normal-scale", {numberArg("F", 0.0, 100.0)}, false, "principled: scales the normal map's x and y"},
     };
-    return fields;
+    static const std::vector<FieldSpec> withTextures = [] {
+        static std::vector<std::string> names; // the FieldSpecs point into these
+        static std::vector<std::string> helps;
+        for (const MaterialTextureInput& input : kMaterialTextureInputs) {
+            names.push_back(std::string(input.name) + "-texture");
+            helps.push_back(std::string("principled: the ") + input.label +
+                            " texture, an 8-bit PNG or JPEG, or none (a material of another type becomes principled)");
+        }
+        std::vector<FieldSpec> all = fields;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            all.push_back({names[i].c_str(), {pathArg({".png", ".jpg", ".jpeg"}, "none")}, false, helps[i].c_str()});
+        return all;
+    }();
+    return withTextures;
 }
 
 const std::vector<FieldSpec>& lightFields() {

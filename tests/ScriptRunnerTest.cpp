@@ -1,11 +1,16 @@
 // The script executor's dispatch table against the parser's command table: a command that parses
 // always has a handler, and no handler waits for a command the parser would refuse.
+#include "GlTestContext.h"
+#include "ImageIO.h"
+#include "SceneInput.h"
 #include "ScriptRunner.h"
+#include "TestFiles.h"
 #include "ViewerScript.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +26,77 @@ TEST(ScriptRunner, EveryCommandOfTheScriptTableHasAHandler) {
     for (const std::string& verb : handled)
         EXPECT_NE(std::find(table.begin(), table.end(), verb), table.end())
             << "a handler for \"" << verb << "\", which the script table does not have";
+}
+
+// Runs the script on a headless session of the scene until it ends (no command here waits).
+struct ScriptedSession {
+    std::unique_ptr<ViewerSession> session;
+    ScriptRunner runner;
+    PanelState panels;
+
+    ScriptedSession(const std::filesystem::path& scene, const std::string& script)
+        : runner(parseViewerScript(script, "s.txt")) {
+        testing::glContext();
+        std::optional<SceneInput> input = loadSceneInput(scene.string());
+        EXPECT_TRUE(input);
+        session = std::make_unique<ViewerSession>(std::move(*input), testing::naiveSettings(2, 0), DisplaySettings{},
+                                                  PTVIEW_SHADER_DIR);
+        session->setImageArea(PixelRect{{0, 0}, {8, 8}});
+        runner.step(*session, panels);
+        session->update();
+    }
+    const Material& material(const std::string& name) const {
+        for (const Material& m : session->model().scene.materials)
+            if (m.name == name) return m;
+        throw std::runtime_error("no material " + name);
+    }
+};
+
+// The Materials panel's edits by script: principled factors live, a texture removed (none) or
+// given from a file (a diffuse material becoming principled, keeping its colour), the slot then
+// naming a new scene texture in the input's colour space.
+TEST(ScriptRunner, SetMaterialEditsPrincipledFactorsAndTextures) {
+    testing::ScratchFiles files("script");
+    const std::filesystem::path png = files.write("t.png", "");
+    writePng(png, ImageRgba8{2, 1, {10, 20, 30, 255, 40, 50, 60, 255}});
+    ScriptedSession run(PTVIEW_ASSETS_DIR "/scenes/cornell_spot.json",
+                        "set-material spot/spot.metallic 0.5\nset-material spot/spot.normal-scale 0.25\n"
+                        "set-material spot/spot.alpha 0.75\nset-material spot/spot.transmission 0.125\n"
+                        "set-material spot/spot.base-color-texture none\n"
+                        "set-material white.base-color-texture " + png.string() + "\n"
+                        "set-material white.normal-texture " + png.string() + "\n");
+    EXPECT_EQ(run.runner.exitCode(), 0);
+    const Material& spot = run.material("spot/spot");
+    EXPECT_FLOAT_EQ(spot.metallic, 0.5f);
+    EXPECT_FLOAT_EQ(spot.normalScale, 0.25f);
+    EXPECT_FLOAT_EQ(spot.alpha, 0.75f);
+    EXPECT_FLOAT_EQ(spot.transmission, 0.125f);
+    EXPECT_FALSE(spot.baseColorTexture.used());
+    const Material& white = run.material("white");
+    EXPECT_EQ(white.type, MaterialType::Principled);
+    EXPECT_EQ(white.color, glm::vec3(0.73f));
+    ASSERT_TRUE(white.baseColorTexture.used() && white.normalTexture.used());
+    const std::vector<SceneTexture>& textures = run.session->model().scene.textures;
+    const SceneTexture& base = textures.at(static_cast<std::size_t>(white.baseColorTexture.texture));
+    EXPECT_EQ(base.file, png);
+    EXPECT_EQ(base.colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(textures.at(static_cast<std::size_t>(white.normalTexture.texture)).colorSpace, TextureColorSpace::Linear);
+    ASSERT_TRUE(base.image);
+    EXPECT_EQ(base.image->rgba, (std::vector<std::uint8_t>{10, 20, 30, 255, 40, 50, 60, 255}));
+}
+
+// A texture file that does not load ends the script naming the file (exit code 2, as every failing
+// command), and the material keeps the texture it had.
+TEST(ScriptRunner, ATextureThatDoesNotLoadFailsNamingItAndKeepsTheMaterial) {
+    testing::ScratchFiles files("script");
+    const std::filesystem::path bad = files.write("bad.png", "not an image");
+    ScriptedSession run(PTVIEW_ASSETS_DIR "/scenes/cornell_spot.json",
+                        "set-material spot/spot.base-color-texture " + bad.string() + "\n");
+    EXPECT_EQ(run.runner.exitCode(), 2);
+    const Material& spot = run.material("spot/spot");
+    ASSERT_TRUE(spot.baseColorTexture.used());
+    EXPECT_NE(run.session->model().scene.textures.at(static_cast<std::size_t>(spot.baseColorTexture.texture)).source.find("spot_texture.png"),
+              std::string::npos);
 }
 
 } // namespace

@@ -241,6 +241,10 @@ TEST(ViewerScript, SceneValuesTakeTheFileFormatsRanges) {
     EXPECT_EQ(errorOf("camera-fov 180"), "s.txt:1: camera-fov: DEG must be in (0, 180), got 180");
     EXPECT_EQ(errorOf("set-material m.roughness 1.01"), "s.txt:1: set-material: roughness: R must be in [0, 1], got 1.01");
     EXPECT_EQ(errorOf("set-material m.emission 0 0 -1"), "s.txt:1: set-material: emission: B must be in [0, 1000000000], got -1");
+    EXPECT_EQ(errorOf("set-material m.metallic 1.5"), "s.txt:1: set-material: metallic: F must be in [0, 1], got 1.5");
+    EXPECT_EQ(errorOf("set-material m.alpha -0.1"), "s.txt:1: set-material: alpha: F must be in [0, 1], got -0.1");
+    EXPECT_EQ(errorOf("set-material m.base-color-texture x.txt"),
+              "s.txt:1: set-material: base-color-texture: PATH must end in .png or .jpg or .jpeg, got \"x.txt\"");
     EXPECT_EQ(errorOf("set-light spot.intensity -1 0 0"), "s.txt:1: set-light: intensity: R must be in [0, 1000000000], got -1");
     EXPECT_EQ(errorOf("environment-intensity -0.5"), "s.txt:1: environment-intensity: F must be in [0, 1000000000], got -0.5");
     // The range's own bounds, and a fov just inside its open end, are taken.
@@ -271,13 +275,13 @@ TEST(ViewerScript, OutputPathsNeedTheirExtension) {
 
 TEST(ViewerScript, FieldEditsNeedNameDotKnownField) {
     EXPECT_EQ(errorOf("set-material glass 1.5"),
-              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness), got \"glass\"");
+              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture), got \"glass\"");
     EXPECT_EQ(errorOf("set-material glass. 1.5"),
-              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness), got \"glass.\"");
+              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture), got \"glass.\"");
     EXPECT_EQ(errorOf("set-material"),
-              "s.txt:1: set-material: expected NAME.FIELD and its values (FIELD: type, color, emission, ior, roughness)");
+              "s.txt:1: set-material: expected NAME.FIELD and its values (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture)");
     EXPECT_EQ(errorOf("set-material glass.colour 1 1 1"),
-              "s.txt:1: set-material: unknown field \"colour\" (valid: type, color, emission, ior, roughness)");
+              "s.txt:1: set-material: unknown field \"colour\" (valid: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture)");
     EXPECT_EQ(errorOf("set-light key.color 1 1 1"),
               "s.txt:1: set-light: unknown field \"color\" (valid: intensity, position, direction, inner-angle, "
               "outer-angle)");
