@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <vector>
 
 namespace ptview {
@@ -27,6 +28,8 @@ struct BenchResult {
     double buildSeconds = 0.0;
     std::size_t triangles = 0;
     std::size_t meshBytes = 0;
+    std::size_t textureBytes = 0;   // decoded RGBA8 texels of the scene's distinct images
+    glm::ivec2 largestTexture{0, 0}; // by texel count
     glm::ivec2 size{0, 0};
     int samples = 0;
     double renderSeconds = 0.0;
@@ -41,6 +44,15 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options, con
     std::optional<SceneInput> input = loadSceneInput(scenePath);
     if (!input) throw std::invalid_argument(scenePath + ": cannot be read (see above)");
     result.loadSeconds = secondsSince(loadStart);
+    // Each image once, however many textures (colour spaces, wraps) share it.
+    std::set<const TextureImage*> images;
+    for (const SceneTexture& texture : input->scene.textures) {
+        if (!texture.image || !images.insert(texture.image.get()).second) continue;
+        result.textureBytes += texture.image->rgba.size();
+        if (std::size_t(texture.image->width) * texture.image->height >
+            std::size_t(result.largestTexture.x) * result.largestTexture.y)
+            result.largestTexture = {texture.image->width, texture.image->height};
+    }
 
     PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{program.allFeatures, program.backend});
     tracer.setScene(input->scene, input->environmentMapOrNull());
@@ -89,8 +101,8 @@ int runBenchCommand(const BenchOptions& options) {
         std::printf("ptview bench on %s; %s integrator, depth %d, %s sampler, at least %.1f s per scene\n\n",
                     context.description().c_str(), integratorName(options.settings.integrator),
                     options.settings.maxDepth, samplerModeName(options.settings.sampler), options.seconds);
-        std::printf("| scene | program | backend | compile s | triangles | load s | BVH build s | BVH + triangles MB | size | spp | M samples/s |\n");
-        std::printf("|---|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
+        std::printf("| scene | program | backend | compile s | triangles | load s | BVH build s | BVH + triangles MB | textures MB | largest texture | size | spp | M samples/s |\n");
+        std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---|---|---:|---:|\n");
         std::fflush(stdout);
         std::vector<ProgramOptions> programs = {options.program};
         if (options.variants) {
@@ -105,10 +117,13 @@ int runBenchCommand(const BenchOptions& options) {
                 BenchResult r = bench(scene, options, program);
                 char compile[32] = "-";
                 if (r.compileSeconds >= 0.0) std::snprintf(compile, sizeof compile, "%.3f", r.compileSeconds);
-                std::printf("| %s | %s | %s | %s | %zu | %.3f | %.3f | %.1f | %dx%d | %d | %.2f |\n",
+                char largest[32] = "-";
+                if (r.largestTexture.x > 0) std::snprintf(largest, sizeof largest, "%dx%d", r.largestTexture.x, r.largestTexture.y);
+                std::printf("| %s | %s | %s | %s | %zu | %.3f | %.3f | %.1f | %.1f | %s | %dx%d | %d | %.2f |\n",
                             std::filesystem::path(scene).stem().string().c_str(), program.allFeatures ? "uber" : "specialized",
                             backendName(r.backend), compile, r.triangles, r.loadSeconds, r.buildSeconds,
-                            double(r.meshBytes) / (1024.0 * 1024.0), r.size.x, r.size.y, r.samples, r.samplesPerSecond * 1e-6);
+                            double(r.meshBytes) / (1024.0 * 1024.0), double(r.textureBytes) / (1024.0 * 1024.0), largest,
+                            r.size.x, r.size.y, r.samples, r.samplesPerSecond * 1e-6);
                 std::fflush(stdout);
             }
         }
