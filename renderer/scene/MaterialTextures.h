@@ -10,7 +10,7 @@
 
 namespace ptview {
 
-// The file decoded (8-bit PNG or JPEG, through stb), repeating and bilinear, in the given colour
+// The file decoded (8-bit PNG or JPEG, TextureLoader.h), repeating and bilinear, in the given colour
 // space. Throws SceneError "FILE: reason" for a file that is missing, unreadable or not an image.
 SceneTexture readTextureFile(const std::filesystem::path& file, TextureColorSpace colorSpace);
 

@@ -1,7 +1,7 @@
 #include "ObjLoader.h"
 
-#include "ImageDecode.h"
 #include "InputFile.h"
+#include "TextureLoader.h"
 
 #include <tiny_obj_loader.h>
 
@@ -60,8 +60,6 @@ std::string counted(std::size_t count, const char* noun) {
 constexpr std::uintmax_t kMaxObjFileBytes = 8192 * kMiB;
 // A material library is a few lines per material.
 constexpr std::uintmax_t kMaxMtlFileBytes = 64 * kMiB;
-// A compressed 16384^2 RGBA image (the largest that decodes, ImageDecode.h) stays well below this.
-constexpr std::uintmax_t kMaxTextureFileBytes = 1024 * kMiB;
 
 // tinyobjloader (2.0.0rc10) reads a number's exponent into an int and checks for overflow one
 // digit too late: "1e2147483648" overflows it, which is undefined behaviour, and a longer exponent
@@ -474,18 +472,9 @@ private:
             return map;
         }
         try {
-            std::string bytes = readInputFile(map.file, kMaxTextureFileBytes, "texture");
-            ImageRgba8 rgba =
-                decodeImageRgba8(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-            auto image = std::make_shared<TextureImage>();
-            image->width = rgba.width;
-            image->height = rgba.height;
-            image->rgba = std::move(rgba.rgba);
-            map.image = std::move(image);
-        } catch (const InputFileError& e) {
-            warnings_.push_back(place + ": " + key + ": " + e.what() + why);
-        } catch (const ImageDecodeError& e) {
-            warnings_.push_back(place + ": " + key + " " + file + ": " + e.what() + why);
+            map.image = loadTextureImage(map.file);
+        } catch (const TextureError& e) {
+            warnings_.push_back(place + ": " + key + " " + e.what() + why); // e names the file
         }
         decoded_.emplace(file, map.image);
         return map;
