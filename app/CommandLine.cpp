@@ -203,7 +203,7 @@ std::optional<int> finishRenderOptions(const RenderOptions& render) {
 // display: bench writes no image, so its tone mapping goes nowhere.
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& bench, DisplaySettings& display) {
     CLI::App* command = app.add_subcommand("bench", "time loading, BVH builds and path tracing of scenes (headless)");
-    command->add_option("scenes", bench.scenePaths, "scene files (default: cornell, cornell_bunny, meshes, dragon, cornell_bunny_1m, cornell_spot, cornell_spot_untextured)");
+    command->add_option("scenes", bench.scenePaths, "scene files (default: cornell, cornell_bunny, meshes, dragon, cornell_bunny_1m, cornell_spot, cornell_spot_untextured, helmet)");
     addSizeOption(*command, bench.size, "image size WxH (default: each scene's resolution)");
     command->add_option("--seconds", bench.seconds, "rendering time per scene, at least")
         ->check(kFiniteNumber)->check(CLI::Range(0.1, 600.0))->capture_default_str();
@@ -217,7 +217,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& bench, DisplaySettings& d
 void finishBenchOptions(BenchOptions& bench) {
     if (bench.scenePaths.empty())
         for (const char* name : {"cornell", "cornell_bunny", "meshes", "dragon", "cornell_bunny_1m", "cornell_spot",
-                                 "cornell_spot_untextured"})
+                                 "cornell_spot_untextured", "helmet"})
             bench.scenePaths.push_back(std::string(PTVIEW_ASSETS_DIR) + "/scenes/" + name + ".json");
 }
 
