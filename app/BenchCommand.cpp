@@ -1,5 +1,6 @@
 #include "BenchCommand.h"
 
+#include "CommandErrors.h"
 #include "HeadlessContext.h"
 #include "PathTracer.h"
 #include "SceneInput.h"
@@ -127,12 +128,8 @@ int runBenchCommand(const BenchOptions& options) {
                 std::fflush(stdout);
             }
         }
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitRuntimeError;
+    } catch (const std::exception&) {
+        return reportCommandError();
     }
     return 0;
 }

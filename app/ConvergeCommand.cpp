@@ -1,5 +1,6 @@
 #include "ConvergeCommand.h"
 
+#include "CommandErrors.h"
 #include "ErrorMetrics.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
@@ -345,12 +346,8 @@ int runConvergeCommand(const ConvergeOptions& options) {
             std::cerr << "ptview: warning: the plot was not made (" << *failure << "); the CSV and summary were\n";
         std::fprintf(stderr, "ptview: wrote %s/{convergence.csv,convergence.png,summary.md} on %s\n",
                      options.outDir.string().c_str(), context.description().c_str());
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitRuntimeError;
+    } catch (const std::exception&) {
+        return reportCommandError();
     }
     return 0;
 }

@@ -1,5 +1,6 @@
 #include "RenderCommand.h"
 
+#include "CommandErrors.h"
 #include "EnvironmentMap.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
@@ -139,9 +140,6 @@ int runRenderCommand(const RenderOptions& options) {
                      context.description().c_str());
         const std::string textures = tracer.gpuScene().textures().describe();
         if (!textures.empty()) std::fprintf(stderr, "ptview: textures: %s\n", textures.c_str());
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitBadInput;
     } catch (const EnvironmentMapError& e) { // too large for this GPU
         std::cerr << "ptview: " << e.what() << "\n";
         return kExitBadInput;
@@ -153,9 +151,8 @@ int runRenderCommand(const RenderOptions& options) {
         // the CPU allocates: the scene's GPU data on its way, the read-back of the image.
         std::cerr << "ptview: not enough memory for " << allocating << "\n";
         return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitRuntimeError;
+    } catch (const std::exception&) {
+        return reportCommandError();
     }
     return 0;
 }

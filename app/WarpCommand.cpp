@@ -1,5 +1,6 @@
 #include "WarpCommand.h"
 
+#include "CommandErrors.h"
 #include "OutputPath.h"
 
 #include "HeadlessContext.h"
@@ -28,9 +29,8 @@ int runWarpCommand(const WarpOptions& options) {
     } catch (const std::bad_alloc&) {
         std::cerr << "ptview: image size " << options.imageSize << "x" << options.imageSize << " is too large for the memory\n";
         return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
-        return kExitRuntimeError;
+    } catch (const std::exception&) {
+        return reportCommandError();
     }
     return 0;
 }
