@@ -1,6 +1,7 @@
 // Smooth dielectrics: specular transmission and glass. Both delta: f and pdf are 0 for any given
 // direction; only sampling finds their one or two directions.
 #include "bsdf_common.glsl"
+#include "material.glsl"
 #include "fresnel.glsl"
 
 // Always refracts (no Fresnel reflection). Under total internal reflection nothing is
@@ -25,3 +26,8 @@ BsdfSample sampleGlass(vec3 tint, float ior, vec3 woLocal, float uLobe) {
     if (!refractLocal(woLocal, ior, wiLocal, etaRelative)) return BsdfSample(reflectLocal(woLocal), tint, 1.0, true);
     return BsdfSample(wiLocal, tint, 1.0 - reflectance, true);
 }
+
+// ---- Entry points of the generated dispatch (bsdf.glsl, renderer/gpu/ShaderFeatures.cpp names
+// them NAMEBsdfF / NAMEBsdfPdf / NAMEBsdfSample): what the model reads of a Material, said once.
+BsdfSample specularTransmissionBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return sampleSpecularTransmission(material.color, material.ior, woLocal); }
+BsdfSample glassBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return sampleGlass(material.color, material.ior, woLocal, uLobe); }

@@ -1,5 +1,6 @@
 // Lambertian reflection and transmission.
 #include "bsdf_common.glsl"
+#include "material.glsl"
 #include "warps.glsl"
 
 // Reflection, two-sided: light leaves on wo's side.
@@ -37,3 +38,12 @@ BsdfSample sampleLambertianTransmission(vec3 transmittance, vec3 woLocal, vec2 u
     if (pdf == 0.0) return failedBsdfSample();
     return BsdfSample(wiLocal, transmittance, pdf, false);
 }
+
+// ---- Entry points of the generated dispatch (bsdf.glsl, renderer/gpu/ShaderFeatures.cpp names
+// them NAMEBsdfF / NAMEBsdfPdf / NAMEBsdfSample): what the model reads of a Material, said once.
+vec3 lambertianReflectionBsdfF(Material material, vec3 woLocal, vec3 wiLocal) { return lambertianReflectionF(material.color, woLocal, wiLocal); }
+float lambertianReflectionBsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) { return lambertianReflectionPdf(woLocal, wiLocal); }
+BsdfSample lambertianReflectionBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return sampleLambertianReflection(material.color, woLocal, u); }
+vec3 lambertianTransmissionBsdfF(Material material, vec3 woLocal, vec3 wiLocal) { return lambertianTransmissionF(material.color, woLocal, wiLocal); }
+float lambertianTransmissionBsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) { return lambertianTransmissionPdf(woLocal, wiLocal); }
+BsdfSample lambertianTransmissionBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return sampleLambertianTransmission(material.color, woLocal, u); }

@@ -3,6 +3,7 @@
 // metal is a Fresnel-weighted mirror (delta). Two-sided: evaluated as if wo were on the front
 // side (an isotropic BSDF is symmetric under flipping both z's).
 #include "bsdf_common.glsl"
+#include "material.glsl"
 #include "fresnel.glsl"
 #include "microfacet.glsl"
 
@@ -40,3 +41,9 @@ BsdfSample sampleMetal(vec3 reflectance, float roughness, vec3 woLocal, vec2 u) 
     float pdf = ggxVisibleNormalPdf(wo, h, alpha) / (4.0 * woDotH);
     return BsdfSample(flipToSide(wi, side), weight, pdf, false);
 }
+
+// ---- Entry points of the generated dispatch (bsdf.glsl, renderer/gpu/ShaderFeatures.cpp names
+// them NAMEBsdfF / NAMEBsdfPdf / NAMEBsdfSample): what the model reads of a Material, said once.
+vec3 metalBsdfF(Material material, vec3 woLocal, vec3 wiLocal) { return metalF(material.color, material.roughness, woLocal, wiLocal); }
+float metalBsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) { return metalPdf(material.roughness, woLocal, wiLocal); }
+BsdfSample metalBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return sampleMetal(material.color, material.roughness, woLocal, u); }

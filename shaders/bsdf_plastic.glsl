@@ -3,6 +3,7 @@
 // coat twice, so the base is weighted by (1 - F(theta_o)) (1 - F(theta_i)). Both weights stay
 // below what the coat lets through, so the sum never reflects more than arrives. Two-sided.
 #include "bsdf_common.glsl"
+#include "material.glsl"
 #include "fresnel.glsl"
 #include "microfacet.glsl"
 #include "warps.glsl"
@@ -67,3 +68,9 @@ BsdfSample samplePlastic(vec3 albedo, float ior, float roughness, vec3 woLocal, 
     if (pdf == 0.0) return failedBsdfSample();
     return BsdfSample(wiLocal, plasticF(albedo, ior, roughness, woLocal, wiLocal) * wi.z / pdf, pdf, false);
 }
+
+// ---- Entry points of the generated dispatch (bsdf.glsl, renderer/gpu/ShaderFeatures.cpp names
+// them NAMEBsdfF / NAMEBsdfPdf / NAMEBsdfSample): what the model reads of a Material, said once.
+vec3 plasticBsdfF(Material material, vec3 woLocal, vec3 wiLocal) { return plasticF(material.color, material.ior, material.roughness, woLocal, wiLocal); }
+float plasticBsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) { return plasticPdf(material.color, material.ior, material.roughness, woLocal, wiLocal); }
+BsdfSample plasticBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return samplePlastic(material.color, material.ior, material.roughness, woLocal, uLobe, u); }

@@ -10,6 +10,7 @@
 // weight times an estimate of its albedo toward wo, and a non-delta sample is weighed by the
 // density of the whole mixture (one-sample MIS), so f, pdf and sample agree.
 #include "bsdf_common.glsl"
+#include "material.glsl"
 #include "bsdf_plastic.glsl"
 #include "bsdf_metal.glsl"
 #include "bsdf_dielectric.glsl"
@@ -79,3 +80,9 @@ BsdfSample samplePrincipled(vec3 base, float ior, float roughness, float metalli
     vec3 f = principledF(base, ior, roughness, metallic, transmission, woLocal, bs.wiLocal);
     return BsdfSample(bs.wiLocal, f * absCosTheta(bs.wiLocal) / pdf, pdf, false);
 }
+
+// ---- Entry points of the generated dispatch (bsdf.glsl, renderer/gpu/ShaderFeatures.cpp names
+// them NAMEBsdfF / NAMEBsdfPdf / NAMEBsdfSample): what the model reads of a Material, said once.
+vec3 principledBsdfF(Material material, vec3 woLocal, vec3 wiLocal) { return principledF(material.color, material.ior, material.roughness, material.metallic, material.transmission, woLocal, wiLocal); }
+float principledBsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) { return principledPdf(material.color, material.ior, material.roughness, material.metallic, material.transmission, woLocal, wiLocal); }
+BsdfSample principledBsdfSample(Material material, vec3 woLocal, float uLobe, vec2 u) { return samplePrincipled(material.color, material.ior, material.roughness, material.metallic, material.transmission, woLocal, uLobe, u); }

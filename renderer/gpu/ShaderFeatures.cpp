@@ -12,41 +12,27 @@
 namespace ptview {
 namespace {
 
-// Each model's GLSL: the file that defines it and its calls in the three dispatch functions
-// (f and pdf are absent for delta models, whose f and pdf are 0 for every given direction).
+// Each model's GLSL: the file that defines it and the name of its entry points there
+// (NAMEBsdfF, NAMEBsdfPdf, NAMEBsdfSample, declared once in that file with what they read of the
+// Material). Delta models have no F or Pdf: theirs are 0 for every given direction.
 struct BsdfCode {
     MaterialType type;
     const char* constant; // shaders/material.glsl
     const char* file;     // nullptr: no code (emitters reflect nothing)
-    const char* f;
-    const char* pdf;
-    const char* sample;
+    const char* name;
+    bool delta;
 };
 
 const BsdfCode kBsdfCode[] = {
-    {MaterialType::Diffuse, "kMaterialDiffuse", "bsdf_diffuse.glsl",
-     "lambertianReflectionF(material.color, woLocal, wiLocal)", "lambertianReflectionPdf(woLocal, wiLocal)",
-     "sampleLambertianReflection(material.color, woLocal, u)"},
-    {MaterialType::Emitter, "kMaterialEmitter", nullptr, nullptr, nullptr, nullptr},
-    {MaterialType::DiffuseTransmission, "kMaterialDiffuseTransmission", "bsdf_diffuse.glsl",
-     "lambertianTransmissionF(material.color, woLocal, wiLocal)", "lambertianTransmissionPdf(woLocal, wiLocal)",
-     "sampleLambertianTransmission(material.color, woLocal, u)"},
-    {MaterialType::Mirror, "kMaterialMirror", "bsdf_mirror.glsl", nullptr, nullptr,
-     "sampleMirror(material.color, woLocal)"},
-    {MaterialType::SpecularTransmission, "kMaterialSpecularTransmission", "bsdf_dielectric.glsl", nullptr, nullptr,
-     "sampleSpecularTransmission(material.color, material.ior, woLocal)"},
-    {MaterialType::Glass, "kMaterialGlass", "bsdf_dielectric.glsl", nullptr, nullptr,
-     "sampleGlass(material.color, material.ior, woLocal, uLobe)"},
-    {MaterialType::Metal, "kMaterialMetal", "bsdf_metal.glsl", "metalF(material.color, material.roughness, woLocal, wiLocal)",
-     "metalPdf(material.roughness, woLocal, wiLocal)", "sampleMetal(material.color, material.roughness, woLocal, u)"},
-    {MaterialType::Plastic, "kMaterialPlastic", "bsdf_plastic.glsl",
-     "plasticF(material.color, material.ior, material.roughness, woLocal, wiLocal)",
-     "plasticPdf(material.color, material.ior, material.roughness, woLocal, wiLocal)",
-     "samplePlastic(material.color, material.ior, material.roughness, woLocal, uLobe, u)"},
-    {MaterialType::Principled, "kMaterialPrincipled", "bsdf_principled.glsl",
-     "principledF(material.color, material.ior, material.roughness, material.metallic, material.transmission, woLocal, wiLocal)",
-     "principledPdf(material.color, material.ior, material.roughness, material.metallic, material.transmission, woLocal, wiLocal)",
-     "samplePrincipled(material.color, material.ior, material.roughness, material.metallic, material.transmission, woLocal, uLobe, u)"},
+    {MaterialType::Diffuse, "kMaterialDiffuse", "bsdf_diffuse.glsl", "lambertianReflection", false},
+    {MaterialType::Emitter, "kMaterialEmitter", nullptr, nullptr, true},
+    {MaterialType::DiffuseTransmission, "kMaterialDiffuseTransmission", "bsdf_diffuse.glsl", "lambertianTransmission", false},
+    {MaterialType::Mirror, "kMaterialMirror", "bsdf_mirror.glsl", "mirror", true},
+    {MaterialType::SpecularTransmission, "kMaterialSpecularTransmission", "bsdf_dielectric.glsl", "specularTransmission", true},
+    {MaterialType::Glass, "kMaterialGlass", "bsdf_dielectric.glsl", "glass", true},
+    {MaterialType::Metal, "kMaterialMetal", "bsdf_metal.glsl", "metal", false},
+    {MaterialType::Plastic, "kMaterialPlastic", "bsdf_plastic.glsl", "plastic", false},
+    {MaterialType::Principled, "kMaterialPrincipled", "bsdf_principled.glsl", "principled", false},
 };
 
 std::string generateBsdfDispatch(const ShaderFeatures& features) {
@@ -59,9 +45,13 @@ std::string generateBsdfDispatch(const ShaderFeatures& features) {
             files.push_back(code.file);
             includes += std::string("#include \"") + code.file + "\"\n";
         }
-        if (code.f) f += std::string("    case ") + code.constant + ": return " + code.f + ";\n";
-        if (code.pdf) pdf += std::string("    case ") + code.constant + ": return " + code.pdf + ";\n";
-        if (code.sample) sample += std::string("    case ") + code.constant + ": return " + code.sample + ";\n";
+        if (!code.name) continue;
+        const std::string caseLabel = std::string("    case ") + code.constant + ": return " + code.name;
+        if (!code.delta) {
+            f += caseLabel + "BsdfF(material, woLocal, wiLocal);\n";
+            pdf += caseLabel + "BsdfPdf(material, woLocal, wiLocal);\n";
+        }
+        sample += caseLabel + "BsdfSample(material, woLocal, uLobe, u);\n";
     }
     return "// The BSDF of a material: f, pdf and sampling, dispatched on the material type, for the models\n"
            "// this program was built for: " + (models.empty() ? std::string("none") : models) +
