@@ -10,10 +10,6 @@
 
 namespace ptview {
 
-// The file decoded (8-bit PNG or JPEG, TextureLoader.h), repeating and bilinear, in the given colour
-// space. Throws SceneError "FILE: reason" for a file that is missing, unreadable or not an image.
-SceneTexture readTextureFile(const std::filesystem::path& file, TextureColorSpace colorSpace);
-
 // A principled material's texture input: where its slot is and how its texels are read.
 struct MaterialTextureInput {
     const char* name;  // "base-color": the script's field is "base-color-texture"
