@@ -8,6 +8,7 @@
 #include "GltfLoader.h"
 
 #include "ImageDecode.h"
+#include "MaterialTextures.h"
 #include "InputFile.h"
 #include "SceneRanges.h"
 
@@ -606,16 +607,16 @@ private:
         material.roughness = unitFactor(pbr.roughnessFactor);
         const std::string pbrAt = where + "/pbrMetallicRoughness";
         material.baseColorTexture = slot(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                         pbr.baseColorTexture.extensions, TextureColorSpace::Srgb, pbrAt + "/baseColorTexture");
+                                         pbr.baseColorTexture.extensions, colorSpaceOf(&Material::baseColorTexture), pbrAt + "/baseColorTexture");
         material.roughnessTexture = slot(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                         pbr.metallicRoughnessTexture.extensions, TextureColorSpace::Linear,
+                                         pbr.metallicRoughnessTexture.extensions, colorSpaceOf(&Material::roughnessTexture),
                                          pbrAt + "/metallicRoughnessTexture");
         material.metallicTexture = material.roughnessTexture; // one texture: roughness in G, metalness in B
         material.normalTexture = slot(source.normalTexture.index, source.normalTexture.texCoord,
-                                      source.normalTexture.extensions, TextureColorSpace::Linear, where + "/normalTexture");
+                                      source.normalTexture.extensions, colorSpaceOf(&Material::normalTexture), where + "/normalTexture");
         material.normalScale = std::isfinite(source.normalTexture.scale) ? static_cast<float>(source.normalTexture.scale) : 1.0f;
         material.emissionTexture = slot(source.emissiveTexture.index, source.emissiveTexture.texCoord,
-                                        source.emissiveTexture.extensions, TextureColorSpace::Srgb, where + "/emissiveTexture");
+                                        source.emissiveTexture.extensions, colorSpaceOf(&Material::emissionTexture), where + "/emissiveTexture");
         if (source.occlusionTexture.index >= 0 && !warnedOcclusion_) {
             warnedOcclusion_ = true;
             warn(where + "/occlusionTexture", "ignored: occlusion means nothing to a path tracer, which traces the occlusion");

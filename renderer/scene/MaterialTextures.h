@@ -26,6 +26,14 @@ inline const MaterialTextureInput kMaterialTextureInputs[] = {
     {"emission", "emission", &Material::emissionTexture, TextureColorSpace::Srgb},
 };
 
+// How the texels of the input in `slot` are read: the one place that says colours are sRGB and
+// data linear, for every loader (scene JSON, MTL, glTF) and the editors.
+inline TextureColorSpace colorSpaceOf(TextureSlot Material::*slot) {
+    for (const MaterialTextureInput& input : kMaterialTextureInputs)
+        if (input.slot == slot) return input.colorSpace;
+    return TextureColorSpace::Linear;
+}
+
 // Gives the input the image in `file` (a new scene texture, appended), or no texture when `file`
 // is empty; the slot's scale and offset are kept. Only principled materials read textures: the
 // callers make a material principled first (the panel's type change). Throws SceneError naming

@@ -10,6 +10,7 @@
 #include "GltfLoader.h"
 #include "InputFile.h"
 #include "MaterialSchema.h"
+#include "MaterialTextures.h"
 #include "TextureLoader.h"
 #include "ObjLoader.h"
 #include "SceneRanges.h"
@@ -643,9 +644,9 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     auto readRadiance = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kRadiance); };
     auto readUnit = [](const Json& v, const Pointer& p) { return readInRange(v, p, ranges::kRoughness); };
     // Any input may be textured but an emitter's radiance (its light table entry needs one value).
-    auto textured = [&](const char* key, auto read, auto one, TextureColorSpace space, TextureSlot Material::*slot) {
+    auto textured = [&](const char* key, auto read, auto one, TextureSlot Material::*slot) {
         const Json& input = value.at(key);
-        auto factor = readTexturedInput(input, at / key, read, one, space, index, slot, textures);
+        auto factor = readTexturedInput(input, at / key, read, one, colorSpaceOf(slot), index, slot, textures);
         readTextureTransform(input, at / key, material.*slot);
         return factor;
     };
@@ -655,13 +656,13 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     if (radiance) {
         material.radiance = schema->radianceRequired
                                 ? readRadiance(*radiance, at / schema->radianceKey)
-                                : textured(schema->radianceKey, readRadiance, glm::vec3(1.0f), TextureColorSpace::Srgb,
+                                : textured(schema->radianceKey, readRadiance, glm::vec3(1.0f),
                                            &Material::emissionTexture);
     }
     if (schema->colorKey) {
         const Json* color = schema->colorDefault ? optionalKey(value, schema->colorKey)
                                                  : &requireKey(value, at, schema->colorKey);
-        material.color = color ? textured(schema->colorKey, readColor, glm::vec3(1.0f), TextureColorSpace::Srgb,
+        material.color = color ? textured(schema->colorKey, readColor, glm::vec3(1.0f),
                                           &Material::baseColorTexture)
                                : *schema->colorDefault;
     }
@@ -670,14 +671,14 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     }
     if (schema->hasRoughness) {
         if (optionalKey(value, "roughness"))
-            material.roughness = textured("roughness", readUnit, 1.0f, TextureColorSpace::Linear, &Material::roughnessTexture);
+            material.roughness = textured("roughness", readUnit, 1.0f, &Material::roughnessTexture);
     }
     if (principled) {
         // glTF's defaults: fully metallic and rough when the file says nothing would surprise in
         // a hand-written scene, so ours are a smooth-ish dielectric: metallic 0, roughness 0.5.
         if (!optionalKey(value, "roughness")) material.roughness = 0.5f;
         if (optionalKey(value, "metallic"))
-            material.metallic = textured("metallic", readUnit, 1.0f, TextureColorSpace::Linear, &Material::metallicTexture);
+            material.metallic = textured("metallic", readUnit, 1.0f, &Material::metallicTexture);
         if (const Json* t = optionalKey(value, "transmission")) material.transmission = readUnit(*t, at / "transmission");
         if (const Json* a = optionalKey(value, "alpha")) material.alpha = readUnit(*a, at / "alpha");
         if (const Json* c = optionalKey(value, "alpha_cutoff")) material.alphaCutoff = readUnit(*c, at / "alpha_cutoff");
@@ -1042,11 +1043,11 @@ Material principledFromMeshFile(const MeshMaterial& source, float roughnessFromN
     material.alphaMode = material.alpha < 1.0f ? AlphaMode::Blend : AlphaMode::Opaque;
     if (source.illum == 4 || source.illum == 6 || source.illum == 7) material.transmission = 1.0f;
     material.normalScale = source.normalMap.bumpMultiplier;
-    material.baseColorTexture = textureSlotFromMap(source.diffuseMap, TextureColorSpace::Srgb, scene);
-    material.emissionTexture = textureSlotFromMap(source.emissionMap, TextureColorSpace::Srgb, scene);
-    material.roughnessTexture = textureSlotFromMap(source.roughnessMap, TextureColorSpace::Linear, scene);
-    material.metallicTexture = textureSlotFromMap(source.metallicMap, TextureColorSpace::Linear, scene);
-    material.normalTexture = textureSlotFromMap(source.normalMap, TextureColorSpace::Linear, scene);
+    material.baseColorTexture = textureSlotFromMap(source.diffuseMap, colorSpaceOf(&Material::baseColorTexture), scene);
+    material.emissionTexture = textureSlotFromMap(source.emissionMap, colorSpaceOf(&Material::emissionTexture), scene);
+    material.roughnessTexture = textureSlotFromMap(source.roughnessMap, colorSpaceOf(&Material::roughnessTexture), scene);
+    material.metallicTexture = textureSlotFromMap(source.metallicMap, colorSpaceOf(&Material::metallicTexture), scene);
+    material.normalTexture = textureSlotFromMap(source.normalMap, colorSpaceOf(&Material::normalTexture), scene);
     return material;
 }
 
