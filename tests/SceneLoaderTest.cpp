@@ -1,6 +1,7 @@
 // Scene loading: the shipped Cornell box reads back as the reference describes it, and every kind
 // of bad input is rejected with a one-line message that names the file and the place in it.
 
+#include "LightSchema.h"
 #include "LimitedChild.h"
 #include "Scene.h"
 #include "SceneLoader.h"
@@ -811,10 +812,34 @@ TEST(SceneLoader, SpotAnglesMayBeGivenOneAtATime) {
     EXPECT_EQ(scene.lights[3].outerAngleDeg, 80.0f);
 }
 
+TEST(LightSchema, TableFollowsLightTypeOrder) {
+    for (LightType type : {LightType::Point, LightType::Spot, LightType::Directional}) {
+        EXPECT_EQ(lightSchema(type).type, type);
+        EXPECT_EQ(findLightSchema(lightSchema(type).name), &lightSchema(type));
+    }
+    EXPECT_EQ(findLightSchema("area"), nullptr);
+}
+
+// A directional light has a direction and an irradiance, and no position.
+TEST(SceneLoader, ReadsDirectionalLights) {
+    Scene scene = parseScene(
+        validSceneWithLights(R"({ "name": "sun", "type": "directional", "direction": [0, -2, 0], "intensity": [3, 2, 1] })"),
+        kSource);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Directional);
+    EXPECT_EQ(scene.lights[0].direction, glm::vec3(0.0f, -1.0f, 0.0f));
+    EXPECT_EQ(scene.lights[0].intensity, glm::vec3(3.0f, 2.0f, 1.0f));
+    expectPlaceError(errorFrom(validSceneWithLights(
+                         R"({ "type": "directional", "position": [0, 1, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1] })")),
+                     "/lights/0/position", "unknown key (expected one of: name, type, direction, intensity)");
+    expectPlaceError(errorFrom(validSceneWithLights(R"({ "type": "directional", "intensity": [1, 1, 1] })")),
+                     "/lights/0/direction", "missing required key");
+}
+
 TEST(SceneLoader, RejectsUnknownLightType) {
     std::string message =
         errorFrom(validSceneWithLights(R"({ "type": "area", "position": [0, 1, 0], "intensity": [1, 1, 1] })"));
-    EXPECT_EQ(message, std::string(kSource) + ": /lights/0/type: unknown light type \"area\" (expected point or spot)");
+    EXPECT_EQ(message, std::string(kSource) + ": /lights/0/type: unknown light type \"area\" (expected point, spot or directional)");
 }
 
 TEST(SceneLoader, RejectsBadLights) {

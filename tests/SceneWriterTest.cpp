@@ -434,6 +434,25 @@ TEST(SceneWriter, EmissionDisksAndLightsRoundTripExactly) {
     EXPECT_EQ(sceneToJson(written), sceneToJson(scene));
 }
 
+TEST(SceneWriter, DirectionalLightsRoundTripWithoutAPosition) {
+    Scene scene = parseScene(kLitScene, "lit.json");
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.position = glm::vec3(7.0f); // meaningless for a directional light, so not written
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    sun.intensity = glm::vec3(2.0f, 1.5f, 1.0f);
+    scene.lights.push_back(sun);
+    std::string text = sceneToJson(scene);
+    EXPECT_NE(text.find("\"name\": \"sun\",\n      \"type\": \"directional\",\n      \"direction\": ["), std::string::npos) << text;
+    EXPECT_EQ(text.find("[7, 7, 7]"), std::string::npos) << text;
+    Scene written = roundTrip(scene);
+    ASSERT_EQ(written.lights.size(), scene.lights.size());
+    EXPECT_EQ(written.lights.back().type, LightType::Directional);
+    EXPECT_EQ(written.lights.back().direction, sun.direction);
+    EXPECT_EQ(written.lights.back().intensity, sun.intensity);
+}
+
 TEST(SceneWriter, WritesEmissionOnlyWhenItGlows) {
     Scene scene = parseScene(kLitScene, "lit.json");
     std::string text = sceneToJson(scene);

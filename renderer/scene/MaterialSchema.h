@@ -3,11 +3,13 @@
 // panel all read this one table, so a type cannot gain a key in one of them and not the others.
 
 #include "Scene.h"
+#include "SchemaKeys.h"
 
 #include <glm/glm.hpp>
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace ptview {
 
@@ -48,6 +50,31 @@ inline const MaterialSchema* findMaterialSchema(std::string_view name) {
     for (const MaterialSchema& schema : kMaterialSchemas)
         if (name == schema.name) return &schema;
     return nullptr;
+}
+
+// The glTF metallic-roughness inputs only the principled model has, after its emission.
+inline const char* const kPrincipledOnlyKeys[] = {"metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff",
+                                                  "emission_strength"};
+
+// Every key a material of this type may have, in the order the loader lists them.
+inline std::vector<const char*> materialKeys(const MaterialSchema& schema) {
+    std::vector<const char*> keys = {"type"};
+    if (schema.radianceRequired) keys.push_back(schema.radianceKey);
+    if (schema.colorKey) keys.push_back(schema.colorKey);
+    if (schema.hasIor) keys.push_back("ior");
+    if (schema.hasRoughness) keys.push_back("roughness");
+    if (!schema.radianceRequired) keys.push_back(schema.radianceKey);
+    if (schema.type == MaterialType::Principled)
+        keys.insert(keys.end(), std::begin(kPrincipledOnlyKeys), std::end(kPrincipledOnlyKeys));
+    return keys;
+}
+
+// Every key some material type has, each once, in the order of first appearance in the table:
+// the keys allowed while a material's type is not known.
+inline std::vector<const char*> anyMaterialKeys() {
+    std::vector<const char*> keys;
+    for (const MaterialSchema& schema : kMaterialSchemas) appendNewKeys(keys, materialKeys(schema));
+    return keys;
 }
 
 } // namespace ptview

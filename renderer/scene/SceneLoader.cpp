@@ -14,6 +14,7 @@
 #include "TextureLoader.h"
 #include "ObjLoader.h"
 #include "SceneRanges.h"
+#include "LightSchema.h"
 #include "ShapeSchema.h"
 
 #include <nlohmann/json.hpp>
@@ -472,22 +473,18 @@ glm::ivec2 readResolution(const Json& value, const Pointer& at) {
     return resolution;
 }
 
-// Which keys are allowed depends on "type", so it is read first; but when it is missing, a
-// misspelt "typ" is the likely cause and is worth naming, so unknown keys are reported first.
 void checkKeys(const Json& object, const Pointer& at, std::initializer_list<const char*> allowed) {
     checkKeys<std::initializer_list<const char*>>(object, at, allowed);
 }
 
-template <typename Names>
-void requireType(const Json& object, const Pointer& at, const Names& anyType) {
+// Which keys are allowed depends on "type", so it is read first; but when it is missing, a
+// misspelt "typ" is the likely cause and is worth naming, so unknown keys (of any type) are
+// reported first.
+void requireType(const Json& object, const Pointer& at, const std::vector<const char*>& anyTypeKeys) {
     if (!object.contains("type")) {
-        checkKeys<Names>(object, at, anyType);
+        checkKeys(object, at, anyTypeKeys);
         fail(at / "type", "missing required key");
     }
-}
-
-void requireType(const Json& object, const Pointer& at, std::initializer_list<const char*> anyType) {
-    requireType<std::initializer_list<const char*>>(object, at, anyType);
 }
 
 // --- Scene parts --------------------------------------------------------------------------------
@@ -615,9 +612,7 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     requireObject(value, at);
     Material material;
     material.name = name;
-    requireType(value, at,
-                {"type", "albedo", "radiance", "transmittance", "reflectance", "tint", "base_color", "ior", "roughness",
-                 "emission", "metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff", "emission_strength"});
+    requireType(value, at, anyMaterialKeys());
     std::string type = readString(value.at("type"), at / "type");
     const MaterialSchema* schema = findMaterialSchema(type);
     if (!schema) {
@@ -628,17 +623,7 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     }
     material.type = schema->type;
     const bool principled = schema->type == MaterialType::Principled;
-
-    std::vector<const char*> keys = {"type"};
-    if (schema->radianceRequired) keys.push_back(schema->radianceKey);
-    if (schema->colorKey) keys.push_back(schema->colorKey);
-    if (schema->hasIor) keys.push_back("ior");
-    if (schema->hasRoughness) keys.push_back("roughness");
-    if (!schema->radianceRequired) keys.push_back(schema->radianceKey);
-    if (principled)
-        for (const char* key : {"metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff", "emission_strength"})
-            keys.push_back(key);
-    checkKeys(value, at, keys);
+    checkKeys(value, at, materialKeys(*schema));
 
     auto readColor = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kColor); };
     auto readRadiance = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kRadiance); };
@@ -797,7 +782,7 @@ Shape readShape(const Json& value, const Pointer& at, std::size_t index,
     requireType(value, at, anyShapeKeys());
     std::string type = readString(value.at("type"), at / "type");
     const ShapeSchema* schema = findShapeSchema(type);
-    if (!schema) fail(at / "type", "unknown shape type \"" + type + "\" (expected " + shapeTypeList() + ")");
+    if (!schema) fail(at / "type", "unknown shape type \"" + type + "\" (expected " + schemaNameList(kShapeSchemas) + ")");
     shape.type = schema->type;
     checkKeys(value, at, shapeKeys(*schema));
 
@@ -880,26 +865,22 @@ std::string defaultText(float value) {
 Light readLight(const Json& value, const Pointer& at, std::size_t index) {
     requireObject(value, at);
     Light light;
-    requireType(value, at,
-                {"name", "type", "position", "direction", "intensity", "inner_deg", "outer_deg"});
+    requireType(value, at, anyLightKeys());
     std::string type = readString(value.at("type"), at / "type");
-    if (type == "point") {
-        light.type = LightType::Point;
-        checkKeys(value, at, {"name", "type", "position", "intensity"});
-    } else if (type == "spot") {
-        light.type = LightType::Spot;
-        checkKeys(value, at,
-                  {"name", "type", "position", "direction", "intensity", "inner_deg", "outer_deg"});
-    } else {
-        fail(at / "type", "unknown light type \"" + type + "\" (expected point or spot)");
-    }
+    const LightSchema* schema = findLightSchema(type);
+    if (!schema) fail(at / "type", "unknown light type \"" + type + "\" (expected " + schemaNameList(kLightSchemas) + ")");
+    light.type = schema->type;
+    checkKeys(value, at, lightKeys(*schema));
 
     const Json* name = optionalKey(value, "name");
     light.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
-    light.position = readPosition(requireKey(value, at, "position"), at / "position");
+    if (light.type != LightType::Directional)
+        light.position = readPosition(requireKey(value, at, "position"), at / "position");
+    // A directional light's "intensity" is the irradiance it gives a surface facing it (Scene.h).
     light.intensity = readVec3InRange(requireKey(value, at, "intensity"), at / "intensity", ranges::kIntensity);
-    if (light.type == LightType::Spot) {
+    if (light.type != LightType::Point)
         light.direction = readDirection(requireKey(value, at, "direction"), at / "direction");
+    if (light.type == LightType::Spot) {
         const Json* inner = optionalKey(value, "inner_deg");
         const Json* outer = optionalKey(value, "outer_deg");
         if (inner) light.innerAngleDeg = readInRange(*inner, at / "inner_deg", ranges::kSpotConeAngle);

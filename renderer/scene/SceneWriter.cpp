@@ -11,6 +11,7 @@
 #include "MaterialSchema.h"
 #include "SceneLoader.h"
 #include "SceneRanges.h"
+#include "LightSchema.h"
 #include "ShapeSchema.h"
 
 #include <nlohmann/json.hpp>
@@ -316,9 +317,9 @@ Json shapeJson(const Shape& shape, const Scene& scene, const std::string& pointe
 Json lightJson(const Light& light, const std::string& pointer) {
     Json json;
     json["name"] = light.name;
-    json["type"] = light.type == LightType::Spot ? "spot" : "point";
-    json["position"] = vec3(light.position);
-    if (light.type == LightType::Spot) json["direction"] = vec3(light.direction);
+    json["type"] = lightSchema(light.type).name;
+    if (light.type != LightType::Directional) json["position"] = vec3(light.position);
+    if (light.type != LightType::Point) json["direction"] = vec3(light.direction);
     json["intensity"] = vec3InRange(light.intensity, ranges::kIntensity, pointer + "/intensity");
     if (light.type == LightType::Spot) {
         json["inner_deg"] = numberInRange(light.innerAngleDeg, ranges::kSpotConeAngle, pointer + "/inner_deg");

@@ -4,10 +4,9 @@
 // key or a type in one of them and not the other.
 
 #include "Scene.h"
+#include "SchemaKeys.h"
 
-#include <algorithm>
 #include <iterator>
-#include <string>
 #include <string_view>
 #include <vector>
 
@@ -56,22 +55,9 @@ inline std::vector<const char*> shapeKeys(const ShapeSchema& schema) {
 // keys allowed while a shape's type is not known.
 inline std::vector<const char*> anyShapeKeys() {
     std::vector<const char*> keys(std::begin(kShapeLeadingKeys), std::end(kShapeLeadingKeys));
-    for (const ShapeSchema& schema : kShapeSchemas)
-        for (const char* key : schema.keys)
-            if (std::none_of(keys.begin(), keys.end(), [key](const char* known) { return std::string_view(known) == key; }))
-                keys.push_back(key);
+    for (const ShapeSchema& schema : kShapeSchemas) appendNewKeys(keys, schema.keys);
     keys.push_back(kShapeTrailingKey);
     return keys;
-}
-
-// "sphere, quad, box, disk or mesh", for the message about an unknown type.
-inline std::string shapeTypeList() {
-    std::string list;
-    for (std::size_t i = 0; i < std::size(kShapeSchemas); ++i) {
-        if (i > 0) list += i + 1 < std::size(kShapeSchemas) ? ", " : " or ";
-        list += kShapeSchemas[i].name;
-    }
-    return list;
 }
 
 } // namespace ptview
