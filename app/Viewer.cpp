@@ -129,6 +129,11 @@ public:
     int run(std::optional<ScriptRunner>& script);
 
 private:
+    bool waitForEvents(bool busy);
+    double timeFrame();
+    void updateSession();
+    void drawImage();
+    bool frameScreenshotDone(int frame, Clock::time_point start);
     void handleKeys();
     void answerUnsavedEdits(const std::vector<int>& keys);
     void updateTitle();
@@ -155,6 +160,7 @@ private:
     double frameSeconds_ = 0.0;    // smoothed time between displayed frames
     double overheadSeconds_ = 0.0; // smoothed part of a frame that is not path tracing
     double lastTracingSeconds_ = 0.0;
+    Clock::time_point lastFrame_{};
     std::string title_;
     Clock::time_point lastTitleUpdate_{};
 };
@@ -402,39 +408,94 @@ void ViewerWindow::drawUi() {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
+// The frame's phases, in order: events, timing, input and model, image, UI, hand-off.
+
+// Waits for input (briefly when idle: paused or target reached, so files are still checked) and
+// takes the close button like Esc. False: nothing to draw this time (minimized, or quitting).
+bool ViewerWindow::waitForEvents(bool busy) {
+    if (busy) glfwPollEvents(); else glfwWaitEventsTimeout(0.25);
+    if (glfwWindowShouldClose(window_)) { // the close button: asks first, like Esc
+        glfwSetWindowShouldClose(window_, GLFW_FALSE);
+        panelState_.unsavedEdits.request(session_, UnsavedEditsPrompt::Action::Quit);
+        if (panelState_.unsavedEdits.quitConfirmed()) return false;
+    }
+    glfwGetFramebufferSize(window_, &framebufferSize_.x, &framebufferSize_.y);
+    if (framebufferSize_.x <= 0 || framebufferSize_.y <= 0) { // minimized
+        glfwWaitEvents();
+        return false;
+    }
+    if (events(window_).contentScaleChanged) {
+        applyContentScale(events(window_).contentScale);
+        sidebarWidth_ = kSidebarWidth * events(window_).contentScale;
+        events(window_).contentScaleChanged = false;
+    }
+    return true;
+}
+
+// The time since the last frame, smoothed into the frame time and the part of it that is not
+// path tracing (what the next frame's tracing budget leaves room for). Returns the raw seconds.
+double ViewerWindow::timeFrame() {
+    Clock::time_point now = Clock::now();
+    double seconds = std::chrono::duration<double>(now - lastFrame_).count();
+    lastFrame_ = now;
+    frameSeconds_ = frameSeconds_ == 0.0 ? seconds : 0.9 * frameSeconds_ + 0.1 * seconds;
+    if (lastTracingSeconds_ > 0.0) { // an idle frame's wait for events is no overhead
+        double overhead = std::max(0.0, seconds - lastTracingSeconds_);
+        overheadSeconds_ = overheadSeconds_ == 0.0 ? overhead : 0.9 * overheadSeconds_ + 0.1 * overhead;
+    }
+    lastTracingSeconds_ = 0.0;
+    return seconds;
+}
+
+// The scene and settings react to what changed (edits, files on disk); a shader error of the
+// split view's second program turns the split view off rather than ending the viewer.
+void ViewerWindow::updateSession() {
+    session_.pollFiles();
+    try {
+        session_.update();
+    } catch (const ShaderError& e) {
+        session_.model().shaderError = e.what();
+        session_.model().compare.enabled = false;
+    }
+}
+
+// Traces within the frame's budget and displays the image (or the warp view, while the path
+// tracer pauses), beside the sidebar rather than under it.
+void ViewerWindow::drawImage() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, framebufferSize_.x, framebufferSize_.y);
+    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (warpVisualizer_.active()) {
+        PixelRect area = session_.imageArea();
+        warpVisualizer_.draw(area.origin, area.size, framebufferSize_, framebufferScale_);
+        return;
+    }
+    if (session_.accumulating())
+        lastTracingSeconds_ = session_.renderFrame(std::max(kMinTracingSeconds, kFrameSeconds - overheadSeconds_));
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    session_.display();
+}
+
+// `--frames N --screenshot PATH`: after N frames, once something is shown (a slow GPU spreads a
+// sample over several frames), writes the window and ends the viewer (true).
+bool ViewerWindow::frameScreenshotDone(int frame, Clock::time_point start) {
+    bool somethingShown = warpVisualizer_.active() || session_.stats(ViewerSession::Side::Left).samples > 0;
+    if (options_.frames <= 0 || frame < options_.frames || !somethingShown) return false;
+    writePng(options_.screenshotPath, readWindow(framebufferSize_));
+    double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp) in %.2f s, %.1f ms per frame\n",
+                 options_.screenshotPath.c_str(), frame, session_.stats(ViewerSession::Side::Left).samples, elapsed,
+                 elapsed / frame * 1e3);
+    return true;
+}
+
 int ViewerWindow::run(std::optional<ScriptRunner>& script) {
-    Clock::time_point lastFrame = Clock::now();
-    const Clock::time_point start = lastFrame;
+    const Clock::time_point start = lastFrame_ = Clock::now();
     int frame = 0;
     while (!panelState_.unsavedEdits.quitConfirmed()) {
-        // Idle (paused, target reached) the loop sleeps until input, but still checks files.
-        bool busy = session_.accumulating() || (script && !script->quitRequested());
-        if (busy) glfwPollEvents(); else glfwWaitEventsTimeout(0.25);
-        if (glfwWindowShouldClose(window_)) { // the close button: asks first, like Esc
-            glfwSetWindowShouldClose(window_, GLFW_FALSE);
-            panelState_.unsavedEdits.request(session_, UnsavedEditsPrompt::Action::Quit);
-            if (panelState_.unsavedEdits.quitConfirmed()) break;
-        }
-
-        glfwGetFramebufferSize(window_, &framebufferSize_.x, &framebufferSize_.y);
-        if (framebufferSize_.x <= 0 || framebufferSize_.y <= 0) { // minimized
-            glfwWaitEvents();
-            continue;
-        }
-        if (events(window_).contentScaleChanged) {
-            applyContentScale(events(window_).contentScale);
-            sidebarWidth_ = kSidebarWidth * events(window_).contentScale;
-            events(window_).contentScaleChanged = false;
-        }
-        Clock::time_point now = Clock::now();
-        double seconds = std::chrono::duration<double>(now - lastFrame).count();
-        lastFrame = now;
-        frameSeconds_ = frameSeconds_ == 0.0 ? seconds : 0.9 * frameSeconds_ + 0.1 * seconds;
-        if (lastTracingSeconds_ > 0.0) { // an idle frame's wait for events is no overhead
-            double overhead = std::max(0.0, seconds - lastTracingSeconds_);
-            overheadSeconds_ = overheadSeconds_ == 0.0 ? overhead : 0.9 * overheadSeconds_ + 0.1 * overhead;
-        }
-        lastTracingSeconds_ = 0.0;
+        if (!waitForEvents(session_.accumulating() || (script && !script->quitRequested()))) continue;
+        double seconds = timeFrame();
 
         handleKeys();
         if (panelState_.unsavedEdits.quitConfirmed()) break;
@@ -444,27 +505,9 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
             script->step(session_, panelState_);
             if (script->quitRequested()) break;
         }
-        session_.pollFiles();
-        try {
-            session_.update();
-        } catch (const ShaderError& e) { // the split view's second program
-            session_.model().shaderError = e.what();
-            session_.model().compare.enabled = false;
-        }
+        updateSession();
 
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, framebufferSize_.x, framebufferSize_.y);
-        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        if (warpVisualizer_.active()) {
-            PixelRect area = session_.imageArea(); // beside the sidebar, not under it
-            warpVisualizer_.draw(area.origin, area.size, framebufferSize_, framebufferScale_); // the path tracer pauses meanwhile
-        } else {
-            if (session_.accumulating())
-                lastTracingSeconds_ = session_.renderFrame(std::max(kMinTracingSeconds, kFrameSeconds - overheadSeconds_));
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            session_.display();
-        }
+        drawImage();
         drawUi();
         updateTitle();
 
@@ -475,17 +518,7 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
             }
             script->frameDisplayed();
         }
-        ++frame;
-        // A slow GPU spreads a sample over several frames: the screenshot waits for the first.
-        bool somethingShown = warpVisualizer_.active() || session_.stats(ViewerSession::Side::Left).samples > 0;
-        if (options_.frames > 0 && frame >= options_.frames && somethingShown) {
-            writePng(options_.screenshotPath, readWindow(framebufferSize_));
-            double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-            std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp) in %.2f s, %.1f ms per frame\n",
-                         options_.screenshotPath.c_str(), frame, session_.stats(ViewerSession::Side::Left).samples,
-                         elapsed, elapsed / frame * 1e3);
-            break;
-        }
+        if (frameScreenshotDone(++frame, start)) break;
         glfwSwapBuffers(window_);
     }
     return script ? script->exitCode() : 0;
