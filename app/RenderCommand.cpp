@@ -103,7 +103,8 @@ int runRenderCommand(const RenderOptions& options) {
         if (options.outPath.empty()) return 0; // only the features or the shader were asked for
         allocating = "the image, size " + std::to_string(size.x) + "x" + std::to_string(size.y);
         tracer.setImageSize(size);
-        if (!options.program.backend) tracer.chooseBackend();
+        if (!options.program.backend)
+            std::fprintf(stderr, "ptview: backend auto: %s\n", tracer.chooseBackend().describe().c_str());
 
         // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample.
         ProgressReporter progress(options.scenePath, options.samplesPerPixel);

@@ -36,6 +36,7 @@ struct ViewerModel {
     RenderSettings settings;
     DisplaySettings display;
     Backend backend = Backend::Fragment; // how both views run (compute needs OpenGL 4.3)
+    std::string backendChoice;           // how `auto` chose it at start ("" when the user named one)
     float resolutionScale = 1.0f; // render size / image area size
     int maxSamplesPerFrame = 0;   // 0: as many as fit the frame's time budget
     bool paused = false;

@@ -64,7 +64,13 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     left_.tracer->setPreviewEnabled(true);
     left_.tracer->setScene(model_.scene, model_.environmentMap.get());
     left_.tracer->setSettings(settings);
-    model_.backend = program.backend ? *program.backend : left_.tracer->chooseBackend();
+    if (program.backend) {
+        model_.backend = *program.backend;
+    } else {
+        BackendChoice choice = left_.tracer->chooseBackend();
+        model_.backend = choice.backend;
+        model_.backendChoice = choice.describe();
+    }
     saveTarget_ = model_.fileScene.path.string();
     watchFiles();
 }

@@ -115,28 +115,57 @@ void PathTracer::setBackend(Backend backend) {
     restart();
 }
 
-Backend PathTracer::chooseBackend() {
+BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     if (!computeSupported()) {
         setBackend(Backend::Fragment);
-        return backend_;
+        return BackendChoice{};
     }
-    // A small image keeps this quick; a warm-up pass keeps compilation and first-use costs out.
-    glm::ivec2 size = accumulator_.size();
-    double seconds[2] = {0.0, 0.0};
-    for (Backend candidate : {Backend::Fragment, Backend::Compute}) {
+    const std::string device = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", " +
+                               reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    const std::string program = programKey_.features.describe() + integratorName(programKey_.integrator) + " " +
+                                samplerModeName(programKey_.sampler) + " " + debugViewName(programKey_.debugView);
+    const std::string key = backendCacheKey(device, program);
+    std::optional<BackendChoice> choice = cache.find(key);
+    if (!choice) {
+        choice = decideBackend(timeBackends());
+        cache.store(key, *choice);
+    }
+    setBackend(choice->backend);
+    restart();
+    return *choice;
+}
+
+// Alternating rounds (fragment first, then compute first, ...) of the same passes at 128x128, a
+// warm-up pass of each first so that compiling and first use stay out of the timings.
+std::vector<BackendTiming> PathTracer::timeBackends() {
+    constexpr int kRounds = 5;
+    constexpr int kPassesPerRound = 2;
+    const glm::ivec2 size = accumulator_.size();
+    const Backend previous = backend_;
+    auto timePasses = [this](Backend candidate) {
         setBackend(candidate);
         setImageSize({128, 128});
-        renderSample();
         glFinish();
         auto start = std::chrono::steady_clock::now();
-        for (int i = 0; i < 3; ++i) renderSample();
+        for (int i = 0; i < kPassesPerRound; ++i) renderSample();
         glFinish();
-        seconds[static_cast<int>(candidate)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    timePasses(Backend::Fragment);
+    timePasses(Backend::Compute);
+    std::vector<BackendTiming> rounds(kRounds);
+    for (int round = 0; round < kRounds; ++round) {
+        if (round % 2 == 0) {
+            rounds[round].fragmentSeconds = timePasses(Backend::Fragment);
+            rounds[round].computeSeconds = timePasses(Backend::Compute);
+        } else {
+            rounds[round].computeSeconds = timePasses(Backend::Compute);
+            rounds[round].fragmentSeconds = timePasses(Backend::Fragment);
+        }
     }
-    setBackend(seconds[1] < seconds[0] ? Backend::Compute : Backend::Fragment);
+    setBackend(previous);
     if (size.x > 0) setImageSize(size);
-    restart();
-    return backend_;
+    return rounds;
 }
 
 PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions options)

@@ -4,6 +4,7 @@
 // headless renderer and the viewer; it needs a current OpenGL 4.1+ core context.
 
 #include "Accumulator.h"
+#include "BackendChoice.h"
 #include "Backend.h"
 #include "GlObjects.h"
 #include "EnvironmentMap.h"
@@ -52,9 +53,11 @@ public:
     // the context lacks OpenGL 4.3.
     void setBackend(Backend backend);
     static bool computeSupported();
-    // Renders a few passes of the current scene at a small size with each backend and keeps the
-    // faster: what the device measures, not what its OpenGL version suggests. Returns it.
-    Backend chooseBackend();
+    // The backend `auto` runs for the current program on this device: the one the cache has, else
+    // measured (alternating timed rounds of the current scene at 128x128 with each backend,
+    // decided by decideBackend) and then cached. What the device measures, not what its OpenGL
+    // version suggests; the same on every run. Sets it and returns how it was chosen.
+    BackendChoice chooseBackend(const BackendCache& cache = BackendCache());
 
     // Each of these restarts accumulation.
     // Reads scene.environmentMap unless the caller already has (environmentMap, to report a bad
@@ -115,6 +118,7 @@ public:
     ImageRgba8 readToneMapped(const DisplaySettings& settings) const;
 
 private:
+    std::vector<BackendTiming> timeBackends();
     struct DisplayProgram {
         std::unique_ptr<GlProgram> program;
         GLint invSampleCount = -1;
