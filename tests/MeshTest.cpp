@@ -8,6 +8,7 @@
 #include "PathTracer.h"
 #include "ProbePass.h"
 #include "SceneLoader.h"
+#include "GlslEnums.h"
 #include "ShaderAssembler.h"
 #include "TriangleIntersect.h"
 
@@ -109,6 +110,7 @@ public:
     SceneProbe() {
         testing::glContext();
         ShaderAssembler assembler(PTVIEW_SHADER_DIR);
+        addGlslEnums(assembler); // material.glsl's type constants
         program_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"),
                                                assembler.assemble(PTVIEW_TEST_SHADER_DIR "/scene_probe.frag"));
         program_->bindSamplerUnit("uOrigins", 0);
