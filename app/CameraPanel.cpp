@@ -76,6 +76,18 @@ void drawCameraPanel(ViewerSession& session) {
     itemTooltip("the point the camera orbits and looks at");
     ImGui::Text("distance %.3g m", static_cast<double>(distance));
 
+    // The lens. Opening it from 0 (or closing it) compiles the program with (without) the lens once.
+    const SceneRange& aperture = ranges::kApertureRadius;
+    changed |= ImGui::SliderFloat("aperture radius", &edited.apertureRadius, aperture.panelLo, aperture.panelHi, "%.4f m",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    itemTooltip("radius of the thin lens; 0 is a pinhole (everything sharp)");
+    ImGui::BeginDisabled(edited.apertureRadius == 0.0f);
+    const SceneRange& focus = ranges::kFocusDistance;
+    changed |= ImGui::SliderFloat("focus distance", &edited.focusDistance, focus.panelLo, focus.panelHi, "%.3f m",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::EndDisabled();
+    itemTooltip("distance along the view direction to the plane in focus;\nCtrl+click the image to focus on what is there");
+
     if (ImGui::Button("Reset camera")) session.resetCamera();
     itemTooltip("back to the scene file's camera (F)");
     ImGui::SameLine();

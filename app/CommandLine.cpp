@@ -41,6 +41,16 @@ const CLI::Validator kFiniteNumber(
     },
     "NUMBER");
 
+// A number the scene model holds: the range the loader applies (SceneRanges.h), to the float stored.
+CLI::Validator inSceneRange(const SceneRange& range) {
+    return CLI::Validator(
+        [&range](std::string& text) -> std::string {
+            if (range.contains(static_cast<float>(std::strtod(text.c_str(), nullptr)))) return {};
+            return "the " + std::string(range.quantity) + " must be " + range.text() + ", got " + text;
+        },
+        "NUMBER");
+}
+
 // An option that takes one of a fixed set of names; an unknown name is rejected with the list.
 template <typename Value>
 CLI::Option* addNamedOption(CLI::App& app, const std::string& flag, Value& value, const std::string& what,
@@ -88,6 +98,9 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     addNamedOption(app, "--view", settings.debugView, "view", debugViewNames().namesAndValues())
         ->description("view: radiance (the render), normals or albedo (of the first surface seen)")
         ->default_str("radiance");
+    app.add_option("--clamp", settings.radianceClamp,
+                   "firefly control (biased): scale each path vertex's contribution down to a largest component of VALUE")
+        ->check(kFiniteNumber)->check(CLI::PositiveNumber);
 }
 
 void addProgramOptions(CLI::App& app, ProgramOptions& program) {
@@ -182,13 +195,21 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
     CLI::App* command = app.add_subcommand("render", "render a scene headless (EGL, no window) to a file");
     command->add_option("scene", render.scenePath, "scene JSON")->required();
     command->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)");
-    command->add_option("--spp", render.samplesPerPixel, "samples per pixel")
-        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
+    command->add_option("--spp", render.samplesPerPixel, "samples per pixel (with --time: the most)")
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str()
+        ->each([&render](const std::string&) { render.samplesPerPixelGiven = true; });
     addSizeOption(*command, render.size, "image size WxH (default: the scene's resolution)");
     addRenderSettings(*command, render.settings, render.display);
     addProgramOptions(*command, render.program);
     command->add_option("--dump-shader", render.dumpShaderPath, "write the exact GLSL of the path-tracing program to FILE");
     command->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
+    command->add_option("--time", render.timeLimitSeconds,
+                        "stop at the first whole pass after SECONDS of rendering (--spp is still the most)")
+        ->check(kFiniteNumber)->check(CLI::Range(0.0, 1e7));
+    command->add_option("--aperture-radius", render.apertureRadius, "thin-lens aperture radius in metres (0: a pinhole); overrides the scene's")
+        ->check(kFiniteNumber)->check(inSceneRange(ranges::kApertureRadius));
+    command->add_option("--focus-distance", render.focusDistance, "distance along the view direction to the plane in focus, metres; overrides the scene's")
+        ->check(kFiniteNumber)->check(inSceneRange(ranges::kFocusDistance));
     return command;
 }
 
@@ -241,7 +262,7 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeT
     command->add_option("--reference-depth", converge.referenceDepth,
                         "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
         ->transform(kDecimalInteger)->check(CLI::Range(0, 1024));
-    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH, comma-separated")->capture_default_str();
+    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE], comma-separated (clamp: biased firefly control, as --clamp)")->capture_default_str();
     command->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
     command->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")

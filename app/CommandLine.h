@@ -28,12 +28,16 @@ struct RenderOptions {
     std::string scenePath;
     std::string outPath;            // .png (tone mapped, 8-bit sRGB-like gamma 2.2) or .pfm (linear)
     int samplesPerPixel = 256;
+    bool samplesPerPixelGiven = false; // --spp typed: with --time, the most to render; else no bound
     std::optional<glm::ivec2> size; // default: the scene camera's resolution
     RenderSettings settings;
     DisplaySettings display;
     ProgramOptions program;
     std::string dumpShaderPath; // --dump-shader: the exact GLSL compiled
     bool printFeatures = false; // --print-features
+    std::optional<double> timeLimitSeconds;  // --time: stop at the first whole pass after it (--spp still bounds)
+    std::optional<float> apertureRadius;     // --aperture-radius: overrides the scene camera's
+    std::optional<float> focusDistance;      // --focus-distance: overrides the scene camera's
 };
 
 struct ViewerOptions {
@@ -63,6 +67,7 @@ struct ConvergeConfig {
     Integrator integrator = Integrator::Full;
     SamplerMode sampler = SamplerMode::Random;
     int maxDepth = 8;
+    std::optional<float> radianceClamp; // "/clamp=VALUE" after the depth: biased firefly control
 };
 
 struct ConvergeOptions {

@@ -45,8 +45,14 @@ struct ConfigResult {
 };
 
 std::string configName(const ConvergeConfig& config) {
-    return std::string(integratorName(config.integrator)) + "/" + samplerModeName(config.sampler) + "/" +
-           std::to_string(config.maxDepth);
+    std::string name = std::string(integratorName(config.integrator)) + "/" + samplerModeName(config.sampler) + "/" +
+                       std::to_string(config.maxDepth);
+    if (config.radianceClamp) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", static_cast<double>(*config.radianceClamp));
+        name += std::string("/clamp=") + value;
+    }
+    return name;
 }
 
 // Relative MSE the reference itself still carries (its own variance of the mean, relative as in
@@ -71,6 +77,7 @@ ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const Co
     settings.integrator = config.integrator;
     settings.sampler = config.sampler;
     settings.maxDepth = config.maxDepth;
+    settings.radianceClamp = config.radianceClamp;
     settings.seed = options.seed;
     settings.sampleBudget = static_cast<std::uint32_t>(options.maxSpp); // patterns complete at the last checkpoint
     tracer.setSettings(settings);
@@ -180,7 +187,7 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
     if (best)
         out << "\nMost efficient configuration that converges steadily: **" << configName(best->config)
             << "**. A slope near -1 means the MSE halves with each doubling of samples; a biased configuration "
-               "(too few bounces, an integrator that leaves out light) levels off however long it runs.\n";
+               "(too few bounces, an integrator that leaves out light, a radiance clamp) levels off however long it runs.\n";
     return out.str();
 }
 
@@ -238,16 +245,30 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         const std::string integrator = parts[0];
         const std::string sampler = parts.size() > 1 ? parts[1] : std::string();
         // Digits only: strtol would take "+8" or " 8".
-        const std::string depth = parts.size() == 3 && parts[2].find_first_not_of("0123456789") == std::string::npos &&
+        const std::string depth = (parts.size() == 3 || parts.size() == 4) &&
+                                          parts[2].find_first_not_of("0123456789") == std::string::npos &&
                                           parts[2].size() <= 4 ? parts[2] : std::string();
         ConvergeConfig config;
+        if (parts.size() == 4) {
+            // "clamp=VALUE": a positive finite decimal, all of the part.
+            const std::string prefix = "clamp=";
+            const std::string value = parts[3].rfind(prefix, 0) == 0 ? parts[3].substr(prefix.size()) : std::string();
+            char* valueEnd = nullptr;
+            double clamp = value.empty() || value.find_first_not_of("0123456789.eE+-") != std::string::npos
+                               ? 0.0 : std::strtod(value.c_str(), &valueEnd);
+            if (!(clamp > 0.0 && std::isfinite(clamp) && *valueEnd == '\0' && std::isfinite(static_cast<float>(clamp)))) {
+                error = "bad configuration \"" + item + "\": the fourth part must be clamp=VALUE, VALUE > 0, e.g. full/sobol/8/clamp=10";
+                return std::nullopt;
+            }
+            config.radianceClamp = static_cast<float>(clamp);
+        }
         std::optional<Integrator> knownIntegrator = integratorNames().parse(integrator);
         if (knownIntegrator) config.integrator = *knownIntegrator;
         std::optional<SamplerMode> mode = parseSamplerMode(sampler);
         char* end = nullptr;
         long maxDepth = depth.empty() ? -1 : std::strtol(depth.c_str(), &end, 10);
         if (!knownIntegrator || !mode || depth.empty() || *end != '\0' || maxDepth < 0 || maxDepth > 1024) {
-            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH, e.g. mis/sobol/8";
+            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE], e.g. mis/sobol/8";
             return std::nullopt;
         }
         config.sampler = *mode;

@@ -34,7 +34,7 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state);
 // Point and spot lights: intensity, colour, position, direction and cone; area lights listed
 // with their emission (edited in Materials).
 void drawLightsPanel(ViewerSession& session);
-// Field of view, eye, orbit target, reset.
+// Field of view, eye, orbit target, aperture and focus distance (Ctrl+click sets it), reset.
 void drawCameraPanel(ViewerSession& session);
 // Samples per pixel, ms per frame, samples per second, elapsed time, error estimate and its plot,
 // for each view of a comparison; and, with a reference image loaded, the true error and its plot.

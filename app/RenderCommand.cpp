@@ -30,13 +30,23 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// --spp's largest value, the bound of a render limited by --time alone.
+constexpr int kMaxSamplesPerPixel = 1 << 24;
+
+std::string secondsText(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds);
+    return text;
+}
+
 enum class OutputFormat { Png, Pfm };
 
 // Progress on stderr: one line rewritten in place on a terminal, a line every few seconds in a log.
 class ProgressReporter {
 public:
-    ProgressReporter(std::string label, int total) : label_(std::move(label)), total_(total), start_(Clock::now()),
-                                                     interactive_(::isatty(STDERR_FILENO) != 0) {}
+    ProgressReporter(std::string label, int total, std::optional<double> timeLimit = std::nullopt)
+        : label_(std::move(label)), total_(total), timeLimit_(timeLimit), start_(Clock::now()),
+          interactive_(::isatty(STDERR_FILENO) != 0) {}
 
     void update(int done) {
         double elapsed = secondsSince(start_);
@@ -44,6 +54,7 @@ public:
         if (elapsed < 1.0 || elapsed - lastReport_ < interval) return;
         lastReport_ = elapsed;
         double eta = done > 0 ? elapsed * (total_ - done) / done : 0.0;
+        if (timeLimit_) eta = std::min(eta, std::max(0.0, *timeLimit_ - elapsed)); // --time ends it first
         std::fprintf(stderr, "%s%s: %d/%d spp (%.0f%%), %.1f s elapsed, ETA %.1f s%s", interactive_ ? "\r" : "",
                      label_.c_str(), done, total_, 100.0 * done / total_, elapsed, eta, interactive_ ? "   " : "\n");
         reported_ = true;
@@ -58,6 +69,7 @@ public:
 private:
     std::string label_;
     int total_;
+    std::optional<double> timeLimit_;
     Clock::time_point start_;
     bool interactive_;
     double lastReport_ = -1e9; // the first report comes after one second
@@ -81,6 +93,8 @@ int runRenderCommand(const RenderOptions& options) {
     if (!input) return kExitBadInput;
     Scene scene = std::move(input->scene);
     glm::ivec2 size = options.size.value_or(scene.camera.resolution);
+    if (options.apertureRadius) scene.camera.apertureRadius = *options.apertureRadius;
+    if (options.focusDistance) scene.camera.focusDistance = *options.focusDistance;
 
     // What was being made when memory ran out, for the message.
     std::string allocating = "the scene " + options.scenePath + " on the GPU";
@@ -92,8 +106,10 @@ int runRenderCommand(const RenderOptions& options) {
         PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{options.program.allFeatures, options.program.backend});
         tracer.setScene(scene, input->environmentMapOrNull());
         if (options.printFeatures) std::printf("%s", tracer.features().describe().c_str());
+        // --time alone has no bound but the largest --spp; --spp with it is the most to render.
+        const int maxSamples = options.timeLimitSeconds && !options.samplesPerPixelGiven ? kMaxSamplesPerPixel : options.samplesPerPixel;
         RenderSettings settings = options.settings;
-        settings.sampleBudget = static_cast<std::uint32_t>(options.samplesPerPixel); // fully stratified at the end
+        settings.sampleBudget = static_cast<std::uint32_t>(maxSamples); // fully stratified at the end
         tracer.setSettings(settings);
         if (!options.dumpShaderPath.empty()) {
             writeFileAtomically(options.dumpShaderPath, tracer.pathTraceSource().source);
@@ -107,18 +123,36 @@ int runRenderCommand(const RenderOptions& options) {
             std::fprintf(stderr, "ptview: backend auto: %s\n", tracer.chooseBackend().describe().c_str());
 
         // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample.
-        ProgressReporter progress(options.scenePath, options.samplesPerPixel);
+        ProgressReporter progress(options.scenePath, maxSamples, options.timeLimitSeconds);
         int batch = 1;
-        while (tracer.sampleCount() < options.samplesPerPixel) {
+        bool outOfTime = false;
+        double secondsPerPass = 0.0; // of the last batch
+        // With --time, a batch ends near the limit: as many passes as the last batch's pace fits in
+        // the time left, and at least one, so the render stops at the first whole pass after it.
+        auto passesBefore = [&secondsPerPass](double secondsLeft) {
+            if (!(secondsPerPass > 0.0)) return 1;
+            return static_cast<int>(std::clamp(secondsLeft / secondsPerPass, 1.0, 1024.0));
+        };
+        while (tracer.sampleCount() < maxSamples && !outOfTime) {
             Clock::time_point batchStart = Clock::now();
-            int count = std::min(batch, options.samplesPerPixel - tracer.sampleCount());
+            int count = std::min(batch, maxSamples - tracer.sampleCount());
+            if (options.timeLimitSeconds) count = std::min(count, passesBefore(*options.timeLimitSeconds - progress.elapsed()));
             for (int i = 0; i < count; ++i) tracer.renderSample();
             glFinish();
-            if (secondsSince(batchStart) < 0.2 && batch < 1024) batch *= 2;
+            double batchSeconds = secondsSince(batchStart);
+            secondsPerPass = batchSeconds / count;
+            if (batchSeconds < 0.2 && batch < 1024) batch *= 2;
             progress.update(tracer.sampleCount());
+            outOfTime = options.timeLimitSeconds && progress.elapsed() >= *options.timeLimitSeconds;
         }
         progress.finish();
         double seconds = progress.elapsed();
+        const int samplesPerPixel = tracer.sampleCount();
+        if (options.timeLimitSeconds) {
+            const std::string stop = outOfTime ? "--time " + secondsText(*options.timeLimitSeconds) + " s passed during the last pass"
+                                               : "--spp " + std::to_string(maxSamples) + " came first";
+            std::fprintf(stderr, "ptview: stopped at %d spp after %.2f s: %s\n", samplesPerPixel, seconds, stop.c_str());
+        }
 
         ImageRgbF mean = tracer.readMean();
         if (format == OutputFormat::Png)
@@ -133,9 +167,9 @@ int runRenderCommand(const RenderOptions& options) {
                 nonFinite += !(std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b));
             }
 
-        double samples = static_cast<double>(size.x) * size.y * options.samplesPerPixel;
+        double samples = static_cast<double>(size.x) * size.y * samplesPerPixel;
         std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s, %s backend, %lld NaN/Inf pixels) on %s\n",
-                     options.outPath.c_str(), size.x, size.y, options.samplesPerPixel, options.settings.maxDepth,
+                     options.outPath.c_str(), size.x, size.y, samplesPerPixel, options.settings.maxDepth,
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
                      seconds, samples / seconds * 1e-6, backendName(tracer.backend()), nonFinite,
                      context.description().c_str());

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <exception>
+#include <optional>
 
 namespace ptview {
 namespace {
@@ -20,6 +21,21 @@ void patternNote(const ViewerModel& model) {
     else
         noteText("no target spp: the pattern is incomplete (patchy) until " +
                  std::to_string(model.settings.sampleBudget) + " spp");
+}
+
+// Firefly control: off (unbiased) or a largest component per path vertex's contribution.
+void clampControls(RenderSettings& settings) {
+    constexpr float kFirstClamp = 10.0f; // what turning it on starts from: a few times a lit white wall
+    bool clamped = settings.radianceClamp.has_value();
+    if (ImGui::Checkbox("clamp", &clamped)) settings.radianceClamp = clamped ? std::optional<float>(kFirstClamp) : std::nullopt;
+    itemTooltip("firefly control, BIASED: each contribution of a path vertex (throughput x emission or x a light\n"
+                "sample) is scaled down to this largest component; the light cut off is lost, so the image\n"
+                "converges to a darker one than the true image");
+    if (!settings.radianceClamp) return;
+    ImGui::SameLine();
+    float value = *settings.radianceClamp;
+    if (ImGui::SliderFloat("##clamp value", &value, 0.1f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+        settings.radianceClamp = value;
 }
 
 } // namespace
@@ -44,6 +60,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     enumCombo("integrator", integratorNames(), settings.integrator);
     ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
     itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
+    clampControls(settings);
     enumCombo("sampler", samplerModeNames(), settings.sampler);
     patternNote(model);
 

@@ -21,7 +21,8 @@ bool sameLight(const Light& a, const Light& b)
 // The camera less its resolution, which is the output size and so always the file's.
 bool sameView(const CameraDesc& a, const CameraDesc& b)
 {
-    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.vfovDeg == b.vfovDeg;
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.vfovDeg == b.vfovDeg &&
+           a.apertureRadius == b.apertureRadius && a.focusDistance == b.focusDistance;
 }
 
 // The environment settings are one item: a map and its intensity only make sense together.

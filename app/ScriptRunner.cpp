@@ -41,6 +41,12 @@ std::string vectorText(const glm::vec3& v) {
     return text;
 }
 
+std::string numberText(float value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", static_cast<double>(value));
+    return text;
+}
+
 // "materials, camera": the kinds of unsaved edits, joined with `separator`.
 std::string joined(const std::vector<std::string>& words, const char* separator) {
     std::string text;
@@ -59,6 +65,9 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
                        " target-spp=" + std::to_string(model.targetSamples) +
                        " backend=" + backendName(session.tracer(ViewerSession::Side::Left).backend()) +
                        " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
+                       " aperture=" + numberText(model.scene.camera.apertureRadius) +
+                       " focus=" + numberText(model.scene.camera.focusDistance) +
+                       " clamp=" + (settings.radianceClamp ? numberText(*settings.radianceClamp) : std::string("off")) +
                        " compare=" +
                        (session.comparing() ? "on" : "off");
     // The image area the render is displayed in (it keeps its size through Tab or a resize), and
@@ -265,6 +274,26 @@ CameraDesc withFov(CameraDesc camera, float vfovDeg) {
     return camera;
 }
 
+CameraDesc withAperture(CameraDesc camera, float radius) {
+    camera.apertureRadius = radius;
+    return camera;
+}
+
+CameraDesc withFocus(CameraDesc camera, float distance) {
+    camera.focusDistance = distance;
+    return camera;
+}
+
+// What Ctrl+click does, at a place given as fractions of the image; waits for the image to exist.
+void focusAt(Step& s) {
+    if (s.session.renderSize().x <= 0 || s.session.renderSize().y <= 0) {
+        s.again = true;
+        return;
+    }
+    if (!s.session.focusAt(glm::vec2(s.command.number(0), s.command.number(1))))
+        s.fail("nothing there to focus on (the ray leaves the scene); the focus is left as it was");
+}
+
 void resetCamera(Step& s) {
     s.session.resetCamera();
     s.model.pendingChanges |= ViewerModel::kCameraChanged;
@@ -342,6 +371,10 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"integrator", [](Step& s) { s.model.settings.integrator = integratorNamed(s.word); }},
         {"sampler", [](Step& s) { s.model.settings.sampler = *parseSamplerMode(s.word); }},
         {"depth", [](Step& s) { s.model.settings.maxDepth = s.command.integer(0); }},
+        {"clamp",
+         [](Step& s) {
+             s.model.settings.radianceClamp = s.command.isWord(0, "off") ? std::nullopt : std::optional<float>(s.command.number(0));
+         }},
         {"seed", [](Step& s) { s.model.settings.seed = s.command.unsignedInteger(0); }},
         {"exposure", [](Step& s) { s.model.display.exposureStops = s.command.number(0); }},
         {"tone-mapper", [](Step& s) { s.model.display.toneMapper = toneMapperNamed(s.word); }},
@@ -363,6 +396,9 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"camera-pan", [](Step& s) { moveCamera(s, panCamera(s.scene.camera, s.command.number(0), s.command.number(1))); }},
         {"camera-zoom", [](Step& s) { moveCamera(s, zoomCamera(s.scene.camera, s.command.number(0))); }},
         {"camera-fov", [](Step& s) { moveCamera(s, withFov(s.scene.camera, s.command.number(0))); }},
+        {"camera-aperture", [](Step& s) { moveCamera(s, withAperture(s.scene.camera, s.command.number(0))); }},
+        {"camera-focus", [](Step& s) { moveCamera(s, withFocus(s.scene.camera, s.command.number(0))); }},
+        {"camera-focus-at", focusAt},
         {"camera-reset", resetCamera},
         // ---- files
         {"load-scene", [](Step& s) {

@@ -138,6 +138,7 @@ private:
     void answerUnsavedEdits(const std::vector<int>& keys);
     void updateTitle();
     void handleMouseAndFlight(double seconds);
+    void focusAtCursor(glm::dvec2 cursor);
     void layout();
     void drawUi();
     void drawSidebar();
@@ -226,6 +227,8 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
                  glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
     bool shift = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
                  glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+    bool control = glfwGetKey(window_, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                   glfwGetKey(window_, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
     // The divider, in window coordinates.
     float dividerX = static_cast<float>(session_.dividerX()) / framebufferScale_.x;
     if (!left) draggingDivider_ = false;
@@ -235,7 +238,13 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
             draggingDivider_ = true;
         PixelRect area = session_.displayArea();
         float imageHeight = std::max(1.0f, static_cast<float>(area.size.y) / framebufferScale_.y);
-        if (draggingDivider_) {
+        // ImGui sees a click even when press and release fell within one frame; GLFW's state may not.
+        bool clicked = ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+        if (control && (left || clicked)) {
+            // Ctrl+click focuses; a Ctrl+drag neither orbits nor pans.
+            if (clicked) focusAtCursor(cursor);
+            camera = model.scene.camera;
+        } else if (draggingDivider_) {
             float areaLeft = static_cast<float>(area.origin.x) / framebufferScale_.x;
             float areaWidth = std::max(1.0f, static_cast<float>(area.size.x) / framebufferScale_.x);
             model.compare.dividerFraction = std::clamp((static_cast<float>(cursor.x) - areaLeft) / areaWidth, 0.0f, 1.0f);
@@ -265,6 +274,19 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
         model.scene.camera = camera;
         model.pendingChanges |= ViewerModel::kCameraChanged;
     }
+}
+
+// Click-to-focus on the surface under the cursor (window coordinates from the top-left), when it
+// is on the image.
+void ViewerWindow::focusAtCursor(glm::dvec2 cursor) {
+    PixelRect area = session_.displayArea();
+    if (area.size.x <= 0 || area.size.y <= 0) return;
+    glm::vec2 pixel = glm::vec2(cursor) * framebufferScale_;
+    pixel.y = static_cast<float>(framebufferSize_.y) - pixel.y; // GL counts rows from the bottom
+    glm::vec2 fromBottomLeft = (pixel - glm::vec2(area.origin)) / glm::vec2(area.size);
+    if (glm::any(glm::lessThan(fromBottomLeft, glm::vec2(0.0f))) || glm::any(glm::greaterThan(fromBottomLeft, glm::vec2(1.0f))))
+        return;
+    session_.focusAt(glm::vec2(fromBottomLeft.x, 1.0f - fromBottomLeft.y));
 }
 
 void ViewerWindow::layout() {

@@ -70,6 +70,12 @@ ArgSpec numberArg(const char* meta, double lo = -kInf, double hi = kInf, bool lo
     return arg;
 }
 
+ArgSpec keywordNumberArg(const char* meta, double lo, double hi, bool loOpen, const char* keyword) {
+    ArgSpec arg = numberArg(meta, lo, hi, loOpen);
+    arg.keyword = keyword;
+    return arg;
+}
+
 // A number of the scene model: its range is the loader's (SceneRanges.h), so a script cannot make
 // an edit that the file format cannot hold.
 ArgSpec rangeArg(const char* meta, const SceneRange& range) {
@@ -186,6 +192,8 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"integrator", {choiceArg("NAME", "integrator", integratorChoices)}, nullptr, "the integrator of the main view"},
         {"sampler", {choiceArg("NAME", "sampler", samplerChoices)}, nullptr, "the sample generator"},
         {"depth", {integerArg("N", 0, 1024)}, nullptr, "maximum bounces (0: only what the camera sees)"},
+        {"clamp", {keywordNumberArg("VALUE", 0.0, kInf, true, "off")}, nullptr,
+         "firefly control (biased): largest component of one path vertex's contribution, or off"},
         {"seed", {unsignedArg("N")}, nullptr, "random seed (decorrelates renders of the same scene)"},
         {"exposure", {numberArg("F", -20.0, 20.0)}, nullptr, "exposure in stops"},
         {"tone-mapper", {choiceArg("NAME", "tone mapper", toneMapperChoices)}, nullptr, "the display transform"},
@@ -211,6 +219,12 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"camera-zoom", {numberArg("FACTOR", 0.0, kInf, true)}, nullptr,
          "multiply the distance to the target by FACTOR (< 1 moves closer)"},
         {"camera-fov", {rangeArg("DEG", ranges::kVerticalFov)}, nullptr, "vertical field of view"},
+        {"camera-aperture", {rangeArg("RADIUS", ranges::kApertureRadius)}, nullptr,
+         "thin-lens aperture radius in metres (0: a pinhole)"},
+        {"camera-focus", {rangeArg("DISTANCE", ranges::kFocusDistance)}, nullptr,
+         "distance along the view direction to the plane in focus, in metres"},
+        {"camera-focus-at", {numberArg("X", 0.0, 1.0), numberArg("Y", 0.0, 1.0)}, nullptr,
+         "focus on the surface seen there (fractions of the image from its top-left corner), as Ctrl+click does"},
         {"camera-reset", {}, nullptr, "back to the scene file's camera"},
         // Scene files
         {"load-scene", {pathArg()}, nullptr, "open another scene file"},

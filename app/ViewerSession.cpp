@@ -169,6 +169,20 @@ void ViewerSession::resetCamera() {
     model_.pendingChanges |= ViewerModel::kCameraChanged;
 }
 
+std::optional<float> ViewerSession::focusAt(glm::vec2 imageFraction) {
+    update(); // the tracer looks with the camera the user sees
+    PathTracer& tracer = *left_.tracer;
+    glm::vec2 size(tracer.imageSize());
+    glm::vec2 filmPos(imageFraction.x * size.x, (1.0f - imageFraction.y) * size.y); // the film counts from the bottom
+    std::optional<float> distance = tracer.focusDistanceAt(filmPos);
+    if (!distance) return std::nullopt;
+    const SceneRange& range = ranges::kFocusDistance;
+    float focus = std::clamp(*distance, std::nextafter(static_cast<float>(range.lo), 1.0f), static_cast<float>(range.hi));
+    model_.scene.camera.focusDistance = focus;
+    model_.pendingChanges |= ViewerModel::kCameraChanged;
+    return focus;
+}
+
 // Compared as the file would hold them, so that an edit counts exactly when saving would change
 // the file, and a field the file does not keep (one the material's type does not use) does not.
 bool ViewerSession::hasUnsavedEdits() const {

@@ -60,6 +60,11 @@ public:
     // sets model().sceneError.
     bool setReference(const std::filesystem::path& path);
     void resetCamera();                                          // to the scene file's camera
+    // Click-to-focus: sets the camera's focus distance to the distance along the view direction of
+    // the surface seen at `imageFraction` of the image (x right, y down from its top-left corner,
+    // each in [0, 1]), found by a one-pixel GPU pass (PathTracer::focusDistanceAt). Returns that
+    // distance, or nullopt (the camera unchanged) when nothing is there.
+    std::optional<float> focusAt(glm::vec2 imageFraction);
     // Whether the scene in memory differs from its file in anything the file holds, the camera
     // included (a view the user set up is work): what quitting or opening another scene would
     // throw away.

@@ -2,6 +2,7 @@
 
 #include "GlslEnums.h"
 #include "GpuLayout.h"
+#include "ProbePass.h"
 #include "Readback.h"
 
 #include <algorithm>
@@ -186,6 +187,7 @@ void PathTracer::reloadShaders() {
     TraceProgram trace = buildTraceProgram(programKey_);
     display_ = std::move(display);
     tracePrograms_.clear();
+    focusProbe_.reset(); // built again from the new files when next asked
     attached_ = nullptr;
     tracePrograms_.emplace(programKey_, std::move(trace));
     ++programsCompiled_;
@@ -216,6 +218,8 @@ void PathTracer::setCamera(const CameraDesc& camera) {
     glm::ivec2 resolution = camera_.resolution;
     camera_ = camera;
     camera_.resolution = resolution;
+    scene_.camera = camera_;
+    updateProgramKey(); // opening the lens from 0 (or closing it) needs the program with (or without) it
     restart();
 }
 
@@ -317,9 +321,38 @@ void PathTracer::updateFrameUniforms(const Accumulator& target) {
     frame.sampleBudget = settings_.sampleBudget;
     frame.integrator = static_cast<std::uint32_t>(settings_.integrator);
     frame.sceneRadius = gpuScene_.sceneRadius();
+    frame.apertureRadius = camera_.apertureRadius;
+    frame.focusDistance = camera_.focusDistance;
+    frame.radianceClamp = settings_.radianceClamp.value_or(0.0f);
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameUniforms), &frame);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+std::optional<float> PathTracer::focusDistanceAt(glm::vec2 filmPos) {
+    glm::ivec2 size = accumulator_.size();
+    if (size.x <= 0 || size.y <= 0) return std::nullopt; // no film to place the position on
+    if (!focusProbe_ || focusProbe_->features != programKey_.features) {
+        ShaderAssembler assembler(shaderDir_);
+        specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler);
+        FocusProbe probe;
+        probe.features = programKey_.features;
+        probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("focus_probe.frag"));
+        probe.program->bindUniformBlock("FrameBlock", kFrameBlockBinding);
+        probe.filmPos = probe.program->uniformLocation("uFilmPos");
+        focusProbe_ = std::move(probe);
+    }
+    const GlProgram& program = *focusProbe_->program;
+    updateFrameUniforms(accumulator_);
+    resetPassState();
+    gpuScene_.attach(program, kSceneUnit);
+    attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
+    glUseProgram(program.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
+    gpuScene_.bind();
+    glUniform2f(focusProbe_->filmPos, filmPos.x, filmPos.y);
+    float distance = runProbePass(program, 1, {}, 1)[0][0].x;
+    return distance > 0.0f && std::isfinite(distance) ? std::optional<float>(distance) : std::nullopt;
 }
 
 void PathTracer::renderSample() {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <memory>
 #include <vector>
 
@@ -115,6 +116,12 @@ public:
 
     ImageRgbF readMean() const;
     PixelStatistics readStatistics() const { return accumulator_.readStatistics(); }
+
+    // Click-to-focus: the distance along the view direction to the first surface that the pinhole
+    // ray through filmPos (pixels of the image from its bottom-left corner, as the camera counts
+    // them) hits, found on the GPU by the scene's own intersection code (shaders/focus_probe.frag);
+    // nullopt when that ray leaves the scene, or there is no image yet.
+    std::optional<float> focusDistanceAt(glm::vec2 filmPos);
     ImageRgba8 readToneMapped(const DisplaySettings& settings) const;
 
 private:
@@ -135,6 +142,11 @@ private:
         DebugView debugView = DebugView::Radiance;
         Backend backend = Backend::Fragment;
         bool operator<(const ProgramKey& other) const;
+    };
+    struct FocusProbe {
+        ShaderFeatures features; // specialized like the path-tracing program of these features
+        std::unique_ptr<GlProgram> program;
+        GLint filmPos = -1;
     };
     struct TraceProgram {
         std::unique_ptr<GlProgram> program;
@@ -158,6 +170,7 @@ private:
     std::map<ProgramKey, TraceProgram> tracePrograms_;
     ProgramKey programKey_;
     const TraceProgram* attached_ = nullptr; // the program the scene's uniforms were last found in
+    std::optional<FocusProbe> focusProbe_;   // compiled on the first click-to-focus
     int programsCompiled_ = 0;
     Backend backend_ = Backend::Fragment;
     Scene scene_; // shapes and materials: which features the materials call for

@@ -8,5 +8,6 @@ layout(std140) uniform FrameBlock {
     vec3 uEnvironmentRadiance; int uMaxDepth;      // bounces; 0 shows emitters only
     ivec2 uImageSize;         uint uSamplerMode;   uint uSampleBudget; // see sampler.glsl
     uint uIntegrator;         float uSceneRadius;  // of the scene's bounding sphere: sets ray offsets
-    uint uPad1; uint uPad2;
+    float uApertureRadius;    float uFocusDistance; // thin lens (camera_thin_lens.glsl); 0: a pinhole
+    float uRadianceClamp;     uint uPad1; uint uPad2; uint uPad3; // largest component of one contribution; 0: off
 };

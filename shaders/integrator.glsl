@@ -11,6 +11,7 @@
 //           cannot produce), and unbiased Russian roulette after a few bounces.
 //
 // uMaxDepth bounds the number of scattering events of every path, for all four.
+// uRadianceClamp > 0 (firefly control, biased) caps what each path vertex adds (clampContribution).
 #include "frame_uniforms.glsl"
 #include "specialization.glsl"
 #include "sampler.glsl"
@@ -61,6 +62,14 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     return f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
 }
 
+// Firefly control: a contribution to the pixel (throughput x emission, or throughput x one light
+// sample's estimate) whose largest component exceeds uRadianceClamp is scaled down to it, keeping
+// its hue. Biased: the energy cut off is lost, not moved. uRadianceClamp 0 leaves it as it is.
+vec3 clampContribution(vec3 contribution) {
+    float largest = max(contribution.r, max(contribution.g, contribution.b));
+    return uRadianceClamp > 0.0 && largest > uRadianceClamp ? contribution * (uRadianceClamp / largest) : contribution;
+}
+
 // MIS weight of emission reached by a BSDF sample of density pdfBsdf from previousPos.
 float emissionWeight(int light, vec3 previousPos, vec3 wi, float hitDistance, vec3 hitNormal, float pdfBsdf) {
     if (light < 0) return 1.0; // not in the light table: light sampling never finds it
@@ -91,7 +100,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (countEmission) {
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
-                radiance += throughput * environmentRadiance(ray.direction) * weight;
+                radiance += clampContribution(throughput * environmentRadiance(ray.direction) * weight);
             }
             break;
         }
@@ -101,7 +110,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (any(greaterThan(emitted, vec3(0.0)))) {
                 float weight = (!lightSampling || previousDelta) ? 1.0
                              : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
-                radiance += throughput * emitted * weight;
+                radiance += clampContribution(throughput * emitted * weight);
             }
         }
         if (bounce == lastBounce || material.type == kMaterialEmitter) break; // emitters reflect nothing
@@ -110,7 +119,8 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         vec3 woLocal = toLocal(frame, -ray.direction);
 
         // ---- Next-event estimation --------------------------------------------------------------
-        if (lightSampling) radiance += throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis);
+        if (lightSampling)
+            radiance += clampContribution(throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis));
         if (kIntegrator == kIntegratorDirect) break;
 
         // ---- BSDF sampling -----------------------------------------------------------------------

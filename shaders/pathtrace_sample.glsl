@@ -11,7 +11,7 @@
 void traceSample(ivec2 pixel) {
     Sampler sampler = createSampler(uvec2(pixel), uFrameIndex, uSeed, kSamplerMode, uSampleBudget);
     vec2 filmPos = vec2(pixel) + samplerGet2D(sampler, kDimensionCamera); // box filter one pixel wide
-    Ray ray = generateCameraRay(filmPos);
+    Ray ray = generateCameraRay(filmPos, sampler);
     // kDebugView is a constant of the program: the branch not taken is compiled out.
     accumulateSample(pixel, kDebugView == kDebugViewRadiance ? estimateRadiance(ray, sampler) : debugViewValue(ray, kDebugView));
 }

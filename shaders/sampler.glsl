@@ -14,8 +14,11 @@
 #include "enums.glsl"
 
 // Dimension layout of a path: the camera jitter, then a fixed block per bounce, so that a given
-// bounce's BSDF sample is the same dimension in every path whatever happened before.
+// bounce's BSDF sample is the same dimension in every path whatever happened before. The lens of a
+// thin-lens camera has a dimension of its own beyond every bounce block (depth <= 1024 reaches
+// dimension 5125), so adding it renumbered nothing: pinhole renders kept their exact bits.
 const uint kDimensionCamera = 0u;            // 2D: position inside the pixel
+const uint kDimensionLens = 65535u;          // 2D: position on the lens (thin-lens cameras only)
 const uint kDimensionsPerBounce = 5u;
 uint bsdfDimension(int bounce)              { return 1u + uint(bounce) * kDimensionsPerBounce; }      // 2D
 uint bsdfLobeDimension(int bounce)          { return 1u + uint(bounce) * kDimensionsPerBounce + 1u; } // 1D

@@ -3,6 +3,7 @@
 #include "ImageIO.h"
 #include "LimitedChild.h"
 #include "RunCommand.h"
+#include "TestFiles.h"
 
 #include <stb_image.h>
 
@@ -155,6 +156,11 @@ TEST_F(CommandLineTest, ConvergeConfigsRefuseEmptyItemsAndExtraParts) {
     expectRefused(converge + "mis/sobol/1/2", "bad configuration \"mis/sobol/1/2\"");
     expectRefused(converge + "mis/sobol/+8", "bad configuration \"mis/sobol/+8\"");
     expectRefused(converge + "mis/sobol", "bad configuration \"mis/sobol\"");
+    expectRefused(converge + "mis/sobol/8/clamp=0", "bad configuration \"mis/sobol/8/clamp=0\"");
+    expectRefused(converge + "mis/sobol/8/clamp=", "the fourth part must be clamp=VALUE");
+    expectRefused(converge + "mis/sobol/8/clamp=1e99", "bad configuration");
+    expectRefused(converge + "mis/sobol/8/clamp=2x", "bad configuration");
+    expectRefused(converge + "mis/sobol/8/clamp=1/1", "bad configuration");
     EXPECT_FALSE(fs::exists(path("c")));
 }
 
@@ -264,6 +270,55 @@ TEST_F(CommandLineTest, RenderReportsWhatItWrote) {
     EXPECT_NE(result.output.find("32x32, 2 spp, depth 2"), std::string::npos) << result.output;
     EXPECT_NE(result.output.find(", 0 NaN/Inf pixels)"), std::string::npos) << result.output;
     EXPECT_TRUE(fs::exists(path("c.png")));
+}
+
+// --time stops at the first whole pass after it and says how many samples that made; --spp is
+// still the most. No timing is asserted beyond "it stopped and said so".
+TEST_F(CommandLineTest, TimeLimitedRenderStopsAtAWholePassAndReportsTheSppReached) {
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("t.pfm")) +
+                                               " --size 16x16 --depth 2 --spp 1000000 --time 0.5");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::smatch reached;
+    ASSERT_TRUE(std::regex_search(result.output, reached, std::regex(R"(stopped at (\d+) spp after [0-9.]+ s: --time 0.5 s passed)")))
+        << result.output;
+    const int spp = std::stoi(reached[1]);
+    EXPECT_GE(spp, 1);
+    EXPECT_LT(spp, 1000000);
+    EXPECT_NE(result.output.find("16x16, " + std::to_string(spp) + " spp, depth 2"), std::string::npos) << result.output;
+    EXPECT_TRUE(fs::exists(path("t.pfm")));
+
+    result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("s.pfm")) +
+                        " --size 16x16 --depth 2 --spp 3 --time 600");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("stopped at 3 spp after"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("--spp 3 came first"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("16x16, 3 spp, depth 2"), std::string::npos) << result.output;
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --time -1", "--time");
+}
+
+// The lens options override the scene's camera: the same image as a scene file that has them.
+TEST_F(CommandLineTest, LensOptionsOverrideTheScenesCamera) {
+    std::string scene = testing::readFileBytes(kCornell);
+    const std::string resolution = "\"resolution\": [256, 256]";
+    ASSERT_NE(scene.find(resolution), std::string::npos);
+    std::string withLens = scene;
+    withLens.replace(withLens.find(resolution), resolution.size(), resolution + ", \"aperture_radius\": 0.1, \"focus_distance\": 2.5");
+    const std::string common = " --size 16x16 --spp 4 --depth 2 --seed 5 --out ";
+    testing::CommandResult fromFile = runCommand(kBinary + " render " + shellQuoted(write("lens.json", withLens)) + common +
+                                                 shellQuoted(path("file.pfm")));
+    ASSERT_EQ(fromFile.exitCode, 0) << fromFile.output;
+    testing::CommandResult fromOptions = runCommand(kBinary + " render " + shellQuoted(kCornell) + common + shellQuoted(path("options.pfm")) +
+                                                    " --aperture-radius 0.1 --focus-distance 2.5");
+    ASSERT_EQ(fromOptions.exitCode, 0) << fromOptions.output;
+    testing::CommandResult pinhole = runCommand(kBinary + " render " + shellQuoted(kCornell) + common + shellQuoted(path("pinhole.pfm")));
+    ASSERT_EQ(pinhole.exitCode, 0) << pinhole.output;
+    EXPECT_EQ(testing::readFileBytes(path("file.pfm")), testing::readFileBytes(path("options.pfm")));
+    EXPECT_NE(testing::readFileBytes(path("file.pfm")), testing::readFileBytes(path("pinhole.pfm")));
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --aperture-radius -0.1",
+                  "the aperture radius must be in [0, 1000000000]");
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --focus-distance 0",
+                  "the focus distance must be in (0, 1000000000]");
+    expectRefused("render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " --clamp 0", "--clamp");
 }
 
 TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {

@@ -245,6 +245,9 @@ TEST(GltfLoader, CameraComesFromItsNode) {
     EXPECT_NEAR(scene.camera.vfovDeg, 0.5 * 180.0 / M_PI, 1e-4);
     EXPECT_EQ(scene.camera.resolution, glm::ivec2(1024, 512)) << "aspect ratio 2";
     EXPECT_EQ(scene.environment, glm::vec3(1.0f)) << "the default studio environment";
+    // glTF cameras have no aperture: a pinhole, focused on its target should the lens be opened.
+    EXPECT_EQ(scene.camera.apertureRadius, 0.0f);
+    EXPECT_EQ(scene.camera.focusDistance, glm::length(scene.camera.target - scene.camera.eye));
 }
 
 TEST(GltfLoader, WithoutCameraTheViewFramesTheBounds) {

@@ -35,7 +35,8 @@ std::string sceneWith(const std::string& key, const std::string& value) {
                          : R"({"map": "sky.hdr", "intensity": )" + field("environment.intensity", "1") +
                                R"(, "rotation_deg": )" + field("environment.rotation_deg", "0") + "}";
     return R"({
-  "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": )" + field("vfov_deg", "40") + R"(, "resolution": [8, 8]},
+  "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": )" + field("vfov_deg", "40") + R"(, "resolution": [8, 8],
+             "aperture_radius": )" + field("aperture_radius", "0.1") + R"(, "focus_distance": )" + field("focus_distance", "3") + R"(},
   "environment": )" + environment + R"(,
   "materials": {
     "coat": {"type": "plastic", "albedo": [0.5, )" + field("albedo", "0.5") + R"(, 0.5], "ior": )" + field("ior", "1.5") +
@@ -59,6 +60,8 @@ struct RangeUse {
 std::vector<RangeUse> rangeUses() {
     return {
         {&ranges::kVerticalFov, "vfov_deg", "/camera/vfov_deg", [](const Scene& s) { return s.camera.vfovDeg; }},
+        {&ranges::kApertureRadius, "aperture_radius", "/camera/aperture_radius", [](const Scene& s) { return s.camera.apertureRadius; }},
+        {&ranges::kFocusDistance, "focus_distance", "/camera/focus_distance", [](const Scene& s) { return s.camera.focusDistance; }},
         {&ranges::kColor, "albedo", "/materials/coat/albedo/1", [](const Scene& s) { return s.materials[0].color.g; }},
         {&ranges::kIor, "ior", "/materials/coat/ior", [](const Scene& s) { return s.materials[0].ior; }},
         {&ranges::kRoughness, "roughness", "/materials/coat/roughness", [](const Scene& s) { return s.materials[0].roughness; }},

@@ -40,6 +40,8 @@ void expectSameScene(const Scene& expected, const Scene& actual) {
     expectVec3Eq(expected.camera.up, actual.camera.up, "camera.up");
     EXPECT_EQ(expected.camera.vfovDeg, actual.camera.vfovDeg);
     EXPECT_EQ(expected.camera.resolution, actual.camera.resolution);
+    EXPECT_EQ(expected.camera.apertureRadius, actual.camera.apertureRadius);
+    EXPECT_EQ(expected.camera.focusDistance, actual.camera.focusDistance);
     expectVec3Eq(expected.environment, actual.environment, "environment");
 
     ASSERT_EQ(expected.materials.size(), actual.materials.size());
@@ -297,6 +299,36 @@ TEST(SceneWriter, LeavesOutAZeroRotation) {
     std::string text = sceneToJson(scene);
     EXPECT_EQ(text.find("\"rotation\""), std::string::npos) << text;
     expectSameScene(scene, roundTrip(scene));
+}
+
+// A pinhole camera's file keeps its keys (no aperture, no focus); a lens, or a focus moved off the
+// target, is written and read back bit for bit.
+TEST(SceneWriter, WritesTheLensOnlyWhenItIsOpenOrTheFocusMoved) {
+    Scene scene = parseScene(kEveryMaterialScene, "every.json");
+    EXPECT_EQ(scene.camera.apertureRadius, 0.0f);
+    EXPECT_EQ(scene.camera.focusDistance, glm::length(scene.camera.target - scene.camera.eye)) << "the target is in focus";
+    std::string text = sceneToJson(scene);
+    EXPECT_EQ(text.find("aperture_radius"), std::string::npos) << text;
+    EXPECT_EQ(text.find("focus_distance"), std::string::npos) << text;
+    expectSameScene(scene, roundTrip(scene));
+
+    Scene focused = scene;
+    focused.camera.focusDistance = 0.1f + scene.camera.focusDistance;
+    text = sceneToJson(focused);
+    EXPECT_EQ(text.find("aperture_radius"), std::string::npos) << text;
+    EXPECT_NE(text.find("focus_distance"), std::string::npos) << text;
+    expectSameScene(focused, roundTrip(focused));
+
+    Scene lens = scene;
+    lens.camera.apertureRadius = 0.0123f;
+    text = sceneToJson(lens);
+    EXPECT_NE(text.find("\"aperture_radius\": 0.0123"), std::string::npos) << text;
+    EXPECT_NE(text.find("focus_distance"), std::string::npos) << text;
+    expectSameScene(lens, roundTrip(lens));
+
+    Scene negative = scene;
+    negative.camera.apertureRadius = -1.0f;
+    EXPECT_THROW(sceneToJson(negative), std::runtime_error);
 }
 
 TEST(SceneWriter, RejectsModelsNoFileCanHold) {

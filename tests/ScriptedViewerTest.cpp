@@ -305,6 +305,58 @@ TEST_F(ScriptedViewer, CameraMovesThatWouldMakeTheCameraUnusableAreRefusedAtThei
         << result.output;
 }
 
+// A wall 3 m ahead covering the left half of the view.
+const char* const kWallScene = R"({
+  "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [64, 64]},
+  "environment": {"color": [0.2, 0.2, 0.2]},
+  "materials": {"glow": {"type": "emitter", "radiance": [1, 1, 1]}},
+  "shapes": [{"type": "quad", "material": "glow", "center": [-2, 0, -3], "u": [2, 0, 0], "v": [0, 3, 0]}]
+})";
+
+// Click-to-focus from a script: the focus distance becomes the distance along the view direction
+// of the surface at the given place (a wall 3 m ahead is 3 m away at the image's centre and at its
+// corner alike); a place where the ray leaves the scene is refused at its line, the focus kept.
+TEST_F(ScriptedViewer, CameraFocusAtFocusesOnTheSurfaceThere) {
+    fs::path directory = freshDirectory("focus");
+    const std::string scene = (directory / "wall.json").string();
+    std::ofstream(scene) << kWallScene;
+    testing::CommandResult result = runViewer(directory, scene,
+                                              "resolution-scale 0.125\nstatus\ncamera-aperture 0.05\ncamera-focus-at 0.25 0.5\nstatus\n"
+                                              "camera-focus-at 0.05 0.05\nstatus\nclamp 5\nstatus\nquit\n");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 4u) << result.output;
+    EXPECT_EQ(field(status[0], "aperture"), "0");
+    EXPECT_EQ(field(status[0], "focus"), "1") << "by default the target is in focus";
+    EXPECT_EQ(field(status[0], "clamp"), "off");
+    EXPECT_EQ(field(status[1], "aperture"), "0.05");
+    EXPECT_NEAR(std::stod(field(status[1], "focus")), 3.0, 1e-4);
+    EXPECT_NEAR(std::stod(field(status[2], "focus")), 3.0, 1e-4) << "along the view direction, not the ray";
+    EXPECT_EQ(field(status[3], "clamp"), "5");
+
+    result = runViewer(directory, scene, "resolution-scale 0.125\ncamera-focus-at 0.75 0.5\nquit\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:2: camera-focus-at: nothing there to focus on"), std::string::npos) << result.output;
+    fs::remove_all(directory);
+}
+
+// The same by hand: Ctrl+click on the image (xdotool, tests/window_focus.sh) focuses on the wall
+// there; the camera does not move.
+TEST_F(ScriptedViewer, CtrlClickOnTheImageFocusesThere) {
+    fs::path directory = freshDirectory("ctrl_click");
+    std::ofstream(directory / "scene.json") << kWallScene;
+    std::ofstream(directory / "script.txt") << "resolution-scale 0.25\ncamera-aperture 0.05\nwait-spp 1\nstatus\nwait-reload\nframes 2\nstatus\nquit\n";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_focus.sh " + PTVIEW_BINARY);
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "focus"), "1");
+    EXPECT_NEAR(std::stod(field(status[1], "focus")), 3.0, 1e-3) << result.output;
+    EXPECT_EQ(field(status[0], "eye"), field(status[1], "eye")) << "a Ctrl+click does not orbit";
+    fs::remove_all(directory);
+}
+
 // Before: `screenshot-window` to a missing directory failed after the frame, in the window's
 // code, without the script's file and line (exit 1); `screenshot` always named them.
 TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {

@@ -85,13 +85,18 @@ quit
 open-panel materials
 reference ref.pfm
 wait-seconds 0.5
+clamp 10
+clamp off
+camera-aperture 0.05
+camera-focus 3.5
+camera-focus-at 0.25 0.75
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 44u);
+    ASSERT_EQ(script.commands.size(), 49u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -329,7 +334,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 42u);
+    EXPECT_EQ(referenceVerbs().size(), 46u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
@@ -338,4 +343,9 @@ TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     EXPECT_NE(reference.find("R G B: number in [0, 1]"), std::string::npos) << reference;
     EXPECT_NE(reference.find("    .outer-angle DEG"), std::string::npos);
     EXPECT_NE(reference.find("PATH: ends in .png or .pfm"), std::string::npos);
+    EXPECT_NE(reference.find("clamp VALUE|off"), std::string::npos) << reference;
+    EXPECT_NE(reference.find("camera-aperture RADIUS"), std::string::npos);
+    EXPECT_NE(reference.find("RADIUS: number in [0, 1000000000]"), std::string::npos) << reference;
+    EXPECT_NE(reference.find("DISTANCE: number in (0, 1000000000]"), std::string::npos) << reference;
+    EXPECT_NE(reference.find("camera-focus-at X Y"), std::string::npos);
 }

@@ -73,6 +73,39 @@ protected:
     }
 };
 
+// Click-to-focus headless: a tilted wall, so that each place has its own distance along the view
+// direction; the focus follows the place, and a place on the sky changes nothing.
+TEST_F(ViewerSessionTest, FocusAtSetsTheDistanceOfTheSurfaceUnderThePoint) {
+    fs::path directory = freshDirectory("focus");
+    // The wall's plane: z = -3 - 0.5 x (it recedes to the right), for x in [-4, 0.5].
+    writeText(directory / "wall.json", R"({
+  "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [24, 24]},
+  "environment": {"color": [0, 0, 0]},
+  "materials": {"glow": {"type": "emitter", "radiance": [1, 1, 1]}},
+  "shapes": [{"type": "quad", "material": "glow", "center": [-1.75, 0, -2.125], "u": [2.25, 0, -1.125], "v": [0, 3, 0]}]
+})");
+    std::unique_ptr<ViewerSession> session = openSession(directory / "wall.json");
+    renderSamples(*session, 1);
+    const float tanHalf = std::tan(glm::radians(20.0f));
+    // Fractions of the image from its top-left: x = 0.5 looks straight ahead, x = 0.25 half-way to the left edge.
+    for (float fraction : {0.5f, 0.25f, 0.6f}) {
+        SCOPED_TRACE(fraction);
+        // The ray (s, 0, -1) t, s = ndc * tan(fov / 2), meets the wall -z = 3 + 0.5 x at t = 3 / (1 - 0.5 s).
+        float slope = (2.0f * fraction - 1.0f) * tanHalf;
+        float depth = 3.0f / (1.0f - 0.5f * slope);
+        std::optional<float> focus = session->focusAt({fraction, 0.5f});
+        ASSERT_TRUE(focus);
+        EXPECT_NEAR(*focus, depth, 2e-3f);
+        EXPECT_EQ(session->model().scene.camera.focusDistance, *focus);
+        EXPECT_TRUE(session->model().pendingChanges & ViewerModel::kCameraChanged);
+        session->update();
+    }
+    const float before = session->model().scene.camera.focusDistance;
+    EXPECT_FALSE(session->focusAt({0.98f, 0.5f})) << "the wall ends at x = 0.5: the sky there";
+    EXPECT_EQ(session->model().scene.camera.focusDistance, before);
+    fs::remove_all(directory);
+}
+
 // Tab or a resize must not throw away an image: with samples, the render keeps its size and is
 // displayed letterboxed in its own aspect ratio until the accumulation restarts anyway (R here).
 // Without samples there is nothing to keep, and it follows once the size has settled.

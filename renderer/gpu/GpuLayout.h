@@ -29,10 +29,14 @@ struct FrameUniforms {
     std::uint32_t sampleBudget; // samples per pixel the grid and stratified patterns are sized for
     std::uint32_t integrator;   // Integrator
     float sceneRadius;          // bounding sphere of the geometry, for ray offsets (intersect.glsl)
+    float apertureRadius;       // thin lens, metres; 0: a pinhole
+    float focusDistance;        // metres along the view direction
+    float radianceClamp;        // largest component of one path vertex's contribution; 0: no clamp
     std::uint32_t pad1;
     std::uint32_t pad2;
+    std::uint32_t pad3;
 };
-static_assert(sizeof(FrameUniforms) == 112, "FrameUniforms must match the std140 FrameBlock");
+static_assert(sizeof(FrameUniforms) == 128, "FrameUniforms must match the std140 FrameBlock");
 
 // shaders/scene_data.glsl: one texel (RGBA32F) of a buffer texture.
 struct GpuSphere {

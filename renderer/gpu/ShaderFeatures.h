@@ -1,6 +1,6 @@
 #pragma once
 // Simulate only what the scene calls for: the features a scene uses (material models, lights,
-// environment map, meshes) and the GLSL specialization that compiles in those and nothing else.
+// environment map, meshes, a lens) and the GLSL specialization that compiles in those and nothing else.
 // Whole functions are chosen: the BSDF dispatch is generated with a case for each model used and
 // only those models' files, and the environment and mesh queries come from a full or an empty
 // variant of the same functions. The integrator and sampler become constants of the program.
@@ -25,6 +25,7 @@ struct ShaderFeatures {
     bool environmentMap = false;      // else the constant colour
     bool meshes = false;
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
+    bool thinLens = false;            // the camera has an aperture (camera_thin_lens.glsl), else a pinhole
 
     static ShaderFeatures all(); // the uber-shader: every model, map and meshes
 

@@ -1120,6 +1120,8 @@ Scene loadGltfScene(const std::filesystem::path& path) {
         scene.camera.eye = centre + glm::vec3(0.0f, 0.0f, distance);
         scene.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     }
+    // glTF 2.0 cameras have no aperture: a pinhole, focused (should the user open the lens) on the target.
+    scene.camera.focusDistance = defaultFocusDistance(scene.camera);
     return scene;
 }
 

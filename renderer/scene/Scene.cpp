@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ptview {
@@ -15,6 +16,11 @@ glm::mat4 Transform::objectToWorld() const {
     glm::mat4 matrix(rotationMatrix(rotationAxis, rotationDeg) * glm::mat3(glm::scale(glm::mat4(1.0f), scale)));
     matrix[3] = glm::vec4(translate, 1.0f);
     return matrix;
+}
+
+float defaultFocusDistance(const CameraDesc& camera) {
+    // Two coordinates within the scene's extent can be farther apart than the extent itself.
+    return std::min(glm::length(camera.target - camera.eye), kMaxSceneExtent);
 }
 
 glm::mat3 boxRotation(const Shape& box) {

@@ -22,7 +22,14 @@ struct CameraDesc {
     glm::vec3 up{0.0f, 1.0f, 0.0f};  // projected to be orthogonal to the view direction
     float vfovDeg = 40.0f;           // full vertical field of view
     glm::ivec2 resolution{512, 512}; // width, height in pixels
+    // Thin lens (docs/camera.md has the exact convention): a uniform disk of this radius around
+    // the eye, orthogonal to the view direction; 0 is a pinhole, and then focusDistance is unused.
+    float apertureRadius = 0.0f;     // metres
+    float focusDistance = 1.0f;      // metres along the view direction to the plane in focus
 };
+
+// The focus distance a camera has when its file names none: the plane through the target.
+float defaultFocusDistance(const CameraDesc& camera);
 
 // The order is the GPU's: shaders/material.glsl numbers the types the same way.
 enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic, Principled };

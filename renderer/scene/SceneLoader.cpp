@@ -491,7 +491,7 @@ void requireType(const Json& object, const Pointer& at, const std::vector<const 
 
 CameraDesc readCamera(const Json& value, const Pointer& at) {
     requireObject(value, at);
-    checkKeys(value, at, {"eye", "target", "up", "vfov_deg", "resolution"});
+    checkKeys(value, at, {"eye", "target", "up", "vfov_deg", "resolution", "aperture_radius", "focus_distance"});
     CameraDesc camera;
     camera.eye = readPosition(requireKey(value, at, "eye"), at / "eye");
     camera.target = readPosition(requireKey(value, at, "target"), at / "target");
@@ -506,6 +506,11 @@ CameraDesc readCamera(const Json& value, const Pointer& at) {
     }
     camera.vfovDeg = readInRange(requireKey(value, at, "vfov_deg"), at / "vfov_deg", ranges::kVerticalFov);
     camera.resolution = readResolution(requireKey(value, at, "resolution"), at / "resolution");
+    if (const Json* aperture = optionalKey(value, "aperture_radius"))
+        camera.apertureRadius = readInRange(*aperture, at / "aperture_radius", ranges::kApertureRadius);
+    const Json* focus = optionalKey(value, "focus_distance");
+    camera.focusDistance = focus ? readInRange(*focus, at / "focus_distance", ranges::kFocusDistance)
+                                 : defaultFocusDistance(camera);
     return camera;
 }
 

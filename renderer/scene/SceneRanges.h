@@ -74,6 +74,14 @@ inline const SceneRange kSpotConeAngle{
 // A pinhole camera sees nothing at 0 and everything (a plane) at 180.
 inline const SceneRange kVerticalFov{
     "vertical field of view", 0.0, 180.0, true, true, "deg", "full vertical field of view", 1.0f, 179.0f};
+// A thin lens: 0 is a pinhole. The panel's span is a hand's breadth, which already blurs a room.
+inline const SceneRange kApertureRadius{
+    "aperture radius", 0.0, kMaxSceneExtent, false, false, "m", "radius of the lens disk; 0 is a pinhole",
+    0.0f, 0.25f};
+// At 0 every point but the eye would be out of focus.
+inline const SceneRange kFocusDistance{
+    "focus distance", 0.0, kMaxSceneExtent, true, false, "m", "distance along the view direction to the plane in focus",
+    0.01f, 100.0f};
 inline const SceneRange kIor{
     "index of refraction", 1.0, 4.0, false, false, "", "index of refraction, inside / outside", 1.0f, 4.0f};
 inline const SceneRange kRoughness{
@@ -99,7 +107,7 @@ inline bool coneAnglesOrdered(float innerDeg, float outerDeg) { return innerDeg 
 
 // Every range above, for tests and docs that go through them all.
 inline const SceneRange* const kSceneRanges[] = {
-    &ranges::kSpotConeAngle, &ranges::kVerticalFov, &ranges::kIor, &ranges::kRoughness, &ranges::kColor,
+    &ranges::kSpotConeAngle, &ranges::kVerticalFov, &ranges::kApertureRadius, &ranges::kFocusDistance, &ranges::kIor, &ranges::kRoughness, &ranges::kColor,
     &ranges::kRadiance, &ranges::kIntensity, &ranges::kEnvironmentIntensity, &ranges::kEnvironmentRotation,
 };
 

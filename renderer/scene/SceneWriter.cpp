@@ -181,6 +181,11 @@ Json cameraJson(const CameraDesc& camera) {
     json["up"] = vec3(camera.up);
     json["vfov_deg"] = numberInRange(camera.vfovDeg, ranges::kVerticalFov, "/camera/vfov_deg");
     json["resolution"] = Json::array({camera.resolution.x, camera.resolution.y});
+    // A pinhole camera's file stays as it was unless its focus was moved off the target.
+    if (camera.apertureRadius != 0.0f)
+        json["aperture_radius"] = numberInRange(camera.apertureRadius, ranges::kApertureRadius, "/camera/aperture_radius");
+    if (camera.apertureRadius != 0.0f || camera.focusDistance != defaultFocusDistance(camera))
+        json["focus_distance"] = numberInRange(camera.focusDistance, ranges::kFocusDistance, "/camera/focus_distance");
     return json;
 }
 

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 
 namespace ptview {
 
@@ -23,10 +24,14 @@ struct RenderSettings {
     // The best result is the default (the viewer, `ptview render`, bench); naive is for teaching.
     Integrator integrator = Integrator::Full;
     DebugView debugView = DebugView::Radiance;
+    // Firefly control, biased: each contribution one path vertex adds to its pixel (throughput x
+    // emission, or x a light sample's estimate) is scaled down so that its largest component is at
+    // most this (shaders/integrator.glsl, docs/integrators.md). nullopt: no clamp, unbiased.
+    std::optional<float> radianceClamp;
 
     bool operator==(const RenderSettings& other) const {
         return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
-               sampleBudget == other.sampleBudget && debugView == other.debugView;
+               sampleBudget == other.sampleBudget && debugView == other.debugView && radianceClamp == other.radianceClamp;
     }
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
 };
