@@ -88,6 +88,14 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     addNamedOption(app, "--view", settings.debugView, "view", debugViewNames().namesAndValues())
         ->description("view: radiance (the render), normals or albedo (of the first surface seen)")
         ->default_str("radiance");
+    std::string lightPaths = "light-path view (the part of the light shown):";
+    for (const EnumEntry<LightPaths>& entry : lightPathsNames())
+        lightPaths += std::string("\n  ") + entry.name + ": " + entry.description;
+    addNamedOption(app, "--light-paths", settings.lightPaths, "light-path view", lightPathsNames().namesAndValues())
+        ->description(lightPaths)
+        ->default_str(lightPathsName(settings.lightPaths));
+    app.add_option("--bounces", settings.lightPathBounces, "k of --light-paths exactly and at-most")
+        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024))->capture_default_str();
 }
 
 void addProgramOptions(CLI::App& app, ProgramOptions& program) {

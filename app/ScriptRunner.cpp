@@ -56,6 +56,8 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
                        std::to_string(session.renderSize().x) + "x" + std::to_string(session.renderSize().y) +
                        " integrator=" + integratorName(settings.integrator) + " sampler=" +
                        samplerModeName(settings.sampler) + " depth=" + std::to_string(settings.maxDepth) +
+                       " light-paths=" + lightPathsName(settings.lightPaths) +
+                       (lightPathsUseBounces(settings.lightPaths) ? ":" + std::to_string(settings.lightPathBounces) : "") +
                        " target-spp=" + std::to_string(model.targetSamples) +
                        " backend=" + backendName(session.tracer(ViewerSession::Side::Left).backend()) +
                        " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
@@ -342,6 +344,9 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"integrator", [](Step& s) { s.model.settings.integrator = integratorNamed(s.word); }},
         {"sampler", [](Step& s) { s.model.settings.sampler = *parseSamplerMode(s.word); }},
         {"depth", [](Step& s) { s.model.settings.maxDepth = s.command.integer(0); }},
+        {"light-paths",
+         [](Step& s) { s.model.settings.lightPaths = lightPathsNames().parse(s.word).value_or(LightPaths::All); }},
+        {"light-path-bounces", [](Step& s) { s.model.settings.lightPathBounces = s.command.integer(0); }},
         {"seed", [](Step& s) { s.model.settings.seed = s.command.unsignedInteger(0); }},
         {"exposure", [](Step& s) { s.model.display.exposureStops = s.command.number(0); }},
         {"tone-mapper", [](Step& s) { s.model.display.toneMapper = toneMapperNamed(s.word); }},

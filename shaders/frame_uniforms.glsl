@@ -8,5 +8,5 @@ layout(std140) uniform FrameBlock {
     vec3 uEnvironmentRadiance; int uMaxDepth;      // bounces; 0 shows emitters only
     ivec2 uImageSize;         uint uSamplerMode;   uint uSampleBudget; // see sampler.glsl
     uint uIntegrator;         float uSceneRadius;  // of the scene's bounding sphere: sets ray offsets
-    uint uPad1; uint uPad2;
+    int uLightPathBounces;    uint uPad2;          // k of the light-path views (light_paths.glsl)
 };

@@ -20,6 +20,7 @@
 #include "emission.glsl"
 #include "lights.glsl"
 #include "environment.glsl"
+#include "light_paths.glsl"
 // kIntegratorNaive, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
@@ -79,6 +80,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
     vec3 previousPos = ray.origin;
     float previousPdf = 0.0;     // solid-angle density of the BSDF sample that made this ray
     bool previousDelta = true;   // the camera ray counts as delta: nothing else could find it
+    PathHistory history = startPathHistory(); // for the light-path views (light_paths.glsl)
     for (int bounce = 0; bounce <= lastBounce; ++bounce) {
         Hit hit;
         bool found = intersectScene(ray, hit);
@@ -91,6 +93,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (countEmission) {
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
+                weight *= lightPathWeight(bounce, history, bounce > 0);
                 radiance += throughput * environmentRadiance(ray.direction) * weight;
             }
             break;
@@ -101,6 +104,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (any(greaterThan(emitted, vec3(0.0)))) {
                 float weight = (!lightSampling || previousDelta) ? 1.0
                              : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
+                weight *= lightPathWeight(bounce, history, bounce > 0);
                 radiance += throughput * emitted * weight;
             }
         }
@@ -110,7 +114,9 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         vec3 woLocal = toLocal(frame, -ray.direction);
 
         // ---- Next-event estimation --------------------------------------------------------------
-        if (lightSampling) radiance += throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis);
+        if (lightSampling)
+            radiance += throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis) *
+                        lightPathWeight(bounce + 1, history, false);
         if (kIntegrator == kIntegratorDirect) break;
 
         // ---- BSDF sampling -----------------------------------------------------------------------
@@ -124,6 +130,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         previousPos = hit.posWorld;
         previousPdf = bs.pdfSolidAngle;
         previousDelta = bs.isDelta;
+        recordScattering(history, bs.isDelta);
         ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
 
         // ---- Russian roulette: survive with the throughput's largest component ------------------

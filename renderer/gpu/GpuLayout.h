@@ -29,7 +29,7 @@ struct FrameUniforms {
     std::uint32_t sampleBudget; // samples per pixel the grid and stratified patterns are sized for
     std::uint32_t integrator;   // Integrator
     float sceneRadius;          // bounding sphere of the geometry, for ray offsets (intersect.glsl)
-    std::uint32_t pad1;
+    std::int32_t lightPathBounces; // k of the light-path views exactly / at most k (light_paths.glsl)
     std::uint32_t pad2;
 };
 static_assert(sizeof(FrameUniforms) == 112, "FrameUniforms must match the std140 FrameBlock");

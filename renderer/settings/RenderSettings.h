@@ -5,6 +5,7 @@
 
 #include "DebugView.h"
 #include "Integrator.h"
+#include "LightPaths.h"
 #include "SamplerMode.h"
 
 #include <glm/glm.hpp>
@@ -23,10 +24,14 @@ struct RenderSettings {
     // The best result is the default (the viewer, `ptview render`, bench); naive is for teaching.
     Integrator integrator = Integrator::Full;
     DebugView debugView = DebugView::Radiance;
+    // The light-path explorer (LightPaths.h): all light, or a part of it; k for exactly / at-most.
+    LightPaths lightPaths = LightPaths::All;
+    int lightPathBounces = 1;
 
     bool operator==(const RenderSettings& other) const {
         return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
-               sampleBudget == other.sampleBudget && debugView == other.debugView;
+               sampleBudget == other.sampleBudget && debugView == other.debugView && lightPaths == other.lightPaths &&
+               lightPathBounces == other.lightPathBounces;
     }
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
 };
