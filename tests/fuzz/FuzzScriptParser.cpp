@@ -85,6 +85,8 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["integrator"] = {choice(namesOf(ptview::integratorNames()))};
         t["sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
         t["depth"] = {integer(0, 1024)};
+        t["light-paths"] = {choice(namesOf(ptview::lightPathsNames()))};
+        t["light-path-bounces"] = {integer(0, 1024)};
         t["seed"] = {unsignedInteger()};
         t["exposure"] = {number(-20, 20)};
         t["tone-mapper"] = {choice(namesOf(ptview::toneMapperNames()))};
