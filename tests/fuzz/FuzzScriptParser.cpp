@@ -17,6 +17,7 @@
 // the parser accepted, a path that is not what the operating system will open) is a finding.
 
 #include "Integrator.h"
+#include "LightPaths.h"
 #include "MaterialSchema.h"
 #include "SamplerMode.h"
 #include "ToneMapper.h"
