@@ -61,7 +61,7 @@ struct BenchOptions {
 
 struct ConvergeConfig {
     Integrator integrator = Integrator::Full;
-    SamplerMode sampler = SamplerMode::Random;
+    SamplerMode sampler = SamplerMode::Sobol;
     int maxDepth = 8;
 };
 
