@@ -101,6 +101,14 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     app.add_option("--clamp", settings.radianceClamp,
                    "firefly control (biased): scale each path vertex's contribution down to a largest component of VALUE")
         ->check(kFiniteNumber)->check(CLI::PositiveNumber);
+    std::string lightPaths = "light-path view (the part of the light shown):";
+    for (const EnumEntry<LightPaths>& entry : lightPathsNames())
+        lightPaths += std::string("\n  ") + entry.name + ": " + entry.description;
+    addNamedOption(app, "--light-paths", settings.lightPaths, "light-path view", lightPathsNames().namesAndValues())
+        ->description(lightPaths)
+        ->default_str(lightPathsName(settings.lightPaths));
+    app.add_option("--bounces", settings.lightPathBounces, "k of --light-paths exactly and at-most")
+        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024))->capture_default_str();
 }
 
 void addProgramOptions(CLI::App& app, ProgramOptions& program) {

@@ -65,7 +65,7 @@ struct BenchOptions {
 
 struct ConvergeConfig {
     Integrator integrator = Integrator::Full;
-    SamplerMode sampler = SamplerMode::Random;
+    SamplerMode sampler = SamplerMode::Sobol;
     int maxDepth = 8;
     std::optional<float> radianceClamp; // "/clamp=VALUE" after the depth: biased firefly control
 };

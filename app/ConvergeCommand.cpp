@@ -327,6 +327,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
             for (const ConvergeConfig& config : options.configs) deepest = std::max(deepest, config.maxDepth);
             RenderSettings settings;
             settings.integrator = Integrator::Full;
+            settings.sampler = SamplerMode::Random; // independent samples: their spread is the noise floor
             settings.maxDepth = options.referenceDepth > 0 ? options.referenceDepth : std::max(deepest, 16);
             settings.seed = options.seed + kReferenceSeedOffset;
             settings.sampleBudget = static_cast<std::uint32_t>(options.referenceSpp);

@@ -93,6 +93,9 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     enumCombo("view", debugViewNames(), settings.debugView);
     itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
     ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
+    // The light-path explorer: the same paths, only a part of what they carry added up.
+    enumCombo("light paths", lightPathsNames(), settings.lightPaths);
+    if (lightPathsUseBounces(settings.lightPaths)) ImGui::SliderInt("bounces k", &settings.lightPathBounces, 0, 16);
 
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");

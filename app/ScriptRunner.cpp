@@ -62,6 +62,8 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
                        std::to_string(session.renderSize().x) + "x" + std::to_string(session.renderSize().y) +
                        " integrator=" + integratorName(settings.integrator) + " sampler=" +
                        samplerModeName(settings.sampler) + " depth=" + std::to_string(settings.maxDepth) +
+                       " light-paths=" + lightPathsName(settings.lightPaths) +
+                       (lightPathsUseBounces(settings.lightPaths) ? ":" + std::to_string(settings.lightPathBounces) : "") +
                        " target-spp=" + std::to_string(model.targetSamples) +
                        " backend=" + backendName(session.tracer(ViewerSession::Side::Left).backend()) +
                        " reloads=" + std::to_string(session.reloadCount()) + " eye=" + vectorText(model.scene.camera.eye) +
@@ -375,6 +377,9 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
          [](Step& s) {
              s.model.settings.radianceClamp = s.command.isWord(0, "off") ? std::nullopt : std::optional<float>(s.command.number(0));
          }},
+        {"light-paths",
+         [](Step& s) { s.model.settings.lightPaths = lightPathsNames().parse(s.word).value_or(LightPaths::All); }},
+        {"light-path-bounces", [](Step& s) { s.model.settings.lightPathBounces = s.command.integer(0); }},
         {"seed", [](Step& s) { s.model.settings.seed = s.command.unsignedInteger(0); }},
         {"exposure", [](Step& s) { s.model.display.exposureStops = s.command.number(0); }},
         {"tone-mapper", [](Step& s) { s.model.display.toneMapper = toneMapperNamed(s.word); }},

@@ -3,6 +3,7 @@
 #include "EditDistance.h"
 #include "InputFile.h"
 #include "Integrator.h"
+#include "LightPaths.h"
 #include "MaterialSchema.h"
 #include "MaterialTextures.h"
 #include "SamplerMode.h"
@@ -113,6 +114,7 @@ std::vector<ArgSpec> vec3Args(const char* x, const char* y, const char* z, doubl
 // The name tables live with the enums; these only turn them into words.
 std::vector<std::string> integratorChoices() { return integratorNames().names(); }
 std::vector<std::string> samplerChoices() { return samplerModeNames().names(); }
+std::vector<std::string> lightPathsChoices() { return lightPathsNames().names(); }
 std::vector<std::string> toneMapperChoices() { return toneMapperNames().names(); }
 std::vector<std::string> materialTypeChoices() {
     std::vector<std::string> names;
@@ -194,6 +196,9 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"depth", {integerArg("N", 0, 1024)}, nullptr, "maximum bounces (0: only what the camera sees)"},
         {"clamp", {keywordNumberArg("VALUE", 0.0, kInf, true, "off")}, nullptr,
          "firefly control (biased): largest component of one path vertex's contribution, or off"},
+        {"light-paths", {choiceArg("NAME", "light-path view", lightPathsChoices)}, nullptr,
+         "show a part of the light: all, exactly, at-most (k: light-path-bounces), direct, indirect, caustics"},
+        {"light-path-bounces", {integerArg("K", 0, 1024)}, nullptr, "k of the light-path views exactly and at-most"},
         {"seed", {unsignedArg("N")}, nullptr, "random seed (decorrelates renders of the same scene)"},
         {"exposure", {numberArg("F", -20.0, 20.0)}, nullptr, "exposure in stops"},
         {"tone-mapper", {choiceArg("NAME", "tone mapper", toneMapperChoices)}, nullptr, "the display transform"},

@@ -35,8 +35,8 @@ void resetPassState() {
 
 bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
     if (features != other.features) return features < other.features;
-    return std::tie(integrator, sampler, debugView, backend) <
-           std::tie(other.integrator, other.sampler, other.debugView, other.backend);
+    return std::tie(integrator, sampler, debugView, lightPaths, backend) <
+           std::tie(other.integrator, other.sampler, other.debugView, other.lightPaths, other.backend);
 }
 
 PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
@@ -58,7 +58,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
 
 PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) const {
     ShaderAssembler assembler(shaderDir_);
-    specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView);
+    specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView, key.lightPaths);
     TraceProgram trace;
     if (key.backend == Backend::Compute) {
         trace.source = assembler.assemble("pathtrace.comp");
@@ -95,6 +95,7 @@ void PathTracer::updateProgramKey() {
     programKey_.integrator = settings_.integrator;
     programKey_.sampler = settings_.sampler;
     programKey_.debugView = settings_.debugView;
+    programKey_.lightPaths = settings_.lightPaths;
     programKey_.backend = backend_;
 }
 
@@ -124,7 +125,8 @@ BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     const std::string device = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", " +
                                reinterpret_cast<const char*>(glGetString(GL_VERSION));
     const std::string program = programKey_.features.describe() + integratorName(programKey_.integrator) + " " +
-                                samplerModeName(programKey_.sampler) + " " + debugViewName(programKey_.debugView);
+                                samplerModeName(programKey_.sampler) + " " + debugViewName(programKey_.debugView) + " " +
+                                lightPathsName(programKey_.lightPaths);
     const std::string key = backendCacheKey(device, program);
     std::optional<BackendChoice> choice = cache.find(key);
     if (!choice) {
@@ -316,6 +318,7 @@ void PathTracer::updateFrameUniforms(const Accumulator& target) {
     frame.seed = settings_.seed;
     frame.environmentRadiance = environmentRadiance_;
     frame.maxDepth = settings_.maxDepth;
+    frame.lightPathBounces = settings_.lightPathBounces;
     frame.imageSize = size;
     frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
     frame.sampleBudget = settings_.sampleBudget;

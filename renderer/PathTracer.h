@@ -140,6 +140,7 @@ private:
         Integrator integrator = Integrator::Naive;
         SamplerMode sampler = SamplerMode::Random;
         DebugView debugView = DebugView::Radiance;
+        LightPaths lightPaths = LightPaths::All;
         Backend backend = Backend::Fragment;
         bool operator<(const ProgramKey& other) const;
     };

@@ -21,6 +21,7 @@
 #include "emission.glsl"
 #include "lights.glsl"
 #include "environment.glsl"
+#include "light_paths.glsl"
 // kIntegratorNaive, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
@@ -88,6 +89,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
     vec3 previousPos = ray.origin;
     float previousPdf = 0.0;     // solid-angle density of the BSDF sample that made this ray
     bool previousDelta = true;   // the camera ray counts as delta: nothing else could find it
+    PathHistory history = startPathHistory(); // for the light-path views (light_paths.glsl)
     for (int bounce = 0; bounce <= lastBounce; ++bounce) {
         Hit hit;
         bool found = intersectScene(ray, hit);
@@ -100,6 +102,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (countEmission) {
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
+                weight *= lightPathWeight(bounce, history, bounce > 0);
                 radiance += clampContribution(throughput * environmentRadiance(ray.direction) * weight);
             }
             break;
@@ -110,6 +113,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (any(greaterThan(emitted, vec3(0.0)))) {
                 float weight = (!lightSampling || previousDelta) ? 1.0
                              : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
+                weight *= lightPathWeight(bounce, history, bounce > 0);
                 radiance += clampContribution(throughput * emitted * weight);
             }
         }
@@ -120,7 +124,8 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
 
         // ---- Next-event estimation --------------------------------------------------------------
         if (lightSampling)
-            radiance += clampContribution(throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis));
+            radiance += clampContribution(throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis)) *
+                        lightPathWeight(bounce + 1, history, false);
         if (kIntegrator == kIntegratorDirect) break;
 
         // ---- BSDF sampling -----------------------------------------------------------------------
@@ -134,6 +139,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         previousPos = hit.posWorld;
         previousPdf = bs.pdfSolidAngle;
         previousDelta = bs.isDelta;
+        recordScattering(history, bs.isDelta);
         ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
 
         // ---- Russian roulette: survive with the throughput's largest component ------------------

@@ -5,3 +5,4 @@
 #define kIntegrator uIntegrator
 #define kSamplerMode uSamplerMode
 #define kDebugView 0u
+#define kLightPaths 0u

@@ -326,7 +326,7 @@ TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
                                                shellQuoted(path("c.pfm")) + " --spp 400 --size 128x128 --integrator naive");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::smatch seconds;
-    ASSERT_TRUE(std::regex_search(result.output, seconds, std::regex(R"(depth 8, random sampler, naive integrator, ([0-9.]+) s,)"))) << result.output;
+    ASSERT_TRUE(std::regex_search(result.output, seconds, std::regex(R"(depth 8, sobol sampler, naive integrator, ([0-9.]+) s,)"))) << result.output;
     // Progress starts once a render has run for a second (this takes several on llvmpipe); a GPU
     // may finish sooner, and then there is nothing to report.
     if (std::stod(seconds[1]) > 1.5) {
@@ -335,13 +335,13 @@ TEST_F(CommandLineTest, LongRenderReportsProgressWithEta) {
     }
 }
 
-// The best result is the default; naive stays one option away. Each sampler says what it is,
-// the biased one that it is.
+// The best result is the default (full, sobol); naive and random stay one option away. Each
+// sampler says what it is, the biased one that it is.
 TEST_F(CommandLineTest, DefaultIntegratorIsFullAndHelpDescribesEachSampler) {
     testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(kCornell) + " --out " +
                                                shellQuoted(path("c.pfm")) + " --spp 1 --size 8x8");
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    EXPECT_NE(result.output.find("random sampler, full integrator"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("sobol sampler, full integrator"), std::string::npos) << result.output;
     for (const char* arguments : {" --help", " render --help"}) {
         testing::CommandResult help = runCommand(kBinary + arguments);
         EXPECT_EQ(help.exitCode, 0) << help.output;

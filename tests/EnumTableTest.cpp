@@ -77,7 +77,7 @@ TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
         EXPECT_FALSE(std::regex_search(shaders, std::regex("const\\s+uint\\s+" + name + "\\b")))
             << name << " is defined by hand in a shader";
     }
-    EXPECT_EQ(constants, 4 + 4 + 3 + 3 + 8 + 9); // integrators, samplers, views, tone mappers, light kinds, materials
+    EXPECT_EQ(constants, 4 + 4 + 3 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
 }
 
 } // namespace

@@ -96,6 +96,7 @@ TEST(ErrorEstimate, TheViewerShowsANumberOnceItKeptAMeanAtHalfTheSamples) {
     ASSERT_TRUE(input);
     RenderSettings settings;
     settings.integrator = Integrator::Full;
+    settings.sampler = SamplerMode::Random;
     ViewerSession session(std::move(*input), settings, DisplaySettings{}, PTVIEW_SHADER_DIR);
     session.setImageArea(PixelRect{{0, 0}, {32, 32}});
     auto start = std::chrono::steady_clock::now();
@@ -174,6 +175,7 @@ double trueEffectivePixels(const ImageRgbF& image, const ImageRgbF& reference) {
 Reference renderReference(PathTracer& tracer, Integrator integrator) {
     RenderSettings settings;
     settings.integrator = integrator;
+    settings.sampler = SamplerMode::Random; // its own variance is subtracted: independent samples
     settings.seed = kReferenceSeed;
     settings.sampleBudget = kReferenceSpp;
     tracer.setSettings(settings);

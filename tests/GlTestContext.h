@@ -19,6 +19,7 @@ inline RenderSettings naiveSettings(int maxDepth, std::uint32_t seed) {
     settings.maxDepth = maxDepth;
     settings.seed = seed;
     settings.integrator = Integrator::Naive;
+    settings.sampler = SamplerMode::Random;
     return settings;
 }
 

@@ -365,6 +365,7 @@ ImageRgbF renderCornell(bool meshLight, Integrator integrator, int samples, std:
     tracer.setImageSize({32, 32});
     RenderSettings settings;
     settings.integrator = integrator;
+    settings.sampler = SamplerMode::Random; // the tolerances come from the per-pixel variance
     settings.seed = seed;
     settings.maxDepth = 3;
     tracer.setSettings(settings);

@@ -126,6 +126,44 @@ quit
     fs::remove_all(directory);
 }
 
+// The light-path explorer in the window: a view of one bounce shows less light than the render,
+// and going back to all light gives the render again, pixel for pixel (same seed and spp).
+TEST_F(ScriptedViewer, ALightPathViewChangesTheImageAndSwitchingBackRestoresIt) {
+    fs::path directory = freshDirectory("light_paths");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
+seed 3
+depth 4
+target-spp 4
+wait-spp 4
+screenshot all.pfm
+light-paths exactly
+light-path-bounces 2
+status
+wait-spp 4
+screenshot second_bounce.pfm
+light-paths all
+wait-spp 4
+screenshot back.pfm
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "light-paths"), "exactly:2");
+    EXPECT_EQ(field(status[0], "spp"), "0") << "a light-path view restarts accumulation";
+    EXPECT_EQ(field(status[1], "light-paths"), "all");
+    ImageRgbF all = readPfm(directory / "all.pfm"), second = readPfm(directory / "second_bounce.pfm"),
+              back = readPfm(directory / "back.pfm");
+    ASSERT_EQ(all.rgb.size(), back.rgb.size());
+    EXPECT_EQ(all.rgb, back.rgb) << "all light again: the same image";
+    const glm::dvec3 allMean = regionMean(all, 0, all.width, 0, all.height);
+    const glm::dvec3 secondMean = regionMean(second, 0, second.width, 0, second.height);
+    EXPECT_GT(secondMean.r, 0.05 * allMean.r) << "the second bounce carries light";
+    EXPECT_LT(secondMean.r, 0.8 * allMean.r) << "but not all of it";
+    fs::remove_all(directory);
+}
+
 // A direction is any non-zero vector and is stored at unit length. A float's square underflows
 // for (1e-30, 0, 0) and overflows for (1e20, 1e20, 1e20): normalized in float they became Inf and
 // (0, 0, 0), and the spot light a NaN in the shader.

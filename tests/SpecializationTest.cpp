@@ -118,6 +118,7 @@ Render render(const Scene& scene, PathTracerOptions options, Integrator integrat
     tracer.setImageSize(size);
     RenderSettings settings;
     settings.integrator = integrator;
+    settings.sampler = SamplerMode::Random; // the tolerances come from the per-pixel variance
     settings.maxDepth = 4;
     settings.seed = 9;
     tracer.setSettings(settings);

@@ -90,13 +90,15 @@ clamp off
 camera-aperture 0.05
 camera-focus 3.5
 camera-focus-at 0.25 0.75
+light-paths exactly
+light-path-bounces 2
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 49u);
+    ASSERT_EQ(script.commands.size(), 51u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -133,6 +135,8 @@ TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     EXPECT_EQ(c[33].words, std::vector<std::string>{"out/render.pfm"});
     EXPECT_EQ(c[37].words, (std::vector<std::string>{"a.json", "b.json"}));
     EXPECT_EQ(c[40].verb, "quit");
+    EXPECT_EQ(c[49].words, std::vector<std::string>{"exactly"});
+    EXPECT_EQ(c[50].integer(0), 2);
 }
 
 TEST(ViewerScript, CommentsAndBlankLinesAreSkippedButCountedAsLines) {
@@ -334,7 +338,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 46u);
+    EXPECT_EQ(referenceVerbs().size(), 48u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

@@ -32,7 +32,7 @@ struct FrameUniforms {
     float apertureRadius;       // thin lens, metres; 0: a pinhole
     float focusDistance;        // metres along the view direction
     float radianceClamp;        // largest component of one path vertex's contribution; 0: no clamp
-    std::uint32_t pad1;
+    std::int32_t lightPathBounces; // k of the light-path views exactly / at most k (light_paths.glsl)
     std::uint32_t pad2;
     std::uint32_t pad3;
 };

@@ -7,6 +7,7 @@
 
 #include "DebugView.h"
 #include "Integrator.h"
+#include "LightPaths.h"
 #include "SamplerMode.h"
 #include "Scene.h"
 #include "ShaderAssembler.h"
@@ -43,10 +44,12 @@ struct ShaderFeatures {
 
 ShaderFeatures sceneFeatures(const Scene& scene);
 
-// Makes `assembler` build the path-tracing program for these features, integrator and sampler:
-// generated bsdf.glsl and specialization.glsl, and the environment and mesh variants.
+// Makes `assembler` build the path-tracing program for these features, integrator, sampler, view
+// and light-path view: generated bsdf.glsl and specialization.glsl, and the environment, mesh,
+// texture and light-path variants (light_paths_none.glsl unless a part of the light is shown).
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
-                       SamplerMode sampler, DebugView view = DebugView::Radiance);
+                       SamplerMode sampler, DebugView view = DebugView::Radiance,
+                       LightPaths lightPaths = LightPaths::All);
 // The BSDF dispatch alone (probes that run BSDFs without a scene use every model).
 void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features);
 

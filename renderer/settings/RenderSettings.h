@@ -5,6 +5,7 @@
 
 #include "DebugView.h"
 #include "Integrator.h"
+#include "LightPaths.h"
 #include "SamplerMode.h"
 
 #include <glm/glm.hpp>
@@ -17,7 +18,10 @@ namespace ptview {
 struct RenderSettings {
     int maxDepth = 8;       // bounces; 0 shows only what the camera sees directly
     std::uint32_t seed = 0; // decorrelates independent renders of the same scene
-    SamplerMode sampler = SamplerMode::Random;
+    // Sobol' converges fastest and is unbiased (issue 22); random stays one option away, and what
+    // needs independent samples (a reference's noise floor, variance-based test tolerances) asks
+    // for it by name.
+    SamplerMode sampler = SamplerMode::Sobol;
     // The samples per pixel the render is heading for: grid and stratified lay out patterns of
     // n^2 <= sampleBudget samples, so a render of exactly that many is fully stratified.
     std::uint32_t sampleBudget = 1024;
@@ -28,10 +32,14 @@ struct RenderSettings {
     // emission, or x a light sample's estimate) is scaled down so that its largest component is at
     // most this (shaders/integrator.glsl, docs/integrators.md). nullopt: no clamp, unbiased.
     std::optional<float> radianceClamp;
+    // The light-path explorer (LightPaths.h): all light, or a part of it; k for exactly / at-most.
+    LightPaths lightPaths = LightPaths::All;
+    int lightPathBounces = 1;
 
     bool operator==(const RenderSettings& other) const {
         return integrator == other.integrator && maxDepth == other.maxDepth && seed == other.seed && sampler == other.sampler &&
-               sampleBudget == other.sampleBudget && debugView == other.debugView && radianceClamp == other.radianceClamp;
+               sampleBudget == other.sampleBudget && debugView == other.debugView && radianceClamp == other.radianceClamp &&
+               lightPaths == other.lightPaths && lightPathBounces == other.lightPathBounces;
     }
     bool operator!=(const RenderSettings& other) const { return !(*this == other); }
 };

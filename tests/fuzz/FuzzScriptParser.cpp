@@ -17,6 +17,7 @@
 // the parser accepted, a path that is not what the operating system will open) is a finding.
 
 #include "Integrator.h"
+#include "LightPaths.h"
 #include "MaterialSchema.h"
 #include "SamplerMode.h"
 #include "ToneMapper.h"
@@ -85,6 +86,8 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["integrator"] = {choice(namesOf(ptview::integratorNames()))};
         t["sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
         t["depth"] = {integer(0, 1024)};
+        t["light-paths"] = {choice(namesOf(ptview::lightPathsNames()))};
+        t["light-path-bounces"] = {integer(0, 1024)};
         t["seed"] = {unsignedInteger()};
         t["exposure"] = {number(-20, 20)};
         t["tone-mapper"] = {choice(namesOf(ptview::toneMapperNames()))};
