@@ -7,6 +7,7 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
 #include "Readback.h"
+#include "SceneFromImage.h"
 #include "SceneInput.h"
 #include "ScriptRunner.h"
 #include "ViewerSession.h"
@@ -636,7 +637,8 @@ public:
 
 } // namespace
 
-int runViewer(const ViewerOptions& options) {
+int runViewer(const ViewerOptions& requested) {
+    ViewerOptions options = requested; // an image to open replaces the settings with its own
     // The window is PNG whatever the name says, so the name must say PNG; and a path that cannot
     // be written is refused before any window opens.
     if (!options.screenshotPath.empty() && !checkOutputPath(options.screenshotPath, {".png"})) return kExitBadInput;
@@ -649,8 +651,11 @@ int runViewer(const ViewerOptions& options) {
             return kExitBadInput;
         }
     }
-    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    std::optional<Provenance> from; // `ptview shot.png`: the scene and settings it was rendered with
+    std::optional<SceneInput> input = isProvenanceImage(options.scenePath) ? loadSceneInputFromImage(options.scenePath, from)
+                                                                           : loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;
+    if (from) applyRecipe(from->recipe, options);
 
     // Init the window. Destroyed in the reverse order: ImGui, the window, GLFW.
     glfwSetErrorCallback(reportGlfwError);
