@@ -505,7 +505,7 @@ void ViewerWindow::drawImage() {
 bool ViewerWindow::frameScreenshotDone(int frame, Clock::time_point start) {
     bool somethingShown = warpVisualizer_.active() || session_.stats(ViewerSession::Side::Left).samples > 0;
     if (options_.frames <= 0 || frame < options_.frames || !somethingShown) return false;
-    writePng(options_.screenshotPath, readWindow(framebufferSize_));
+    writePng(options_.screenshotPath, readWindow(framebufferSize_), session_.provenance(ViewerSession::Side::Left));
     double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp) in %.2f s, %.1f ms per frame\n",
                  options_.screenshotPath.c_str(), frame, session_.stats(ViewerSession::Side::Left).samples, elapsed,
@@ -536,7 +536,7 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
 
         if (script) {
             if (std::optional<std::filesystem::path> path = script->takeWindowScreenshot()) {
-                writePng(*path, readWindow(framebufferSize_));
+                writePng(*path, readWindow(framebufferSize_), session_.provenance(ViewerSession::Side::Left));
                 std::fprintf(stderr, "ptview: wrote %s\n", path->string().c_str());
             }
             script->frameDisplayed();

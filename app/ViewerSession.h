@@ -93,6 +93,9 @@ public:
     // EXR carry the view's provenance (Provenance.h: the scene with its edits and the settings).
     // Throws as above.
     void writeImage(Side side, const std::filesystem::path& path) const;
+    // What a PNG or EXR of a view carries to be rendered again (Provenance.h); the window's
+    // screenshots carry the left view's.
+    ImageMetadata provenance(Side side) const;
 
     // Per frame, in this order.
     void pollFiles();                   // hot reload of the scene, its environment map and the shaders
@@ -143,7 +146,6 @@ private:
     View& view(Side side) { return side == Side::Left ? left_ : *right_; }
     const View& view(Side side) const { return side == Side::Left ? left_ : *right_; }
     RenderSettings effectiveSettings(const RenderSettings& settings) const;
-    ImageMetadata provenance(Side side) const;
     bool wantsSamples(const View& view, int passesThisFrame) const;
     void syncView(View& view, const RenderSettings& settings, unsigned changes);
     void trackRestart(View& view);

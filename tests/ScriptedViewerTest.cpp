@@ -603,7 +603,7 @@ wait-reload
 }
 
 // `ptview shot.png`: the viewer opens the scene and the settings the image carries (Provenance.h),
-// and its own screenshot then records them again, the scene's file included.
+// and its own screenshots (the image's EXR, the window's PNG) then record them again.
 TEST_F(ScriptedViewer, OpeningAnImagePtviewWroteRestoresItsSceneAndSettings) {
     fs::path directory = freshDirectory("from_image");
     testing::CommandResult render = testing::runCommand(
@@ -616,6 +616,7 @@ target-spp 1
 wait-spp 1
 status
 screenshot again.exr
+screenshot-window window.png
 quit
 )");
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -629,6 +630,7 @@ quit
     EXPECT_EQ(again.recipe.settings.seed, 9u);
     EXPECT_EQ(again.recipe.settings.integrator, Integrator::Mis);
     EXPECT_EQ(again.sceneFile, fs::path(kCornell).lexically_normal());
+    EXPECT_EQ(readProvenance(directory / "window.png").recipe.settings.maxDepth, 3) << "the window's PNG carries the view's";
     fs::remove_all(directory);
 }
 
