@@ -1,6 +1,7 @@
 // The real viewer binary in a real window (Xvfb), driven by `--script` files: settings and edits
 // restart accumulation and change the image the way a headless render of the edited scene says,
 // the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots.
+#include "ExrIO.h"
 #include "ImageIO.h"
 #include "Provenance.h"
 #include "RunCommand.h"
@@ -631,6 +632,16 @@ quit
     EXPECT_EQ(again.recipe.settings.integrator, Integrator::Mis);
     EXPECT_EQ(again.sceneFile, fs::path(kCornell).lexically_normal());
     EXPECT_EQ(readProvenance(directory / "window.png").recipe.settings.maxDepth, 3) << "the window's PNG carries the view's";
+    // The viewer's image, rendered again headless from its own file: the same bits.
+    testing::CommandResult headless = testing::runCommand(std::string(PTVIEW_BINARY) + " render --from " +
+                                                          testing::shellQuoted((directory / "again.exr").string()) + " --out " +
+                                                          testing::shellQuoted((directory / "headless.pfm").string()));
+    ASSERT_EQ(headless.exitCode, 0) << headless.output;
+    const ImageRgbF viewerImage = exrRgb(readExr(directory / "again.exr"), "again.exr");
+    const ImageRgbF headlessImage = readPfm(directory / "headless.pfm");
+    EXPECT_EQ(viewerImage.width, headlessImage.width);
+    EXPECT_EQ(viewerImage.height, headlessImage.height);
+    EXPECT_TRUE(viewerImage.rgb == headlessImage.rgb) << "the viewer's render and its headless reproduction differ";
     fs::remove_all(directory);
 }
 
