@@ -127,7 +127,10 @@ int runRenderCommand(const RenderOptions& requested) {
     std::optional<Provenance> from;
     std::optional<SceneInput> input = options.fromPath.empty() ? loadSceneInput(options.scenePath)
                                                                : loadSceneInputFromImage(options.fromPath, from);
-    if (from) applyRecipe(from->recipe, options);
+    if (from) {
+        applyRecipe(from->recipe, options);
+        options.scenePath = options.fromPath; // what the progress and error messages name
+    }
     if (!input) return kExitBadInput;
     Scene scene = std::move(input->scene);
     glm::ivec2 size = options.size.value_or(scene.camera.resolution);

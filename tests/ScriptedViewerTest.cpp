@@ -393,9 +393,11 @@ TEST_F(ScriptedViewer, F12SavesPngPfmAndExrIntoScreenshots) {
         if (entry.path().extension() != ".pfm") // the PNG and the EXR carry how they were made
             EXPECT_EQ(readProvenance(entry.path()).recipe.settings.integrator, Integrator::Naive) << name;
     }
-    EXPECT_EQ(png, 1);
-    EXPECT_EQ(pfm, 1);
-    EXPECT_EQ(exr, 1);
+    // window_keys.sh presses until a PNG is there; on a loaded machine a second press may land
+    // before the first save shows, so each save is one PNG, one PFM and one EXR.
+    EXPECT_GE(png, 1);
+    EXPECT_EQ(pfm, png);
+    EXPECT_EQ(exr, png);
     fs::remove_all(directory);
 }
 
