@@ -2,6 +2,7 @@
 
 #include "ConvergeCommand.h"
 #include "EditDistance.h"
+#include "ImageIO.h"
 #include "SceneRanges.h"
 
 #include <CLI/CLI.hpp>
@@ -96,7 +97,7 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMapperNames().namesAndValues())
         ->default_str(toneMapperName(display.toneMapper));
     addNamedOption(app, "--view", settings.debugView, "view", debugViewNames().namesAndValues())
-        ->description("view: radiance (the render), normals or albedo (of the first surface seen)")
+        ->description("view: radiance (the render), normals, albedo or depth (of the first surface seen)")
         ->default_str("radiance");
     app.add_option("--clamp", settings.radianceClamp,
                    "firefly control (biased): scale each path vertex's contribution down to a largest component of VALUE")
@@ -173,13 +174,13 @@ void addSizeOption(CLI::App& app, std::optional<glm::ivec2>& size, const std::st
 
 void addViewerOptions(CLI::App& app, ViewerOptions& viewer) {
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
-    app.add_option("scene", viewer.scenePath, "scene JSON to open")->capture_default_str();
+    app.add_option("scene", viewer.scenePath, "scene JSON to open, or a .png/.exr ptview wrote (its scene and settings)")->capture_default_str();
     addRenderSettings(app, viewer.settings, viewer.display);
     addProgramOptions(app, viewer.program);
     app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1000000));
     app.add_option("--screenshot", viewer.screenshotPath, "PNG of the window (panel included) after --frames");
-    app.add_option("--reference", viewer.referencePath, "reference image (.pfm): the Stats panel shows the true error")
+    app.add_option("--reference", viewer.referencePath, "reference image (.pfm or .exr): the Stats panel shows the true error")
         ->check(CLI::ExistingFile);
     app.add_option("--script", viewer.scriptPath, "run viewer commands from FILE (docs/viewer-script.md)")
         ->check(CLI::ExistingFile);
@@ -199,10 +200,38 @@ std::optional<int> finishViewerOptions(ViewerOptions& viewer) {
     return std::nullopt;
 }
 
+// "albedo,depth": each name once, in any order; nullopt for anything else.
+std::optional<std::vector<Aov>> parseAovs(const std::string& text) {
+    static const std::vector<std::pair<std::string, Aov>> names = {
+        {"albedo", Aov::Albedo}, {"normal", Aov::Normal}, {"depth", Aov::Depth}, {"variance", Aov::Variance}};
+    std::vector<Aov> aovs;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string name = text.substr(start, end - start);
+        auto entry = std::find_if(names.begin(), names.end(), [&](const auto& e) { return e.first == name; });
+        if (entry == names.end() || std::find(aovs.begin(), aovs.end(), entry->second) != aovs.end()) return std::nullopt;
+        aovs.push_back(entry->second);
+        start = end + 1;
+    }
+    return aovs;
+}
+
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
     CLI::App* command = app.add_subcommand("render", "render a scene headless (EGL, no window) to a file");
-    command->add_option("scene", render.scenePath, "scene JSON")->required();
-    command->add_option("--out,-o", render.outPath, "output image: .png (tone mapped) or .pfm (linear)");
+    command->add_option("scene", render.scenePath, "scene JSON (not with --from)");
+    command->add_option("--out,-o", render.outPath, "output image: .png (tone mapped), .pfm or .exr (linear)");
+    command->add_option("--from", render.fromPath, "render again what a .png or .exr ptview wrote: its scene and settings")
+        ->check(CLI::ExistingFile);
+    addNamedOption(*command, "--exr-type", render.exrType, "EXR pixel type",
+                   std::vector<std::pair<std::string, ExrPixelType>>{{"float", ExrPixelType::Float}, {"half", ExrPixelType::Half}})
+        ->default_str("float");
+    command->add_option_function<std::string>(
+        "--aovs", [&render](const std::string& text) { render.aovs = parseAovs(text).value_or(std::vector<Aov>{}); },
+        "EXR layers besides RGB, comma-separated: albedo, normal, depth, variance")
+        ->check(CLI::Validator([](std::string& text) -> std::string {
+            return parseAovs(text) ? "" : "expected albedo, normal, depth or variance, comma-separated, got \"" + text + "\"";
+        }, "LIST"));
     command->add_option("--spp", render.samplesPerPixel, "samples per pixel (with --time: the most)")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str()
         ->each([&render](const std::string&) { render.samplesPerPixelGiven = true; });
@@ -222,6 +251,15 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
 }
 
 std::optional<int> finishRenderOptions(const RenderOptions& render) {
+    if (render.scenePath.empty() == render.fromPath.empty()) {
+        std::cerr << "ptview: render: give a scene or --from FILE, not " << (render.scenePath.empty() ? "neither" : "both")
+                  << " (see ptview render --help)\n";
+        return kExitBadInput;
+    }
+    if (!render.aovs.empty() && !hasExrExtension(render.outPath)) {
+        std::cerr << "ptview: render: --aovs needs an .exr --out (the layers go into its channels)\n";
+        return kExitBadInput;
+    }
     if (render.outPath.empty() && render.dumpShaderPath.empty() && !render.printFeatures) {
         std::cerr << "ptview: render: --out is required (see ptview render --help)\n";
         return kExitBadInput;
@@ -262,7 +300,7 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeT
     command->add_option("scene", converge.scenePath, "scene JSON")->required();
     command->add_option("--out,-o", text.outDir, "output directory (convergence.csv, convergence.png, summary.md)")
         ->required();
-    command->add_option("--reference", converge.referencePath, "reference image (.pfm, linear); its size is used")
+    command->add_option("--reference", converge.referencePath, "reference image (.pfm or .exr, linear); its size is used")
         ->check(CLI::ExistingFile);
     command->add_option("--reference-spp", converge.referenceSpp,
                         "samples per pixel of the reference ptview renders when none is given (another seed)")
@@ -294,6 +332,12 @@ std::optional<int> finishConvergeOptions(ConvergeOptions& converge, const Conver
     return std::nullopt;
 }
 
+CLI::App* addInfoCommand(CLI::App& app, InfoOptions& info) {
+    CLI::App* command = app.add_subcommand("info", "print the metadata of a .png or .exr ptview wrote (how to render it again)");
+    command->add_option("file", info.path, "image file")->required();
+    return command;
+}
+
 CLI::App* addWarpCommand(CLI::App& app, WarpOptions& warp, float& coneAngleDeg) {
     CLI::App* command = app.add_subcommand("warp", "draw the points of a warp function to a PNG (headless)");
     addNamedOption(*command, "--warp", warp.request.warp, "warp", warpNames())->required();
@@ -322,6 +366,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     CLI::App* convergeCommand = addConvergeCommand(app, out.converge, convergeText);
     float coneAngleDeg = 60.0f;
     CLI::App* warpCommand = addWarpCommand(app, out.warp, coneAngleDeg);
+    CLI::App* infoCommand = addInfoCommand(app, out.info);
 
     if (argc >= 2)
         if (const CLI::App* nearest = misspeltSubcommand(app, argv[1])) {
@@ -353,6 +398,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         out.mode = CommandLine::Mode::Bench;
         finishBenchOptions(out.bench);
     }
+    if (*infoCommand) out.mode = CommandLine::Mode::Info;
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;
         if (std::optional<int> exitCode = finishRenderOptions(out.render)) return exitCode;

@@ -2,6 +2,7 @@
 // What the user asked for on the command line.
 
 #include "Backend.h"
+#include "ExrIO.h"
 #include "PathTracer.h"
 #include "WarpProbe.h"
 
@@ -24,9 +25,15 @@ struct ProgramOptions {
     std::optional<Backend> backend; // --backend; nullopt ("auto"): measured per device
 };
 
+// The layers `render --aovs` adds to an EXR, each a debug view (DebugView.h) or the accumulator's variance.
+enum class Aov { Albedo, Normal, Depth, Variance };
+
 struct RenderOptions {
     std::string scenePath;
-    std::string outPath;            // .png (tone mapped, 8-bit sRGB-like gamma 2.2) or .pfm (linear)
+    std::string outPath;            // .png (tone mapped, 8-bit sRGB-like gamma 2.2), .pfm or .exr (linear)
+    std::string fromPath;           // --from: a .png or .exr whose metadata gives the scene and settings
+    ExrPixelType exrType = ExrPixelType::Float; // --exr-type
+    std::vector<Aov> aovs;          // --aovs (EXR only)
     int samplesPerPixel = 256;
     bool samplesPerPixelGiven = false; // --spp typed: with --time, the most to render; else no bound
     std::optional<glm::ivec2> size; // default: the scene camera's resolution
@@ -49,7 +56,7 @@ struct ViewerOptions {
     std::string screenshotPath;
     bool showWarp = false;       // open in the warp visualizer
     std::string scriptPath;      // commands to run in the viewer (docs/viewer-script.md)
-    std::string referencePath;   // a .pfm: the Stats panel shows the true error against it
+    std::string referencePath;   // a .pfm or .exr: the Stats panel shows the true error against it
     std::string shaderDir = PTVIEW_SHADER_DIR; // GLSL to compile and watch for hot reload
     WarpRequest warp{Warp::CosineHemisphere, SamplerMode::Random, 1024};
 };
@@ -73,7 +80,7 @@ struct ConvergeConfig {
 struct ConvergeOptions {
     std::string scenePath;
     std::filesystem::path outDir;
-    std::string referencePath;  // a PFM; empty: render one (--reference-spp, another seed)
+    std::string referencePath;  // a PFM or EXR; empty: render one (--reference-spp, another seed)
     int referenceSpp = 1024;
     int referenceDepth = 0;     // 0: the deepest configuration's, and at least 16
     std::vector<ConvergeConfig> configs;
@@ -84,6 +91,10 @@ struct ConvergeOptions {
     ProgramOptions program;
 };
 
+struct InfoOptions {
+    std::string path; // a .png or .exr ptview wrote
+};
+
 struct WarpOptions {
     WarpRequest request;   // count, warp, sampler, seed, cone angle
     std::string outPath;   // .png
@@ -91,7 +102,8 @@ struct WarpOptions {
 };
 
 struct CommandLine {
-    enum class Mode { Viewer, Render, Warp, Bench, Converge } mode = Mode::Viewer;
+    enum class Mode { Viewer, Render, Warp, Bench, Converge, Info } mode = Mode::Viewer;
+    InfoOptions info;
     ConvergeOptions converge;
     RenderOptions render;
     BenchOptions bench;

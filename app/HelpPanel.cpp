@@ -22,7 +22,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Space", "pause / resume"},
     {"R", "restart accumulation"},
     {"C", "toggle the compare split view; drag the white divider to move it"},
-    {"F12", "screenshot (PNG + PFM into screenshots/)"},
+    {"F12", "screenshot (PNG + PFM + EXR into screenshots/)"},
     {"Tab", "hide / show the sidebar"},
     {"F1", "this help"},
     {"Esc", "quit (asks first when the scene has unsaved edits)"},

@@ -17,7 +17,7 @@ struct PanelState {
     // Quit, open and Reload waiting for "save your edits?" (drawUnsavedEditsDialog asks).
     UnsavedEditsPrompt unsavedEdits;
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
-    std::string referencePathInput;   // Stats panel: a reference image (.pfm)
+    std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
     // Panels to open on the next frame ("all" for every one), asked for by a script.

@@ -1,12 +1,15 @@
 #include "RenderCommand.h"
 
 #include "CommandErrors.h"
+#include "ExrIO.h"
 #include "EnvironmentMap.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
 #include "PathTracer.h"
+#include "Provenance.h"
 #include "Scene.h"
 #include "OutputPath.h"
+#include "SceneFromImage.h"
 #include "SceneInput.h"
 #include "ShaderAssembler.h"
 
@@ -39,7 +42,7 @@ std::string secondsText(double seconds) {
     return text;
 }
 
-enum class OutputFormat { Png, Pfm };
+enum class OutputFormat { Png, Pfm, Exr };
 
 // Progress on stderr: one line rewritten in place on a terminal, a line every few seconds in a log.
 class ProgressReporter {
@@ -76,20 +79,58 @@ private:
     bool reported_ = false;
 };
 
+// Renders spp samples of a debug view (DebugView.h) after the image: the --aovs layers.
+ImageRgbF renderDebugView(PathTracer& tracer, RenderSettings settings, DebugView view, int spp) {
+    settings.debugView = view;
+    tracer.setSettings(settings); // restarts: the view changed
+    while (tracer.sampleCount() < spp) tracer.renderSample();
+    return tracer.readMean();
+}
+
+// The EXR of the mean and the --aovs layers (docs/output.md lists the channels).
+ExrImage exrWithAovs(PathTracer& tracer, const ImageRgbF& mean, const RenderOptions& options, const RenderSettings& settings) {
+    ExrImage exr;
+    exr.width = mean.width;
+    exr.height = mean.height;
+    exr.addRgb(mean);
+    // The variance first: the debug-view passes below restart the accumulation it comes from.
+    if (std::find(options.aovs.begin(), options.aovs.end(), Aov::Variance) != options.aovs.end())
+        exr.addRgb(tracer.readStatistics().varianceOfMean, "variance.");
+    for (Aov aov : options.aovs) {
+        if (aov == Aov::Albedo) exr.addRgb(renderDebugView(tracer, settings, DebugView::Albedo, options.samplesPerPixel), "albedo.");
+        if (aov == Aov::Normal) {
+            ImageRgbF normal = renderDebugView(tracer, settings, DebugView::Normals, options.samplesPerPixel);
+            for (float& v : normal.rgb) v = 2.0f * v - 1.0f; // the view shows 0.5 n + 0.5
+            exr.addComponent("N.X", normal, 0);
+            exr.addComponent("N.Y", normal, 1);
+            exr.addComponent("N.Z", normal, 2);
+        }
+        if (aov == Aov::Depth) exr.addComponent("Z", renderDebugView(tracer, settings, DebugView::Depth, options.samplesPerPixel), 0);
+    }
+    return exr;
+}
+
 } // namespace
 
-int runRenderCommand(const RenderOptions& options) {
+int runRenderCommand(const RenderOptions& requested) {
+    RenderOptions options = requested; // --from replaces the scene and the settings
     // Everything the user typed is checked before any GPU work, and no file is written on error.
     std::optional<std::string> extension;
     if (!options.outPath.empty()) {
-        extension = checkOutputPath(options.outPath, {".png", ".pfm"});
+        extension = checkOutputPath(options.outPath, {".png", ".pfm", ".exr"});
         if (!extension) return kExitBadInput;
     }
     if (!options.dumpShaderPath.empty() && !checkOutputPath(options.dumpShaderPath, {".glsl", ".comp", ".frag", ".txt"}))
         return kExitBadInput;
-    OutputFormat format = extension == ".png" ? OutputFormat::Png : OutputFormat::Pfm;
+    OutputFormat format = extension == ".png" ? OutputFormat::Png : extension == ".exr" ? OutputFormat::Exr : OutputFormat::Pfm;
 
-    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    std::optional<Provenance> from;
+    std::optional<SceneInput> input = options.fromPath.empty() ? loadSceneInput(options.scenePath)
+                                                               : loadSceneInputFromImage(options.fromPath, from);
+    if (from) {
+        applyRecipe(from->recipe, options);
+        options.scenePath = options.fromPath; // what the progress and error messages name
+    }
     if (!input) return kExitBadInput;
     Scene scene = std::move(input->scene);
     glm::ivec2 size = options.size.value_or(scene.camera.resolution);
@@ -109,7 +150,7 @@ int runRenderCommand(const RenderOptions& options) {
         // --time alone has no bound but the largest --spp; --spp with it is the most to render.
         const int maxSamples = options.timeLimitSeconds && !options.samplesPerPixelGiven ? kMaxSamplesPerPixel : options.samplesPerPixel;
         RenderSettings settings = options.settings;
-        settings.sampleBudget = static_cast<std::uint32_t>(maxSamples); // fully stratified at the end
+        if (!from) settings.sampleBudget = static_cast<std::uint32_t>(maxSamples); // fully stratified at the end
         tracer.setSettings(settings);
         if (!options.dumpShaderPath.empty()) {
             writeFileAtomically(options.dumpShaderPath, tracer.pathTraceSource().source);
@@ -155,10 +196,20 @@ int runRenderCommand(const RenderOptions& options) {
         }
 
         ImageRgbF mean = tracer.readMean();
-        if (format == OutputFormat::Png)
-            writePng(options.outPath, tracer.readToneMapped(options.display));
-        else
+        const RenderRecipe recipe{settings, options.display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures};
+        if (from && from->device != context.description())
+            std::fprintf(stderr, "ptview: warning: %s was rendered on %s, this is %s: the pixels may differ\n",
+                         options.fromPath.c_str(), from->device.c_str(), context.description().c_str());
+        if (format == OutputFormat::Png) {
+            writePng(options.outPath, tracer.readToneMapped(options.display),
+                     provenanceMetadata(scene, recipe, context.description()));
+        } else if (format == OutputFormat::Exr) {
+            ExrImage exr = exrWithAovs(tracer, mean, options, settings);
+            exr.metadata = provenanceMetadata(scene, recipe, context.description());
+            writeExr(options.outPath, exr, options.exrType);
+        } else {
             writePfm(options.outPath, mean);
+        }
         // Every render says whether it produced non-finite pixels: one is a bug to report.
         long long nonFinite = 0;
         for (int y = 0; y < mean.height; ++y)

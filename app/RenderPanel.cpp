@@ -116,7 +116,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
 
     ImGui::Separator();
     if (ImGui::Button("Screenshot (F12)")) saveScreenshots(session, state);
-    itemTooltip("tone-mapped PNG and linear PFM of the image (each side in compare mode) into screenshots/");
+    itemTooltip("tone-mapped PNG, linear PFM and EXR of the image (each side in compare mode) into screenshots/");
     if (!state.screenshotMessage.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(state.screenshotFailed ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f),

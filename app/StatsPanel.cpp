@@ -91,7 +91,7 @@ void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSecon
     const ViewerModel& model = session.model();
     ImGui::PushID("reference");
     if (pathField("Load reference", state.referencePathInput)) session.setReference(state.referencePathInput);
-    itemTooltip("a .pfm of this scene at the render's size (e.g. ptview render SCENE --spp 4096 --size WxH --out ref.pfm):\n"
+    itemTooltip("a .pfm or .exr of this scene at the render's size (e.g. ptview render SCENE --spp 4096 --size WxH --out ref.pfm):\n"
                 "the panel then shows the true error against it");
     if (model.reference) {
         ImGui::TextDisabled("reference: %s", model.referencePath.filename().string().c_str());

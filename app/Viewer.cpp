@@ -7,6 +7,7 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
 #include "Readback.h"
+#include "SceneFromImage.h"
 #include "SceneInput.h"
 #include "ScriptRunner.h"
 #include "ViewerSession.h"
@@ -504,7 +505,7 @@ void ViewerWindow::drawImage() {
 bool ViewerWindow::frameScreenshotDone(int frame, Clock::time_point start) {
     bool somethingShown = warpVisualizer_.active() || session_.stats(ViewerSession::Side::Left).samples > 0;
     if (options_.frames <= 0 || frame < options_.frames || !somethingShown) return false;
-    writePng(options_.screenshotPath, readWindow(framebufferSize_));
+    writePng(options_.screenshotPath, readWindow(framebufferSize_), session_.provenance(ViewerSession::Side::Left));
     double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     std::fprintf(stderr, "ptview: wrote %s after %d frames (%d spp) in %.2f s, %.1f ms per frame\n",
                  options_.screenshotPath.c_str(), frame, session_.stats(ViewerSession::Side::Left).samples, elapsed,
@@ -535,7 +536,7 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
 
         if (script) {
             if (std::optional<std::filesystem::path> path = script->takeWindowScreenshot()) {
-                writePng(*path, readWindow(framebufferSize_));
+                writePng(*path, readWindow(framebufferSize_), session_.provenance(ViewerSession::Side::Left));
                 std::fprintf(stderr, "ptview: wrote %s\n", path->string().c_str());
             }
             script->frameDisplayed();
@@ -636,7 +637,8 @@ public:
 
 } // namespace
 
-int runViewer(const ViewerOptions& options) {
+int runViewer(const ViewerOptions& requested) {
+    ViewerOptions options = requested; // an image to open replaces the settings with its own
     // The window is PNG whatever the name says, so the name must say PNG; and a path that cannot
     // be written is refused before any window opens.
     if (!options.screenshotPath.empty() && !checkOutputPath(options.screenshotPath, {".png"})) return kExitBadInput;
@@ -649,8 +651,11 @@ int runViewer(const ViewerOptions& options) {
             return kExitBadInput;
         }
     }
-    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    std::optional<Provenance> from; // `ptview shot.png`: the scene and settings it was rendered with
+    std::optional<SceneInput> input = isProvenanceImage(options.scenePath) ? loadSceneInputFromImage(options.scenePath, from)
+                                                                           : loadSceneInput(options.scenePath);
     if (!input) return kExitBadInput;
+    if (from) applyRecipe(from->recipe, options);
 
     // Init the window. Destroyed in the reverse order: ImGui, the window, GLFW.
     glfwSetErrorCallback(reportGlfwError);

@@ -1,10 +1,13 @@
 #include "ViewerSession.h"
 
+#include "ExrIO.h"
+#include "HeadlessContext.h"
 #include "ImageIO.h"
 #include "Image.h"
 #include "SceneLoader.h"
 #include "SceneMerge.h"
 #include "SceneWriter.h"
+#include "Provenance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -242,10 +245,26 @@ void ViewerSession::writeImage(Side side, const std::filesystem::path& path) con
     if (tracer.sampleCount() == 0) throw std::runtime_error("nothing rendered yet: wait for a sample");
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (extension == ".pfm")
+    if (extension == ".pfm") {
         writePfm(path, tracer.readMean());
-    else
-        writePng(path, tracer.readToneMapped(model_.display));
+    } else if (extension == ".exr") {
+        ExrImage exr;
+        const ImageRgbF mean = tracer.readMean();
+        exr.width = mean.width;
+        exr.height = mean.height;
+        exr.addRgb(mean);
+        exr.metadata = provenance(side);
+        writeExr(path, exr, ExrPixelType::Float);
+    } else {
+        writePng(path, tracer.readToneMapped(model_.display), provenance(side));
+    }
+}
+
+ImageMetadata ViewerSession::provenance(Side side) const {
+    const PathTracer& tracer = *view(side).tracer;
+    const RenderRecipe recipe{tracer.settings(), model_.display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
+                              programOptions_.allFeatures};
+    return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
 
 std::vector<std::filesystem::path> ViewerSession::saveScreenshots(const std::filesystem::path& directory) {
@@ -258,7 +277,7 @@ std::vector<std::filesystem::path> ViewerSession::saveScreenshots(const std::fil
         stem = screenshotStem(model_.scene) + "-" + std::to_string(n);
     std::vector<std::filesystem::path> written;
     auto save = [&](Side side, const std::string& name) {
-        for (const char* extension : {".png", ".pfm"}) {
+        for (const char* extension : {".png", ".pfm", ".exr"}) {
             std::filesystem::path path = directory / (name + extension);
             writeImage(side, path);
             written.push_back(path);

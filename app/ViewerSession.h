@@ -7,6 +7,7 @@
 #include "ErrorEstimate.h"
 #include "ErrorMetrics.h"
 #include "FileWatcher.h"
+#include "ImageMetadata.h"
 #include "PathTracer.h"
 #include "SceneInput.h"
 #include "TileCost.h"
@@ -56,7 +57,7 @@ public:
     bool openScene(const std::filesystem::path& path);
     bool reloadScene(); // merges the file's changes with the user's edits (SceneMerge.h)
     bool setEnvironmentMap(const std::filesystem::path& path); // empty: none (the constant colour)
-    // Loads a reference image (.pfm) for the true error; empty: none. A file that cannot be read
+    // Loads a reference image (.pfm or .exr) for the true error; empty: none. A file that cannot be read
     // sets model().sceneError.
     bool setReference(const std::filesystem::path& path);
     void resetCamera();                                          // to the scene file's camera
@@ -84,12 +85,17 @@ public:
     // Whether saving to path would replace a file other than the open scene's own, which the
     // viewer asks about first.
     bool saveReplacesAnotherFile(const std::filesystem::path& path) const;
-    // Tone-mapped PNG and linear PFM of each view into directory, named after the scene and the
+    // Tone-mapped PNG, linear PFM and linear EXR of each view into directory, named after the scene and the
     // time; returns the files written. Throws std::runtime_error when nothing is rendered yet or
     // a file cannot be written.
     std::vector<std::filesystem::path> saveScreenshots(const std::filesystem::path& directory);
-    // One image of a view: .png tone mapped as displayed, or .pfm linear. Throws as above.
+    // One image of a view: .png tone mapped as displayed, or .pfm or .exr (float) linear; the PNG and
+    // EXR carry the view's provenance (Provenance.h: the scene with its edits and the settings).
+    // Throws as above.
     void writeImage(Side side, const std::filesystem::path& path) const;
+    // What a PNG or EXR of a view carries to be rendered again (Provenance.h); the window's
+    // screenshots carry the left view's.
+    ImageMetadata provenance(Side side) const;
 
     // Per frame, in this order.
     void pollFiles();                   // hot reload of the scene, its environment map and the shaders

@@ -4,6 +4,7 @@
 #include "ConvergeCommand.h"
 #include "CommandLine.h"
 #include "ImageIO.h"
+#include "InfoCommand.h"
 #include "RenderCommand.h"
 #include "Viewer.h"
 #include "WarpCommand.h"
@@ -21,6 +22,7 @@ int runCommand(int argc, char** argv) {
     if (commandLine.mode == ptview::CommandLine::Mode::Warp) return ptview::runWarpCommand(commandLine.warp);
     if (commandLine.mode == ptview::CommandLine::Mode::Bench) return ptview::runBenchCommand(commandLine.bench);
     if (commandLine.mode == ptview::CommandLine::Mode::Converge) return ptview::runConvergeCommand(commandLine.converge);
+    if (commandLine.mode == ptview::CommandLine::Mode::Info) return ptview::runInfoCommand(commandLine.info);
     return ptview::runViewer(commandLine.viewer);
 }
 

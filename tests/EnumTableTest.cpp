@@ -47,7 +47,7 @@ TEST(EnumTables, NamesAreTheOnesUsersType) {
     using Names = std::vector<std::string>;
     EXPECT_EQ(integratorNames().names(), (Names{"naive", "direct", "mis", "full"}));
     EXPECT_EQ(samplerModeNames().names(), (Names{"random", "grid", "stratified", "sobol"}));
-    EXPECT_EQ(debugViewNames().names(), (Names{"radiance", "normals", "albedo"}));
+    EXPECT_EQ(debugViewNames().names(), (Names{"radiance", "normals", "albedo", "depth"}));
     EXPECT_EQ(toneMapperNames().names(), (Names{"reinhard", "aces", "clamp"}));
     EXPECT_EQ(backendNames().names(), (Names{"fragment", "compute"}));
 }
@@ -77,7 +77,7 @@ TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
         EXPECT_FALSE(std::regex_search(shaders, std::regex("const\\s+uint\\s+" + name + "\\b")))
             << name << " is defined by hand in a shader";
     }
-    EXPECT_EQ(constants, 4 + 4 + 3 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
+    EXPECT_EQ(constants, 4 + 4 + 4 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
 }
 
 } // namespace

@@ -275,7 +275,7 @@ TEST(ViewerScript, WrongArgumentCountSaysHowManyWereExpected) {
 }
 
 TEST(ViewerScript, OutputPathsNeedTheirExtension) {
-    EXPECT_EQ(errorOf("screenshot shot.jpg"), "s.txt:1: screenshot: PATH must end in .png or .pfm, got \"shot.jpg\"");
+    EXPECT_EQ(errorOf("screenshot shot.jpg"), "s.txt:1: screenshot: PATH must end in .png or .pfm or .exr, got \"shot.jpg\"");
     EXPECT_EQ(errorOf("screenshot-window w.pfm"), "s.txt:1: screenshot-window: PATH must end in .png, got \"w.pfm\"");
     EXPECT_EQ(errorOf("save-scene edited.txt"), "s.txt:1: save-scene: PATH must end in .json, got \"edited.txt\"");
     // The extension is compared as checkOutputPath does, ignoring case.
@@ -346,7 +346,7 @@ TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     EXPECT_NE(reference.find("    .color R G B"), std::string::npos);
     EXPECT_NE(reference.find("R G B: number in [0, 1]"), std::string::npos) << reference;
     EXPECT_NE(reference.find("    .outer-angle DEG"), std::string::npos);
-    EXPECT_NE(reference.find("PATH: ends in .png or .pfm"), std::string::npos);
+    EXPECT_NE(reference.find("PATH: ends in .png or .pfm or .exr"), std::string::npos);
     EXPECT_NE(reference.find("clamp VALUE|off"), std::string::npos) << reference;
     EXPECT_NE(reference.find("camera-aperture RADIUS"), std::string::npos);
     EXPECT_NE(reference.find("RADIUS: number in [0, 1000000000]"), std::string::npos) << reference;

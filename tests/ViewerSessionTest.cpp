@@ -1,6 +1,8 @@
 // The viewer's session headless: hot reload of the scene and the shaders keeps the last good
 // ones and the user's edits, the split view renders both sides, screenshots land where they say.
+#include "ExrIO.h"
 #include "GlTestContext.h"
+#include "Provenance.h"
 #include "ImageIO.h"
 #include "SceneInput.h"
 #include "SceneLoader.h"
@@ -284,11 +286,19 @@ TEST_F(ViewerSessionTest, SplitViewRendersBothSidesWithTheirOwnSettings) {
 
     fs::path directory = freshDirectory("compare");
     std::vector<fs::path> files = session->saveScreenshots(directory);
-    ASSERT_EQ(files.size(), 4u); // PNG and PFM of each side
-    ImageRgbF naive = readPfm(files[1]), mis = readPfm(files[3]);
+    ASSERT_EQ(files.size(), 6u); // PNG, PFM and EXR of each side
+    ImageRgbF naive = readPfm(files[1]), mis = readPfm(files[4]);
     EXPECT_NE(files[1].filename().string().find("cornell-"), std::string::npos);
     EXPECT_NE(files[1].filename().string().find("-left.pfm"), std::string::npos);
     EXPECT_NE(naive.rgb, mis.rgb) << "two integrators, two images";
+    // The EXR holds the PFM's pixels, and each side's file its own settings (Provenance.h).
+    EXPECT_EQ(files[2].extension(), ".exr");
+    EXPECT_EQ(exrRgb(readExr(files[2]), files[2].string()).rgb, naive.rgb);
+    EXPECT_EQ(exrRgb(readExr(files[5]), files[5].string()).rgb, mis.rgb);
+    EXPECT_EQ(readProvenance(files[2]).recipe.settings.integrator, Integrator::Naive);
+    EXPECT_EQ(readProvenance(files[5]).recipe.settings.integrator, Integrator::Mis);
+    EXPECT_EQ(readProvenance(files[3]).recipe.settings.integrator, Integrator::Mis); // the PNG
+    EXPECT_EQ(readProvenance(files[2]).recipe.samplesPerPixel, left);
     fs::remove_all(directory);
 }
 

@@ -83,6 +83,10 @@ HeadlessContext::~HeadlessContext() {
 }
 
 std::string HeadlessContext::description() const {
+    return glDeviceDescription();
+}
+
+std::string glDeviceDescription() {
     return std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
            reinterpret_cast<const char*>(glGetString(GL_VERSION));
 }

@@ -24,4 +24,7 @@ private:
     void* context_ = nullptr;
 };
 
+// "GL_RENDERER, OpenGL GL_VERSION" of the current context (any context, a window's too).
+std::string glDeviceDescription();
+
 } // namespace ptview

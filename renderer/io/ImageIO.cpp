@@ -1,10 +1,13 @@
 #include "ImageIO.h"
 
+#include "ExrIO.h"
 #include "InputFile.h"
+#include "PngText.h"
 
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cmath>
@@ -90,10 +93,11 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& b
     }
 }
 
-void writePng(const std::filesystem::path& path, const ImageRgba8& image) {
+void writePng(const std::filesystem::path& path, const ImageRgba8& image, const ImageMetadata& metadata) {
     std::string bytes;
     if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 4, image.rgba.data(), image.width * 4))
         fail(path, "PNG encoding failed");
+    if (!metadata.empty()) bytes = insertPngText(bytes, metadata);
     writeFileAtomically(path, bytes);
 }
 
@@ -147,6 +151,18 @@ ImageRgbF readPfm(const std::filesystem::path& path) {
     image.height = height;
     image.rgb = std::move(stored);
     return image;
+}
+
+bool hasExrExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension == ".exr";
+}
+
+// The one place that decides how a linear image file is read: by its extension.
+ImageRgbF readLinearImage(const std::filesystem::path& path) {
+    if (hasExrExtension(path)) return exrRgb(readExr(path), path.string());
+    return readPfm(path);
 }
 
 } // namespace ptview

@@ -3,6 +3,7 @@
 // target and rename it over the target only once it is complete.
 
 #include "Image.h"
+#include "ImageMetadata.h"
 
 #include <filesystem>
 #include <string>
@@ -21,9 +22,13 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 // reports as a write error, instead of SIGXFSZ killing the process with a temporary left behind.
 // Called once at start-up, by main.
 void reportFileSizeLimitAsWriteError();
-void writePng(const std::filesystem::path& path, const ImageRgba8& image);
+// With metadata, each entry goes into an iTXt chunk (PngText.h).
+void writePng(const std::filesystem::path& path, const ImageRgba8& image, const ImageMetadata& metadata = {});
 // Portable float map: little-endian, rows stored bottom-to-top as the format defines.
 void writePfm(const std::filesystem::path& path, const ImageRgbF& image);
 ImageRgbF readPfm(const std::filesystem::path& path);
+// A linear RGB image: an .exr (its R, G, B channels, ExrIO.h) or else a PFM. Throws as those do.
+ImageRgbF readLinearImage(const std::filesystem::path& path);
+bool hasExrExtension(const std::filesystem::path& path);
 
 } // namespace ptview

@@ -49,7 +49,7 @@ ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& referen
 }
 
 ImageRgbF readReferenceImage(const std::filesystem::path& path) {
-    ImageRgbF image = readPfm(path);
+    ImageRgbF image = readLinearImage(path);
     long long nonFinite = 0, first = -1;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {

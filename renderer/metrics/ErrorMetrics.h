@@ -27,10 +27,10 @@ struct ErrorMetrics {
 // match), and a NaN error never counts as a target reached.
 ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& reference);
 
-// A reference image (.pfm) for compareToReference, as `--reference` and `converge --reference`
+// A reference image (.pfm or .exr, readLinearImage) for compareToReference, as `--reference` and `converge --reference`
 // read it. A NaN or infinite pixel in a reference would make every error figure NaN, so such a
 // file is refused: std::runtime_error naming the file, the first such pixel (x, y from the top
-// left) and how many there are. Other problems are readPfm's errors.
+// left) and how many there are. Other problems are the reader's errors.
 ImageRgbF readReferenceImage(const std::filesystem::path& path);
 
 } // namespace ptview

@@ -1,0 +1,195 @@
+#include "ExrIO.h"
+
+#include "ImageIO.h"
+#include "InputFile.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <Imath/half.h>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+[[noreturn]] void fail(const std::string& name, const std::string& what) {
+    throw std::runtime_error(name + ": " + what);
+}
+
+// The library writes through Imf::OStream; this one collects the bytes so that writeFileAtomically
+// can put them in place all at once.
+class StringOStream : public Imf::OStream {
+public:
+    StringOStream() : Imf::OStream("memory") {}
+    void write(const char c[], int n) override {
+        if (position_ + static_cast<std::size_t>(n) > bytes_.size()) bytes_.resize(position_ + static_cast<std::size_t>(n));
+        std::memcpy(&bytes_[position_], c, static_cast<std::size_t>(n));
+        position_ += static_cast<std::size_t>(n);
+    }
+    uint64_t tellp() override { return position_; }
+    void seekp(uint64_t position) override { position_ = static_cast<std::size_t>(position); }
+    std::string& bytes() { return bytes_; }
+
+private:
+    std::string bytes_;
+    std::size_t position_ = 0;
+};
+
+class StringIStream : public Imf::IStream {
+public:
+    StringIStream(const std::string& bytes, const std::string& name) : Imf::IStream(name.c_str()), bytes_(bytes) {}
+    // As Imf::StdIFStream: throws past the end, returns whether bytes remain.
+    bool read(char c[], int n) override {
+        if (n < 0 || position_ + static_cast<std::size_t>(n) > bytes_.size())
+            throw std::runtime_error("unexpected end of file (truncated EXR)");
+        std::memcpy(c, bytes_.data() + position_, static_cast<std::size_t>(n));
+        position_ += static_cast<std::size_t>(n);
+        return position_ < bytes_.size();
+    }
+    uint64_t tellg() override { return position_; }
+    void seekg(uint64_t position) override { position_ = static_cast<std::size_t>(std::min<uint64_t>(position, bytes_.size())); }
+
+private:
+    const std::string& bytes_;
+    std::size_t position_ = 0;
+};
+
+} // namespace
+
+const ExrChannel* ExrImage::find(const std::string& name) const {
+    for (const ExrChannel& channel : channels)
+        if (channel.name == name) return &channel;
+    return nullptr;
+}
+
+void ExrImage::addComponent(const std::string& name, const ImageRgbF& image, int component) {
+    ExrChannel channel{name, std::vector<float>(static_cast<std::size_t>(image.width) * image.height)};
+    for (std::size_t i = 0; i < channel.values.size(); ++i) channel.values[i] = image.rgb[i * 3 + component];
+    channels.push_back(std::move(channel));
+}
+
+void ExrImage::addRgb(const ImageRgbF& image, const std::string& prefix) {
+    addComponent(prefix + "R", image, 0);
+    addComponent(prefix + "G", image, 1);
+    addComponent(prefix + "B", image, 2);
+}
+
+std::string encodeExr(const ExrImage& image, ExrPixelType type) {
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION; // lossless, read by every EXR tool
+    for (const auto& [key, value] : image.metadata.entries) header.insert(key, Imf::StringAttribute(value));
+    const Imf::PixelType pixelType = type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
+    std::vector<std::vector<Imath::half>> halves(image.channels.size());
+    Imf::FrameBuffer frameBuffer;
+    for (std::size_t c = 0; c < image.channels.size(); ++c) {
+        const ExrChannel& channel = image.channels[c];
+        if (channel.values.size() != pixels) throw std::invalid_argument("EXR channel " + channel.name + " has the wrong size");
+        header.channels().insert(channel.name, Imf::Channel(pixelType));
+        if (type == ExrPixelType::Half) {
+            halves[c].assign(channel.values.begin(), channel.values.end());
+            frameBuffer.insert(channel.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves[c].data()),
+                                                        sizeof(Imath::half), sizeof(Imath::half) * image.width));
+        } else {
+            frameBuffer.insert(channel.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(channel.values.data())),
+                                                        sizeof(float), sizeof(float) * image.width));
+        }
+    }
+    StringOStream stream;
+    {
+        Imf::OutputFile file(stream, header);
+        file.setFrameBuffer(frameBuffer);
+        file.writePixels(image.height);
+    } // the destructor completes the file (the line offset table)
+    return std::move(stream.bytes());
+}
+
+void writeExr(const std::filesystem::path& path, const ExrImage& image, ExrPixelType type) {
+    std::string bytes;
+    try {
+        bytes = encodeExr(image, type);
+    } catch (const std::exception& e) {
+        fail(path.string(), std::string("EXR encoding failed: ") + e.what());
+    }
+    writeFileAtomically(path, bytes);
+}
+
+ExrImage decodeExr(const std::string& bytes, const std::string& sourceName) {
+    ExrImage image;
+    try {
+        StringIStream stream(bytes, sourceName);
+        Imf::InputFile file(stream);
+        const Imath::Box2i window = file.header().dataWindow();
+        const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+        const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+        if (width <= 0 || height <= 0 || width > 65536 || height > 65536)
+            fail(sourceName, "bad EXR data window (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+        long long channelCount = 0;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) ++channelCount;
+        // The header alone must not decide how much memory is taken: ZIP packs at most ~1032:1,
+        // so a file claims no more floats than that many times its size (plus room for tiny files).
+        const long long floats = width * height * channelCount;
+        if (floats > 1100LL * static_cast<long long>(bytes.size()) + (1LL << 20))
+            fail(sourceName, "the EXR header claims " + std::to_string(width) + "x" + std::to_string(height) + " pixels of " +
+                                 std::to_string(channelCount) + " channels, more than a file of " +
+                                 std::to_string(bytes.size()) + " bytes can hold (truncated EXR?)");
+        image.width = static_cast<int>(width);
+        image.height = static_cast<int>(height);
+        Imf::FrameBuffer frameBuffer;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
+            if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
+                fail(sourceName, std::string("EXR channel ") + it.name() + " is subsampled (not supported)");
+            image.channels.push_back({it.name(), std::vector<float>(static_cast<std::size_t>(width * height))});
+        }
+        for (ExrChannel& channel : image.channels) {
+            // The slice's origin is pixel (0, 0); the data window may start elsewhere.
+            char* origin = reinterpret_cast<char*>(channel.values.data()) -
+                           (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * width) *
+                               static_cast<std::ptrdiff_t>(sizeof(float));
+            frameBuffer.insert(channel.name, Imf::Slice(Imf::FLOAT, origin, sizeof(float), sizeof(float) * width));
+        }
+        file.setFrameBuffer(frameBuffer);
+        file.readPixels(window.min.y, window.max.y);
+        for (auto it = file.header().begin(); it != file.header().end(); ++it)
+            if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+                image.metadata.entries.emplace_back(it.name(), text->value());
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        if (what.rfind(sourceName + ":", 0) == 0) throw;
+        fail(sourceName, "not a readable EXR file: " + what);
+    } catch (const std::exception& e) { // Iex::BaseExc and the library's other failures
+        fail(sourceName, std::string("not a readable EXR file: ") + e.what());
+    }
+    return image;
+}
+
+ExrImage readExr(const std::filesystem::path& path) {
+    std::string bytes;
+    try {
+        bytes = readInputFile(path, 4096 * kMiB, "EXR image");
+    } catch (const InputFileError& e) {
+        throw std::runtime_error(e.what());
+    }
+    return decodeExr(bytes, path.string());
+}
+
+ImageRgbF exrRgb(const ExrImage& image, const std::string& sourceName) {
+    ImageRgbF rgb(image.width, image.height);
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+        const ExrChannel* channel = image.find(names[c]);
+        if (!channel) fail(sourceName, std::string("the EXR file has no ") + names[c] + " channel");
+        for (std::size_t i = 0; i < channel->values.size(); ++i) rgb.rgb[i * 3 + c] = channel->values[i];
+    }
+    return rgb;
+}
+
+} // namespace ptview
