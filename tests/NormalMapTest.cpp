@@ -218,6 +218,36 @@ TEST_P(NormalMappedQuad, DirectionalLightFollowsTheTiltedNormalsCosine) {
 INSTANTIATE_TEST_SUITE_P(Shapes, NormalMappedQuad, ::testing::Values("quad", "mesh"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
+// A live edit that gives a mesh its first normal map (setMaterials, no new scene) sends the mesh's
+// tangents. The OBJ's texture coordinates are turned by 90 degrees (u grows along +y, the image's
+// up along -x), so the tangent is +y: a frame made up without tangents would tilt along +x.
+TEST(NormalMapEdit, AddingANormalMapToAMeshSendsItsTangents) {
+    testing::ScratchFiles files("normal_map_edit");
+    files.write("turned.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 1\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                              "vn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n");
+    Scene scene = loadScene(files.write("scene.json", quadScene(kMeshQuad, R"(, "meshes": {"q": {"file": "turned.obj"}})")));
+    addNormalMap(scene, 204, 128, 230);
+    const Material withMap = scene.materials[0];
+    scene.materials[0].normalTexture.texture = -1; // the texture is in the scene, unused
+
+    testing::glContext();
+    PathTracer tracer;
+    RenderSettings settings = testing::naiveSettings(1, 3u);
+    settings.debugView = DebugView::Normals;
+    tracer.setImageSize({kImageSize, kImageSize});
+    tracer.setSettings(settings);
+    tracer.setScene(scene);
+    tracer.renderSample();
+    expectEveryPixel(tracer.readMean(), glm::dvec3(0.5, 0.5, 1.0), 2e-6, "no map yet");
+
+    std::vector<Material> materials = scene.materials;
+    materials[0] = withMap;
+    tracer.setMaterials(materials);
+    tracer.renderSample();
+    const glm::dvec3 d = decoded(204, 128, 230);
+    expectEveryPixel(tracer.readMean(), 0.5 * glm::dvec3(0.0, d.x, d.z) + 0.5, 2e-6, "tilted along the tangent, +y");
+}
+
 // A map that tilts the normal away from the camera past 90 degrees: wo would be below it. The
 // normal is bent back toward wo (normal_map.glsl), so nothing is NaN and no pixel is black under
 // a constant environment.
