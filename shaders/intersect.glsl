@@ -107,13 +107,13 @@ float intersectDisk(Ray ray, vec3 center, vec3 normal, float radius) {
     return dot(offset, offset) <= radius * radius ? t : kInfinity;
 }
 
-// ---- The nearest hit of primitive i that is there (alpha, surface_alpha.glsl; without alpha in
-// the program, the plain intersection). A sphere cut away where the ray enters may be hit where it
-// leaves.
-float intersectPresentSphere(Ray ray, int i) {
+// ---- The nearest hit of primitive i closer than tMax that is there (alpha, surface_alpha.glsl;
+// without alpha in the program, the plain intersection), else kInfinity. A sphere cut away where
+// the ray enters may be hit where it leaves.
+float intersectPresentSphere(Ray ray, int i, float tMax) {
     vec4 sphere = texelFetch(uSpheres, i);
     float t = intersectSphere(ray, sphere);
-    for (int side = 0; side < 2 && t != kInfinity; ++side) {
+    for (int side = 0; side < 2 && t < tMax; ++side) {
         vec3 p = ray.origin + t * ray.direction;
         if (surfacePresent(sphereIds(i).x, sphereSurfaceUv(normalize(p - sphere.xyz)), p)) return t;
         t = side == 0 ? intersectSphereAfter(ray, sphere, t) : kInfinity;
@@ -121,21 +121,22 @@ float intersectPresentSphere(Ray ray, int i) {
     return kInfinity;
 }
 
-float intersectPresentQuad(Ray ray, int i) {
+float intersectPresentQuad(Ray ray, int i, float tMax) {
     vec3 center = texelFetch(uQuads, 4 * i).xyz;
     vec3 u = texelFetch(uQuads, 4 * i + 1).xyz;
     vec3 v = texelFetch(uQuads, 4 * i + 2).xyz;
     vec3 dual = texelFetch(uQuads, 4 * i + 3).xyz;
     float t = intersectQuad(ray, center, u, v, dual);
-    if (t == kInfinity) return t;
+    if (!(t < tMax)) return kInfinity;
     vec3 p = ray.origin + t * ray.direction;
     return surfacePresent(quadIds(i).x, quadSurfaceUv(p, center, u, v, dual), p) ? t : kInfinity;
 }
 
-float intersectPresentDisk(Ray ray, int i) {
+float intersectPresentDisk(Ray ray, int i, float tMax) {
     vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
     float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
-    return t == kInfinity || surfacePresent(diskIds(i).x, vec2(0.0), ray.origin + t * ray.direction) ? t : kInfinity;
+    if (!(t < tMax)) return kInfinity;
+    return surfacePresent(diskIds(i).x, vec2(0.0), ray.origin + t * ray.direction) ? t : kInfinity;
 }
 
 bool intersectScene(Ray ray, out Hit hit) {
@@ -146,15 +147,15 @@ bool intersectScene(Ray ray, out Hit hit) {
     int quadHit = -1;
     int diskHit = -1;
     for (int i = 0; i < uSphereCount; ++i) {
-        float t = intersectPresentSphere(ray, i);
+        float t = intersectPresentSphere(ray, i, hit.t);
         if (t < hit.t) { hit.t = t; sphereHit = i; }
     }
     for (int i = 0; i < uQuadCount; ++i) {
-        float t = intersectPresentQuad(ray, i);
+        float t = intersectPresentQuad(ray, i, hit.t);
         if (t < hit.t) { hit.t = t; quadHit = i; sphereHit = -1; }
     }
     for (int i = 0; i < uDiskCount; ++i) {
-        float t = intersectPresentDisk(ray, i);
+        float t = intersectPresentDisk(ray, i, hit.t);
         if (t < hit.t) { hit.t = t; diskHit = i; quadHit = -1; sphereHit = -1; }
     }
     MeshHit meshHit;
@@ -205,11 +206,11 @@ bool intersectScene(Ray ray, out Hit hit) {
 // than the sampled distance says.
 bool occluded(Ray ray, float maxDistance, int light) {
     for (int i = 0; i < uSphereCount; ++i)
-        if (sphereIds(i).y != light && intersectPresentSphere(ray, i) < maxDistance) return true;
+        if (sphereIds(i).y != light && intersectPresentSphere(ray, i, maxDistance) < maxDistance) return true;
     for (int i = 0; i < uQuadCount; ++i)
-        if (quadIds(i).y != light && intersectPresentQuad(ray, i) < maxDistance) return true;
+        if (quadIds(i).y != light && intersectPresentQuad(ray, i, maxDistance) < maxDistance) return true;
     for (int i = 0; i < uDiskCount; ++i)
-        if (diskIds(i).y != light && intersectPresentDisk(ray, i) < maxDistance) return true;
+        if (diskIds(i).y != light && intersectPresentDisk(ray, i, maxDistance) < maxDistance) return true;
     float tMax = maxDistance;
     MeshHit ignored;
     return traverseMeshes(ray, tMax, ignored, true, light);
