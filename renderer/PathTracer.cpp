@@ -210,8 +210,9 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
 }
 
 void PathTracer::setMaterials(const std::vector<Material>& materials) {
-    gpuScene_.uploadMaterials(materials);
     scene_.materials = materials;
+    gpuScene_.uploadMeshTangentsIfChanged(scene_); // a normal map added to or taken from a mesh
+    gpuScene_.uploadMaterials(materials);
     updateProgramKey(); // a model the scene did not use before needs a program that has it
     restart();
 }

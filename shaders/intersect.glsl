@@ -5,6 +5,8 @@
 #include "scene_data.glsl"
 #include "mesh_intersect.glsl"
 #include "surface_textures.glsl"
+#include "normal_map.glsl"
+#include "surface_alpha.glsl"
 
 // Ray offsets (spawnRay): relative to the hit position's magnitude and to the scene's size.
 const float kRelativeOffset = 1e-4;
@@ -24,8 +26,9 @@ struct Hit {
     vec3 posWorld;
     vec3 normalGeom;    // unit, outward for spheres, along cross(u, v) for quads and along a
                         // triangle's winding: the emitting side
-    vec3 normalShading; // unit, on normalGeom's side: what BSDFs are oriented by (a mesh's
-                        // interpolated vertex normal; normalGeom elsewhere)
+    vec3 normalShading; // unit: what BSDFs are oriented by (a mesh's interpolated vertex normal,
+                        // on normalGeom's side; normalGeom elsewhere), then tilted by the
+                        // material's normal map (normal_map.glsl: wo stays on its side)
     int material;
     int light;          // light index of the surface hit, or -1
     vec2 uv;            // texture coordinates (surface_textures.glsl); 0 in programs without textures
@@ -33,7 +36,8 @@ struct Hit {
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
 // Gems, ch. 7) that keeps precision for small spheres far from the origin.
-float intersectSphere(Ray ray, vec4 sphere) {
+// The first hit beyond tMin (alpha: the far side, when the near one is cut away).
+float intersectSphereAfter(Ray ray, vec4 sphere, float tMin) {
     vec3 f = ray.origin - sphere.xyz;
     float b = dot(f, ray.direction);
     vec3 offsetFromChord = f - b * ray.direction;
@@ -45,8 +49,12 @@ float intersectSphere(Ray ray, vec4 sphere) {
     float t1 = q;
     float tNear = min(t0, t1);
     float tFar = max(t0, t1);
-    if (tNear > 0.0) return tNear;
-    return tFar > 0.0 ? tFar : kInfinity;
+    if (tNear > tMin) return tNear;
+    return tFar > tMin ? tFar : kInfinity;
+}
+
+float intersectSphere(Ray ray, vec4 sphere) {
+    return intersectSphereAfter(ray, sphere, 0.0);
 }
 
 // Parallelogram center ± u ± v. `dual` turns the hit offset into the coordinates along u and v
@@ -99,6 +107,38 @@ float intersectDisk(Ray ray, vec3 center, vec3 normal, float radius) {
     return dot(offset, offset) <= radius * radius ? t : kInfinity;
 }
 
+// ---- The nearest hit of primitive i closer than tMax that is there (alpha, surface_alpha.glsl;
+// without alpha in the program, the plain intersection), else kInfinity. A sphere cut away where
+// the ray enters may be hit where it leaves.
+float intersectPresentSphere(Ray ray, int i, float tMax) {
+    vec4 sphere = texelFetch(uSpheres, i);
+    float t = intersectSphere(ray, sphere);
+    for (int side = 0; side < 2 && t < tMax; ++side) {
+        vec3 p = ray.origin + t * ray.direction;
+        if (surfacePresent(sphereIds(i).x, sphereSurfaceUv(normalize(p - sphere.xyz)), p)) return t;
+        t = side == 0 ? intersectSphereAfter(ray, sphere, t) : kInfinity;
+    }
+    return kInfinity;
+}
+
+float intersectPresentQuad(Ray ray, int i, float tMax) {
+    vec3 center = texelFetch(uQuads, 4 * i).xyz;
+    vec3 u = texelFetch(uQuads, 4 * i + 1).xyz;
+    vec3 v = texelFetch(uQuads, 4 * i + 2).xyz;
+    vec3 dual = texelFetch(uQuads, 4 * i + 3).xyz;
+    float t = intersectQuad(ray, center, u, v, dual);
+    if (!(t < tMax)) return kInfinity;
+    vec3 p = ray.origin + t * ray.direction;
+    return surfacePresent(quadIds(i).x, quadSurfaceUv(p, center, u, v, dual), p) ? t : kInfinity;
+}
+
+float intersectPresentDisk(Ray ray, int i, float tMax) {
+    vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
+    float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
+    if (!(t < tMax)) return kInfinity;
+    return surfacePresent(diskIds(i).x, vec2(0.0), ray.origin + t * ray.direction) ? t : kInfinity;
+}
+
 bool intersectScene(Ray ray, out Hit hit) {
     hit.t = kInfinity;
     hit.material = -1;
@@ -107,17 +147,15 @@ bool intersectScene(Ray ray, out Hit hit) {
     int quadHit = -1;
     int diskHit = -1;
     for (int i = 0; i < uSphereCount; ++i) {
-        float t = intersectSphere(ray, texelFetch(uSpheres, i));
+        float t = intersectPresentSphere(ray, i, hit.t);
         if (t < hit.t) { hit.t = t; sphereHit = i; }
     }
     for (int i = 0; i < uQuadCount; ++i) {
-        float t = intersectQuad(ray, texelFetch(uQuads, 4 * i).xyz, texelFetch(uQuads, 4 * i + 1).xyz,
-                                texelFetch(uQuads, 4 * i + 2).xyz, texelFetch(uQuads, 4 * i + 3).xyz);
+        float t = intersectPresentQuad(ray, i, hit.t);
         if (t < hit.t) { hit.t = t; quadHit = i; sphereHit = -1; }
     }
     for (int i = 0; i < uDiskCount; ++i) {
-        vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
-        float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
+        float t = intersectPresentDisk(ray, i, hit.t);
         if (t < hit.t) { hit.t = t; diskHit = i; quadHit = -1; sphereHit = -1; }
     }
     MeshHit meshHit;
@@ -129,13 +167,18 @@ bool intersectScene(Ray ray, out Hit hit) {
     if (onMesh) {
         meshSurface(meshHit, hit.normalGeom, hit.normalShading, hit.material, hit.light);
         hit.uv = meshSurfaceUv(meshHit);
+        vec3 tangent, bitangent;
+        meshSurfaceTangents(meshHit, tangent, bitangent);
+        hit.normalShading = normalMappedShading(hit.material, hit.uv, hit.normalShading, hit.normalGeom, tangent, bitangent, -ray.direction);
         return true;
     }
     ivec2 ids;
+    vec3 tangent = vec3(0.0), bitangent = vec3(0.0); // where a normal map's x and y point (disks: none)
     if (sphereHit >= 0) {
         vec4 sphere = texelFetch(uSpheres, sphereHit);
         hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
         hit.uv = sphereSurfaceUv(hit.normalGeom);
+        sphereSurfaceTangents(hit.normalGeom, tangent, bitangent);
         ids = sphereIds(sphereHit);
     } else if (quadHit >= 0) {
         vec3 center = texelFetch(uQuads, 4 * quadHit).xyz;
@@ -144,15 +187,16 @@ bool intersectScene(Ray ray, out Hit hit) {
         vec3 dual = texelFetch(uQuads, 4 * quadHit + 3).xyz;
         hit.normalGeom = normalize(cross(u, v));
         hit.uv = quadSurfaceUv(hit.posWorld, center, u, v, dual);
+        quadSurfaceTangents(u, v, tangent, bitangent);
         hit.posWorld = quadSurfacePoint(hit.posWorld, center, u, v, dual, spawnOffset(hit.posWorld));
         ids = quadIds(quadHit);
     } else {
         hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
         ids = diskIds(diskHit);
     }
-    hit.normalShading = hit.normalGeom;
     hit.material = ids.x;
     hit.light = ids.y;
+    hit.normalShading = normalMappedShading(hit.material, hit.uv, hit.normalGeom, hit.normalGeom, tangent, bitangent, -ray.direction);
     return true;
 }
 
@@ -162,17 +206,11 @@ bool intersectScene(Ray ray, out Hit hit) {
 // than the sampled distance says.
 bool occluded(Ray ray, float maxDistance, int light) {
     for (int i = 0; i < uSphereCount; ++i)
-        if (intersectSphere(ray, texelFetch(uSpheres, i)) < maxDistance && sphereIds(i).y != light) return true;
-    for (int i = 0; i < uQuadCount; ++i) {
-        float t = intersectQuad(ray, texelFetch(uQuads, 4 * i).xyz, texelFetch(uQuads, 4 * i + 1).xyz,
-                                texelFetch(uQuads, 4 * i + 2).xyz, texelFetch(uQuads, 4 * i + 3).xyz);
-        if (t < maxDistance && quadIds(i).y != light) return true;
-    }
-    for (int i = 0; i < uDiskCount; ++i) {
-        vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
-        float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
-        if (t < maxDistance && diskIds(i).y != light) return true;
-    }
+        if (sphereIds(i).y != light && intersectPresentSphere(ray, i, maxDistance) < maxDistance) return true;
+    for (int i = 0; i < uQuadCount; ++i)
+        if (quadIds(i).y != light && intersectPresentQuad(ray, i, maxDistance) < maxDistance) return true;
+    for (int i = 0; i < uDiskCount; ++i)
+        if (diskIds(i).y != light && intersectPresentDisk(ray, i, maxDistance) < maxDistance) return true;
     float tMax = maxDistance;
     MeshHit ignored;
     return traverseMeshes(ray, tMax, ignored, true, light);

@@ -2,9 +2,11 @@
 // buffer textures. The top level holds the instances by their world bounds; at an instance the ray
 // moves into the mesh's object space (its direction is not renormalized, so t stays the world t)
 // and descends that mesh's own tree. Both traversals are ordered (nearer child first) with a
-// short explicit stack; shadow rays stop at the first hit.
+// short explicit stack; shadow rays stop at the first hit. A triangle whose material cuts it away
+// there (alpha, surface_alpha.glsl) is no hit: both walks go on past it.
 #include "constants.glsl"
 #include "ray.glsl"
+#include "surface_alpha.glsl"
 
 uniform samplerBuffer uMeshNodes;     // per node: (boundsMin, firstOrRight), (boundsMax, primitive count)
 uniform samplerBuffer uMeshTriangles; // per triangle: 7 texels, see GpuTriangle
@@ -123,6 +125,17 @@ int triangleMaterial(int instance, int triangle) {
     return int(texelFetch(uMeshInstances, kInstanceTexels * uMeshInstanceCount + instanceIds(instance).z + slot).x);
 }
 
+// Texture coordinates at barycentric on a triangle, interpolated from its corners (GpuTriangle:
+// u0 in texel 3's w, v0 in 4's, u1 in 5's, then (v1, u2, v2) in texel 6).
+vec2 triangleUv(int triangle, vec3 barycentric) {
+    int base = kTriangleTexels * triangle;
+    float u0 = texelFetch(uMeshTriangles, base + 3).w;
+    float v0 = texelFetch(uMeshTriangles, base + 4).w;
+    float u1 = texelFetch(uMeshTriangles, base + 5).w;
+    vec3 v1U2V2 = texelFetch(uMeshTriangles, base + 6).xyz;
+    return barycentric.x * vec2(u0, v0) + barycentric.y * vec2(u1, v1U2V2.x) + barycentric.z * v1U2V2.yz;
+}
+
 // The nodes both walks have still to visit, on one stack: an instance's walk pushes above the
 // entries of the top level's walk and pops back down to where it began. One global array rather
 // than one passed to nextBvhNode, because GLSL copies array parameters in and out: passing it
@@ -177,6 +190,8 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 vec3 p1 = texelFetch(uMeshTriangles, kTriangleTexels * i + 1).xyz;
                 vec3 p2 = texelFetch(uMeshTriangles, kTriangleTexels * i + 2).xyz;
                 if (!intersectTriangle(ray, p0, p1, p2, tBest, t, barycentric)) continue;
+                if (!surfacePresent(triangleMaterial(instance, i), triangleUv(i, barycentric), worldRay.origin + t * worldRay.direction))
+                    continue;
                 if (anyHit) {
                     if (excludedLight >= 0 && triangleLight(instance, i) == excludedLight) continue;
                     tBest = t;
@@ -245,13 +260,30 @@ void meshSurface(MeshHit hit, out vec3 normalGeom, out vec3 normalShading, out i
     light = triangleLight(hit.instance, hit.triangle);
 }
 
-// The hit's texture coordinates, interpolated from its triangle's corners (GpuTriangle:
-// u0 in texel 3's w, v0 in 4's, u1 in 5's, then (v1, u2, v2) in texel 6).
+// The hit's texture coordinates.
 vec2 meshUv(MeshHit hit) {
+    return triangleUv(hit.triangle, hit.barycentric);
+}
+
+// A normal map's frame on a mesh (normal_map.glsl): the corners' tangents (GpuTriangle::tangentTexel)
+// interpolated, the bitangent w cross(n, tangent) in object space (w the corners' handedness,
+// interpolated and taken by its sign), both carried to world space as directions. Zero for a
+// triangle without tangents.
+void meshSurfaceTangents(MeshHit hit, out vec3 tangent, out vec3 bitangent) {
+    tangent = vec3(0.0);
+    bitangent = vec3(0.0);
     int base = kTriangleTexels * hit.triangle;
-    float u0 = texelFetch(uMeshTriangles, base + 3).w;
-    float v0 = texelFetch(uMeshTriangles, base + 4).w;
-    float u1 = texelFetch(uMeshTriangles, base + 5).w;
-    vec3 v1U2V2 = texelFetch(uMeshTriangles, base + 6).xyz;
-    return hit.barycentric.x * vec2(u0, v0) + hit.barycentric.y * vec2(u1, v1U2V2.x) + hit.barycentric.z * v1U2V2.yz;
+    int first = int(texelFetch(uMeshTriangles, base + 1).w);
+    if (first < 0) return;
+    vec4 t = hit.barycentric.x * texelFetch(uMeshTriangles, first) + hit.barycentric.y * texelFetch(uMeshTriangles, first + 1) +
+             hit.barycentric.z * texelFetch(uMeshTriangles, first + 2);
+    vec3 n = hit.barycentric.x * texelFetch(uMeshTriangles, base + 3).xyz + hit.barycentric.y * texelFetch(uMeshTriangles, base + 4).xyz +
+             hit.barycentric.z * texelFetch(uMeshTriangles, base + 5).xyz;
+    if (dot(n, n) == 0.0) { // flat shading: the face's normal
+        vec3 p0 = texelFetch(uMeshTriangles, base).xyz;
+        n = cross(texelFetch(uMeshTriangles, base + 1).xyz - p0, texelFetch(uMeshTriangles, base + 2).xyz - p0);
+    }
+    vec3 b = (t.w < 0.0 ? -1.0 : 1.0) * cross(n, t.xyz);
+    tangent = instanceToWorld(hit.instance, vec4(t.xyz, 0.0));
+    bitangent = instanceToWorld(hit.instance, vec4(b, 0.0));
 }

@@ -24,3 +24,7 @@ void meshSurface(MeshHit hit, out vec3 normalGeom, out vec3 normalShading, out i
 vec2 meshUv(MeshHit hit) {
     return vec2(0.0);
 }
+
+void meshSurfaceTangents(MeshHit hit, out vec3 tangent, out vec3 bitangent) {
+    tangent = bitangent = vec3(0.0);
+}

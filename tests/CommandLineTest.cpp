@@ -391,14 +391,14 @@ TEST_F(CommandLineTest, WarpDrawsItsPointsInsideTheDomainOutline) {
 }
 
 // `ptview bench` prints one Markdown table row per scene, with the mesh's triangle count (and no
-// textures: 0.0 MB, no largest texture).
+// normal map: no tangents, 0.000 s; no textures: 0.0 MB, no largest texture).
 TEST_F(CommandLineTest, BenchReportsEachSceneAsATableRow) {
     testing::CommandResult result = runCommand(kBinary + " bench " + shellQuoted(kCornell) + " " +
                                                shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell_bunny.json") +
                                                " --seconds 0.2 --size 16x16 --depth 2");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::smatch row;
-    ASSERT_TRUE(std::regex_search(result.output, row, std::regex(R"(\| cornell_bunny \| specialized \| (fragment|compute) \| [-0-9.]+ \| 69451 \| [0-9.]+ \| ([0-9.]+) \| ([0-9.]+) \| 0\.0 \| - \| 16x16 \| ([0-9]+) \| ([0-9.]+) \|)")))
+    ASSERT_TRUE(std::regex_search(result.output, row, std::regex(R"(\| cornell_bunny \| specialized \| (fragment|compute) \| [-0-9.]+ \| 69451 \| [0-9.]+ \| ([0-9.]+) \| 0\.000 \| ([0-9.]+) \| 0\.0 \| - \| 16x16 \| ([0-9]+) \| ([0-9.]+) \|)")))
         << result.output;
     EXPECT_GT(std::stod(row[3]), 1.0) << "a 69k-triangle BVH takes megabytes";
     EXPECT_GE(std::stoi(row[4]), 1);

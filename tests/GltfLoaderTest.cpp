@@ -370,6 +370,30 @@ TEST(GltfLoader, MaterialsAndTexturesAreRead) {
     EXPECT_EQ(occlusionWarnings, 1) << "said once per file";
 }
 
+// TANGENT (VEC4: xyz and the bitangent's sign) is kept per vertex beside NORMAL; a zero tangent
+// is left for generation (-1), and without NORMAL it means nothing and is not read.
+TEST(GltfLoader, TangentsAreReadBesideNormals) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    auto vec = [&](const std::vector<float>& values, const char* type, std::size_t count) {
+        return b.accessor(b.view(bytesOf(values)), kFloat, count, type);
+    };
+    int positions = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    int normals = vec({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+    int tangents = vec({2, 0, 0, -1, 0, 1, 0, 1, 0, 0, 0, 1}, "VEC4", 3);
+    b.mesh({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}, {"TANGENT", tangents}}}});
+    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", positions}, {"TANGENT", tangents}}}});
+    b.node({{"mesh", 0}});
+    Scene scene = loadScene(files.write("tangents.gltf", b.gltfWithDataUri()));
+    const TriangleMesh& mesh = *scene.meshes[0].data;
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    ASSERT_EQ(mesh.tangents.size(), 3u) << "the second primitive, without NORMAL, adds none";
+    EXPECT_EQ(mesh.tangents[0], glm::vec4(1, 0, 0, -1)) << "unit length, w the sign";
+    EXPECT_EQ(mesh.tangents[1], glm::vec4(0, 1, 0, 1));
+    EXPECT_EQ(mesh.triangles[0].tangent, (std::array<std::int32_t, 3>{0, 1, -1})) << "a zero tangent is generated instead";
+    EXPECT_EQ(mesh.triangles[1].tangent, (std::array<std::int32_t, 3>{-1, -1, -1}));
+}
+
 TEST(GltfLoader, StripsAndFansBecomeTriangles) {
     ScratchFiles files("gltf");
     GltfBuilder b;

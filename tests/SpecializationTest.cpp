@@ -37,6 +37,8 @@ const char* const kEnvironmentMapCode = "float environmentMapPdf(";
 const char* const kBvhCode = "bool traverseInstance(";
 const char* const kTextureCode = "vec4 sampleTexture(";
 const char* const kPrincipledCode = "BsdfSample samplePrincipled(";
+const char* const kNormalMapCode = "vec3 decodeNormalTexel(";
+const char* const kAlphaCode = "float alphaBlendRandom(";
 
 TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode) {
     Scene cornell = shippedScene("cornell");
@@ -49,13 +51,15 @@ TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode)
     std::string source = programSource(cornell);
     EXPECT_TRUE(contains(source, "vec3 lambertianReflectionF(")) << "the diffuse model is there";
     for (const char* absent : {kDielectricCode, "float fresnelDielectric(", kMicrofacetCode, kEnvironmentMapCode,
-                               "uEnvironmentMap", kBvhCode, "uMeshNodes", kTextureCode, "uTextureAtlas", kPrincipledCode})
+                               "uEnvironmentMap", kBvhCode, "uMeshNodes", kTextureCode, "uTextureAtlas", kPrincipledCode,
+                               kNormalMapCode, kAlphaCode})
         EXPECT_FALSE(contains(source, absent)) << absent;
     EXPECT_FALSE(features.textures);
 
     // The uber-shader has all of it, for the same scene.
     std::string uber = programSource(cornell, PathTracerOptions{true, std::nullopt});
-    for (const char* present : {kDielectricCode, kMicrofacetCode, kEnvironmentMapCode, kBvhCode, kTextureCode, kPrincipledCode})
+    for (const char* present : {kDielectricCode, kMicrofacetCode, kEnvironmentMapCode, kBvhCode, kTextureCode, kPrincipledCode,
+                                kNormalMapCode, kAlphaCode})
         EXPECT_TRUE(contains(uber, present)) << present;
 }
 
@@ -81,6 +85,36 @@ TEST(Specialization, PrincipledAndTexturesBringTheirCode) {
     std::string withTextures = programSource(textured);
     EXPECT_TRUE(contains(withTextures, kTextureCode));
     EXPECT_FALSE(contains(withTextures, kPrincipledCode));
+    EXPECT_FALSE(contains(withTextures, kNormalMapCode)) << "a colour texture is no normal map";
+    EXPECT_FALSE(contains(withTextures, kAlphaCode));
+}
+
+// A normal map brings the tangent-frame code; MASK or BLEND the cut-away test (and the texture
+// reading it needs, with or without a texture); neither brings the other.
+TEST(Specialization, NormalMapsAndAlphaBringTheirCode) {
+    Scene normalMapped = shippedScene("cornell");
+    auto image = std::make_shared<TextureImage>();
+    image->width = image->height = 1;
+    image->rgba = {128, 128, 255, 255};
+    SceneTexture texture;
+    texture.source = "flat.png";
+    texture.colorSpace = TextureColorSpace::Linear;
+    texture.image = image;
+    normalMapped.textures.push_back(texture);
+    normalMapped.materials[0].normalTexture.texture = 0;
+    EXPECT_TRUE(sceneFeatures(normalMapped).normalMaps);
+    std::string source = programSource(normalMapped);
+    EXPECT_TRUE(contains(source, kNormalMapCode));
+    EXPECT_FALSE(contains(source, kAlphaCode));
+
+    Scene masked = shippedScene("principled_grid");
+    masked.materials[0].alphaMode = AlphaMode::Mask;
+    ShaderFeatures features = sceneFeatures(masked);
+    EXPECT_TRUE(features.alpha && features.textures && !features.normalMaps);
+    source = programSource(masked);
+    EXPECT_TRUE(contains(source, kAlphaCode));
+    EXPECT_TRUE(contains(source, kTextureCode));
+    EXPECT_FALSE(contains(source, kNormalMapCode));
 }
 
 TEST(Specialization, EachFeatureBringsItsCode) {

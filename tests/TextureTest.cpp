@@ -195,6 +195,39 @@ TEST_F(TexturedView, ObjTextureCoordinatesCountVUpAndShowTheSameImage) {
                 [](int x, int y) { return insideTexel(x, y, 4); }, "obj");
 }
 
+// The same corners from a glTF: its TEXCOORD_0 counts v down from the image's top row (the
+// model's convention, stored as it is), so the corner at (-1, 1) has uv (0, 0). The glTF's
+// material (principled) is made diffuse with its texture kept, so that the pixel is the texel.
+TEST_F(TexturedView, GltfTextureCoordinatesCountVDownAndShowTheSameImage) {
+    const ImageRgba8 image = asymmetric4x4();
+    const std::vector<float> positions = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+    const std::vector<float> texcoords = {0, 1, 1, 1, 1, 0, 0, 0};
+    const std::vector<std::uint16_t> indices = {0, 1, 2, 0, 2, 3};
+    std::string bin(reinterpret_cast<const char*>(positions.data()), positions.size() * 4);
+    bin.append(reinterpret_cast<const char*>(texcoords.data()), texcoords.size() * 4);
+    bin.append(reinterpret_cast<const char*>(indices.data()), indices.size() * 2);
+    files_.write("quad.bin", bin);
+    files_.write("quad.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "buffers": [{"uri": "quad.bin", "byteLength": 92}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                  {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  "images": [{"uri": "t.png"}], "samplers": [{"magFilter": 9728}], "textures": [{"source": 0, "sampler": 0}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}]})");
+    Scene scene = load(R"({"camera": {"eye": [0, 0, 1], "target": [0, 0, 0], "up": [0, 1, 0], "vfov_deg": 90, "resolution": [32, 32]},
+  "environment": {"color": [1, 1, 1]}, "materials": {}, "shapes": [], "gltf": [{"file": "quad.gltf"}]})");
+    ASSERT_EQ(scene.materials.size(), 1u);
+    ASSERT_TRUE(scene.materials[0].baseColorTexture.used());
+    scene.materials[0].type = MaterialType::Diffuse;
+    scene.materials[0].color = glm::vec3(1.0f);
+    ImageRgbF mean = renderMean(scene, SamplerMode::Random, 4);
+    expectImage(mean, [&](int x, int y) { return texelLinear(image, x / 8, y / 8); },
+                [](int x, int y) { return insideTexel(x, y, 4); }, "gltf");
+}
+
 // Bilinear between texel centres: over a pixel inside one cell of the interpolation, the mean
 // of the samples of a full grid (symmetric about the centre) is the value at the pixel centre.
 TEST_F(TexturedView, BilinearInterpolatesDecodedTexelsBetweenCentres) {

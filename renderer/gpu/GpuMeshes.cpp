@@ -1,6 +1,10 @@
 #include "GpuMeshes.h"
 
+#include "MeshTangents.h"
+
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -37,11 +41,26 @@ void appendRows(const glm::mat4& m, std::vector<glm::vec4>& out) {
     for (int r = 0; r < 3; ++r) out.emplace_back(m[0][r], m[1][r], m[2][r], m[3][r]);
 }
 
+// The meshes, in the order of Scene::meshes, that some shape covers with a normal-mapped material.
+std::vector<const TriangleMesh*> meshesWithNormalMaps(const Scene& scene) {
+    std::vector<const TriangleMesh*> meshes;
+    for (const Shape& shape : scene.shapes) {
+        if (shape.type != ShapeType::Mesh) continue;
+        const TriangleMesh* data = scene.meshes[static_cast<std::size_t>(shape.mesh)].data.get();
+        bool normalMapped = false;
+        for (int material : shape.slotMaterials)
+            normalMapped = normalMapped || scene.materials[static_cast<std::size_t>(material)].normalTexture.used();
+        if (normalMapped && std::find(meshes.begin(), meshes.end(), data) == meshes.end()) meshes.push_back(data);
+    }
+    std::sort(meshes.begin(), meshes.end());
+    return meshes;
+}
+
 } // namespace
 
 const char* const GpuMeshes::kSamplerNames[kTextureCount] = {"uMeshNodes", "uMeshTriangles", "uMeshInstances"};
 
-GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh) {
+GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh, bool withTangents, double& tangentSeconds) {
     std::vector<Aabb> bounds(mesh.triangles.size());
     std::vector<glm::vec3> centroids(mesh.triangles.size());
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -51,6 +70,12 @@ GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh) {
     BuiltMesh built;
     built.bvh = buildBvh(bounds, centroids);
     built.triangles.reserve(mesh.triangles.size());
+    std::vector<std::array<glm::vec4, 3>> tangents;
+    if (withTangents) {
+        auto start = std::chrono::steady_clock::now();
+        tangents = meshCornerTangents(mesh);
+        tangentSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     for (std::uint32_t original : built.bvh.primitiveOrder) {
         const MeshTriangle& source = mesh.triangles[original];
         GpuTriangle triangle{};
@@ -71,6 +96,11 @@ GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh) {
         triangle.n1AndV0 = glm::vec4(normal[1], uv[0].y);
         triangle.n2AndU1 = glm::vec4(normal[2], uv[1].x);
         triangle.v1U2V2 = glm::vec4(uv[1].y, uv[2].x, uv[2].y, 0.0f);
+        triangle.tangentTexel = -1.0f;
+        if (withTangents) {
+            triangle.tangentTexel = exactFloat(built.tangents.size());
+            built.tangents.insert(built.tangents.end(), tangents[original].begin(), tangents[original].end());
+        }
         built.triangles.push_back(triangle);
         built.bounds.extend(bounds[original]);
     }
@@ -79,14 +109,21 @@ GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh) {
 
 void GpuMeshes::upload(const Scene& scene) {
     auto start = std::chrono::steady_clock::now();
-    std::map<const TriangleMesh*, std::shared_ptr<BuiltMesh>> stillUsed;
+    withTangents_ = meshesWithNormalMaps(scene);
+    lastTangentSeconds_ = 0.0;
+    std::map<MeshKey, std::shared_ptr<BuiltMesh>> stillUsed;
     std::vector<std::shared_ptr<const TriangleMesh>> keepAlive;
     for (const Shape& shape : scene.shapes) {
         if (shape.type != ShapeType::Mesh) continue;
         const std::shared_ptr<const TriangleMesh>& data = scene.meshes[static_cast<std::size_t>(shape.mesh)].data;
-        if (stillUsed.count(data.get())) continue;
-        auto known = built_.find(data.get());
-        stillUsed[data.get()] = known != built_.end() ? known->second : std::make_shared<BuiltMesh>(buildMesh(*data));
+        MeshKey key{data.get(), std::binary_search(withTangents_.begin(), withTangents_.end(), data.get())};
+        if (stillUsed.count(key)) continue;
+        auto known = built_.find(key);
+        if (known != built_.end()) {
+            stillUsed[key] = known->second;
+        } else {
+            stillUsed[key] = std::make_shared<BuiltMesh>(buildMesh(*data, key.second, lastTangentSeconds_));
+        }
         keepAlive.push_back(data);
     }
     built_ = std::move(stillUsed);
@@ -95,13 +132,23 @@ void GpuMeshes::upload(const Scene& scene) {
     // Bottom levels, one after another, then the top level.
     std::vector<GpuBvhNode> nodes;
     std::vector<GpuTriangle> triangles;
+    std::vector<glm::vec4> tangents;
     std::map<const BuiltMesh*, std::pair<std::uint32_t, std::uint32_t>> placement; // root node, first triangle
-    for (const auto& [data, built] : built_) {
+    std::size_t totalTriangles = 0;
+    for (const auto& entry : built_) totalTriangles += entry.second->triangles.size();
+    for (const auto& [key, built] : built_) {
         auto nodeOffset = static_cast<std::uint32_t>(nodes.size());
         auto triangleOffset = static_cast<std::uint32_t>(triangles.size());
         placement[built.get()] = {nodeOffset, triangleOffset};
         for (const BvhNode& node : built->bvh.nodes) nodes.push_back(placed(node, nodeOffset, triangleOffset));
-        triangles.insert(triangles.end(), built->triangles.begin(), built->triangles.end());
+        // Tangent texels follow all triangles' texels: the index becomes absolute in the buffer.
+        std::size_t tangentBase = totalTriangles * (sizeof(GpuTriangle) / 16) + tangents.size();
+        for (GpuTriangle triangle : built->triangles) {
+            if (triangle.tangentTexel >= 0.0f)
+                triangle.tangentTexel = exactFloat(tangentBase + static_cast<std::size_t>(triangle.tangentTexel));
+            triangles.push_back(triangle);
+        }
+        tangents.insert(tangents.end(), built->tangents.begin(), built->tangents.end());
     }
 
     struct Candidate {
@@ -113,7 +160,8 @@ void GpuMeshes::upload(const Scene& scene) {
     for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
         const Shape& shape = scene.shapes[s];
         if (shape.type != ShapeType::Mesh) continue;
-        const BuiltMesh& built = *built_.at(scene.meshes[static_cast<std::size_t>(shape.mesh)].data.get());
+        const TriangleMesh* data = scene.meshes[static_cast<std::size_t>(shape.mesh)].data.get();
+        const BuiltMesh& built = *built_.at(MeshKey{data, std::binary_search(withTangents_.begin(), withTangents_.end(), data)});
         if (built.bvh.nodes.empty()) continue; // nothing to hit
         glm::mat4 objectToWorld = shape.transform.objectToWorld();
         auto [root, firstTriangle] = placement.at(&built);
@@ -144,8 +192,15 @@ void GpuMeshes::upload(const Scene& scene) {
     lastBuildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     textures_[0].fill(GL_RGBA32F, 16, nodes);
-    textures_[1].fill(GL_RGBA32F, 16, triangles);
+    std::vector<glm::vec4> triangleTexels(triangles.size() * (sizeof(GpuTriangle) / 16));
+    if (!triangles.empty()) std::memcpy(triangleTexels.data(), triangles.data(), triangles.size() * sizeof(GpuTriangle));
+    triangleTexels.insert(triangleTexels.end(), tangents.begin(), tangents.end());
+    textures_[1].fill(GL_RGBA32F, 16, triangleTexels);
     gpuBytes_ = textures_[0].bytes() + textures_[1].bytes();
+}
+
+bool GpuMeshes::tangentsChanged(const Scene& scene) const {
+    return meshesWithNormalMaps(scene) != withTangents_;
 }
 
 void GpuMeshes::uploadInstances(const std::vector<std::int32_t>& lightBase) {

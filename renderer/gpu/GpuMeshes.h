@@ -26,12 +26,14 @@ struct GpuBvhNode {
 static_assert(sizeof(GpuBvhNode) == 32, "two RGBA32F texels");
 
 // shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH
-// leaves (so a leaf's triangles are contiguous).
+// leaves (so a leaf's triangles are contiguous). Triangles of meshes that a normal-mapped material
+// covers have three more texels, after all triangles in the same buffer: the corners' tangents
+// (xyz unit, w the bitangent's sign: MeshTangents.h); other meshes carry none.
 struct GpuTriangle {
     glm::vec3 p0;
     float materialSlot; // into the instance's material table (an integer value: GpuLayout.h)
     glm::vec3 p1;
-    float pad0;
+    float tangentTexel; // first of the triangle's three tangent texels in the buffer; -1: none
     glm::vec3 p2;
     float pad1;
     glm::vec4 n0AndU0;  // per-corner shading normals (0: none, use the geometric normal) and
@@ -71,22 +73,31 @@ public:
     const std::vector<MeshInstance>& instances() const { return instances_; }
     Aabb worldBounds() const { return worldBounds_; }
 
-    // What the last upload cost, for `ptview bench`.
+    // Whether upload(scene) would store tangents for other meshes than the last upload did (a
+    // material edit that adds or removes a normal map): then the meshes need uploading again.
+    bool tangentsChanged(const Scene& scene) const;
+
+    // What the last upload cost, for `ptview bench`: all of it, and of that the tangents.
     double lastBuildSeconds() const { return lastBuildSeconds_; }
+    double lastTangentSeconds() const { return lastTangentSeconds_; }
     std::size_t gpuBytes() const { return gpuBytes_; }
 
 private:
     struct BuiltMesh {
         Bvh bvh;
         std::vector<GpuTriangle> triangles; // leaf order
+        std::vector<glm::vec4> tangents;    // three per triangle, leaf order; empty without
         Aabb bounds;                        // object space
     };
-    static BuiltMesh buildMesh(const TriangleMesh& mesh);
+    // withTangents: the corners' tangents too (BuiltMesh::tangents; the triangles' tangentTexel
+    // then counts from the mesh's first tangent texel).
+    static BuiltMesh buildMesh(const TriangleMesh& mesh, bool withTangents, double& tangentSeconds);
+    using MeshKey = std::pair<const TriangleMesh*, bool>; // the data, and whether with tangents
 
     BufferTexture textures_[kTextureCount];
     // Keyed by the mesh data: a reload that reads the same file again builds again, but instances
     // of one mesh and uploads of an unchanged scene do not.
-    std::map<const TriangleMesh*, std::shared_ptr<BuiltMesh>> built_;
+    std::map<MeshKey, std::shared_ptr<BuiltMesh>> built_;
     std::vector<std::shared_ptr<const TriangleMesh>> keepAlive_; // so the keys above stay valid
     std::vector<MeshInstance> instances_;        // in top-level leaf order
     std::vector<std::uint32_t> instanceRoots_;   // bottom-level root node of each instance
@@ -94,6 +105,8 @@ private:
     std::size_t triangleCount_ = 0;
     Aabb worldBounds_;
     double lastBuildSeconds_ = 0.0;
+    double lastTangentSeconds_ = 0.0;
+    std::vector<const TriangleMesh*> withTangents_; // the meshes the last upload stored tangents for
     std::size_t gpuBytes_ = 0;
 };
 

@@ -247,6 +247,10 @@ void GpuScene::upload(const Scene& scene, std::optional<glm::vec3> environmentMe
     uploadMaterials(scene.materials);
 }
 
+void GpuScene::uploadMeshTangentsIfChanged(const Scene& scene) {
+    if (meshes_.tangentsChanged(scene)) meshes_.upload(scene);
+}
+
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);

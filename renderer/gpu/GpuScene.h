@@ -82,6 +82,9 @@ public:
     // Material edits only: no geometry is re-sent and nothing is recompiled. The light table is
     // rebuilt, since an edit can make a surface an emitter or change its power.
     void uploadMaterials(const std::vector<Material>& materials);
+    // Before uploadMaterials, for an edit that adds or removes a normal map on a mesh: re-sends
+    // the meshes when the set of those that need tangents changed (scene: with the new materials).
+    void uploadMeshTangentsIfChanged(const Scene& scene);
     // Binds the textures and sets the uniforms of the attached program, which must be in use.
     void bind() const;
 

@@ -27,6 +27,9 @@ struct ShaderFeatures {
     bool meshes = false;
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
     bool thinLens = false;            // the camera has an aperture (camera_thin_lens.glsl), else a pinhole
+    bool normalMaps = false;          // ... a normal map (normal_map.glsl); implies textures
+    bool alpha = false;               // ... alpha mode MASK or BLEND (surface_alpha.glsl); implies
+                                      //   textures, since the coverage is read at texture coordinates
 
     static ShaderFeatures all(); // the uber-shader: every model, map and meshes
 

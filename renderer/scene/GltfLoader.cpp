@@ -716,12 +716,21 @@ private:
                      "TEXCOORD_0 must be VEC2 of floats or of normalized unsigned bytes or shorts");
             sameCount(*texcoords, "TEXCOORD_0");
         }
+        // TANGENT (VEC4 floats, w the bitangent's sign) means something only beside NORMAL.
+        std::optional<AccessorData> tangents;
+        if (auto t = primitive.attributes.find("TANGENT"); t != primitive.attributes.end() && normals) {
+            tangents = accessor(t->second, attributesAt + "/TANGENT");
+            if (tangents->components != 4 || tangents->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+                fail(at("accessors", static_cast<std::size_t>(t->second)), "TANGENT must be VEC4 of floats");
+            sameCount(*tangents, "TANGENT");
+        }
 
         // Vertices of this primitive go after those already in the mesh.
         auto positionBase = static_cast<std::uint32_t>(mesh.positions.size());
         auto normalBase = static_cast<std::int32_t>(mesh.normals.size());
         auto texcoordBase = static_cast<std::int32_t>(mesh.texcoords.size());
-        std::vector<bool> normalUsable(vertexCount, false), texcoordUsable(vertexCount, false);
+        auto tangentBase = static_cast<std::int32_t>(mesh.tangents.size());
+        std::vector<bool> normalUsable(vertexCount, false), texcoordUsable(vertexCount, false), tangentUsable(vertexCount, false);
         for (std::size_t v = 0; v < vertexCount; ++v) {
             mesh.positions.emplace_back(positions.component(v, 0), positions.component(v, 1), positions.component(v, 2));
             if (normals) {
@@ -734,6 +743,15 @@ private:
                 glm::vec2 uv(texcoords->component(v, 0), texcoords->component(v, 1));
                 texcoordUsable[v] = std::isfinite(uv.x) && std::isfinite(uv.y);
                 mesh.texcoords.push_back(texcoordUsable[v] ? uv : glm::vec2(0.0f));
+            }
+            if (tangents) {
+                // A zero or non-finite tangent, or a w that is no sign, is left to generation.
+                glm::dvec3 t(tangents->component(v, 0), tangents->component(v, 1), tangents->component(v, 2));
+                double w = tangents->component(v, 3);
+                double length = glm::length(t);
+                tangentUsable[v] = std::isfinite(length) && length > 0.0 && std::isfinite(w) && w != 0.0;
+                mesh.tangents.push_back(tangentUsable[v] ? glm::vec4(glm::vec3(t / length), w < 0.0 ? -1.0f : 1.0f)
+                                                         : glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
             }
         }
 
@@ -768,6 +786,8 @@ private:
                 triangle.normal[static_cast<std::size_t>(k)] = normals && normalUsable[v] ? normalBase + static_cast<std::int32_t>(v) : -1;
                 triangle.texcoord[static_cast<std::size_t>(k)] =
                     texcoords && texcoordUsable[v] ? texcoordBase + static_cast<std::int32_t>(v) : -1;
+                triangle.tangent[static_cast<std::size_t>(k)] =
+                    tangents && tangentUsable[v] && normalUsable[v] ? tangentBase + static_cast<std::int32_t>(v) : -1;
                 p[k] = glm::dvec3(mesh.positions[positionBase + v]);
             }
             double area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));

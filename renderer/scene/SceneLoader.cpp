@@ -1215,11 +1215,6 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         resolveTextures(draft, sourceName);
         resolveImports(draft, sourceName);
         Scene scene = std::move(draft.scene);
-        // Read into the model (and written back), but the renderer does not cut or blend yet.
-        for (const Material& material : scene.materials)
-            if (material.type == MaterialType::Principled && material.alphaMode != AlphaMode::Opaque)
-                scene.warnings.push_back(file + ": material \"" + material.name +
-                                         "\": alpha (alpha_mode mask/blend) is not rendered yet: the surface is drawn opaque");
         scene.path = sourceName;
         // Relative to the scene file, as people write them; not normalised, so that ".." means
         // what the file system says even through symbolic links.

@@ -22,6 +22,9 @@ struct MeshTriangle {
     std::array<std::int32_t, 3> normal;     // into TriangleMesh::normals; -1: none (flat shading)
     std::array<std::int32_t, 3> texcoord;   // into TriangleMesh::texcoords; -1: none
     std::int32_t materialSlot = 0;          // into TriangleMesh::materialSlots
+    // Into TriangleMesh::tangents, when the file gives them (glTF TANGENT); -1: none, and a normal
+    // map's tangents are generated (MeshTangents.h).
+    std::array<std::int32_t, 3> tangent{-1, -1, -1};
 };
 
 // A texture map an MTL entry names (map_Kd, norm, ...), read when the MTL is.
@@ -69,6 +72,9 @@ struct TriangleMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;   // unit
     std::vector<glm::vec2> texcoords; // glTF's convention, (0, 0) at the image's top left (Texture.h)
+    // Tangent-space frames from the file, glTF's TANGENT: xyz the unit direction of growing u,
+    // w = +-1 the bitangent's sign, bitangent = w cross(normal, tangent) (it points up the image).
+    std::vector<glm::vec4> tangents;
     std::vector<MeshTriangle> triangles;
     // The material names faces use (OBJ `usemtl`), in order of first use; slot 0 is "" for faces
     // before any usemtl. A scene maps each slot to one of its materials.

@@ -10,6 +10,7 @@
 
 #include "FuzzScratch.h"
 #include "GltfLoader.h"
+#include "MeshTangents.h"
 
 #include <cmath>
 #include <cstddef>
@@ -47,6 +48,14 @@ void checkScene(const ptview::Scene& scene) {
                 require(t.texcoord[c] >= -1 && t.texcoord[c] < static_cast<std::int32_t>(data.texcoords.size()), "texcoord index");
                 require(t.materialSlot >= 0 && static_cast<std::size_t>(t.materialSlot) < data.materialSlots.size(), "slot");
                 require(finite(data.positions[t.position[c]]), "finite positions of triangles");
+                require(t.tangent[c] >= -1 && t.tangent[c] < static_cast<std::int32_t>(data.tangents.size()), "tangent index");
+            }
+        // The frames a normal map would use (MeshTangents.h): finite, unit, w a sign, whatever the file.
+        for (const auto& corners : ptview::meshCornerTangents(data))
+            for (const glm::vec4& t : corners) {
+                float length = glm::length(glm::vec3(t));
+                require(std::isfinite(length) && std::abs(length - 1.0f) < 1e-3f, "unit tangents");
+                require(t.w == 1.0f || t.w == -1.0f, "tangent handedness is a sign");
             }
     }
     for (const ptview::Shape& shape : scene.shapes) {
