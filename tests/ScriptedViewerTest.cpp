@@ -428,8 +428,9 @@ TEST_F(ScriptedViewer, F12SavesPngPfmAndExrIntoScreenshots) {
         png += entry.path().extension() == ".png";
         pfm += entry.path().extension() == ".pfm";
         exr += entry.path().extension() == ".exr";
-        if (entry.path().extension() != ".pfm") // the PNG and the EXR carry how they were made
+        if (entry.path().extension() != ".pfm") { // the PNG and the EXR carry how they were made
             EXPECT_EQ(readProvenance(entry.path()).recipe.settings.integrator, Integrator::Naive) << name;
+        }
     }
     // window_keys.sh presses until a PNG is there; on a loaded machine a second press may land
     // before the first save shows, so each save is one PNG, one PFM and one EXR.
