@@ -19,6 +19,7 @@
 #include "Integrator.h"
 #include "LightPaths.h"
 #include "MaterialSchema.h"
+#include "MaterialTextures.h"
 #include "SamplerMode.h"
 #include "ToneMapper.h"
 #include "ViewerScript.h"
@@ -88,6 +89,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["depth"] = {integer(0, 1024)};
         t["light-paths"] = {choice(namesOf(ptview::lightPathsNames()))};
         t["light-path-bounces"] = {integer(0, 1024)};
+        t["clamp"] = {Arg{Kind::Number, 0.0, kInf, true, {}, "off"}};
         t["seed"] = {unsignedInteger()};
         t["exposure"] = {number(-20, 20)};
         t["tone-mapper"] = {choice(namesOf(ptview::toneMapperNames()))};
@@ -106,6 +108,9 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["camera-pan"] = {number(), number()};
         t["camera-zoom"] = {number(0, kInf, true)};
         t["camera-fov"] = {number(0, 180, true)}; // (0, 180); this oracle has no open top
+        t["camera-aperture"] = {number(0, 1e9)};
+        t["camera-focus"] = {number(0, 1e9, true)};
+        t["camera-focus-at"] = {number(0, 1), number(0, 1)};
         t["camera-reset"] = {};
         t["load-scene"] = {path()};
         t["reload"] = {};
@@ -120,10 +125,10 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["frames"] = {integer(1)};
         t["wait-spp"] = {integer(1)};
         t["wait-seconds"] = {number(0, 600)};
-        t["screenshot"] = {path({".png", ".pfm"})};
+        t["screenshot"] = {path({".png", ".pfm", ".exr"})};
         t["screenshot-window"] = {path({".png"})};
         t["save-screenshots"] = {};
-        t["reference"] = {path({".pfm"}, "none")};
+        t["reference"] = {path({".pfm", ".exr"}, "none")};
         t["open-panel"] = {choice({"render", "stats", "scene", "environment", "materials", "lights", "camera", "help", "all"})};
         t["status"] = {};
         t["quit"] = {};
@@ -133,13 +138,22 @@ const std::map<std::string, std::vector<Arg>>& commands() {
 }
 
 const std::map<std::string, Field>& fieldsOf(const std::string& verb) {
-    static const std::map<std::string, Field> material = {
-        {"type", {{choice(namesOf(ptview::kMaterialSchemas))}}},
-        {"color", {vec3(0, 1)}},
-        {"emission", {vec3(0)}},
-        {"ior", {{number(1, 4)}}},
-        {"roughness", {{number(0, 1)}}},
-    };
+    static const std::map<std::string, Field> material = [] {
+        std::map<std::string, Field> m = {
+            {"type", {{choice(namesOf(ptview::kMaterialSchemas))}}},
+            {"color", {vec3(0, 1)}},
+            {"emission", {vec3(0)}},
+            {"ior", {{number(1, 4)}}},
+            {"roughness", {{number(0, 1)}}},
+            {"metallic", {{number(0, 1)}}},
+            {"transmission", {{number(0, 1)}}},
+            {"alpha", {{number(0, 1)}}},
+            {"normal-scale", {{number(0, 100)}}},
+        };
+        for (const ptview::MaterialTextureInput& input : ptview::kMaterialTextureInputs)
+            m[std::string(input.name) + "-texture"] = {{path({".png", ".jpg", ".jpeg"}, "none")}};
+        return m;
+    }();
     static const std::map<std::string, Field> light = {
         {"intensity", {vec3(0)}},
         {"position", {vec3()}},
