@@ -15,6 +15,7 @@
 namespace ptview {
 
 std::string BackendChoice::describe() const {
+    if (computeSpeedup <= 0.0) return std::string(backendName(backend)) + " (this context has no compute shaders)";
     char speed[64];
     std::snprintf(speed, sizeof speed, "%.2fx", computeSpeedup);
     return std::string(backendName(backend)) + ", compute at " + speed + " the fragment backend's speed (" +

@@ -22,7 +22,9 @@ struct BackendTiming {
 
 struct BackendChoice {
     Backend backend = Backend::Fragment;
-    double computeSpeedup = 1.0; // fragment time / compute time, the median over the rounds
+    // fragment time / compute time, the median over the rounds; 0: the context has no compute
+    // shaders (below OpenGL 4.3), so nothing was measured.
+    double computeSpeedup = 1.0;
     bool fromCache = false;
     // "compute, 1.84x the fragment backend's speed (measured)", for reports and the Render panel.
     std::string describe() const;

@@ -120,7 +120,7 @@ void PathTracer::setBackend(Backend backend) {
 BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     if (!computeSupported()) {
         setBackend(Backend::Fragment);
-        return BackendChoice{};
+        return BackendChoice{Backend::Fragment, 0.0, false};
     }
     const std::string device = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", " +
                                reinterpret_cast<const char*>(glGetString(GL_VERSION));

@@ -30,6 +30,14 @@ TEST(DecideBackend, OneSlowRoundDoesNotDecide) {
     EXPECT_THROW(decideBackend({}), std::invalid_argument);
 }
 
+TEST(BackendChoice, DescribesHowItWasChosen) {
+    EXPECT_EQ((BackendChoice{Backend::Compute, 1.84, false}).describe(),
+              "compute, compute at 1.84x the fragment backend's speed (measured)");
+    EXPECT_EQ((BackendChoice{Backend::Fragment, 1.05, true}).describe(),
+              "fragment, compute at 1.05x the fragment backend's speed (cached measurement)");
+    EXPECT_EQ((BackendChoice{Backend::Fragment, 0.0, false}).describe(), "fragment (this context has no compute shaders)");
+}
+
 TEST(BackendCacheKey, NamesDeviceAndProgram) {
     const std::string key = backendCacheKey("llvmpipe, 4.5", "quads diffuse full sobol radiance");
     EXPECT_EQ(key.size(), 16u);
