@@ -32,11 +32,7 @@ inline const LightSchema& lightSchema(LightType type) {
 }
 
 // nullptr when no type has that name.
-inline const LightSchema* findLightSchema(std::string_view name) {
-    for (const LightSchema& schema : kLightSchemas)
-        if (name == schema.name) return &schema;
-    return nullptr;
-}
+inline const LightSchema* findLightSchema(std::string_view name) { return findSchemaNamed(kLightSchemas, name); }
 
 // Every key a light of this type may have, in the order the loader lists them.
 inline std::vector<const char*> lightKeys(const LightSchema& schema) {

@@ -46,11 +46,7 @@ inline const MaterialSchema& materialSchema(MaterialType type) {
 }
 
 // nullptr when no type has that name.
-inline const MaterialSchema* findMaterialSchema(std::string_view name) {
-    for (const MaterialSchema& schema : kMaterialSchemas)
-        if (name == schema.name) return &schema;
-    return nullptr;
-}
+inline const MaterialSchema* findMaterialSchema(std::string_view name) { return findSchemaNamed(kMaterialSchemas, name); }
 
 // The glTF metallic-roughness inputs only the principled model has, after its emission.
 inline const char* const kPrincipledOnlyKeys[] = {"metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff",

@@ -18,6 +18,14 @@ void appendNewKeys(std::vector<const char*>& keys, const Keys& more) {
             keys.push_back(key);
 }
 
+// The schema of a table whose `name` is this one; nullptr when none is.
+template <typename Schema, std::size_t N>
+const Schema* findSchemaNamed(const Schema (&schemas)[N], std::string_view name) {
+    for (const Schema& schema : schemas)
+        if (name == schema.name) return &schema;
+    return nullptr;
+}
+
 // "sphere, quad or box": the names of a schema table, for the message about an unknown type.
 template <typename Schema, std::size_t N>
 std::string schemaNameList(const Schema (&schemas)[N]) {

@@ -37,11 +37,7 @@ inline const ShapeSchema& shapeSchema(ShapeType type) {
 }
 
 // nullptr when no type has that name.
-inline const ShapeSchema* findShapeSchema(std::string_view name) {
-    for (const ShapeSchema& schema : kShapeSchemas)
-        if (name == schema.name) return &schema;
-    return nullptr;
-}
+inline const ShapeSchema* findShapeSchema(std::string_view name) { return findSchemaNamed(kShapeSchemas, name); }
 
 // Every key a shape of this type may have, in the order the loader lists them.
 inline std::vector<const char*> shapeKeys(const ShapeSchema& schema) {
