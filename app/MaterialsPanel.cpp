@@ -171,15 +171,16 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
         ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
     }
     if (material.type == MaterialType::Principled) {
-        constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
-        changed |= ImGui::SliderFloat("metallic", &material.metallic, 0.0f, 1.0f, "%.3f", kClamp);
-        itemTooltip("0: dielectric (diffuse + 4% specular), 1: metal; times the metallic texture's B");
-        changed |= ImGui::SliderFloat("transmission", &material.transmission, 0.0f, 1.0f, "%.3f", kClamp);
-        itemTooltip("the dielectric part's share that is glass-like (KHR_materials_transmission)");
-        changed |= ImGui::SliderFloat("alpha", &material.alpha, 0.0f, 1.0f, "%.3f", kClamp);
-        itemTooltip("base colour alpha factor, times the base colour texture's A");
-        changed |= ImGui::SliderFloat("normal scale", &material.normalScale, 0.0f, 2.0f, "%.3f");
-        itemTooltip("scales the normal map's x and y");
+        // Each slider spans its range's panel span, and says what the range's table says.
+        auto factorSlider = [](const char* label, float& value, const SceneRange& range) {
+            bool edited = ImGui::SliderFloat(label, &value, range.panelLo, range.panelHi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            itemTooltip(range.description);
+            return edited;
+        };
+        changed |= factorSlider("metallic", material.metallic, ranges::kMetallic);
+        changed |= factorSlider("transmission", material.transmission, ranges::kTransmission);
+        changed |= factorSlider("alpha", material.alpha, ranges::kAlpha);
+        if (material.normalTexture.used()) changed |= factorSlider("normal scale", material.normalScale, ranges::kNormalScale);
     }
     return changed;
 }

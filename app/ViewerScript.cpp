@@ -154,10 +154,10 @@ const std::vector<FieldSpec>& materialFields() {
         {"ior", {rangeArg("IOR", ranges::kIor)}, false, "index of refraction"},
         {"roughness", {rangeArg("R", ranges::kRoughness)}, false, "microfacet roughness"},
         // Principled materials (docs/materials.md); textures: one field per input of kMaterialTextureInputs.
-        {"metallic", {numberArg("F", 0.0, 1.0)}, false, "principled: the metallic factor"},
-        {"transmission", {numberArg("F", 0.0, 1.0)}, false, "principled: the glass-like share of the dielectric part"},
-        {"alpha", {numberArg("F", 0.0, 1.0)}, false, "principled: the base colour's alpha factor"},
-        {"normal-scale", {numberArg("F", 0.0, 100.0)}, false, "principled: scales the normal map's x and y"},
+        {"metallic", {rangeArg("F", ranges::kMetallic)}, false, "principled: the metallic factor"},
+        {"transmission", {rangeArg("F", ranges::kTransmission)}, false, "principled: the glass-like share of the dielectric part"},
+        {"alpha", {rangeArg("F", ranges::kAlpha)}, false, "principled: the base colour's alpha factor"},
+        {"normal-scale", {rangeArg("F", ranges::kNormalScale)}, false, "principled: scales the normal map's x and y"},
     };
     static const std::vector<FieldSpec> withTextures = [] {
         static std::vector<std::string> names; // the FieldSpecs point into these

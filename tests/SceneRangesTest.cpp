@@ -5,11 +5,13 @@
 #include "SceneLoader.h"
 #include "SceneRanges.h"
 #include "SceneWriter.h"
+#include "ImageIO.h"
 
 #include <gtest/gtest.h>
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <string>
@@ -26,6 +28,17 @@ std::string text(float value) {
     return std::string(buffer, result.ptr);
 }
 
+// A 1x1 tangent-space normal map (straight up) for the principled material's normal_map.
+std::string normalMapFile() {
+    static const std::filesystem::path file = [] {
+        std::filesystem::path path = std::filesystem::temp_directory_path() / "ptview_scene_ranges_normal.png";
+        ImageRgba8 flat{1, 1, {128, 128, 255, 255}};
+        writePng(path, flat);
+        return path;
+    }();
+    return file.generic_string();
+}
+
 // One scene with every ranged quantity at an ordinary value; `key` replaced by `value`.
 std::string sceneWith(const std::string& key, const std::string& value) {
     auto field = [&](const std::string& name, const std::string& ordinary) { return name == key ? value : ordinary; };
@@ -40,7 +53,11 @@ std::string sceneWith(const std::string& key, const std::string& value) {
   "environment": )" + environment + R"(,
   "materials": {
     "coat": {"type": "plastic", "albedo": [0.5, )" + field("albedo", "0.5") + R"(, 0.5], "ior": )" + field("ior", "1.5") +
-           R"(, "roughness": )" + field("roughness", "0.5") + R"(, "emission": [0, )" + field("emission", "0") + R"(, 0]}
+           R"(, "roughness": )" + field("roughness", "0.5") + R"(, "emission": [0, )" + field("emission", "0") + R"(, 0]},
+    "skin": {"type": "principled", "metallic": )" + field("metallic", "0.5") + R"(, "transmission": )" +
+           field("transmission", "0.5") + R"(, "alpha": )" + field("alpha", "0.5") + R"(, "alpha_cutoff": )" +
+           field("alpha_cutoff", "0.5") + R"(,
+             "normal_map": {"texture": ")" + normalMapFile() + R"(", "factor": )" + field("normal_map", "1") + R"(}}
   },
   "shapes": [{"type": "sphere", "material": "coat", "center": [0, 0, 0], "radius": 1}],
   "lights": [{"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": [1, )" +
@@ -65,6 +82,12 @@ std::vector<RangeUse> rangeUses() {
         {&ranges::kColor, "albedo", "/materials/coat/albedo/1", [](const Scene& s) { return s.materials[0].color.g; }},
         {&ranges::kIor, "ior", "/materials/coat/ior", [](const Scene& s) { return s.materials[0].ior; }},
         {&ranges::kRoughness, "roughness", "/materials/coat/roughness", [](const Scene& s) { return s.materials[0].roughness; }},
+        {&ranges::kMetallic, "metallic", "/materials/skin/metallic", [](const Scene& s) { return s.materials[1].metallic; }},
+        {&ranges::kTransmission, "transmission", "/materials/skin/transmission",
+         [](const Scene& s) { return s.materials[1].transmission; }},
+        {&ranges::kAlpha, "alpha", "/materials/skin/alpha", [](const Scene& s) { return s.materials[1].alpha; }},
+        {&ranges::kAlphaCutoff, "alpha_cutoff", "/materials/skin/alpha_cutoff", [](const Scene& s) { return s.materials[1].alphaCutoff; }},
+        {&ranges::kNormalScale, "normal_map", "/materials/skin/normal_map/factor", [](const Scene& s) { return s.materials[1].normalScale; }},
         {&ranges::kRadiance, "emission", "/materials/coat/emission/1", [](const Scene& s) { return s.materials[0].radiance.g; }},
         {&ranges::kRadiance, "environment.color", "/environment/color/1", [](const Scene& s) { return s.environment.g; }},
         {&ranges::kIntensity, "intensity", "/lights/0/intensity/1", [](const Scene& s) { return s.lights[0].intensity.g; }},

@@ -310,7 +310,8 @@ TEST(TexturedScene, WriterRoundTripsTexturedInputs) {
     const auto path = files.write("scene.json", R"({"camera": {"eye": [0, 0, 1], "target": [0, 0, 0], "up": [0, 1, 0], "vfov_deg": 90, "resolution": [32, 32]},
   "materials": {"p": {"type": "principled", "base_color": {"texture": "t.png", "factor": [0.5, 1, 1], "scale": [2, 3], "offset": [0.25, 0], "wrap": ["clamp", "mirror"], "filter": "nearest"},
                       "metallic": {"texture": "t.png", "factor": 0.5}, "roughness": "t.png", "emission": {"texture": "t.png", "factor": [2, 2, 2]},
-                      "transmission": 0.25, "alpha": 0.5, "alpha_mode": "mask", "alpha_cutoff": 0.3, "ior": 1.4},
+                      "transmission": 0.25, "alpha": 0.5, "alpha_mode": "mask", "alpha_cutoff": 0.3, "ior": 1.4,
+                      "normal_map": {"texture": "t.png", "factor": 0.75, "wrap": "clamp"}},
                 "d": {"type": "diffuse", "albedo": "t.png"}},
   "shapes": [{"type": "quad", "center": [0, 0, 0], "u": [1, 0, 0], "v": [0, 1, 0], "material": "p"}]})");
     Scene scene = loadScene(path);
@@ -333,6 +334,11 @@ TEST(TexturedScene, WriterRoundTripsTexturedInputs) {
     EXPECT_EQ(p.metallic, 0.5f);
     EXPECT_EQ(p.transmission, 0.25f);
     EXPECT_EQ(p.alphaMode, AlphaMode::Mask);
+    ASSERT_TRUE(p.normalTexture.used());
+    EXPECT_EQ(p.normalScale, 0.75f);
+    const SceneTexture& normal = scene.textures[std::size_t(p.normalTexture.texture)];
+    EXPECT_EQ(normal.colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(normal.wrapU, TextureWrap::ClampToEdge);
 
     const auto copy = files.write("copy.json", "");
     saveScene(scene, copy);
@@ -346,7 +352,22 @@ TEST(TexturedScene, WriterRoundTripsTexturedInputs) {
         EXPECT_EQ(a.roughness, b.roughness);
         EXPECT_EQ(a.radiance, b.radiance);
         EXPECT_EQ(a.alphaCutoff, b.alphaCutoff);
+        EXPECT_EQ(a.normalTexture.texture, b.normalTexture.texture);
+        EXPECT_EQ(a.normalScale, b.normalScale);
         EXPECT_EQ(a.ior, b.ior);
+    }
+}
+
+// A normal map's factor scales a texture's tilt: a bare number, with nothing to scale, is refused.
+TEST(TexturedScene, ANormalMapWithoutATextureIsRefusedNamingThePlace) {
+    const std::string scene = R"({"camera": {"eye": [0, 0, 1], "target": [0, 0, 0], "vfov_deg": 90, "resolution": [8, 8]},
+  "materials": {"p": {"type": "principled", "normal_map": 0.5}},
+  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "p"}]})";
+    try {
+        parseScene(scene, "n.json");
+        ADD_FAILURE() << "a normal map without a texture was accepted";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("n.json: /materials/p/normal_map: expected a texture", 0), 0u) << error.what();
     }
 }
 

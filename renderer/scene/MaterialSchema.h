@@ -50,7 +50,7 @@ inline const MaterialSchema* findMaterialSchema(std::string_view name) { return 
 
 // The glTF metallic-roughness inputs only the principled model has, after its emission.
 inline const char* const kPrincipledOnlyKeys[] = {"metallic", "transmission", "alpha", "alpha_mode", "alpha_cutoff",
-                                                  "emission_strength"};
+                                                  "emission_strength", "normal_map"};
 
 // Every key a material of this type may have, in the order the loader lists them.
 inline std::vector<const char*> materialKeys(const MaterialSchema& schema) {

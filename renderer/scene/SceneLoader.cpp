@@ -632,7 +632,9 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
 
     auto readColor = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kColor); };
     auto readRadiance = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kRadiance); };
-    auto readUnit = [](const Json& v, const Pointer& p) { return readInRange(v, p, ranges::kRoughness); };
+    auto readIn = [](const SceneRange& range) {
+        return [&range](const Json& v, const Pointer& p) { return readInRange(v, p, range); };
+    };
     // Any input may be textured but an emitter's radiance (its light table entry needs one value).
     auto textured = [&](const char* key, auto read, auto one, TextureSlot Material::*slot) {
         const Json& input = value.at(key);
@@ -661,17 +663,26 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
     }
     if (schema->hasRoughness) {
         if (optionalKey(value, "roughness"))
-            material.roughness = textured("roughness", readUnit, 1.0f, &Material::roughnessTexture);
+            material.roughness = textured("roughness", readIn(ranges::kRoughness), 1.0f, &Material::roughnessTexture);
     }
     if (principled) {
         // glTF's defaults: fully metallic and rough when the file says nothing would surprise in
         // a hand-written scene, so ours are a smooth-ish dielectric: metallic 0, roughness 0.5.
         if (!optionalKey(value, "roughness")) material.roughness = 0.5f;
         if (optionalKey(value, "metallic"))
-            material.metallic = textured("metallic", readUnit, 1.0f, &Material::metallicTexture);
-        if (const Json* t = optionalKey(value, "transmission")) material.transmission = readUnit(*t, at / "transmission");
-        if (const Json* a = optionalKey(value, "alpha")) material.alpha = readUnit(*a, at / "alpha");
-        if (const Json* c = optionalKey(value, "alpha_cutoff")) material.alphaCutoff = readUnit(*c, at / "alpha_cutoff");
+            material.metallic = textured("metallic", readIn(ranges::kMetallic), 1.0f, &Material::metallicTexture);
+        if (const Json* t = optionalKey(value, "transmission"))
+            material.transmission = readInRange(*t, at / "transmission", ranges::kTransmission);
+        if (const Json* a = optionalKey(value, "alpha")) material.alpha = readInRange(*a, at / "alpha", ranges::kAlpha);
+        if (const Json* c = optionalKey(value, "alpha_cutoff"))
+            material.alphaCutoff = readInRange(*c, at / "alpha_cutoff", ranges::kAlphaCutoff);
+        // A tangent-space normal map: its factor is glTF's normalTexture.scale. Without a texture
+        // the key would say nothing, so a bare number is refused rather than ignored.
+        if (const Json* normalMap = optionalKey(value, "normal_map")) {
+            if (!normalMap->is_string() && !normalMap->is_object())
+                fail(at / "normal_map", "expected a texture: a file name or {\"texture\": file, \"factor\": scale}");
+            material.normalScale = textured("normal_map", readIn(ranges::kNormalScale), 1.0f, &Material::normalTexture);
+        }
         if (const Json* mode = optionalKey(value, "alpha_mode")) {
             std::string name = readString(*mode, at / "alpha_mode");
             if (name == "opaque") material.alphaMode = AlphaMode::Opaque;

@@ -86,6 +86,21 @@ inline const SceneRange kIor{
     "index of refraction", 1.0, 4.0, false, false, "", "index of refraction, inside / outside", 1.0f, 4.0f};
 inline const SceneRange kRoughness{
     "roughness", 0.0, 1.0, false, false, "", "GGX alpha = roughness^2; 0 is perfectly smooth", 0.0f, 1.0f};
+// The principled (glTF metallic-roughness) factors: fractions of a whole, as glTF defines them.
+inline const SceneRange kMetallic{
+    "metallic", 0.0, 1.0, false, false, "", "0: dielectric (diffuse + 4% specular), 1: metal; times the metallic texture's B",
+    0.0f, 1.0f};
+inline const SceneRange kTransmission{
+    "transmission", 0.0, 1.0, false, false, "", "the dielectric part's share that is glass-like (KHR_materials_transmission)",
+    0.0f, 1.0f};
+inline const SceneRange kAlpha{
+    "alpha", 0.0, 1.0, false, false, "", "base colour alpha factor, times the base colour texture's A", 0.0f, 1.0f};
+inline const SceneRange kAlphaCutoff{
+    "alpha cutoff", 0.0, 1.0, false, false, "", "alpha mode mask: alpha below this is cut away", 0.0f, 1.0f};
+// glTF sets no bound; past a few the map's tilt saturates (the normal is renormalized), and a
+// negative scale would turn bumps into dents, which a file says by its texels instead.
+inline const SceneRange kNormalScale{
+    "normal scale", 0.0, 100.0, false, false, "", "scales the normal map's x and y", 0.0f, 2.0f};
 // Above 1 a surface would return more light than it receives.
 inline const SceneRange kColor{
     "colour component", 0.0, 1.0, false, false, "", "albedo, reflectance, transmittance or tint", 0.0f, 1.0f};
@@ -108,6 +123,7 @@ inline bool coneAnglesOrdered(float innerDeg, float outerDeg) { return innerDeg 
 // Every range above, for tests and docs that go through them all.
 inline const SceneRange* const kSceneRanges[] = {
     &ranges::kSpotConeAngle, &ranges::kVerticalFov, &ranges::kApertureRadius, &ranges::kFocusDistance, &ranges::kIor, &ranges::kRoughness, &ranges::kColor,
+    &ranges::kMetallic, &ranges::kTransmission, &ranges::kAlpha, &ranges::kAlphaCutoff, &ranges::kNormalScale,
     &ranges::kRadiance, &ranges::kIntensity, &ranges::kEnvironmentIntensity, &ranges::kEnvironmentRotation,
 };
 

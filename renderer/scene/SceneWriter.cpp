@@ -233,15 +233,18 @@ Json materialJson(const Material& material, const std::string& pointer, const Sc
         json[schema.radianceKey] = texturedJson(vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey)),
                                                 material.emissionTexture, scene, at(schema.radianceKey));
     if (material.type == MaterialType::Principled) {
-        json["metallic"] = texturedJson(numberInRange(material.metallic, ranges::kRoughness, at("metallic")),
+        json["metallic"] = texturedJson(numberInRange(material.metallic, ranges::kMetallic, at("metallic")),
                                         material.metallicTexture, scene, at("metallic"));
         if (material.transmission != 0.0f)
-            json["transmission"] = numberInRange(material.transmission, ranges::kRoughness, at("transmission"));
-        if (material.alpha != 1.0f) json["alpha"] = numberInRange(material.alpha, ranges::kRoughness, at("alpha"));
+            json["transmission"] = numberInRange(material.transmission, ranges::kTransmission, at("transmission"));
+        if (material.alpha != 1.0f) json["alpha"] = numberInRange(material.alpha, ranges::kAlpha, at("alpha"));
         static const char* const modes[] = {"opaque", "mask", "blend"};
         if (material.alphaMode != AlphaMode::Opaque) json["alpha_mode"] = modes[static_cast<int>(material.alphaMode)];
         if (material.alphaCutoff != 0.5f)
-            json["alpha_cutoff"] = numberInRange(material.alphaCutoff, ranges::kRoughness, at("alpha_cutoff"));
+            json["alpha_cutoff"] = numberInRange(material.alphaCutoff, ranges::kAlphaCutoff, at("alpha_cutoff"));
+        if (material.normalTexture.used())
+            json["normal_map"] = texturedJson(numberInRange(material.normalScale, ranges::kNormalScale, at("normal_map")),
+                                              material.normalTexture, scene, at("normal_map"));
     }
     return json;
 }
