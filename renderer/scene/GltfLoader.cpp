@@ -7,7 +7,7 @@
 
 #include "GltfLoader.h"
 
-#include "ImageDecode.h"
+#include "TextureLoader.h"
 #include "MaterialTextures.h"
 #include "InputFile.h"
 #include "SceneRanges.h"
@@ -478,13 +478,10 @@ private:
         if (index >= context_.encodedImages.size() || context_.encodedImages[index].empty())
             fail(where, "no image data could be read");
         const std::vector<unsigned char>& bytes = context_.encodedImages[index];
-        auto decodedImage = std::make_shared<TextureImage>();
+        std::shared_ptr<const TextureImage> decodedImage;
         try {
-            ImageRgba8 rgba = decodeImageRgba8(std::string(bytes.begin(), bytes.end()), "image");
-            decodedImage->width = rgba.width;
-            decodedImage->height = rgba.height;
-            decodedImage->rgba = std::move(rgba.rgba);
-        } catch (const ImageDecodeError& e) {
+            decodedImage = decodeTextureImage(std::string(bytes.begin(), bytes.end()), "image");
+        } catch (const TextureError& e) {
             fail(where, e.what());
         }
         std::vector<unsigned char>().swap(context_.encodedImages[index]);

@@ -31,6 +31,9 @@ struct TextureImage {
     int width = 0;
     int height = 0;
     std::vector<std::uint8_t> rgba; // width * height * 4
+    // How long decoding the file's bytes took (not reading them), for `ptview bench`'s split of
+    // a scene's load time into parsing and image decoding.
+    double decodeSeconds = 0.0;
 };
 
 struct SceneTexture {

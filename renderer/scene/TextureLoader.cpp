@@ -3,9 +3,12 @@
 #include "ImageDecode.h"
 #include "InputFile.h"
 
+#include <chrono>
+
 namespace ptview {
 
 std::shared_ptr<const TextureImage> decodeTextureImage(const std::string& bytes, const std::string& source) {
+    const auto start = std::chrono::steady_clock::now();
     ImageRgba8 decoded;
     try {
         decoded = decodeImageRgba8(bytes, source);
@@ -16,6 +19,7 @@ std::shared_ptr<const TextureImage> decodeTextureImage(const std::string& bytes,
     image->width = decoded.width;
     image->height = decoded.height;
     image->rgba = std::move(decoded.rgba);
+    image->decodeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return image;
 }
 
