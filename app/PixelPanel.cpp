@@ -46,7 +46,7 @@ void drawMagnifier(const ViewerSession& session, const PixelInspection& inspecti
 
 void drawHit(const ViewerSession& session, const SurfaceHit& hit, PanelState& state) {
     const Scene& scene = session.model().scene;
-    ImGui::Text("first hit at %.4g m along the ray (%.4g along the view)", hit.distance, hit.viewDistance);
+    ImGui::Text("first hit %.4g m away (%.4g along the view)", hit.distance, hit.viewDistance);
     vectorRow("position", hit.position);
     if (hit.shape >= 0 && hit.shape < static_cast<int>(scene.shapes.size())) {
         const Shape& shape = scene.shapes[static_cast<size_t>(hit.shape)];

@@ -384,7 +384,11 @@ void ViewerWindow::drawSidebar() {
         if (!rendering) noteText("The path tracer pauses while the warp visualizer is shown.");
         if (rendering && header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
         if (rendering && header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, panelState_, frameSeconds_);
-        if (rendering && header("Pixel")) drawPixelPanel(session_, panelState_);
+        bool pixelAsked = std::find(toOpen.begin(), toOpen.end(), "pixel") != toOpen.end();
+        if (rendering && header("Pixel")) {
+            if (pixelAsked) ImGui::SetScrollHereY(0.0f); // a pin (Alt+click) brings its panel into view
+            drawPixelPanel(session_, panelState_);
+        }
         if (panelState_.materialToOpen >= 0) { // the Pixel panel's "open": that material, next frame
             materialsPanel_.openMaterial(static_cast<std::size_t>(panelState_.materialToOpen));
             panelState_.panelsToOpen.push_back("materials");
