@@ -16,6 +16,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Right or middle drag", "pan"},
     {"Shift+left drag", "pan"},
     {"Wheel", "zoom"},
+    {"Alt+click", "pin the pixel under the cursor in the Pixel panel (again: unpin)"},
     {"W A S D", "fly (Shift: faster)"},
     {"Q E", "down / up (Shift: faster)"},
     {"F", "reset camera"},

@@ -95,7 +95,13 @@ void MaterialsPanel::draw(ViewerSession& session) {
         // "###" keeps the node's id (and open state) when its type changes.
         std::string label = material.name + "  (" + materialSchema(material.type).name + ")###material" +
                             std::to_string(i);
+        bool asked = materialToOpen_ == i; // the Pixel panel's "open in Materials"
+        if (asked) ImGui::SetNextItemOpen(true);
         if (!ImGui::TreeNode(label.c_str())) continue;
+        if (asked) {
+            ImGui::SetScrollHereY(0.0f);
+            materialToOpen_.reset();
+        }
         changed |= drawMaterial(material, emitters_[i]);
         if (material.type == MaterialType::Principled && drawTextures(scene, material, i))
             session.model().pendingChanges |= ViewerModel::kSceneChanged;

@@ -12,6 +12,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,8 @@ public:
     // ViewerModel::kMaterialsChanged. A successful save makes the saved file the scene's file;
     // one that would replace another existing file asks first.
     void draw(ViewerSession& session);
+    // Opens that material's node (and scrolls to it) the next time the panel is drawn.
+    void openMaterial(std::size_t index) { materialToOpen_ = index; }
 
 private:
     // An emitter's radiance shown as a colour in [0, 1] times a strength, since radiance goes
@@ -54,6 +57,7 @@ private:
     // The path typed into each (material, input)'s field, and the last Load's error there.
     std::map<std::pair<std::size_t, int>, std::string> texturePaths_;
     std::map<std::pair<std::size_t, int>, std::string> textureErrors_;
+    std::optional<std::size_t> materialToOpen_;
     std::string saveStatus_; // the outcome of the last save, shown under the button
     bool saveFailed_ = false;
 };

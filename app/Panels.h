@@ -3,6 +3,7 @@
 // under its own collapsing header drawn by the caller) and edits the session's model or calls
 // its actions; the session pushes the changes to the renderer. One file per panel.
 
+#include "GlObjects.h"
 #include "UnsavedEditsPrompt.h"
 #include "ViewerSession.h"
 
@@ -20,6 +21,10 @@ struct PanelState {
     std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
+    // Pixel panel: the material its "open in Materials" button asked for (-1: none); the window
+    // hands it to the Materials panel and opens that panel.
+    int materialToOpen = -1;
+    GlTexture pixelMagnifier; // Pixel panel: the magnified neighbourhood, uploaded each time it is drawn
     // Panels to open on the next frame ("all" for every one), asked for by a script.
     std::vector<std::string> panelsToOpen;
 };
@@ -39,6 +44,10 @@ void drawCameraPanel(ViewerSession& session);
 // Samples per pixel, ms per frame, samples per second, elapsed time, error estimate and its plot,
 // for each view of a comparison; and, with a reference image loaded, the true error and its plot.
 void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSeconds);
+// The pixel inspector: the pinned pixel's radiance (linear and displayed), spp, standard error,
+// NaN/Inf status, its first hit (position, shape, material with a button to open it, normals,
+// distance), the split view's side, and a magnifier; read again each time it is drawn.
+void drawPixelPanel(ViewerSession& session, PanelState& state);
 // Mouse and keyboard shortcuts.
 void drawHelpPanel();
 // The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,

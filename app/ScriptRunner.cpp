@@ -296,6 +296,41 @@ void focusAt(Step& s) {
         s.fail("nothing there to focus on (the ray leaves the scene); the focus is left as it was");
 }
 
+// ---- the pixel inspector
+
+// What Alt+click does; waits for the first sample, so that the render has its size.
+void pinPixel(Step& s) {
+    if (s.firstRun()) s.wait().deadline = Clock::now() + kWaitTimeout;
+    s.session.update();
+    if (s.session.stats(ViewerSession::Side::Left).samples == 0) {
+        if (!s.session.accumulating()) s.fail("paused before the first sample: no image to pin a pixel of");
+        else if (Clock::now() > s.wait().deadline) s.fail("no complete sample in time");
+        s.again = !s.failed();
+        return;
+    }
+    glm::ivec2 pixel(s.command.integer(0), s.command.integer(1));
+    glm::ivec2 size = s.session.renderSize();
+    if (pixel.x >= size.x || pixel.y >= size.y) {
+        s.fail("pixel " + std::to_string(pixel.x) + " " + std::to_string(pixel.y) + " is outside the " +
+               std::to_string(size.x) + "x" + std::to_string(size.y) + " image (x 0.." + std::to_string(size.x - 1) +
+               ", y 0.." + std::to_string(size.y - 1) + " from the top-left)");
+        return;
+    }
+    s.model.pinnedPixel = pixel;
+    s.panels.panelsToOpen.push_back("pixel");
+}
+
+void savePixel(Step& s) {
+    s.session.update();
+    std::optional<PixelInspection> inspection = s.session.inspectPinnedPixel();
+    if (!inspection) {
+        s.fail(s.model.pinnedPixel ? "the pinned pixel is outside the render" : "no pixel is pinned (pin-pixel X Y first)");
+        return;
+    }
+    savePixelInspection(*inspection, s.model.scene, s.word);
+    std::printf("ptview: wrote %s\n", s.word.c_str());
+}
+
 void resetCamera(Step& s) {
     s.session.resetCamera();
     s.model.pendingChanges |= ViewerModel::kCameraChanged;
@@ -434,6 +469,9 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
              if (!s.session.setReference(pathOrNone(s))) s.fail(s.session.model().sceneError);
          }},
         {"open-panel", [](Step& s) { s.panels.panelsToOpen.push_back(s.word); }},
+        {"pin-pixel", pinPixel},
+        {"unpin-pixel", [](Step& s) { s.model.pinnedPixel.reset(); }},
+        {"save-pixel", savePixel},
         {"status", [](Step& s) {
              s.session.update();
              printStatus(s.session, s.panels);

@@ -139,7 +139,10 @@ private:
     void answerUnsavedEdits(const std::vector<int>& keys);
     void updateTitle();
     void handleMouseAndFlight(double seconds);
+    std::optional<glm::vec2> imageFractionAtCursor(glm::dvec2 cursor) const;
     void focusAtCursor(glm::dvec2 cursor);
+    void pinAtCursor(glm::dvec2 cursor);
+    void drawPinnedPixelMarker();
     void layout();
     void drawUi();
     void drawSidebar();
@@ -230,6 +233,7 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
                  glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
     bool control = glfwGetKey(window_, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
                    glfwGetKey(window_, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+    bool alt = glfwGetKey(window_, GLFW_KEY_LEFT_ALT) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_ALT) == GLFW_PRESS;
     // The divider, in window coordinates.
     float dividerX = static_cast<float>(session_.dividerX()) / framebufferScale_.x;
     if (!left) draggingDivider_ = false;
@@ -245,6 +249,9 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
             // Ctrl+click focuses; a Ctrl+drag neither orbits nor pans.
             if (clicked) focusAtCursor(cursor);
             camera = model.scene.camera;
+        } else if (alt && (left || clicked)) {
+            // Alt+click pins the pixel (or unpins it); an Alt+drag neither orbits nor pans.
+            if (clicked) pinAtCursor(cursor);
         } else if (draggingDivider_) {
             float areaLeft = static_cast<float>(area.origin.x) / framebufferScale_.x;
             float areaWidth = std::max(1.0f, static_cast<float>(area.size.x) / framebufferScale_.x);
@@ -277,17 +284,62 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
     }
 }
 
-// Click-to-focus on the surface under the cursor (window coordinates from the top-left), when it
-// is on the image.
-void ViewerWindow::focusAtCursor(glm::dvec2 cursor) {
+// Where the cursor (window coordinates from the top-left) is on the image, as fractions of it
+// from its top-left corner; nullopt off the image. Click-to-focus and the pixel inspector share it.
+std::optional<glm::vec2> ViewerWindow::imageFractionAtCursor(glm::dvec2 cursor) const {
     PixelRect area = session_.displayArea();
-    if (area.size.x <= 0 || area.size.y <= 0) return;
+    if (area.size.x <= 0 || area.size.y <= 0) return std::nullopt;
     glm::vec2 pixel = glm::vec2(cursor) * framebufferScale_;
     pixel.y = static_cast<float>(framebufferSize_.y) - pixel.y; // GL counts rows from the bottom
     glm::vec2 fromBottomLeft = (pixel - glm::vec2(area.origin)) / glm::vec2(area.size);
     if (glm::any(glm::lessThan(fromBottomLeft, glm::vec2(0.0f))) || glm::any(glm::greaterThan(fromBottomLeft, glm::vec2(1.0f))))
-        return;
-    session_.focusAt(glm::vec2(fromBottomLeft.x, 1.0f - fromBottomLeft.y));
+        return std::nullopt;
+    return glm::vec2(fromBottomLeft.x, 1.0f - fromBottomLeft.y);
+}
+
+// Click-to-focus on the surface under the cursor, when it is on the image.
+void ViewerWindow::focusAtCursor(glm::dvec2 cursor) {
+    if (std::optional<glm::vec2> fraction = imageFractionAtCursor(cursor)) session_.focusAt(*fraction);
+}
+
+// Alt+click: pins the render pixel under the cursor (the resolution scale and a render shown
+// scaled included), or unpins it; the Pixel panel opens to show it.
+void ViewerWindow::pinAtCursor(glm::dvec2 cursor) {
+    std::optional<glm::vec2> fraction = imageFractionAtCursor(cursor);
+    if (!fraction) return;
+    std::optional<glm::ivec2> pixel = session_.pixelAt(*fraction);
+    if (!pixel) return;
+    session_.togglePinnedPixel(*pixel);
+    if (session_.model().pinnedPixel) panelState_.panelsToOpen.push_back("pixel");
+}
+
+// A square around the pinned pixel (at least a few points wide, the pixel's own size when the
+// image is zoomed in) and a crosshair beside it, over the image.
+void ViewerWindow::drawPinnedPixelMarker() {
+    const std::optional<glm::ivec2>& pinned = session_.model().pinnedPixel;
+    glm::ivec2 render = session_.renderSize();
+    if (!pinned || render.x <= 0 || render.y <= 0) return;
+    PixelRect area = session_.displayArea();
+    glm::vec2 cell = glm::vec2(area.size) / glm::vec2(render) / framebufferScale_; // one pixel, in window coordinates
+    // The pixel's top-left corner: the area's origin is its bottom-left corner, in framebuffer pixels.
+    glm::vec2 topLeft(static_cast<float>(area.origin.x) / framebufferScale_.x + cell.x * static_cast<float>(pinned->x),
+                      static_cast<float>(framebufferSize_.y - area.origin.y - area.size.y) / framebufferScale_.y +
+                          cell.y * static_cast<float>(pinned->y));
+    glm::vec2 centre = topLeft + 0.5f * cell;
+    glm::vec2 half = glm::max(0.5f * cell, glm::vec2(3.0f)) + 1.0f;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const ImU32 dark = IM_COL32(0, 0, 0, 200), bright = IM_COL32(255, 64, 255, 255);
+    for (int pass = 0; pass < 2; ++pass) { // a dark outline under the bright mark, so it shows on any colour
+        float thickness = pass == 0 ? 3.0f : 1.0f;
+        ImU32 colour = pass == 0 ? dark : bright;
+        draw->AddRect(ImVec2(centre.x - half.x, centre.y - half.y), ImVec2(centre.x + half.x, centre.y + half.y), colour, 0.0f, 0,
+                      thickness);
+        float gap = half.x + 3.0f, reach = half.x + 10.0f;
+        draw->AddLine(ImVec2(centre.x - reach, centre.y), ImVec2(centre.x - gap, centre.y), colour, thickness);
+        draw->AddLine(ImVec2(centre.x + gap, centre.y), ImVec2(centre.x + reach, centre.y), colour, thickness);
+        draw->AddLine(ImVec2(centre.x, centre.y - reach), ImVec2(centre.x, centre.y - gap), colour, thickness);
+        draw->AddLine(ImVec2(centre.x, centre.y + gap), ImVec2(centre.x, centre.y + reach), colour, thickness);
+    }
 }
 
 void ViewerWindow::layout() {
@@ -332,6 +384,16 @@ void ViewerWindow::drawSidebar() {
         if (!rendering) noteText("The path tracer pauses while the warp visualizer is shown.");
         if (rendering && header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
         if (rendering && header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, panelState_, frameSeconds_);
+        bool pixelAsked = std::find(toOpen.begin(), toOpen.end(), "pixel") != toOpen.end();
+        if (rendering && header("Pixel")) {
+            if (pixelAsked) ImGui::SetScrollHereY(0.0f); // a pin (Alt+click) brings its panel into view
+            drawPixelPanel(session_, panelState_);
+        }
+        if (panelState_.materialToOpen >= 0) { // the Pixel panel's "open": that material, next frame
+            materialsPanel_.openMaterial(static_cast<std::size_t>(panelState_.materialToOpen));
+            panelState_.panelsToOpen.push_back("materials");
+            panelState_.materialToOpen = -1;
+        }
         bool sceneOpen = rendering && header("Scene");
         if (sceneOpen) drawScenePanel(session_, panelState_);
         if (rendering && header("Environment")) drawEnvironmentPanel(session_, panelState_);
@@ -421,6 +483,7 @@ void ViewerWindow::drawUi() {
     if (!warpVisualizer_.active()) {
         drawCompareLabels();
         drawImageNotes();
+        drawPinnedPixelMarker();
     }
     drawUnsavedEditsDialog(session_, panelState_);
     if (warpVisualizer_.active()) {

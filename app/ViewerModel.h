@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ptview {
@@ -42,6 +43,11 @@ struct ViewerModel {
     bool paused = false;
     int targetSamples = 0;        // stop accumulating at this many samples per pixel; 0: never
     CompareSettings compare;
+    // The pixel inspector's pixel: one pixel of the full-size render, x from the left and y from
+    // the top, as in a saved PNG and every pixel coordinate the user sees (the Pixel panel,
+    // `pin-pixel X Y`). Unpinned (reset) whenever the render size changes, since the same numbers
+    // would then name another place of the picture. nullopt: none pinned.
+    std::optional<glm::ivec2> pinnedPixel;
     // A reference image of the scene (a PFM, e.g. from `ptview render` with many samples): with it
     // the Stats panel shows the true error, not only the estimate. Null for none.
     std::shared_ptr<const ImageRgbF> reference;

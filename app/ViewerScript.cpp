@@ -123,7 +123,7 @@ std::vector<std::string> materialTypeChoices() {
 }
 std::vector<std::string> onOffChoices() { return {"on", "off"}; }
 std::vector<std::string> panelChoices() {
-    return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "help", "all"};
+    return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"};
 }
 
 // =====================================================================================
@@ -257,6 +257,11 @@ const std::vector<CommandSpec>& commandSpecs() {
          "load a reference image (.pfm or .exr) for the true error in Stats and status, or none"},
         {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,
          "open a sidebar panel (and a materials panel's materials), or all of them"},
+        // The pixel inspector
+        {"pin-pixel", {integerArg("X", 0), integerArg("Y", 0)}, nullptr,
+         "pin the render's pixel X Y (from the top-left; within the image) in the Pixel panel, as Alt+click does"},
+        {"unpin-pixel", {}, nullptr, "unpin the pinned pixel"},
+        {"save-pixel", {pathArg({".json"})}, nullptr, "write the Pixel panel's numbers of the pinned pixel as JSON"},
         {"status", {}, nullptr, "print the current settings, samples per pixel and camera eye"},
         {"quit", {}, nullptr, "close the viewer"},
     };

@@ -186,6 +186,47 @@ std::optional<float> ViewerSession::focusAt(glm::vec2 imageFraction) {
     return focus;
 }
 
+std::optional<glm::ivec2> ViewerSession::pixelAt(glm::vec2 imageFraction) const {
+    if (renderSize_.x <= 0 || renderSize_.y <= 0) return std::nullopt;
+    glm::ivec2 pixel(glm::floor(imageFraction * glm::vec2(renderSize_)));
+    return glm::clamp(pixel, glm::ivec2(0), renderSize_ - 1); // the far edge (fraction 1) is the last pixel
+}
+
+void ViewerSession::togglePinnedPixel(glm::ivec2 pixel) {
+    if (model_.pinnedPixel == pixel) model_.pinnedPixel.reset();
+    else model_.pinnedPixel = pixel;
+}
+
+ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
+    if (!comparing() || renderSize_.x <= 0) return Side::Left;
+    PixelRect area = displayArea();
+    float centre = static_cast<float>(area.origin.x) +
+                   (static_cast<float>(pixel.x) + 0.5f) / static_cast<float>(renderSize_.x) * static_cast<float>(area.size.x);
+    return centre < static_cast<float>(dividerX()) ? Side::Left : Side::Right;
+}
+
+std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
+    if (!model_.pinnedPixel) return std::nullopt;
+    glm::ivec2 pixel = *model_.pinnedPixel;
+    Side side = sideOf(pixel);
+    PathTracer& tracer = *view(side).tracer;
+    glm::ivec2 size = tracer.imageSize();
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return std::nullopt;
+    PixelInspection inspection;
+    inspection.pixel = pixel;
+    inspection.imageSize = size;
+    inspection.comparing = comparing();
+    inspection.rightSide = side == Side::Right;
+    inspection.reading = tracer.readPixel(pixel, model_.display);
+    if (pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount != tracer.restartCount()) {
+        // The pinhole ray through the pixel's centre; the film counts rows from the bottom.
+        glm::vec2 filmPos(static_cast<float>(pixel.x) + 0.5f, static_cast<float>(size.y - pixel.y) - 0.5f);
+        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), tracer.probeSurface(filmPos)};
+    }
+    inspection.hit = pixelProbe_.hit;
+    return inspection;
+}
+
 // Compared as the file would hold them, so that an edit counts exactly when saving would change
 // the file, and a field the file does not keep (one the material's type does not use) does not.
 bool ViewerSession::hasUnsavedEdits() const {
@@ -395,6 +436,7 @@ void ViewerSession::followImageArea(unsigned changes) {
     bool nothingRendered = left_.tracer->sampleCount() == 0 && (!right_ || right_->tracer->sampleCount() == 0);
     bool settled = secondsSince(wantedSince_) >= kResizeSettleSeconds;
     if (renderSize_.x == 0 || restarting || (nothingRendered && settled)) {
+        model_.pinnedPixel.reset(); // its numbers would name another place of the picture
         renderSize_ = wanted;
         followedScale_ = model_.resolutionScale;
     }

@@ -9,6 +9,7 @@
 #include "FileWatcher.h"
 #include "ImageMetadata.h"
 #include "PathTracer.h"
+#include "PixelInspection.h"
 #include "SceneInput.h"
 #include "TileCost.h"
 #include "ViewerModel.h"
@@ -66,6 +67,17 @@ public:
     // each in [0, 1]), found by a one-pixel GPU pass (PathTracer::focusDistanceAt). Returns that
     // distance, or nullopt (the camera unchanged) when nothing is there.
     std::optional<float> focusAt(glm::vec2 imageFraction);
+    // The pixel inspector (ViewerModel::pinnedPixel). The render pixel (x from the left, y from
+    // the top) at imageFraction of the image, as focusAt takes it; nullopt before there is a render.
+    std::optional<glm::ivec2> pixelAt(glm::vec2 imageFraction) const;
+    // Alt+click: pins the pixel, or unpins it when it is the one pinned.
+    void togglePinnedPixel(glm::ivec2 pixel);
+    // Split view: the view whose numbers a pixel shows, by the side of the divider its centre is on.
+    Side sideOf(glm::ivec2 pixel) const;
+    // The pinned pixel's numbers now: one pixel read back from that side's accumulation, and the
+    // first hit, probed again only when the pixel, the side or the tracer's accumulation (camera,
+    // scene) changed. nullopt when none is pinned or it is outside the render.
+    std::optional<PixelInspection> inspectPinnedPixel();
     // Whether the scene in memory differs from its file in anything the file holds, the camera
     // included (a view the user set up is work): what quitting or opening another scene would
     // throw away.
@@ -175,6 +187,14 @@ private:
     SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
     bool seenCompare_ = false;
     std::string saveTarget_;
+    // The pixel inspector's last probe, and what it was probed for.
+    struct PixelProbe {
+        glm::ivec2 pixel{-1};
+        Side side = Side::Left;
+        int restartCount = -1;
+        std::optional<SurfaceHit> hit;
+    };
+    PixelProbe pixelProbe_;
 };
 
 } // namespace ptview

@@ -117,6 +117,19 @@ void Accumulator::readAttachment(int attachment, std::vector<float>& rgba) const
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
+namespace {
+
+// The mean and the variance of the mean of one channel, from its sums over n samples: Kahan's
+// compensation holds what the float sum over-counted; the sample variance is unbiased (n - 1).
+void meanAndVarianceOfMean(double sum, double compensation, double sumSquares, double n, float& mean, float& varianceOfMean) {
+    double m = (sum - compensation) / n;
+    double sampleVariance = n > 1 ? std::max(0.0, (sumSquares - n * m * m) / (n - 1)) : 0.0;
+    mean = static_cast<float>(m);
+    varianceOfMean = static_cast<float>(sampleVariance / n);
+}
+
+} // namespace
+
 PixelStatistics Accumulator::readStatistics() const {
     PixelStatistics stats;
     stats.sampleCount = sampleCount_;
@@ -133,19 +146,33 @@ PixelStatistics Accumulator::readStatistics() const {
         for (int x = 0; x < size_.x; ++x) {
             size_t i = (static_cast<size_t>(y) * static_cast<size_t>(size_.x) + static_cast<size_t>(x)) * 4;
             glm::vec3 mean, varianceOfMean;
-            for (int c = 0; c < 3; ++c) {
-                // Kahan: the compensation holds what the float sum over-counted.
-                double m = (static_cast<double>(sum[i + c]) - compensation[i + c]) / n;
-                double sampleVariance = n > 1 ? std::max(0.0, (sumSquares[i + c] - n * m * m) / (n - 1)) : 0.0;
-                mean[c] = static_cast<float>(m);
-                varianceOfMean[c] = static_cast<float>(sampleVariance / n);
-            }
+            for (int c = 0; c < 3; ++c)
+                meanAndVarianceOfMean(sum[i + c], compensation[i + c], sumSquares[i + c], n, mean[c], varianceOfMean[c]);
             int row = size_.y - 1 - y; // GL rows run bottom-up
             stats.mean.set(x, row, mean);
             stats.varianceOfMean.set(x, row, varianceOfMean);
         }
     }
     return stats;
+}
+
+PixelReading Accumulator::readPixel(glm::ivec2 glPixel) const {
+    if (glPixel.x < 0 || glPixel.y < 0 || glPixel.x >= size_.x || glPixel.y >= size_.y)
+        throw std::out_of_range("Accumulator::readPixel: pixel outside the target");
+    PixelReading reading;
+    reading.sampleCount = sampleCount_;
+    if (sampleCount_ == 0) return reading;
+    glm::vec4 texels[kTextureCount];
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, latest().framebuffer.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int i = 0; i < kTextureCount; ++i) {
+        glReadBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + i));
+        glReadPixels(glPixel.x, glPixel.y, 1, 1, GL_RGBA, GL_FLOAT, &texels[i]);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    for (int c = 0; c < 3; ++c)
+        meanAndVarianceOfMean(texels[0][c], texels[1][c], texels[2][c], sampleCount_, reading.mean[c], reading.varianceOfMean[c]);
+    return reading;
 }
 
 } // namespace ptview

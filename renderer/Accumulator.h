@@ -43,6 +43,9 @@ public:
     void bindLatest(int sumUnit, int compensationUnit) const;
 
     PixelStatistics readStatistics() const;
+    // One pixel of readStatistics (glPixel counts rows from the bottom, as GL does), read back
+    // alone: three 1x1 reads instead of the whole image. `displayed` is left 0.
+    PixelReading readPixel(glm::ivec2 glPixel) const;
 
     int sampleCount() const { return sampleCount_; }
     // The sample count of the sums bindLatest() binds: sampleCount(), or right after a restart

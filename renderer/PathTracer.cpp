@@ -189,7 +189,7 @@ void PathTracer::reloadShaders() {
     TraceProgram trace = buildTraceProgram(programKey_);
     display_ = std::move(display);
     tracePrograms_.clear();
-    focusProbe_.reset(); // built again from the new files when next asked
+    surfaceProbe_.reset(); // built again from the new files when next asked
     attached_ = nullptr;
     tracePrograms_.emplace(programKey_, std::move(trace));
     ++programsCompiled_;
@@ -333,20 +333,20 @@ void PathTracer::updateFrameUniforms(const Accumulator& target) {
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
-std::optional<float> PathTracer::focusDistanceAt(glm::vec2 filmPos) {
+std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
     glm::ivec2 size = accumulator_.size();
     if (size.x <= 0 || size.y <= 0) return std::nullopt; // no film to place the position on
-    if (!focusProbe_ || focusProbe_->features != programKey_.features) {
+    if (!surfaceProbe_ || surfaceProbe_->features != programKey_.features) {
         ShaderAssembler assembler(shaderDir_);
         specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler);
-        FocusProbe probe;
+        SurfaceProbe probe;
         probe.features = programKey_.features;
-        probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("focus_probe.frag"));
+        probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("surface_probe.frag"));
         probe.program->bindUniformBlock("FrameBlock", kFrameBlockBinding);
         probe.filmPos = probe.program->uniformLocation("uFilmPos");
-        focusProbe_ = std::move(probe);
+        surfaceProbe_ = std::move(probe);
     }
-    const GlProgram& program = *focusProbe_->program;
+    const GlProgram& program = *surfaceProbe_->program;
     updateFrameUniforms(accumulator_);
     resetPassState();
     gpuScene_.attach(program, kSceneUnit);
@@ -354,9 +354,50 @@ std::optional<float> PathTracer::focusDistanceAt(glm::vec2 filmPos) {
     glUseProgram(program.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
     gpuScene_.bind();
-    glUniform2f(focusProbe_->filmPos, filmPos.x, filmPos.y);
-    float distance = runProbePass(program, 1, {}, 1)[0][0].x;
-    return distance > 0.0f && std::isfinite(distance) ? std::optional<float>(distance) : std::nullopt;
+    glUniform2f(surfaceProbe_->filmPos, filmPos.x, filmPos.y);
+    std::vector<ProbeData> texels = runProbePass(program, 1, {}, 4);
+    glm::vec4 distances = texels[0][0], position = texels[1][0], normalGeom = texels[2][0], normalShading = texels[3][0];
+    if (!(distances.x > 0.0f) || !std::isfinite(distances.x)) return std::nullopt;
+    SurfaceHit hit;
+    hit.distance = distances.x;
+    hit.viewDistance = distances.y;
+    hit.uv = glm::vec2(distances.z, distances.w);
+    hit.position = glm::vec3(position);
+    hit.material = static_cast<int>(position.w);
+    hit.normalGeom = glm::vec3(normalGeom);
+    hit.primitiveKind = static_cast<PrimitiveKind>(static_cast<int>(normalGeom.w));
+    hit.normalShading = glm::vec3(normalShading);
+    hit.primitive = static_cast<int>(normalShading.w);
+    hit.shape = shapeOfPrimitive(scene_, hit.primitiveKind, hit.primitive, gpuScene_.meshes().instances());
+    return hit;
+}
+
+std::optional<float> PathTracer::focusDistanceAt(glm::vec2 filmPos) {
+    std::optional<SurfaceHit> hit = probeSurface(filmPos);
+    if (!hit || !(hit->viewDistance > 0.0f)) return std::nullopt;
+    return hit->viewDistance;
+}
+
+PixelReading PathTracer::readPixel(glm::ivec2 pixel, const DisplaySettings& settings) const {
+    glm::ivec2 size = accumulator_.size();
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y)
+        throw std::out_of_range("pixel " + std::to_string(pixel.x) + " " + std::to_string(pixel.y) + " is outside the " +
+                                std::to_string(size.x) + "x" + std::to_string(size.y) + " image");
+    glm::ivec2 glPixel(pixel.x, size.y - 1 - pixel.y); // GL rows run bottom-up
+    PixelReading reading = accumulator_.readPixel(glPixel);
+    ImageRgba8 shown = readDisplayed(pixel, glm::ivec2(1), settings);
+    reading.displayed = glm::u8vec3(shown.rgba[0], shown.rgba[1], shown.rgba[2]);
+    return reading;
+}
+
+ImageRgba8 PathTracer::readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const DisplaySettings& settings) const {
+    glm::ivec2 imageSize = accumulator_.size();
+    // The whole image drawn with the region's bottom-left pixel on the target's: each texel's
+    // centre falls on its pixel's centre, so the colours are the display's own, tone mapping and all.
+    glm::ivec2 glOrigin(topLeft.x, imageSize.y - (topLeft.y + size.y));
+    return renderOffscreenRgba8(size, [&](glm::ivec2) {
+        drawMean(accumulator_, PixelRect{-glOrigin, imageSize}, settings, PixelRect{{0, 0}, size});
+    });
 }
 
 void PathTracer::renderSample() {

@@ -14,6 +14,7 @@
 #include "Image.h"
 #include "RenderSettings.h"
 #include "Scene.h"
+#include "SurfaceHit.h"
 #include "ShaderFeatures.h"
 #include "ToneMapper.h"
 
@@ -117,11 +118,21 @@ public:
     ImageRgbF readMean() const;
     PixelStatistics readStatistics() const { return accumulator_.readStatistics(); }
 
-    // Click-to-focus: the distance along the view direction to the first surface that the pinhole
-    // ray through filmPos (pixels of the image from its bottom-left corner, as the camera counts
-    // them) hits, found on the GPU by the scene's own intersection code (shaders/focus_probe.frag);
-    // nullopt when that ray leaves the scene, or there is no image yet.
+    // The first surface that the pinhole ray through filmPos (pixels of the image from its
+    // bottom-left corner, as the camera counts them; a pixel's centre is its index + 0.5) meets,
+    // found on the GPU by the scene's own intersection code (shaders/surface_probe.frag, one
+    // fragment); nullopt when that ray leaves the scene, or there is no image yet.
+    std::optional<SurfaceHit> probeSurface(glm::vec2 filmPos);
+    // Click-to-focus: probeSurface's distance along the view direction.
     std::optional<float> focusDistanceAt(glm::vec2 filmPos);
+    // One pixel of the full-size accumulation (x from the left, y from the top, as in a saved
+    // image): read back alone (1x1 reads of the sums), and its displayed colour through the
+    // display pass itself. Throws std::out_of_range for a pixel outside the image.
+    PixelReading readPixel(glm::ivec2 pixel, const DisplaySettings& settings) const;
+    // The display pass's colours of a rectangle of pixels (topLeft: x from the left, y from the
+    // top), rows top first, drawn into a target of that size alone: the pixel inspector's
+    // magnifier. Pixels outside the image repeat its edge.
+    ImageRgba8 readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const DisplaySettings& settings) const;
     ImageRgba8 readToneMapped(const DisplaySettings& settings) const;
 
 private:
@@ -144,7 +155,7 @@ private:
         Backend backend = Backend::Fragment;
         bool operator<(const ProgramKey& other) const;
     };
-    struct FocusProbe {
+    struct SurfaceProbe {
         ShaderFeatures features; // specialized like the path-tracing program of these features
         std::unique_ptr<GlProgram> program;
         GLint filmPos = -1;
@@ -171,7 +182,7 @@ private:
     std::map<ProgramKey, TraceProgram> tracePrograms_;
     ProgramKey programKey_;
     const TraceProgram* attached_ = nullptr; // the program the scene's uniforms were last found in
-    std::optional<FocusProbe> focusProbe_;   // compiled on the first click-to-focus
+    std::optional<SurfaceProbe> surfaceProbe_; // compiled on the first probeSurface
     int programsCompiled_ = 0;
     Backend backend_ = Backend::Fragment;
     Scene scene_; // shapes and materials: which features the materials call for

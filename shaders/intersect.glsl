@@ -32,7 +32,15 @@ struct Hit {
     int material;
     int light;          // light index of the surface hit, or -1
     vec2 uv;            // texture coordinates (surface_textures.glsl); 0 in programs without textures
+    ivec2 primitive;    // (kind, index among that kind): which shape the ray met, for the pixel
+                        // inspector (renderer/gpu/SurfaceHit.h maps it to the scene's shape)
 };
+
+// Hit::primitive.x; the same numbers as PrimitiveKind (renderer/gpu/SurfaceHit.h).
+const int kPrimitiveSphere = 0;
+const int kPrimitiveQuad = 1;
+const int kPrimitiveDisk = 2;
+const int kPrimitiveMeshInstance = 3;
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
 // Gems, ch. 7) that keeps precision for small spheres far from the origin.
@@ -165,6 +173,7 @@ bool intersectScene(Ray ray, out Hit hit) {
     hit.posWorld = ray.origin + hit.t * ray.direction;
     hit.uv = vec2(0.0);
     if (onMesh) {
+        hit.primitive = ivec2(kPrimitiveMeshInstance, meshHit.instance);
         meshSurface(meshHit, hit.normalGeom, hit.normalShading, hit.material, hit.light);
         hit.uv = meshSurfaceUv(meshHit);
         vec3 tangent, bitangent;
@@ -180,6 +189,7 @@ bool intersectScene(Ray ray, out Hit hit) {
         hit.uv = sphereSurfaceUv(hit.normalGeom);
         sphereSurfaceTangents(hit.normalGeom, tangent, bitangent);
         ids = sphereIds(sphereHit);
+        hit.primitive = ivec2(kPrimitiveSphere, sphereHit);
     } else if (quadHit >= 0) {
         vec3 center = texelFetch(uQuads, 4 * quadHit).xyz;
         vec3 u = texelFetch(uQuads, 4 * quadHit + 1).xyz;
@@ -190,9 +200,11 @@ bool intersectScene(Ray ray, out Hit hit) {
         quadSurfaceTangents(u, v, tangent, bitangent);
         hit.posWorld = quadSurfacePoint(hit.posWorld, center, u, v, dual, spawnOffset(hit.posWorld));
         ids = quadIds(quadHit);
+        hit.primitive = ivec2(kPrimitiveQuad, quadHit);
     } else {
         hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
         ids = diskIds(diskHit);
+        hit.primitive = ivec2(kPrimitiveDisk, diskHit);
     }
     hit.material = ids.x;
     hit.light = ids.y;

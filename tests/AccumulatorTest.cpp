@@ -17,9 +17,9 @@ float probeValue(std::uint32_t frame) { // mirrors tests/shaders/accumulate_prob
     return k == 9u ? 10000.0f : 0.125f * static_cast<float>(k) + 0.0625f;
 }
 
-// Runs `frames` probe passes after `framesBeforeRestart` passes that a restart must discard.
-PixelStatistics runProbe(int frames, glm::ivec2 size, int framesBeforeRestart = 0) {
-    testing::glContext();
+// Runs `frames` probe passes into accumulator after `framesBeforeRestart` passes that a restart
+// must discard.
+void accumulateProbe(Accumulator& accumulator, int frames, int framesBeforeRestart = 0) {
     ShaderAssembler assembler(PTVIEW_SHADER_DIR);
     GlProgram program(assembler.assemble("fullscreen.vert"),
                       assembler.assemble(PTVIEW_TEST_SHADER_DIR "/accumulate_probe.frag"));
@@ -31,8 +31,6 @@ PixelStatistics runProbe(int frames, glm::ivec2 size, int framesBeforeRestart = 
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW);
     GlVertexArray vertexArray = createVertexArray();
 
-    Accumulator accumulator;
-    accumulator.resize(size);
     FrameUniforms frame{};
     for (int i = 0; i < framesBeforeRestart + frames; ++i) {
         if (i == framesBeforeRestart) accumulator.restart();
@@ -46,7 +44,41 @@ PixelStatistics runProbe(int frames, glm::ivec2 size, int framesBeforeRestart = 
         glDrawArrays(GL_TRIANGLES, 0, 3);
         accumulator.endPass();
     }
+}
+
+PixelStatistics runProbe(int frames, glm::ivec2 size, int framesBeforeRestart = 0) {
+    testing::glContext();
+    Accumulator accumulator;
+    accumulator.resize(size);
+    accumulateProbe(accumulator, frames, framesBeforeRestart);
     return accumulator.readStatistics();
+}
+
+// The pixel inspector's one-pixel read: the mean and the variance of the mean (the standard
+// error squared) of the known sequence, by the formula on its exact sums, s^2 / n with the
+// unbiased sample variance s^2 = (sum x^2 - n mean^2) / (n - 1).
+TEST(Accumulator, ReadPixelGivesTheMeanAndStandardErrorOfTheSamples) {
+    testing::glContext();
+    const int frames = 23; // two large values among them: a variance far from zero
+    double sum = 0.0, sumSquares = 0.0;
+    for (int i = 0; i < frames; ++i) {
+        double v = probeValue(static_cast<std::uint32_t>(i));
+        sum += v;
+        sumSquares += v * v;
+    }
+    const double mean = sum / frames;
+    const double varianceOfMean = (sumSquares - frames * mean * mean) / (frames - 1) / frames;
+    Accumulator accumulator;
+    accumulator.resize({5, 3});
+    accumulateProbe(accumulator, frames);
+    PixelReading reading = accumulator.readPixel({4, 1});
+    EXPECT_EQ(reading.sampleCount, frames);
+    EXPECT_NEAR(reading.mean.r, mean, 1e-6 * mean);
+    EXPECT_NEAR(reading.mean.g, 0.5 * mean, 1e-6 * mean);
+    EXPECT_NEAR(reading.varianceOfMean.r, varianceOfMean, 1e-5 * varianceOfMean);
+    EXPECT_NEAR(reading.varianceOfMean.g, 0.25 * varianceOfMean, 1e-5 * varianceOfMean);
+    EXPECT_NEAR(reading.standardError().r, std::sqrt(varianceOfMean), 1e-5 * std::sqrt(varianceOfMean));
+    EXPECT_THROW(accumulator.readPixel({5, 0}), std::out_of_range);
 }
 
 TEST(Accumulator, HundredThousandFramesKeepTheExactMean) {

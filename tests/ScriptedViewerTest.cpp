@@ -13,6 +13,7 @@
 #include <stb_image.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -394,6 +395,87 @@ TEST_F(ScriptedViewer, CtrlClickOnTheImageFocusesThere) {
     EXPECT_EQ(field(status[0], "focus"), "1");
     EXPECT_NEAR(std::stod(field(status[1], "focus")), 3.0, 1e-3) << result.output;
     EXPECT_EQ(field(status[0], "eye"), field(status[1], "eye")) << "a Ctrl+click does not orbit";
+    fs::remove_all(directory);
+}
+
+// The pixel inspector from a script: pin-pixel and save-pixel give the numbers of that pixel of
+// a headless render with the same settings, the shape and material seen there, and a pixel
+// outside the image is an error naming the line.
+TEST_F(ScriptedViewer, PinPixelSavesThePixelOfAHeadlessRender) {
+    fs::path directory = freshDirectory("pin_pixel");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(# 96x96 of the 768x768 image area
+resolution-scale 0.125
+seed 7
+sampler sobol
+depth 4
+integrator mis
+target-spp 4
+wait-spp 4
+pin-pixel 3 48
+save-pixel wall.json
+pin-pixel 48 2
+save-pixel sky.json
+screenshot image.pfm
+unpin-pixel
+save-pixel none.json
+)");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:15: save-pixel: no pixel is pinned"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(directory / "none.json"));
+    testing::CommandResult render = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted(kCornell) +
+        " --size 96x96 --spp 4 --seed 7 --sampler sobol --depth 4 --integrator mis --out " +
+        testing::shellQuoted((directory / "headless.pfm").string()));
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    ImageRgbF headless = readPfm(directory / "headless.pfm");
+    ASSERT_EQ(headless.width, 96);
+
+    nlohmann::json wall = nlohmann::json::parse(std::ifstream(directory / "wall.json"));
+    EXPECT_EQ(wall["pixel"], nlohmann::json::array({3, 48}));
+    EXPECT_EQ(wall["spp"], 4);
+    EXPECT_EQ(wall["status"], "finite");
+    for (int c = 0; c < 3; ++c) {
+        float expected = headless.at(3, 48)[c];
+        EXPECT_NEAR(wall["mean"][c].get<float>(), expected, 1e-5f * (1.0f + expected)) << "channel " << c;
+        EXPECT_GT(wall["standard_error"][c].get<float>(), 0.0f) << "4 samples of a noisy pixel";
+    }
+    // x = 3 of 96 at the height of the image's middle: the left wall, which is red.
+    EXPECT_EQ(wall["hit"]["shape"], "left_wall");
+    EXPECT_EQ(wall["hit"]["shape_type"], "quad");
+    EXPECT_EQ(wall["hit"]["material"], "red");
+    EXPECT_NEAR(wall["hit"]["normal_shading"][0].get<float>(), 1.0f, 1e-5f) << "the left wall faces +x";
+
+    nlohmann::json sky = nlohmann::json::parse(std::ifstream(directory / "sky.json"));
+    EXPECT_TRUE(sky["hit"].is_null()) << "the top row looks out of the box's open front";
+    EXPECT_NEAR(sky["mean"][0].get<float>(), headless.at(48, 2).r, 1e-5f * (1.0f + headless.at(48, 2).r));
+
+    result = runViewer(directory, kCornell, "resolution-scale 0.125\npin-pixel 96 0\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:2: pin-pixel: pixel 96 0 is outside the 96x96 image"), std::string::npos)
+        << result.output;
+    fs::remove_all(directory);
+}
+
+// The same by hand: Alt+click on the image (xdotool, tests/window_pixel.sh) pins the render pixel
+// under the cursor, through the resolution scale (8 window pixels per render pixel here); the
+// camera does not move.
+TEST_F(ScriptedViewer, AltClickPinsThePixelUnderTheCursor) {
+    fs::path directory = freshDirectory("alt_click");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt")
+        << "resolution-scale 0.125\ntarget-spp 2\nwait-spp 1\nstatus\nwait-reload\nwait-spp 2\nstatus\nsave-pixel clicked.json\nquit\n";
+    // Window x 380 + 8 * 20 + 4, y 8 * 60 + 4: the middle of render pixel (20, 60).
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_pixel.sh " + PTVIEW_BINARY +
+                                                        " 544 484");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "eye"), field(status[1], "eye")) << "an Alt+click does not orbit";
+    nlohmann::json clicked = nlohmann::json::parse(std::ifstream(directory / "clicked.json"));
+    EXPECT_EQ(clicked["pixel"], nlohmann::json::array({20, 60}));
+    EXPECT_EQ(clicked["spp"], 2);
+    EXPECT_FALSE(clicked["hit"].is_null());
     fs::remove_all(directory);
 }
 

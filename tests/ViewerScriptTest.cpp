@@ -92,13 +92,16 @@ camera-focus 3.5
 camera-focus-at 0.25 0.75
 light-paths exactly
 light-path-bounces 2
+pin-pixel 3 48
+unpin-pixel
+save-pixel out/pixel.json
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 51u);
+    ASSERT_EQ(script.commands.size(), 54u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -137,6 +140,9 @@ TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     EXPECT_EQ(c[40].verb, "quit");
     EXPECT_EQ(c[49].words, std::vector<std::string>{"exactly"});
     EXPECT_EQ(c[50].integer(0), 2);
+    EXPECT_EQ(c[51].integer(0), 3);
+    EXPECT_EQ(c[51].integer(1), 48);
+    EXPECT_EQ(c[53].words, std::vector<std::string>{"out/pixel.json"});
 }
 
 TEST(ViewerScript, CommentsAndBlankLinesAreSkippedButCountedAsLines) {
@@ -338,7 +344,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 48u);
+    EXPECT_EQ(referenceVerbs().size(), 51u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

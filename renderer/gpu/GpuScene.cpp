@@ -61,6 +61,30 @@ ScenePrimitives flattenScene(const Scene& scene) {
     return out;
 }
 
+int shapeOfPrimitive(const Scene& scene, PrimitiveKind kind, int index, const std::vector<MeshInstance>& meshInstances) {
+    if (index < 0) return -1;
+    if (kind == PrimitiveKind::MeshInstance)
+        return index < static_cast<int>(meshInstances.size()) ? meshInstances[static_cast<size_t>(index)].shape : -1;
+    // The primitives each shape adds in flattenScene, in its order.
+    auto primitivesOf = [kind](const Shape& shape) {
+        switch (shape.type) {
+        case ShapeType::Sphere: return kind == PrimitiveKind::Sphere ? 1 : 0;
+        case ShapeType::Quad: return kind == PrimitiveKind::Quad ? 1 : 0;
+        case ShapeType::Box: return kind == PrimitiveKind::Quad ? 6 : 0;
+        case ShapeType::Disk: return kind == PrimitiveKind::Disk ? 1 : 0;
+        case ShapeType::Mesh: return 0;
+        }
+        return 0;
+    };
+    int first = 0;
+    for (size_t i = 0; i < scene.shapes.size(); ++i) {
+        int count = primitivesOf(scene.shapes[i]);
+        if (index < first + count) return static_cast<int>(i);
+        first += count;
+    }
+    return -1;
+}
+
 void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out) {
     out.materials.clear();
     for (const Material& material : materials) {

@@ -7,6 +7,7 @@
 #include "GpuLayout.h"
 #include "GlProgram.h"
 #include "GpuMeshes.h"
+#include "SurfaceHit.h"
 #include "GpuTextures.h"
 #include "Scene.h"
 
@@ -56,6 +57,10 @@ struct LightTable {
 // Half the diagonal of the box around every primitive (1 for an empty scene).
 float sceneBoundingRadius(const ScenePrimitives& geometry, const Aabb& meshBounds = {});
 ScenePrimitives flattenScene(const Scene& scene);
+// The scene shape whose primitive the GPU intersected: index counts flattenScene's primitives of
+// that kind (a box gives six quads), or, for a mesh instance, meshInstances in GpuMeshes' order.
+// -1 when there is no such primitive.
+int shapeOfPrimitive(const Scene& scene, PrimitiveKind kind, int index, const std::vector<MeshInstance>& meshInstances);
 void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out);
 // The environment's share is its power through a disk as large as the scene's bounding sphere.
 // An emitting mesh instance gets one light per triangle (in its leaf order), so that a hit's light

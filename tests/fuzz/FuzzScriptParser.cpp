@@ -129,7 +129,10 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["screenshot-window"] = {path({".png"})};
         t["save-screenshots"] = {};
         t["reference"] = {path({".pfm", ".exr"}, "none")};
-        t["open-panel"] = {choice({"render", "stats", "scene", "environment", "materials", "lights", "camera", "help", "all"})};
+        t["open-panel"] = {choice({"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"})};
+        t["pin-pixel"] = {integer(0), integer(0)};
+        t["unpin-pixel"] = {};
+        t["save-pixel"] = {path({".json"})};
         t["status"] = {};
         t["quit"] = {};
         return t;
