@@ -27,4 +27,12 @@ inline std::string shellQuoted(const std::string& text) {
     return "'" + text + "'";
 }
 
+// xvfb-run with its auth file in the current directory (the caller cds into a scratch directory
+// first). Without -f, xvfb-run makes a temporary directory of its own, and when removing it at
+// exit fails it exits 5 in place of the program's exit code ("problem while cleaning up
+// temporary directory": seen once under load, failing a test that expected 2).
+inline std::string xvfbRun(const std::string& screen) {
+    return "xvfb-run -a -f .xvfb-auth -s '-screen 0 " + screen + "' ";
+}
+
 } // namespace ptview::testing

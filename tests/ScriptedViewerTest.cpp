@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 using testing::field;
 using testing::statusLines;
 
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 1600x1000x24' ";
+const std::string kXvfb = testing::xvfbRun("1600x1000x24"); // after a cd into the test's directory
 const std::string kCornell = PTVIEW_ASSETS_DIR "/scenes/cornell.json";
 
 fs::path freshDirectory(const std::string& name) {
