@@ -1,7 +1,7 @@
 # Builds one scene of a neutral scene description (../shared/refs/scenes.json) in Blender and
 # renders it with Cycles on the CPU, as the reference images were made: box filter 1 px wide,
 # linear output, no denoising, no adaptive sampling, no clamping, caustics on, 64 bounces of every
-# kind. Writes the linear image as PFM and prints the render time on one line.
+# kind. Writes the linear image as PFM and prints the time of the whole render call on one line.
 #
 #   blender -b --factory-startup --python-exit-code 2 -P build_scene.py -- \
 #       SCENES_JSON SCENE SPP THREADS SEED OUT.pfm
@@ -199,6 +199,9 @@ scene.view_settings.gamma = 1.0
 render.image_settings.file_format = "OPEN_EXR"
 render.image_settings.color_depth = "32"
 
+# The whole render call: scene sync (shader compilation, BVH), path tracing and writing the
+# result. Cycles' own render time, which leaves the sync out, is in its log when Blender runs with
+# --debug-cycles ("Render time (without synchronization)"); bench/cycles_race reads that one.
 start = time.perf_counter()
 bpy.ops.render.render(write_still=False)
 seconds = time.perf_counter() - start
