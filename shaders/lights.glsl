@@ -1,7 +1,8 @@
 // Light sampling: choosing a light in proportion to its power, sampling a direction toward it,
 // and the density of that strategy for a direction found otherwise (for MIS).
 //
-// Kinds: emissive quads, disks and mesh triangles (sampled uniformly by area), emissive spheres (sampled within
+// Kinds: emissive quads (sampled by solid angle where they are rectangles: spherical_rectangle.glsl),
+// disks and mesh triangles (sampled uniformly by area), emissive spheres (sampled within
 // the cone of directions they subtend when seen from outside, which wastes no sample on the
 // hidden half; by area from inside), the environment (by luminance for a map, uniform over the
 // sphere for a constant colour: environment_map.glsl), and point, spot and directional lights
@@ -16,6 +17,7 @@
 #include "intersect.glsl"
 #include "emission.glsl"
 #include "warps.glsl"
+#include "spherical_rectangle.glsl"
 #include "shading_frame.glsl"
 #include "environment.glsl"
 // kLightQuad, ...: generated from the table of LightKind (renderer/gpu/GpuScene.h, GlslEnums.cpp).
@@ -79,24 +81,64 @@ LightSample areaLightSample(vec3 posWorld, vec3 pointWorld, vec3 normal, float a
 // with which it produces a direction that reaches the light distance2 away where the light's
 // normal makes cosLight (> 0) with it.
 
-// ---- Quad: uniform by area ------------------------------------------------------------------
+// ---- Quad: by solid angle where it is a rectangle, else uniform by area ----------------------
 
 float quadLightArea(vec3 edgeU, vec3 edgeV) {
     return 4.0 * length(cross(edgeU, edgeV)); // edges are half-extents
+}
+
+// A quad is a parallelogram; spherical-rectangle sampling needs a right angle between its edges.
+bool quadIsRectangle(vec3 edgeU, vec3 edgeV) {
+    return abs(dot(edgeU, edgeV)) <= 1e-4 * length(edgeU) * length(edgeV);
+}
+
+// How a quad light is sampled from posWorld: by solid angle (spherical_rectangle.glsl) where the
+// quad is a rectangle and the view of it is accurate in float, by area elsewhere. sampleQuadLight
+// and quadLightPdf both decide through this, so the density for MIS is the one sampled with.
+struct QuadLightView {
+    bool bySolidAngle;
+    SphericalRectangle rectangle; // if bySolidAngle
+};
+
+QuadLightView viewQuadLight(vec3 center, vec3 edgeU, vec3 edgeV, vec3 posWorld) {
+    QuadLightView view;
+    view.bySolidAngle = false;
+    if (quadIsRectangle(edgeU, edgeV)) {
+        view.rectangle = viewRectangleFrom(posWorld, center - edgeU - edgeV, 2.0 * edgeU, 2.0 * edgeV);
+        view.bySolidAngle = sphericalRectangleUsable(view.rectangle);
+    }
+    return view;
 }
 
 LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
     vec3 center = texelFetch(uQuads, 4 * primitive).xyz;
     vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
     vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
-    vec3 point = center + (2.0 * u.x - 1.0) * edgeU + (2.0 * u.y - 1.0) * edgeV;
+    vec3 normal = normalize(cross(edgeU, edgeV));
+    // Emission is one-sided: from behind (or in its plane), no direction brings light.
+    if (dot(posWorld - center, normal) <= 0.0) return failedLightSample();
     Material material = fetchMaterial(quadIds(primitive).x);
-    return areaLightSample(posWorld, point, normalize(cross(edgeU, edgeV)), quadLightArea(edgeU, edgeV), material);
+    QuadLightView view = viewQuadLight(center, edgeU, edgeV, posWorld);
+    if (view.bySolidAngle) {
+        vec3 toLight = sampleSphericalRectangle(view.rectangle, u);
+        float distance = length(toLight);
+        if (!(distance > 0.0)) return failedLightSample();
+        vec3 wi = toLight / distance;
+        return LightSample(wi, distance, emittedRadiance(material, normal, -wi), sphericalRectanglePdf(view.rectangle),
+                           false);
+    }
+    vec3 point = center + (2.0 * u.x - 1.0) * edgeU + (2.0 * u.y - 1.0) * edgeV;
+    return areaLightSample(posWorld, point, normal, quadLightArea(edgeU, edgeV), material);
 }
 
-float quadLightPdf(int primitive, float distance2, float cosLight) {
-    float area = quadLightArea(texelFetch(uQuads, 4 * primitive + 1).xyz, texelFetch(uQuads, 4 * primitive + 2).xyz);
-    return areaToSolidAnglePdf(distance2, cosLight, area);
+float quadLightPdf(int primitive, vec3 posWorld, float distance2, float cosLight) {
+    vec3 center = texelFetch(uQuads, 4 * primitive).xyz;
+    vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
+    vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
+    if (dot(posWorld - center, cross(edgeU, edgeV)) <= 0.0) return 0.0; // as sampleQuadLight
+    QuadLightView view = viewQuadLight(center, edgeU, edgeV, posWorld);
+    if (view.bySolidAngle) return sphericalRectanglePdf(view.rectangle);
+    return areaToSolidAnglePdf(distance2, cosLight, quadLightArea(edgeU, edgeV));
 }
 
 // ---- Disk: uniform by area (concentric map) ---------------------------------------------------
@@ -269,7 +311,7 @@ float lightPdf(int light, vec3 posWorld, vec3 wi, float hitDistance, vec3 hitNor
     if (cosLight == 0.0) return 0.0;
     float distance2 = hitDistance * hitDistance;
     switch (kind) {
-    case kLightQuad: return quadLightPdf(primitive, distance2, cosLight);
+    case kLightQuad: return quadLightPdf(primitive, posWorld, distance2, cosLight);
     case kLightDisk: return diskLightPdf(primitive, distance2, cosLight);
     case kLightTriangle: return triangleLightPdf(light, distance2, cosLight);
     case kLightSphere: return sphereLightPdf(primitive, posWorld, distance2, cosLight);
