@@ -100,10 +100,19 @@ struct QuadLightView {
     SphericalRectangle rectangle; // if bySolidAngle
 };
 
+// Seen from farther than this many half-diagonals of the quad, area sampling's density
+// (distance^2 / cos) varies by little over the quad, and the spherical rectangle's trigonometry
+// would cost more than its lower variance saves.
+const float kSolidAngleSamplingMaxDistance = 2.0;
+
 QuadLightView viewQuadLight(vec3 center, vec3 edgeU, vec3 edgeV, vec3 posWorld) {
     QuadLightView view;
     view.bySolidAngle = false;
-    if (quadIsRectangle(edgeU, edgeV)) {
+    vec3 toCenter = center - posWorld;
+    float near2 = kSolidAngleSamplingMaxDistance * kSolidAngleSamplingMaxDistance * (dot(edgeU, edgeU) + dot(edgeV, edgeV));
+    // A loop run once, not an if: llvmpipe (SIMD lanes under a mask) runs an if's body even when no
+    // lane takes it, but leaves a loop as soon as no lane is in it, so far points pay nothing here.
+    for (bool near = dot(toCenter, toCenter) <= near2 && quadIsRectangle(edgeU, edgeV); near; near = false) {
         view.rectangle = viewRectangleFrom(posWorld, center - edgeU - edgeV, 2.0 * edgeU, 2.0 * edgeV);
         view.bySolidAngle = sphericalRectangleUsable(view.rectangle);
     }
@@ -119,7 +128,7 @@ LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
     if (dot(posWorld - center, normal) <= 0.0) return failedLightSample();
     Material material = fetchMaterial(quadIds(primitive).x);
     QuadLightView view = viewQuadLight(center, edgeU, edgeV, posWorld);
-    if (view.bySolidAngle) {
+    for (bool once = view.bySolidAngle; once; once = false) { // a loop for llvmpipe, as in viewQuadLight
         vec3 toLight = sampleSphericalRectangle(view.rectangle, u);
         float distance = length(toLight);
         if (!(distance > 0.0)) return failedLightSample();
