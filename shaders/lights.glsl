@@ -1,8 +1,8 @@
 // Light sampling: choosing a light in proportion to its power, sampling a direction toward it,
 // and the density of that strategy for a direction found otherwise (for MIS).
 //
-// Kinds: emissive quads (sampled by solid angle where they are rectangles: spherical_rectangle.glsl),
-// disks and mesh triangles (sampled uniformly by area), emissive spheres (sampled within
+// Kinds: emissive quads (sampled by solid angle from nearby points where they are rectangles:
+// spherical_rectangle.glsl; by area otherwise), disks and mesh triangles (sampled uniformly by area), emissive spheres (sampled within
 // the cone of directions they subtend when seen from outside, which wastes no sample on the
 // hidden half; by area from inside), the environment (by luminance for a map, uniform over the
 // sphere for a constant colour: environment_map.glsl), and point, spot and directional lights
