@@ -398,7 +398,7 @@ TEST_F(CommandLineTest, BenchReportsEachSceneAsATableRow) {
                                                " --seconds 0.2 --size 16x16 --depth 2");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::smatch row;
-    ASSERT_TRUE(std::regex_search(result.output, row, std::regex(R"(\| cornell_bunny \| specialized \| (fragment|compute) \| [-0-9.]+ \| 69451 \| [0-9.]+ \| ([0-9.]+) \| 0\.000 \| ([0-9.]+) \| 0\.0 \| - \| 16x16 \| ([0-9]+) \| ([0-9.]+) \|)")))
+    ASSERT_TRUE(std::regex_search(result.output, row, std::regex(R"(\| cornell_bunny \| specialized \| (fragment|compute) \| [-0-9.]+ \| 69451 \| [0-9.]+ \| 0\.000 \| ([0-9.]+) \| 0\.000 \| ([0-9.]+) \| 0\.0 \| - \| 16x16 \| ([0-9]+) \| ([0-9.]+) \|)")))
         << result.output;
     EXPECT_GT(std::stod(row[3]), 1.0) << "a 69k-triangle BVH takes megabytes";
     EXPECT_GE(std::stoi(row[4]), 1);

@@ -47,6 +47,21 @@ def make_material(name, spec):
             bsdf = nodes.new("ShaderNodeBsdfDiffuse")
             bsdf.inputs["Color"].default_value = rgba(spec["albedo"])
             bsdf.inputs["Roughness"].default_value = 0.0  # Lambertian, not Oren-Nayar
+            if "albedo_texture" in spec:
+                # albedo x texture: an 8-bit sRGB image, decoded to linear, bilinear, repeating,
+                # read at the mesh's UV map (OBJ vt: v = 0 at the image's bottom row, as in Blender).
+                texture = nodes.new("ShaderNodeTexImage")
+                path = os.path.join(os.path.dirname(os.path.abspath(scenes_path)), spec["albedo_texture"])
+                texture.image = bpy.data.images.load(path)
+                texture.image.colorspace_settings.name = "sRGB"
+                texture.interpolation = "Linear"
+                texture.extension = "REPEAT"
+                product = nodes.new("ShaderNodeMixRGB")
+                product.blend_type = "MULTIPLY"
+                product.inputs["Fac"].default_value = 1.0
+                product.inputs["Color1"].default_value = rgba(spec["albedo"])
+                links.new(texture.outputs["Color"], product.inputs["Color2"])
+                links.new(product.outputs["Color"], bsdf.inputs["Color"])
             return bsdf.outputs[0]
     elif kind == "mirror":
         def build(nodes, links):
@@ -103,6 +118,36 @@ def add_mesh(name, vertices, faces, material, smooth=False):
     return obj
 
 
+def read_obj(path):
+    """Positions, faces (vertex indices) and per-corner texture coordinates of an OBJ file."""
+    positions, uvs, faces, face_uvs = [], [], [], []
+    for line in open(path):
+        words = line.split()
+        if not words:
+            continue
+        if words[0] == "v":
+            positions.append(tuple(float(x) for x in words[1:4]))
+        elif words[0] == "vt":
+            uvs.append((float(words[1]), float(words[2])))
+        elif words[0] == "f":
+            corners = [w.split("/") for w in words[1:]]
+            index = lambda text, count: int(text) - 1 if int(text) > 0 else count + int(text)
+            faces.append([index(c[0], len(positions)) for c in corners])
+            face_uvs.append([uvs[index(c[1], len(uvs))] if len(c) > 1 and c[1] else (0.0, 0.0) for c in corners])
+    return positions, faces, face_uvs
+
+
+def mesh_transform(spec):
+    """translate x rotate x scale, as ptview's shape transforms compose them."""
+    transform = spec.get("transform", {})
+    scale = transform.get("scale", 1.0)
+    scale = Matrix.Diagonal(Vector(scale if isinstance(scale, list) else [scale] * 3)).to_4x4()
+    rotation = Matrix.Identity(4)
+    if "rotation" in transform:
+        rotation = Matrix.Rotation(math.radians(transform["rotation"]["degrees"]), 4, Vector(transform["rotation"]["axis"]))
+    return Matrix.Translation(Vector(transform.get("translate", [0, 0, 0]))) @ rotation @ scale
+
+
 def quad_corners(center, u, v):
     c, u, v = Vector(center), Vector(u), Vector(v)
     # Counter-clockwise seen from normalize(cross(u, v)), so Blender's normal is that one.
@@ -131,6 +176,15 @@ for shape in description["shapes"]:
         obj.name = name
         bpy.ops.object.shade_smooth()
         obj.data.materials.append(materials[material])
+    elif kind == "mesh":
+        # Flat shaded (the OBJ's own normals, if any, are not read), with its UV map.
+        positions, faces, face_uvs = read_obj(os.path.join(os.path.dirname(os.path.abspath(scenes_path)), shape["file"]))
+        obj = add_mesh(name, positions, faces, material)
+        uv_layer = obj.data.uv_layers.new(name="UVMap")
+        for polygon, uvs in zip(obj.data.polygons, face_uvs):
+            for loop, uv in zip(polygon.loop_indices, uvs):
+                uv_layer.data[loop].uv = uv
+        obj.matrix_world = mesh_transform(shape)
     else:
         raise SystemExit(f"{scenes_path}: /scenes/{scene_name}/shapes/{name}: unsupported type {kind}")
 
