@@ -82,33 +82,6 @@ private:
     ImageRgba8& image_;
 };
 
-struct Segment {
-    glm::vec3 from, to;
-    PathSegment kind;
-};
-
-std::vector<Segment> segmentsOf(const RecordedPath& path, float escapeLength) {
-    std::vector<Segment> segments;
-    for (size_t i = 0; i < path.vertices.size(); ++i) {
-        const PathVertex& v = path.vertices[i];
-        if (v.kind == PathVertex::Kind::Escaped) {
-            const glm::vec3 from = path.vertices[i - 1].position;
-            segments.push_back({from, from + escapeLength * v.direction, PathSegment::Escaped});
-            continue;
-        }
-        if (i > 0) segments.push_back({path.vertices[i - 1].position, v.position, i == 1 ? PathSegment::Camera : PathSegment::Bsdf});
-        if (v.shadowTraced && !v.lightAtInfinity) {
-            glm::vec3 to = v.lightPoint;
-            if (v.shadowBlocked && v.shadowHitDistance > 0.0f) to = v.position + glm::normalize(v.lightPoint - v.position) * v.shadowHitDistance;
-            segments.push_back({v.position, to, v.shadowBlocked ? PathSegment::ShadowBlocked : PathSegment::ShadowReached});
-        } else if (v.shadowTraced) { // toward a light at infinity: as far as an escape is drawn
-            segments.push_back({v.position, v.position + escapeLength * v.lightPoint,
-                                v.shadowBlocked ? PathSegment::ShadowBlocked : PathSegment::ShadowReached});
-        }
-    }
-    return segments;
-}
-
 } // namespace
 
 glm::u8vec3 pathSegmentColor(PathSegment kind) {
@@ -138,6 +111,42 @@ CameraDesc sideViewCamera(const CameraDesc& camera, std::optional<glm::vec3> eye
     return view;
 }
 
+std::vector<PathLine> pathLines(const RecordedPath& path, float escapeLength) {
+    std::vector<PathLine> lines;
+    for (size_t i = 0; i < path.vertices.size(); ++i) {
+        const PathVertex& v = path.vertices[i];
+        const int index = static_cast<int>(i);
+        if (v.kind == PathVertex::Kind::Escaped) {
+            const glm::vec3 from = path.vertices[i - 1].position;
+            lines.push_back({from, from + escapeLength * v.direction, PathSegment::Escaped, index - 1});
+            continue;
+        }
+        if (i > 0)
+            lines.push_back({path.vertices[i - 1].position, v.position, i == 1 ? PathSegment::Camera : PathSegment::Bsdf, index - 1});
+        if (!v.shadowTraced) continue;
+        const PathSegment kind = v.shadowBlocked ? PathSegment::ShadowBlocked : PathSegment::ShadowReached;
+        if (v.lightAtInfinity) { // toward a light at infinity: as far as an escape is drawn
+            lines.push_back({v.position, v.position + escapeLength * v.lightPoint, kind, index});
+            continue;
+        }
+        glm::vec3 to = v.lightPoint;
+        if (v.shadowBlocked && v.shadowHitDistance > 0.0f) to = v.position + glm::normalize(v.lightPoint - v.position) * v.shadowHitDistance;
+        lines.push_back({v.position, to, kind, index});
+    }
+    return lines;
+}
+
+std::optional<std::pair<glm::vec2, glm::vec2>> projectSegment(const CameraDesc& camera, glm::ivec2 size, glm::vec3 from,
+                                                              glm::vec3 to) {
+    const CameraBasis b = basisOf(camera);
+    const float nearZ = 1e-3f * glm::length(camera.target - camera.eye);
+    const float za = glm::dot(from - b.eye, b.forward), zb = glm::dot(to - b.eye, b.forward);
+    if (za < nearZ && zb < nearZ) return std::nullopt;
+    if (za < nearZ) from = from + (to - from) * ((nearZ - za) / (zb - za));
+    if (zb < nearZ) to = to + (from - to) * ((nearZ - zb) / (za - zb));
+    return std::make_pair(projectInFront(b, size, from), projectInFront(b, size, to));
+}
+
 std::optional<glm::vec2> projectToImage(const CameraDesc& camera, glm::ivec2 size, glm::vec3 point) {
     const CameraBasis b = basisOf(camera);
     if (glm::dot(point - b.eye, b.forward) <= 0.0f) return std::nullopt;
@@ -150,23 +159,16 @@ ImageRgba8 drawPathsPicture(PathTracer& tracer, const CameraDesc& view, const st
     for (int i = 0; i < spp; ++i) tracer.renderSample();
     ImageRgba8 image = tracer.readToneMapped(display);
     const glm::ivec2 size(image.width, image.height);
-    const CameraBasis b = basisOf(view);
-    const float nearZ = 1e-3f * glm::length(view.target - view.eye);
     Canvas canvas(image);
 
     // Shadow rays first, under the path itself; the vertices last, on top.
     for (int pass = 0; pass < 2; ++pass)
         for (const RecordedPath& path : paths)
-            for (const Segment& s : segmentsOf(path, escapeLength)) {
-                const bool shadow = s.kind == PathSegment::ShadowReached || s.kind == PathSegment::ShadowBlocked;
+            for (const PathLine& line : pathLines(path, escapeLength)) {
+                const bool shadow = line.kind == PathSegment::ShadowReached || line.kind == PathSegment::ShadowBlocked;
                 if (shadow != (pass == 0)) continue;
-                // Cut at the near plane: the camera ray starts behind a side view.
-                float za = glm::dot(s.from - b.eye, b.forward), zb = glm::dot(s.to - b.eye, b.forward);
-                if (za < nearZ && zb < nearZ) continue;
-                glm::vec3 from = s.from, to = s.to;
-                if (za < nearZ) from = from + (to - from) * ((nearZ - za) / (zb - za));
-                if (zb < nearZ) to = to + (from - to) * ((nearZ - zb) / (za - zb));
-                canvas.line(projectInFront(b, size, from), projectInFront(b, size, to), pathSegmentColor(s.kind));
+                if (auto projected = projectSegment(view, size, line.from, line.to))
+                    canvas.line(projected->first, projected->second, pathSegmentColor(line.kind));
             }
     for (const RecordedPath& path : paths)
         for (const PathVertex& v : path.vertices)

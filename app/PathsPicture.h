@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace ptview {
@@ -29,6 +30,20 @@ CameraDesc sideViewCamera(const CameraDesc& camera, std::optional<glm::vec3> eye
 // Where `camera` sees a world point on an image of `size`: pixels from the top-left corner; nullopt
 // behind the camera.
 std::optional<glm::vec2> projectToImage(const CameraDesc& camera, glm::ivec2 size, glm::vec3 point);
+// A segment from `from` to `to` as `camera` sees it on an image of `size`, cut at a near plane
+// (a side view's camera ray starts behind it); nullopt when all of it is behind.
+std::optional<std::pair<glm::vec2, glm::vec2>> projectSegment(const CameraDesc& camera, glm::ivec2 size, glm::vec3 from,
+                                                              glm::vec3 to);
+
+// A path as the lines drawn for it: the camera ray, the BSDF samples, each vertex's shadow ray
+// (up to the blocker when blocked) and an escape (escapeLength long, as a shadow ray to a light at
+// infinity). `vertex`: the vertex the segment leaves from (a shadow ray's, or the one before).
+struct PathLine {
+    glm::vec3 from, to;
+    PathSegment kind;
+    int vertex;
+};
+std::vector<PathLine> pathLines(const RecordedPath& path, float escapeLength);
 
 // Renders `spp` samples of the scene from `view` with the tracer's settings (the tracer's camera
 // is left as `view`), tone-maps them with `display` and draws the paths. escapeLength: how far an
