@@ -353,6 +353,28 @@ CLI::App* addWarpCommand(CLI::App& app, WarpOptions& warp, float& coneAngleDeg) 
     return command;
 }
 
+CLI::App* addPathsCommand(CLI::App& app, PathsOptions& paths, std::vector<int>& pixel, std::vector<float>& viewFrom) {
+    CLI::App* command = app.add_subcommand("paths", "record the paths behind a pixel on the GPU to JSON, and draw them (headless)");
+    command->add_option("scene", paths.scenePath, "scene JSON")->required();
+    command->add_option("--pixel", pixel, "X Y: the pixel, x from the left, y from the top (as in the PNG)")
+        ->expected(2)->transform(kDecimalInteger)->required();
+    command->add_option("--count", paths.count, "number of paths: the pixel's samples --first-sample onwards")
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 16))->capture_default_str();
+    command->add_option("--first-sample", paths.firstSample, "the first sample (render pass) recorded")
+        ->transform(kDecimalInteger)->check(CLI::Range(0, 1 << 24))->capture_default_str();
+    command->add_option("--spp", paths.samplesPerPixel, "samples per pixel of the render the paths belong to (the grid and stratified patterns depend on it)")
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
+    addSizeOption(*command, paths.size, "image size WxH (default: the scene's resolution)");
+    addRenderSettings(*command, paths.settings, paths.display);
+    command->add_option("--out,-o", paths.outPath, "output JSON (docs/output.md has the schema)")->required();
+    command->add_option("--image", paths.imagePath, "also a .png of the paths over the scene seen from a second camera");
+    command->add_option("--view-from", viewFrom, "X Y Z: that camera's eye, looking at the scene camera's target (default: the scene camera turned 35 degrees sideways)")
+        ->expected(3)->check(kFiniteNumber);
+    command->add_option("--image-spp", paths.imageSpp, "samples per pixel of the --image render")
+        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 16))->capture_default_str();
+    return command;
+}
+
 } // namespace
 
 std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
@@ -367,6 +389,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     float coneAngleDeg = 60.0f;
     CLI::App* warpCommand = addWarpCommand(app, out.warp, coneAngleDeg);
     CLI::App* infoCommand = addInfoCommand(app, out.info);
+    std::vector<int> pathsPixel;
+    std::vector<float> pathsViewFrom;
+    CLI::App* pathsCommand = addPathsCommand(app, out.paths, pathsPixel, pathsViewFrom);
 
     if (argc >= 2)
         if (const CLI::App* nearest = misspeltSubcommand(app, argv[1])) {
@@ -399,6 +424,11 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         finishBenchOptions(out.bench);
     }
     if (*infoCommand) out.mode = CommandLine::Mode::Info;
+    if (*pathsCommand) {
+        out.mode = CommandLine::Mode::Paths;
+        out.paths.pixel = glm::ivec2(pathsPixel.at(0), pathsPixel.at(1));
+        if (pathsViewFrom.size() == 3) out.paths.viewFrom = glm::vec3(pathsViewFrom[0], pathsViewFrom[1], pathsViewFrom[2]);
+    }
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;
         if (std::optional<int> exitCode = finishRenderOptions(out.render)) return exitCode;

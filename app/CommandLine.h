@@ -101,8 +101,24 @@ struct WarpOptions {
     int imageSize = 800;
 };
 
+struct PathsOptions {
+    std::string scenePath;
+    glm::ivec2 pixel{0, 0};          // --pixel X Y: x from the left, y from the top
+    int count = 16;                  // --count: paths, samples firstSample .. firstSample + count - 1
+    int firstSample = 0;             // --first-sample
+    int samplesPerPixel = 256;       // --spp: the render they belong to (its sample budget)
+    std::optional<glm::ivec2> size;  // default: the scene camera's resolution
+    RenderSettings settings;
+    DisplaySettings display;
+    std::string outPath;             // .json
+    std::string imagePath;           // --image: .png of the paths from a second camera
+    std::optional<glm::vec3> viewFrom; // --view-from: that camera's eye
+    int imageSpp = 16;               // --image-spp
+};
+
 struct CommandLine {
-    enum class Mode { Viewer, Render, Warp, Bench, Converge, Info } mode = Mode::Viewer;
+    enum class Mode { Viewer, Render, Warp, Bench, Converge, Info, Paths } mode = Mode::Viewer;
+    PathsOptions paths;
     InfoOptions info;
     ConvergeOptions converge;
     RenderOptions render;

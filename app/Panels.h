@@ -4,6 +4,7 @@
 // its actions; the session pushes the changes to the renderer. One file per panel.
 
 #include "GlObjects.h"
+#include "PathsOverlay.h"
 #include "UnsavedEditsPrompt.h"
 #include "ViewerSession.h"
 
@@ -25,6 +26,7 @@ struct PanelState {
     // hands it to the Materials panel and opens that panel.
     int materialToOpen = -1;
     GlTexture pixelMagnifier; // Pixel panel: the magnified neighbourhood, uploaded each time it is drawn
+    PathPick selectedPath; // Pixel panel: the traced path and vertex the table shows (clicking a vertex on the image picks it)
     // Panels to open on the next frame ("all" for every one), asked for by a script.
     std::vector<std::string> panelsToOpen;
 };
@@ -50,6 +52,9 @@ void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSecon
 void drawPixelPanel(ViewerSession& session, PanelState& state);
 // Mouse and keyboard shortcuts.
 void drawHelpPanel();
+// In the Pixel panel: how many paths to trace for `pixel`, "Trace paths", and the traced paths'
+// vertex table (PathsPanel.cpp).
+void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel);
 // The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,
 // Discard, Cancel. Drawn outside the sidebar, so it shows with the sidebar hidden too.
 void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state);

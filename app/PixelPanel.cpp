@@ -99,6 +99,7 @@ void drawPixelPanel(ViewerSession& session, PanelState& state) {
     else ImGui::TextUnformatted("no surface (environment): the ray escapes");
     if (ImGui::Button("Unpin")) session.model().pinnedPixel.reset();
     drawMagnifier(session, *inspection, state.pixelMagnifier);
+    drawPathsSection(session, state, inspection->pixel);
 }
 
 } // namespace ptview

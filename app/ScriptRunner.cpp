@@ -6,6 +6,8 @@
 #include "MaterialsPanel.h"
 #include "SceneLoader.h"
 #include "OutputPath.h"
+#include "PathsJson.h"
+#include "ImageIO.h"
 #include "SceneRanges.h"
 
 #include <algorithm>
@@ -397,6 +399,37 @@ void saveScreenshotsNow(Step& s) {
     else std::printf("%s\n", s.panels.screenshotMessage.c_str());
 }
 
+// ---- the paths behind the pinned pixel
+
+// What the Pixel panel's "Trace paths" does, on the render the view has now.
+void tracePaths(Step& s) {
+    s.session.update();
+    if (!s.model.pinnedPixel) {
+        s.fail("no pixel is pinned (pin-pixel X Y first)");
+        return;
+    }
+    const ViewerSession::TracedPaths& traced = s.session.tracePaths(*s.model.pinnedPixel, s.model.pathCount);
+    s.panels.selectedPath = PathPick{0, -1};
+    std::printf("ptview: traced %zu paths of pixel %d %d\n", traced.paths.size(), traced.pixel.x, traced.pixel.y);
+}
+
+void savePaths(Step& s) {
+    const std::optional<ViewerSession::TracedPaths>& traced = s.session.tracedPaths();
+    if (!traced) {
+        s.fail("no paths traced (trace-paths first)");
+        return;
+    }
+    PathsReport report;
+    report.scenePath = s.model.scene.path.string();
+    report.scene = &s.model.scene;
+    report.settings = traced->settings;
+    report.imageSize = traced->imageSize;
+    report.pixel = traced->pixel;
+    report.paths = &traced->paths;
+    writeFileAtomically(s.word, pathsToJson(report));
+    std::printf("ptview: wrote %s\n", s.word.c_str());
+}
+
 std::filesystem::path pathOrNone(const Step& s) {
     return s.command.isWord(0, "none") ? std::filesystem::path() : std::filesystem::path(s.word);
 }
@@ -465,6 +498,9 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"screenshot", screenshot},
         {"screenshot-window", screenshotWindow},
         {"save-screenshots", saveScreenshotsNow},
+        {"path-count", [](Step& s) { s.model.pathCount = s.command.integer(0); }},
+        {"trace-paths", tracePaths},
+        {"save-paths", savePaths},
         {"reference", [](Step& s) {
              if (!s.session.setReference(pathOrNone(s))) s.fail(s.session.model().sceneError);
          }},

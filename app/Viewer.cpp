@@ -6,6 +6,7 @@
 #include "OutputPath.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "PathsOverlay.h"
 #include "Readback.h"
 #include "SceneFromImage.h"
 #include "SceneInput.h"
@@ -143,6 +144,10 @@ private:
     void focusAtCursor(glm::dvec2 cursor);
     void pinAtCursor(glm::dvec2 cursor);
     void drawPinnedPixelMarker();
+    ScreenRect imageOnScreen() const;
+    bool pinnedPathsShown() const;
+    void drawTracedPaths();
+    void pickPathVertexAtCursor(glm::dvec2 cursor);
     void layout();
     void drawUi();
     void drawSidebar();
@@ -245,6 +250,9 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
         float imageHeight = std::max(1.0f, static_cast<float>(area.size.y) / framebufferScale_.y);
         // ImGui sees a click even when press and release fell within one frame; GLFW's state may not.
         bool clicked = ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+        // A plain click on a traced path's vertex selects it for the Pixel panel's table (a drag
+        // from there still orbits).
+        if (clicked && !control && !alt && !shift) pickPathVertexAtCursor(cursor);
         if (control && (left || clicked)) {
             // Ctrl+click focuses; a Ctrl+drag neither orbits nor pans.
             if (clicked) focusAtCursor(cursor);
@@ -339,6 +347,40 @@ void ViewerWindow::drawPinnedPixelMarker() {
         draw->AddLine(ImVec2(centre.x + gap, centre.y), ImVec2(centre.x + reach, centre.y), colour, thickness);
         draw->AddLine(ImVec2(centre.x, centre.y - reach), ImVec2(centre.x, centre.y - gap), colour, thickness);
         draw->AddLine(ImVec2(centre.x, centre.y + gap), ImVec2(centre.x, centre.y + reach), colour, thickness);
+    }
+}
+
+// The render on screen, in window coordinates from the top-left (ImGui's): the display area's
+// origin is its bottom-left corner, in framebuffer pixels.
+ScreenRect ViewerWindow::imageOnScreen() const {
+    PixelRect area = session_.displayArea();
+    return ScreenRect{{static_cast<float>(area.origin.x) / framebufferScale_.x,
+                       static_cast<float>(framebufferSize_.y - area.origin.y - area.size.y) / framebufferScale_.y},
+                      glm::vec2(area.size) / framebufferScale_};
+}
+
+// The traced paths belong to the pinned pixel of this render size; another pin hides them.
+bool ViewerWindow::pinnedPathsShown() const {
+    const std::optional<ViewerSession::TracedPaths>& traced = session_.tracedPaths();
+    const std::optional<glm::ivec2>& pinned = session_.model().pinnedPixel;
+    return traced && pinned && *pinned == traced->pixel && traced->imageSize == session_.renderSize();
+}
+
+// Over the image, under the panels; projected with the camera as it is now, so orbiting shows
+// them from the side while the image re-renders from there.
+void ViewerWindow::drawTracedPaths() {
+    if (!pinnedPathsShown()) return;
+    drawPathsOverlay(*ImGui::GetBackgroundDrawList(), *session_.tracedPaths(), session_.model().scene.camera,
+                     session_.renderSize(), imageOnScreen(), panelState_.selectedPath,
+                     session_.tracer(ViewerSession::Side::Left).gpuScene().sceneRadius());
+}
+
+void ViewerWindow::pickPathVertexAtCursor(glm::dvec2 cursor) {
+    if (!pinnedPathsShown()) return;
+    if (std::optional<PathPick> pick = pickPathVertex(*session_.tracedPaths(), session_.model().scene.camera,
+                                                      session_.renderSize(), imageOnScreen(), glm::vec2(cursor))) {
+        panelState_.selectedPath = *pick;
+        panelState_.panelsToOpen.push_back("pixel");
     }
 }
 
@@ -483,6 +525,7 @@ void ViewerWindow::drawUi() {
     if (!warpVisualizer_.active()) {
         drawCompareLabels();
         drawImageNotes();
+        drawTracedPaths();
         drawPinnedPixelMarker();
     }
     drawUnsavedEditsDialog(session_, panelState_);

@@ -27,6 +27,8 @@ struct CompareSettings {
     bool equalTime = true;
 };
 
+constexpr int kMaxTracedPaths = 1024; // the Pixel panel's and path-count's bound on ViewerModel::pathCount
+
 struct ViewerModel {
     Scene scene;     // what is rendered, the user's edits included
     Scene fileScene; // as last read from scene.path: the base a reload merges against
@@ -52,6 +54,8 @@ struct ViewerModel {
     // the Stats panel shows the true error, not only the estimate. Null for none.
     std::shared_ptr<const ImageRgbF> reference;
     std::filesystem::path referencePath;
+    // How many of the pinned pixel's paths "Trace paths" and `trace-paths` record (ViewerSession::tracePaths).
+    int pathCount = 16;
 
     // What changed since the renderer last saw the model; the editor of a field sets its flag.
     enum Change : unsigned {

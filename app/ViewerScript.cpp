@@ -9,6 +9,7 @@
 #include "SamplerMode.h"
 #include "SceneRanges.h"
 #include "ToneMapper.h"
+#include "ViewerModel.h"
 
 #include <algorithm>
 #include <cctype>
@@ -253,6 +254,10 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"screenshot", {pathArg({".png", ".pfm", ".exr"})}, nullptr, "save the rendered image: tone-mapped PNG, or linear PFM or EXR"},
         {"screenshot-window", {pathArg({".png"})}, nullptr, "save the whole window, panels included, as PNG"},
         {"save-screenshots", {}, nullptr, "what F12 does: timestamped files in screenshots/"},
+        // The paths behind the pinned pixel (docs/teaching.md)
+        {"path-count", {integerArg("N", 1, kMaxTracedPaths)}, nullptr, "how many paths trace-paths records (the Pixel panel's N)"},
+        {"trace-paths", {}, nullptr, "trace the pinned pixel's paths on the GPU and draw them, as the Pixel panel's button does"},
+        {"save-paths", {pathArg({".json"})}, nullptr, "write the traced paths as JSON, as ptview paths --out does"},
         {"reference", {pathArg({".pfm", ".exr"}, "none")}, nullptr,
          "load a reference image (.pfm or .exr) for the true error in Stats and status, or none"},
         {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,

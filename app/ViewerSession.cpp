@@ -654,4 +654,18 @@ const RenderSettings& ViewerSession::settings(Side side) const {
     return view(side).tracer->settings();
 }
 
+const ViewerSession::TracedPaths& ViewerSession::tracePaths(glm::ivec2 pixel, int count) {
+    update(); // the tracer renders what the user sees
+    if (!pathRecorder_) pathRecorder_ = std::make_unique<PathRecorder>();
+    PathTracer& tracer = *left_.tracer;
+    TracedPaths traced;
+    traced.paths = pathRecorder_->record(tracer, pixel, count);
+    traced.pixel = pixel;
+    traced.imageSize = tracer.imageSize();
+    traced.settings = tracer.settings();
+    traced.camera = model_.scene.camera;
+    tracedPaths_ = std::move(traced);
+    return *tracedPaths_;
+}
+
 } // namespace ptview

@@ -8,6 +8,7 @@
 #include "ErrorMetrics.h"
 #include "FileWatcher.h"
 #include "ImageMetadata.h"
+#include "PathRecorder.h"
 #include "PathTracer.h"
 #include "PixelInspection.h"
 #include "SceneInput.h"
@@ -137,6 +138,20 @@ public:
     // Whether the views still accumulate (not paused, target not reached).
     bool accumulating() const;
 
+    // The paths behind a pixel (x from the left, y from the top of the render), traced on the GPU
+    // by the main view's tracer as it renders now (renderer/PathRecorder.*): its samples 0 ..
+    // count - 1. Throws std::invalid_argument for a pixel outside the render or count < 1.
+    struct TracedPaths {
+        glm::ivec2 pixel{0, 0};
+        glm::ivec2 imageSize{0, 0};
+        RenderSettings settings;
+        CameraDesc camera; // the view they were traced from
+        std::vector<RecordedPath> paths;
+    };
+    const TracedPaths& tracePaths(glm::ivec2 pixel, int count);
+    const std::optional<TracedPaths>& tracedPaths() const { return tracedPaths_; }
+    void clearTracedPaths() { tracedPaths_.reset(); }
+
 private:
     struct View {
         std::unique_ptr<PathTracer> tracer;
@@ -195,6 +210,8 @@ private:
         std::optional<SurfaceHit> hit;
     };
     PixelProbe pixelProbe_;
+    std::unique_ptr<PathRecorder> pathRecorder_; // built on the first tracePaths
+    std::optional<TracedPaths> tracedPaths_;
 };
 
 } // namespace ptview

@@ -1,10 +1,11 @@
 // ptview: open the viewer, render headless with `ptview render`, draw a warp with `ptview warp`,
-// or time scenes with `ptview bench`.
+// time scenes with `ptview bench`, or record the paths behind a pixel with `ptview paths`.
 #include "BenchCommand.h"
 #include "ConvergeCommand.h"
 #include "CommandLine.h"
 #include "ImageIO.h"
 #include "InfoCommand.h"
+#include "PathsCommand.h"
 #include "RenderCommand.h"
 #include "Viewer.h"
 #include "WarpCommand.h"
@@ -23,6 +24,7 @@ int runCommand(int argc, char** argv) {
     if (commandLine.mode == ptview::CommandLine::Mode::Bench) return ptview::runBenchCommand(commandLine.bench);
     if (commandLine.mode == ptview::CommandLine::Mode::Converge) return ptview::runConvergeCommand(commandLine.converge);
     if (commandLine.mode == ptview::CommandLine::Mode::Info) return ptview::runInfoCommand(commandLine.info);
+    if (commandLine.mode == ptview::CommandLine::Mode::Paths) return ptview::runPathsCommand(commandLine.paths);
     return ptview::runViewer(commandLine.viewer);
 }
 

@@ -400,6 +400,19 @@ ImageRgba8 PathTracer::readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const 
     });
 }
 
+void PathTracer::useSceneIn(const GlProgram& program) {
+    program.bindUniformBlock("FrameBlock", kFrameBlockBinding);
+    updateFrameUniforms(accumulator_);
+    resetPassState();
+    gpuScene_.attach(program, kSceneUnit);
+    environmentMap_.attach(program, kEnvironmentUnit);
+    attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
+    glUseProgram(program.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
+    gpuScene_.bind();
+    environmentMap_.bind();
+}
+
 void PathTracer::renderSample() {
     renderRows(accumulator_.size().y);
 }

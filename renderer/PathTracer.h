@@ -109,6 +109,10 @@ public:
     glm::ivec2 imageSize() const { return accumulator_.size(); }
     const RenderSettings& settings() const { return settings_; }
     const GpuScene& gpuScene() const { return gpuScene_; }
+    // For a probe program assembled like the path-tracing one (the path recorder,
+    // renderer/PathRecorder.*): makes it current with the frame uniforms of the next full-size
+    // sample, and the scene and the environment map attached and bound.
+    void useSceneIn(const GlProgram& program);
 
     // Draws the tone-mapped mean stretched over `target` of the bound draw framebuffer, touching
     // only the pixels inside `clip` (the split view shows two renders side by side).

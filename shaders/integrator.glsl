@@ -22,6 +22,7 @@
 #include "lights.glsl"
 #include "environment.glsl"
 #include "light_paths.glsl"
+#include "path_recorder.glsl"
 // kIntegratorNaive, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
@@ -51,15 +52,16 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     int light = chooseLight(samplerGet1D(sampler, lightChoiceDimension(bounce)));
     float selection = lightSelectionProbability(light);
     LightSample ls = sampleLight(light, hit.posWorld, samplerGet2D(sampler, lightPositionDimension(bounce)));
+    recordLightSample(bounce, light, selection, ls, material, frame, woLocal, hit);
     if (ls.pdfSolidAngle <= 0.0 || selection <= 0.0 || all(equal(ls.radiance, vec3(0.0)))) return vec3(0.0);
     vec3 wiLocal = toLocal(frame, ls.wi);
     if (!consistentSides(toWorld(frame, woLocal), ls.wi, hit)) return vec3(0.0);
     vec3 f = bsdfF(material, woLocal, wiLocal);
     if (all(equal(f, vec3(0.0)))) return vec3(0.0);
-    if (occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light)) return vec3(0.0);
+    if (recordShadowRay(bounce, occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light))) return vec3(0.0);
     float pdfLight = selection * ls.pdfSolidAngle;
     // A delta light has no density to weigh against: only light sampling can find it.
-    float weight = useMis && !ls.isDelta ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0;
+    float weight = recordLightWeight(bounce, useMis && !ls.isDelta ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0);
     return f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
 }
 
@@ -93,6 +95,7 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
     for (int bounce = 0; bounce <= lastBounce; ++bounce) {
         Hit hit;
         bool found = intersectScene(ray, hit);
+        recordSurface(bounce, found, hit, ray, throughput);
 
         // ---- Emission reached by the camera ray or a BSDF sample -------------------------------
         // `direct` counts only what the camera sees (light sampling covers the next bounce);
@@ -102,8 +105,9 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (countEmission) {
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
+                weight = recordEmissionWeight(bounce, weight, environmentRadiance(ray.direction));
                 weight *= lightPathWeight(bounce, history, bounce > 0);
-                radiance += clampContribution(throughput * environmentRadiance(ray.direction) * weight);
+                radiance += recordEmission(bounce, clampContribution(throughput * environmentRadiance(ray.direction) * weight));
             }
             break;
         }
@@ -113,8 +117,9 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
             if (any(greaterThan(emitted, vec3(0.0)))) {
                 float weight = (!lightSampling || previousDelta) ? 1.0
                              : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
+                weight = recordEmissionWeight(bounce, weight, emitted);
                 weight *= lightPathWeight(bounce, history, bounce > 0);
-                radiance += clampContribution(throughput * emitted * weight);
+                radiance += recordEmission(bounce, clampContribution(throughput * emitted * weight));
             }
         }
         if (bounce == lastBounce || material.type == kMaterialEmitter) break; // emitters reflect nothing
@@ -124,13 +129,14 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
 
         // ---- Next-event estimation --------------------------------------------------------------
         if (lightSampling)
-            radiance += clampContribution(throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis)) *
-                        lightPathWeight(bounce + 1, history, false);
+            radiance += recordDirectLighting(bounce, clampContribution(throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis)) *
+                                                     lightPathWeight(bounce + 1, history, false));
         if (kIntegrator == kIntegratorDirect) break;
 
         // ---- BSDF sampling -----------------------------------------------------------------------
         BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
                                    samplerGet2D(sampler, bsdfDimension(bounce)));
+        recordBsdfSample(bounce, bs, material, frame, woLocal);
         if (bs.pdfSolidAngle == 0.0) break;
         vec3 wiWorld = toWorld(frame, bs.wiLocal);
         if (!consistentSides(-ray.direction, wiWorld, hit)) break;
@@ -145,9 +151,10 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         // ---- Russian roulette: survive with the throughput's largest component ------------------
         if (kIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
             float survival = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
-            if (samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival) break;
+            if (recordRoulette(bounce, survival, samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival)) break;
             throughput /= survival; // unbiased: no clamp on 1/survival
         }
+        recordThroughput(bounce, throughput);
     }
     return radiance;
 }

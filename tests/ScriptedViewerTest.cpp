@@ -456,6 +456,68 @@ save-pixel none.json
     fs::remove_all(directory);
 }
 
+// The paths behind a pixel in the window: after pin-pixel and trace-paths the image shows them
+// (the window's image area changes; the image itself had converged to its target), and
+// save-paths writes what `ptview paths` writes for that pixel, size and settings.
+TEST_F(ScriptedViewer, TracedPathsAreDrawnAndSavedAsPtviewPathsWritesThem) {
+    fs::path directory = freshDirectory("trace_paths");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(# 96x96 of the 768x768 image area
+resolution-scale 0.125
+seed 7
+sampler sobol
+depth 4
+integrator full
+target-spp 4
+wait-spp 4
+pin-pixel 24 84
+frames 3
+screenshot-window before.png
+path-count 8
+trace-paths
+frames 3
+screenshot-window after.png
+save-paths paths.json
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    testing::CommandResult cli = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " paths " + testing::shellQuoted(kCornell) +
+        " --pixel 24 84 --count 8 --size 96x96 --spp 4 --seed 7 --sampler sobol --depth 4 --integrator full --out " +
+        testing::shellQuoted((directory / "cli.json").string()));
+    ASSERT_EQ(cli.exitCode, 0) << cli.output;
+    nlohmann::json viewer = nlohmann::json::parse(std::ifstream(directory / "paths.json"));
+    nlohmann::json headless = nlohmann::json::parse(std::ifstream(directory / "cli.json"));
+    ASSERT_EQ(viewer["paths"].size(), 8u);
+    EXPECT_EQ(viewer["pixel"], headless["pixel"]);
+    EXPECT_EQ(viewer["image_size"], headless["image_size"]);
+    EXPECT_EQ(viewer["settings"], headless["settings"]);
+    EXPECT_EQ(viewer["mean"], headless["mean"]);
+    EXPECT_EQ(viewer["paths"], headless["paths"]) << "the same paths, number for number";
+
+    // The image area begins right of the 380-point sidebar; the paths are drawn there.
+    auto load = [&](const char* name, int& width, int& height) {
+        int channels = 0;
+        return stbi_load((directory / name).string().c_str(), &width, &height, &channels, 3);
+    };
+    int width = 0, height = 0, width2 = 0, height2 = 0;
+    unsigned char* before = load("before.png", width, height);
+    unsigned char* after = load("after.png", width2, height2);
+    ASSERT_NE(before, nullptr);
+    ASSERT_NE(after, nullptr);
+    ASSERT_EQ(width, width2);
+    ASSERT_EQ(height, height2);
+    int changed = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 400; x < width; ++x) {
+            const int i = 3 * (y * width + x);
+            changed += std::abs(before[i] - after[i]) + std::abs(before[i + 1] - after[i + 1]) + std::abs(before[i + 2] - after[i + 2]) > 30;
+        }
+    stbi_image_free(before);
+    stbi_image_free(after);
+    EXPECT_GT(changed, 500) << "the paths' lines over the image";
+    fs::remove_all(directory);
+}
+
 // The same by hand: Alt+click on the image (xdotool, tests/window_pixel.sh) pins the render pixel
 // under the cursor, through the resolution scale (8 window pixels per render pixel here); the
 // camera does not move.

@@ -95,13 +95,16 @@ light-path-bounces 2
 pin-pixel 3 48
 unpin-pixel
 save-pixel out/pixel.json
+path-count 8
+trace-paths
+save-paths out/paths.json
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 54u);
+    ASSERT_EQ(script.commands.size(), 57u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -143,6 +146,8 @@ TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     EXPECT_EQ(c[51].integer(0), 3);
     EXPECT_EQ(c[51].integer(1), 48);
     EXPECT_EQ(c[53].words, std::vector<std::string>{"out/pixel.json"});
+    EXPECT_EQ(c[54].integer(0), 8);
+    EXPECT_EQ(c[56].words, std::vector<std::string>{"out/paths.json"});
 }
 
 TEST(ViewerScript, CommentsAndBlankLinesAreSkippedButCountedAsLines) {
@@ -344,7 +349,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 51u);
+    EXPECT_EQ(referenceVerbs().size(), 54u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

@@ -527,5 +527,26 @@ TEST_F(ViewerSessionTest, DiscardOpensTheOtherSceneAndReloadDiscardReadsTheFileA
     EXPECT_FALSE(prompt.quitConfirmed());
 }
 
+// The paths traced for a pixel of the view are the samples the view added to it: their mean is the
+// pixel's value (the same samples, to float rounding), with the view's integrator, depth and size.
+TEST_F(ViewerSessionTest, TracedPathsAreTheSamplesOfTheViewsPixel) {
+    std::unique_ptr<ViewerSession> session = openSession(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    session->model().settings.integrator = Integrator::Full;
+    renderSamples(*session, 8);
+    const int spp = session->stats(ViewerSession::Side::Left).samples;
+    const glm::ivec2 pixel{6, 21}; // of 24x24: the floor, left of the boxes
+    const ViewerSession::TracedPaths& traced = session->tracePaths(pixel, spp);
+    ASSERT_EQ(traced.paths.size(), static_cast<size_t>(spp));
+    EXPECT_EQ(traced.settings.integrator, Integrator::Full);
+    EXPECT_EQ(traced.imageSize, glm::ivec2(24, 24));
+    glm::vec3 mean(0.0f);
+    for (const RecordedPath& path : traced.paths) mean += path.summedContributions() / static_cast<float>(spp);
+    const glm::vec3 rendered = session->tracer(ViewerSession::Side::Left).readMean().at(pixel.x, pixel.y);
+    EXPECT_GT(rendered.r, 0.0f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], rendered[c], 1e-4f * (1.0f + rendered[c]));
+    EXPECT_THROW(session->tracePaths({24, 0}, 4), std::invalid_argument);
+    EXPECT_TRUE(session->tracedPaths().has_value()) << "a refused trace keeps the last paths";
+}
+
 } // namespace
 } // namespace ptview

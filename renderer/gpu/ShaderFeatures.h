@@ -49,7 +49,8 @@ ShaderFeatures sceneFeatures(const Scene& scene);
 
 // Makes `assembler` build the path-tracing program for these features, integrator, sampler, view
 // and light-path view: generated bsdf.glsl and specialization.glsl, and the environment, mesh,
-// texture and light-path variants (light_paths_none.glsl unless a part of the light is shown).
+// texture and light-path variants (light_paths_none.glsl unless a part of the light is shown), and
+// the integrator's path-recording hooks empty (path_recorder_none.glsl).
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
                        SamplerMode sampler, DebugView view = DebugView::Radiance,
                        LightPaths lightPaths = LightPaths::All);

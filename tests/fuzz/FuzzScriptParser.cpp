@@ -128,6 +128,9 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["screenshot"] = {path({".png", ".pfm", ".exr"})};
         t["screenshot-window"] = {path({".png"})};
         t["save-screenshots"] = {};
+        t["path-count"] = {integer(1, 1024)};
+        t["trace-paths"] = {};
+        t["save-paths"] = {path({".json"})};
         t["reference"] = {path({".pfm", ".exr"}, "none")};
         t["open-panel"] = {choice({"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"})};
         t["pin-pixel"] = {integer(0), integer(0)};
