@@ -323,9 +323,9 @@ void MaterialsPanel::save(ViewerSession& session) {
 
 void MaterialsPanel::saveTo(ViewerSession& session, const std::string& path) {
     try {
-        session.saveSceneAs(path);
-        saveFailed_ = false;
-        saveStatus_ = "saved " + path;
+        const std::string notSaved = session.saveSceneAs(path);
+        saveFailed_ = !notSaved.empty(); // shown in the warning colour
+        saveStatus_ = "saved " + path + (notSaved.empty() ? "" : "; " + notSaved);
     } catch (const std::exception& error) {
         saveFailed_ = true;
         saveStatus_ = error.what();

@@ -5,13 +5,8 @@ namespace {
 
 // Named comparisons rather than operator==: Scene.h does not define equality (C++17 cannot
 // default it), and a private operator== here could clash with one added there later. Floats
-// compare exactly: every value is a copy of one read from a file, never recomputed.
-bool sameMaterial(const Material& a, const Material& b)
-{
-    return a.name == b.name && a.type == b.type && a.color == b.color && a.radiance == b.radiance &&
-           a.ior == b.ior && a.roughness == b.roughness;
-}
-
+// compare exactly: every value is a copy of one read from a file, never recomputed. Materials
+// compare with Scene.h's sameMaterial, every editable field.
 bool sameLight(const Light& a, const Light& b)
 {
     return a.name == b.name && a.type == b.type && a.position == b.position && a.intensity == b.intensity &&

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -418,6 +419,29 @@ TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneW
     EXPECT_EQ(model.sceneError, "");
     EXPECT_EQ(material(*session, "light").radiance, glm::vec3(1.0f));
     EXPECT_EQ(model.scene.materials[0].color, model.fileScene.materials[0].color);
+    fs::remove_all(directory);
+}
+
+// A material a glTF file made: the scene file keeps only the glTF's reference, so it cannot hold
+// that material's edits. They count as unsaved edits (they used to count as none, and quitting
+// dropped them unasked), Save says which it could not keep, and they stay unsaved after it.
+TEST_F(ViewerSessionTest, EditsToGltfMaterialsStayUnsavedAndSaveSaysSo) {
+    fs::path directory = freshDirectory("gltf_edits");
+    auto session = openSession(PTVIEW_ASSETS_DIR "/scenes/helmet.json");
+    ViewerModel& model = session->model();
+    auto imported = std::find_if(model.scene.materials.begin(), model.scene.materials.end(),
+                                 [](const Material& m) { return m.importedFrom >= 0; });
+    ASSERT_NE(imported, model.scene.materials.end());
+    const std::string name = imported->name;
+    EXPECT_FALSE(session->hasUnsavedEdits());
+    imported->metallic = imported->metallic == 0.25f ? 0.5f : 0.25f;
+    EXPECT_TRUE(session->hasUnsavedEdits());
+    EXPECT_EQ(session->unsavedEdits(), std::vector<std::string>{"materials from glTF files (Save cannot keep them)"});
+
+    const std::string notSaved = session->saveSceneAs(directory / "helmet.json");
+    EXPECT_NE(notSaved.find(name), std::string::npos) << notSaved;
+    EXPECT_TRUE(session->hasUnsavedEdits()) << "the edit is still in no file";
+    EXPECT_NE(model.notice.find("not saved"), std::string::npos) << model.notice;
     fs::remove_all(directory);
 }
 

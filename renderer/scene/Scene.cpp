@@ -11,6 +11,22 @@
 
 namespace ptview {
 
+namespace {
+bool sameSlot(const TextureSlot& a, const TextureSlot& b) {
+    return a.texture == b.texture && a.scale == b.scale && a.offset == b.offset;
+}
+} // namespace
+
+bool sameMaterial(const Material& a, const Material& b) {
+    return a.name == b.name && a.type == b.type && a.color == b.color && a.radiance == b.radiance && a.ior == b.ior &&
+           a.roughness == b.roughness && a.metallic == b.metallic && a.transmission == b.transmission &&
+           a.alpha == b.alpha && a.alphaMode == b.alphaMode && a.alphaCutoff == b.alphaCutoff &&
+           a.normalScale == b.normalScale && sameSlot(a.baseColorTexture, b.baseColorTexture) &&
+           sameSlot(a.roughnessTexture, b.roughnessTexture) && sameSlot(a.metallicTexture, b.metallicTexture) &&
+           sameSlot(a.normalTexture, b.normalTexture) && sameSlot(a.emissionTexture, b.emissionTexture) &&
+           a.importedFrom == b.importedFrom;
+}
+
 glm::mat4 Transform::objectToWorld() const {
     if (matrix) return *matrix;
     glm::mat4 matrix(rotationMatrix(rotationAxis, rotationDeg) * glm::mat3(glm::scale(glm::mat4(1.0f), scale)));

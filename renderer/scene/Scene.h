@@ -71,6 +71,10 @@ struct Material {
     }
 };
 
+// Every field a user can edit, textures by slot (the same scene texture, scale and offset);
+// floats exactly, as every value is a copy of one read or typed, never recomputed.
+bool sameMaterial(const Material& a, const Material& b);
+
 enum class ShapeType { Sphere, Quad, Box, Disk, Mesh };
 
 // Places an object: scale (per axis, about the origin), then rotate, then translate. The
