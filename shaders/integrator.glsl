@@ -103,11 +103,12 @@ vec3 estimateRadiance(Ray ray, Sampler sampler) {
         bool countEmission = bounce == 0 || !lightSampling || mis;
         if (!found) {
             if (countEmission) {
+                vec3 environment = environmentRadiance(ray.direction); // one map lookup for both uses
                 float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
                              : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
-                weight = recordEmissionWeight(bounce, weight, environmentRadiance(ray.direction));
+                weight = recordEmissionWeight(bounce, weight, environment);
                 weight *= lightPathWeight(bounce, history, bounce > 0);
-                radiance += recordEmission(bounce, clampContribution(throughput * environmentRadiance(ray.direction) * weight));
+                radiance += recordEmission(bounce, clampContribution(throughput * environment * weight));
             }
             break;
         }
