@@ -80,6 +80,16 @@ TEST_F(CommandLineTest, BadGltfFilesNameFileAndJsonPointer) {
                   missingBin + ": /buffers/0/uri: " + path("gone.bin") + ": cannot open glTF buffer");
 }
 
+// An override of a glTF file's material that names none of them: exit 2, naming the scene file
+// and the override's place.
+TEST_F(CommandLineTest, GltfMaterialOverrideOfAnUnknownMaterialNamesItsPlace) {
+    write("tiny.gltf", R"({"asset": {"version": "2.0"}, "materials": [{"name": "red"}]})");
+    std::string scene = write("over.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": {}, "shapes": [], "gltf": [{"file": "tiny.gltf", "materials": {"tiny/blue": {"metallic": 1}}}] })");
+    expectRefused("render " + shellQuoted(scene) + " --out " + shellQuoted(path("out.png")),
+                  scene + ": /gltf/0/materials/tiny~1blue: no material of tiny.gltf has this name (it has \"tiny/red\")");
+}
+
 TEST_F(CommandLineTest, NegativeRadiusNamesJsonPointer) {
     std::string scene = write("neg.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
         "materials": { "white": { "type": "diffuse", "albedo": [0.5,0.5,0.5] } },

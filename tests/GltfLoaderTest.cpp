@@ -1,6 +1,7 @@
 // The glTF loader (renderer/scene/GltfLoader.*): small files written by each test (JSON with
 // base64 data URIs, or a .bin / .glb beside it), checked against values computed by hand here.
 #include "GltfLoader.h"
+#include "MaterialTextures.h"
 #include "Scene.h"
 #include "SceneLoader.h"
 #include "SceneWriter.h"
@@ -597,6 +598,184 @@ TEST(GltfLoader, SavingWritesTheReferenceNotTheExpandedParts) {
     std::filesystem::path asJson = dir / "triangle.json";
     saveScene(alone, asJson);
     EXPECT_EQ(loadScene(asJson).shapes.size(), 1u);
+}
+
+// --- Material overrides in the scene JSON (docs/scene-format.md, `gltf`) --------------------------
+
+// A .glb whose image is embedded (no path names it): "painted" uses it for base colour,
+// metallic-roughness and normals; "plain" has factors alone.
+std::filesystem::path writeTexturedGlb(ScratchFiles& files) {
+    GltfBuilder b;
+    const int image = b.view(pngBytes(2, 1, {255, 0, 0, 255, 0, 0, 255, 128}));
+    b.doc["images"] = Json::array({{{"bufferView", image}, {"mimeType", "image/png"}}});
+    b.doc["textures"] = Json::array({{{"source", 0}}});
+    b.doc["materials"] = Json::array(
+        {{{"name", "painted"},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {0.5, 0.25, 1.0, 0.5}},
+            {"baseColorTexture", {{"index", 0}}},
+            {"metallicFactor", 0.25},
+            {"roughnessFactor", 0.5},
+            {"metallicRoughnessTexture", {{"index", 0}}}}},
+          {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+          {"alphaMode", "BLEND"}},
+         {{"name", "plain"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.25, 0.5, 0.75, 1.0}}, {"roughnessFactor", 0.75}}}}});
+    int mesh = unitTriangle(b);
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", b.positions({0, 0, 1, 1, 0, 1, 0, 1, 1})}}}, {"material", 1}});
+    b.node({{"mesh", mesh}});
+    files.write("n.png", pngBytes(1, 1, {128, 128, 255, 255}));
+    return files.write("model.glb", b.glb());
+}
+
+// A scene of the .glb alone, with `overrides` as its entry's "materials" (none when empty).
+std::string sceneWithOverrides(const std::string& overrides) {
+    return R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {}, "shapes": [], "gltf": [{"file": "model.glb")" +
+           (overrides.empty() ? "" : R"(, "materials": )" + overrides) + "}]}";
+}
+
+// Each kind of override gives exactly the material the file made with that input replaced: a
+// factor, a texture removed (a plain value), the file's embedded texture kept with a new factor
+// and scale (an object without "texture"), a file texture instead, and a type change (the new
+// type's defaults, with the file's value for each of its keys left out).
+TEST(GltfLoader, MaterialOverridesReplaceOnlyTheInputsTheyName) {
+    ScratchFiles files("gltf_overrides");
+    const std::filesystem::path dir = writeTexturedGlb(files).parent_path();
+    const Scene file = loadScene(files.write("plain.json", sceneWithOverrides("")));
+    ASSERT_EQ(file.materials.size(), 2u);
+    ASSERT_EQ(file.materials[0].name, "model/painted");
+    ASSERT_TRUE(file.materials[0].baseColorTexture.used() && file.materials[0].roughnessTexture.used());
+    const Scene scene = loadScene(files.write("scene.json", sceneWithOverrides(R"({
+        "model/painted": {"base_color": [0.125, 0.25, 0.375], "metallic": 0.75, "roughness": {"factor": 0.125, "scale": [2, 4]},
+                          "alpha": 1, "normal_map": {"texture": "n.png", "factor": 2}},
+        "model/plain": {"type": "metal", "reflectance": [0.9, 0.8, 0.7]}})")));
+    ASSERT_EQ(scene.materials.size(), 2u);
+    ASSERT_EQ(scene.imports.size(), 1u);
+    ASSERT_EQ(scene.imports[0].fileMaterials.size(), 2u);
+    EXPECT_TRUE(sameMaterial(scene.imports[0].fileMaterials[0], file.materials[0])) << "kept as the file made it";
+
+    Material painted = file.materials[0];
+    painted.color = glm::vec3(0.125f, 0.25f, 0.375f);
+    painted.baseColorTexture.texture = -1;
+    painted.metallic = 0.75f;
+    painted.metallicTexture.texture = -1;
+    painted.roughness = 0.125f;
+    painted.roughnessTexture.scale = glm::vec2(2.0f, 4.0f); // the embedded texture kept
+    painted.alpha = 1.0f;
+    painted.normalScale = 2.0f;
+    painted.normalTexture = TextureSlot{static_cast<int>(file.textures.size()), glm::vec2(1.0f), glm::vec2(0.0f)};
+    const Material& got = scene.materials[0];
+    EXPECT_TRUE(sameMaterial(got, painted));
+    EXPECT_EQ(got.roughnessTexture.texture, file.materials[0].roughnessTexture.texture);
+    EXPECT_EQ(got.alphaMode, AlphaMode::Blend) << "left out: the file's";
+    ASSERT_EQ(scene.textures.size(), file.textures.size() + 1);
+    EXPECT_EQ(scene.textures.back().file, dir / "n.png");
+    EXPECT_EQ(scene.textures.back().colorSpace, TextureColorSpace::Linear);
+
+    Material metal;
+    metal.name = "model/plain";
+    metal.importedFrom = 0;
+    metal.type = MaterialType::Metal;
+    metal.color = glm::vec3(0.9f, 0.8f, 0.7f);
+    metal.roughness = 0.75f; // left out: the file's
+    EXPECT_TRUE(sameMaterial(scene.materials[1], metal));
+}
+
+TEST(GltfLoader, BadMaterialOverridesNameFileAndPlace) {
+    ScratchFiles files("gltf_overrides");
+    writeTexturedGlb(files);
+    std::string unknown = loadError(files.write("unknown.json", sceneWithOverrides(R"({"model/nope": {"metallic": 0.5}})")));
+    EXPECT_NE(unknown.find("unknown.json: /gltf/0/materials/model~1nope: no material of model.glb has this name "
+                           "(it has \"model/painted\", \"model/plain\")"),
+              std::string::npos)
+        << unknown;
+    std::string key = loadError(files.write("key.json", sceneWithOverrides(R"({"model/painted": {"albedo": [1, 1, 1]}})")));
+    EXPECT_NE(key.find("key.json: /gltf/0/materials/model~1painted/albedo: unknown key"), std::string::npos) << key;
+    std::string retyped = loadError(files.write("retyped.json", sceneWithOverrides(R"({"model/plain": {"type": "metal", "metallic": 0.5}})")));
+    EXPECT_NE(retyped.find("retyped.json: /gltf/0/materials/model~1plain/metallic: unknown key"), std::string::npos) << retyped;
+    std::string wrap = loadError(files.write("wrap.json", sceneWithOverrides(R"({"model/painted": {"roughness": {"wrap": "clamp"}}})")));
+    EXPECT_NE(wrap.find("wrap.json: /gltf/0/materials/model~1painted/roughness/wrap: unknown key"), std::string::npos) << wrap;
+    std::string range = loadError(files.write("range.json", sceneWithOverrides(R"({"model/painted": {"roughness": {"factor": 2}}})")));
+    EXPECT_NE(range.find("range.json: /gltf/0/materials/model~1painted/roughness/factor: expected"), std::string::npos) << range;
+    // Outside an override, an object without "texture" has nothing to keep.
+    std::string own = loadError(files.write("own.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {"m": {"type": "principled", "roughness": {"factor": 0.5}}}, "shapes": []})"));
+    EXPECT_NE(own.find("own.json: /materials/m/roughness/texture: missing required key"), std::string::npos) << own;
+}
+
+// Saving writes, per material a glTF file made, only the keys whose value differs from the file's
+// (a default included, when the file's is not), and the file reads back to the very materials.
+TEST(GltfLoader, SavingWritesEditsToItsMaterialsAsOverridesThatReadBack) {
+    ScratchFiles files("gltf_overrides");
+    const std::filesystem::path dir = writeTexturedGlb(files).parent_path();
+    Scene scene = loadScene(files.write("scene.json", sceneWithOverrides("")));
+    EXPECT_FALSE(Json::parse(sceneToJson(scene))["gltf"][0].contains("materials")) << "nothing edited, nothing written";
+    Material& painted = scene.materials[0];
+    painted.alpha = 1.0f;                   // the default, which the file's 0.5 is not
+    painted.roughness = 0.125f;             // the embedded texture kept
+    painted.baseColorTexture.texture = -1;  // removed
+    setMaterialTexture(scene, painted, kMaterialTextureInputs[3], dir / "n.png"); // normal map from a file
+    Material metal; // a type change, as the Materials panel makes it
+    metal.name = scene.materials[1].name;
+    metal.importedFrom = 0;
+    metal.type = MaterialType::Metal;
+    metal.color = scene.materials[1].color;
+    metal.roughness = 0.25f;
+    scene.materials[1] = metal;
+
+    const std::filesystem::path saved = dir / "saved.json";
+    saveScene(scene, saved);
+    Json written = Json::parse(testing::readFileBytes(saved));
+    EXPECT_EQ(written["gltf"][0]["file"], "model.glb");
+    EXPECT_EQ(written["gltf"][0]["materials"], Json::parse(R"({
+        "model/painted": {"base_color": [0.5, 0.25, 1], "roughness": {"factor": 0.125}, "alpha": 1,
+                          "normal_map": {"texture": "n.png", "factor": 0.5}},
+        "model/plain": {"type": "metal", "roughness": 0.25}})"));
+    EXPECT_TRUE(written["materials"].empty());
+    Scene again = loadScene(saved);
+    ASSERT_EQ(again.materials.size(), scene.materials.size());
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+        EXPECT_TRUE(sameMaterial(again.materials[i], scene.materials[i])) << scene.materials[i].name;
+    EXPECT_EQ(sceneToJson(again), testing::readFileBytes(saved)) << "and writes the same again";
+
+    // An edit no override can hold (a metal has no "metallic") is refused, not lost.
+    scene.materials[1].metallic = 0.5f;
+    try {
+        saveScene(scene, dir / "lossy.json");
+        ADD_FAILURE() << "saved";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("\"model/plain\" would not load back as it is"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "lossy.json"));
+}
+
+// `ptview model.glb`: Save to the .glb is refused; Save as a .json writes a scene that references
+// the file, with the edits as overrides.
+TEST(GltfLoader, AGltfOpenedAloneSavesAsASceneWithOverrides) {
+    ScratchFiles files("gltf_overrides");
+    const std::filesystem::path glb = writeTexturedGlb(files);
+    const std::filesystem::path dir = glb.parent_path();
+    Scene alone = loadScene(glb);
+    ASSERT_EQ(alone.imports.size(), 1u);
+    alone.materials[1].metallic = 0.5f;
+    EXPECT_THROW(saveScene(alone, glb), std::runtime_error);
+    const std::filesystem::path asJson = dir / "model.json";
+    saveScene(alone, asJson);
+    Json written = Json::parse(testing::readFileBytes(asJson));
+    EXPECT_EQ(written["gltf"], Json::parse(R"([{"file": "model.glb", "materials": {"model/plain": {"metallic": 0.5}}}])"));
+    Scene again = loadScene(asJson);
+    ASSERT_EQ(again.materials.size(), 2u);
+    EXPECT_TRUE(sameMaterial(again.materials[0], alone.materials[0]));
+    EXPECT_TRUE(sameMaterial(again.materials[1], alone.materials[1]));
+}
+
+// The shipped helmet scene, unedited, writes exactly as before: no "materials" in its entry.
+TEST(GltfLoader, UneditedHelmetSceneWritesNoOverrides) {
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/helmet.json");
+    Json written = Json::parse(sceneToJson(scene));
+    ASSERT_EQ(written["gltf"].size(), 1u);
+    EXPECT_FALSE(written["gltf"][0].contains("materials")) << written["gltf"].dump();
 }
 
 TEST(GltfLoader, DamagedHelmetLoadsWithItsTexturesAndOneMaterial) {

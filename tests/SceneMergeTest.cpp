@@ -4,11 +4,15 @@
 #include "FileWatcher.h"
 #include "SceneLoader.h"
 #include "SceneMerge.h"
+#include "SceneWriter.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <random>
+
+#include <unistd.h>
 
 using namespace ptview;
 
@@ -212,6 +216,33 @@ TEST(SceneMerge, UneditedMaterialRemovedFromTheFileIsNotReported)
     SceneMergeResult merged = mergeReloadedScene(base, base, parse(withoutGlass));
     EXPECT_EQ(merged.scene.materials.size(), 1u);
     EXPECT_EQ(merged.overridden, Names{});
+}
+
+// Materials a glTF file made, with overrides in the scene file: the file's change to one override
+// and the user's edit of another material of the glTF both survive the reload, and the merged
+// scene writes both as overrides (against the materials the glTF file makes).
+TEST(SceneMerge, OverridesOfGltfMaterialsMergeLikeOtherMaterials)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ptview_merge_gltf_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "tiny.gltf") << R"({"asset": {"version": "2.0"}, "materials": [{"name": "red"}, {"name": "blue"}]})";
+    const std::string scene = R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8]},
+        "materials": {}, "shapes": [], "gltf": [{"file": "tiny.gltf", "materials": {"tiny/red": {"alpha": 0.5}}}]})";
+    Scene base = parseScene(scene, dir / "scene.json");
+    ASSERT_EQ(base.materials.size(), 2u);
+    ASSERT_EQ(base.materials[0].alpha, 0.5f);
+    Scene edited = base;
+    edited.materials[1].metallic = 0.75f;
+    Scene reloaded = parseScene(edit(scene, "\"alpha\": 0.5", "\"alpha\": 0.25"), dir / "scene.json");
+
+    SceneMergeResult merged = mergeReloadedScene(base, edited, reloaded);
+    EXPECT_EQ(merged.overridden, Names{});
+    EXPECT_EQ(merged.scene.materials[0].alpha, 0.25f) << "the file's change";
+    EXPECT_EQ(merged.scene.materials[1].metallic, 0.75f) << "the user's edit";
+    const std::string written = sceneToJson(merged.scene);
+    EXPECT_NE(written.find(R"("tiny/red": {"alpha": 0.25})"), std::string::npos) << written;
+    EXPECT_NE(written.find(R"("tiny/blue": {"metallic": 0.75})"), std::string::npos) << written;
+    std::filesystem::remove_all(dir);
 }
 
 namespace {

@@ -1123,8 +1123,9 @@ GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& plac
 Scene loadGltfScene(const std::filesystem::path& path) {
     Scene scene;
     scene.path = path;
-    scene.imports.push_back(SceneImport{path, Transform{}});
+    scene.imports.push_back(SceneImport{path, Transform{}, {}});
     GltfContents contents = appendGltf(path, glm::mat4(1.0f), 0, scene);
+    scene.imports[0].fileMaterials = scene.materials; // what "Save as" a scene file compares edits to
     scene.environment = glm::vec3(1.0f);
     if (contents.camera) {
         scene.camera = *contents.camera;

@@ -65,6 +65,41 @@ inline std::vector<const char*> materialKeys(const MaterialSchema& schema) {
     return keys;
 }
 
+// The fields of a material that one key of `schema` sets, copied from `from` to `to`: a textured
+// input's factor and slot, the emitter's radiance alone, "emission_strength" none (it scales the
+// emission as read). An override of a glTF material keeps the file's value of a key it leaves out
+// this way, and the writer finds the keys an override must hold by which copies change something.
+inline void copyMaterialInput(const MaterialSchema& schema, std::string_view key, const Material& from, Material& to) {
+    if (key == "type") {
+        to.type = from.type;
+    } else if (key == schema.radianceKey) {
+        to.radiance = from.radiance;
+        if (!schema.radianceRequired) to.emissionTexture = from.emissionTexture;
+    } else if (schema.colorKey && key == schema.colorKey) {
+        to.color = from.color;
+        to.baseColorTexture = from.baseColorTexture;
+    } else if (key == "ior") {
+        to.ior = from.ior;
+    } else if (key == "roughness") {
+        to.roughness = from.roughness;
+        to.roughnessTexture = from.roughnessTexture;
+    } else if (key == "metallic") {
+        to.metallic = from.metallic;
+        to.metallicTexture = from.metallicTexture;
+    } else if (key == "transmission") {
+        to.transmission = from.transmission;
+    } else if (key == "alpha") {
+        to.alpha = from.alpha;
+    } else if (key == "alpha_mode") {
+        to.alphaMode = from.alphaMode;
+    } else if (key == "alpha_cutoff") {
+        to.alphaCutoff = from.alphaCutoff;
+    } else if (key == "normal_map") {
+        to.normalScale = from.normalScale;
+        to.normalTexture = from.normalTexture;
+    }
+}
+
 // Every key some material type has, each once, in the order of first appearance in the table:
 // the keys allowed while a material's type is not known.
 inline std::vector<const char*> anyMaterialKeys() {

@@ -142,6 +142,10 @@ struct Light {
 struct SceneImport {
     std::filesystem::path file; // as resolved on loading (relative to the working directory, or absolute)
     Transform transform;        // placement of the file's scene in ours
+    // The materials as the file made them, in its order, before the scene's overrides ("materials"
+    // in the entry): what the writer compares the scene's to, so that it writes only the edits.
+    // Their texture indices stay valid, since textures are only ever appended.
+    std::vector<Material> fileMaterials;
 };
 
 struct Scene {

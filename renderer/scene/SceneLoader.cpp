@@ -612,23 +612,40 @@ void readTextureTransform(const Json& value, const Pointer& at, TextureSlot& slo
     if (const Json* offset = optionalKey(value, "offset")) slot.offset = readVec2(*offset, at / "offset");
 }
 
+// A material of the "materials" section, or with `base` an override of a material a glTF file
+// made (a "materials" entry of a "gltf" entry): then every key is optional, a key left out keeps
+// the file's value, and "type" defaults to the file's. A type change starts from the new type's
+// defaults, as the Materials panel's does, and keeps the file's value of each of its keys left
+// out. A textured input in an override may be an object without "texture", which keeps the
+// file's texture (which may be embedded in a .glb, where no path can name it) and sets its
+// factor, scale or offset; a plain value means no texture.
 Material readMaterial(const std::string& name, const Json& value, const Pointer& at, std::size_t index,
-                      std::vector<TextureRequest>& textures) {
+                      std::vector<TextureRequest>& textures, const Material* base = nullptr) {
     requireObject(value, at);
     Material material;
     material.name = name;
-    requireType(value, at, anyMaterialKeys());
-    std::string type = readString(value.at("type"), at / "type");
-    const MaterialSchema* schema = findMaterialSchema(type);
-    if (!schema) {
-        std::string typeList;
-        for (const MaterialSchema& candidate : kMaterialSchemas)
-            typeList += (typeList.empty() ? "" : ", ") + std::string(candidate.name);
-        fail(at / "type", "unknown material type \"" + type + "\" (expected one of: " + typeList + ")");
+    const MaterialSchema* schema = base ? &materialSchema(base->type) : nullptr;
+    if (!base || value.contains("type")) {
+        requireType(value, at, anyMaterialKeys());
+        std::string type = readString(value.at("type"), at / "type");
+        schema = findMaterialSchema(type);
+        if (!schema) {
+            std::string typeList;
+            for (const MaterialSchema& candidate : kMaterialSchemas)
+                typeList += (typeList.empty() ? "" : ", ") + std::string(candidate.name);
+            fail(at / "type", "unknown material type \"" + type + "\" (expected one of: " + typeList + ")");
+        }
+    }
+    checkKeys(value, at, materialKeys(*schema));
+    if (base) {
+        if (schema->type == base->type) material = *base;
+        else
+            for (const char* key : materialKeys(*schema))
+                if (!value.contains(key)) copyMaterialInput(*schema, key, *base, material);
+        material.importedFrom = base->importedFrom;
     }
     material.type = schema->type;
     const bool principled = schema->type == MaterialType::Principled;
-    checkKeys(value, at, materialKeys(*schema));
 
     auto readColor = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kColor); };
     auto readRadiance = [](const Json& v, const Pointer& p) { return readVec3InRange(v, p, ranges::kRadiance); };
@@ -636,52 +653,71 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
         return [&range](const Json& v, const Pointer& p) { return readInRange(v, p, range); };
     };
     // Any input may be textured but an emitter's radiance (its light table entry needs one value).
-    auto textured = [&](const char* key, auto read, auto one, TextureSlot Material::*slot) {
+    // `fileFactor`: the base's value of the input, which an override's object without "texture" keeps.
+    auto textured = [&](const char* key, auto read, auto one, TextureSlot Material::*slot, auto fileFactor) {
         const Json& input = value.at(key);
-        auto factor = readTexturedInput(input, at / key, read, one, colorSpaceOf(slot), index, slot, textures);
-        readTextureTransform(input, at / key, material.*slot);
+        const Pointer inputAt = at / key;
+        if (base && input.is_object() && !input.contains("texture")) {
+            checkKeys(input, inputAt, {"texture", "factor", "scale", "offset"});
+            material.*slot = (*base).*slot;
+            readTextureTransform(input, inputAt, material.*slot);
+            const Json* factor = optionalKey(input, "factor");
+            return factor ? read(*factor, inputAt / "factor") : fileFactor;
+        }
+        // A texture replaces the slot whole; a plain value leaves none (an override's slot may have one).
+        if (input.is_string() || input.is_object()) material.*slot = TextureSlot{};
+        else (material.*slot).texture = -1;
+        auto factor = readTexturedInput(input, inputAt, read, one, colorSpaceOf(slot), index, slot, textures);
+        readTextureTransform(input, inputAt, material.*slot);
         return factor;
     };
+    const Material fileValues = base ? *base : Material{};
 
-    const Json* radiance = schema->radianceRequired ? &requireKey(value, at, schema->radianceKey)
-                                                    : optionalKey(value, schema->radianceKey);
+    const Json* radiance = schema->radianceRequired && !base ? &requireKey(value, at, schema->radianceKey)
+                                                             : optionalKey(value, schema->radianceKey);
     if (radiance) {
         material.radiance = schema->radianceRequired
                                 ? readRadiance(*radiance, at / schema->radianceKey)
                                 : textured(schema->radianceKey, readRadiance, glm::vec3(1.0f),
-                                           &Material::emissionTexture);
+                                           &Material::emissionTexture, fileValues.radiance);
     }
     if (schema->colorKey) {
-        const Json* color = schema->colorDefault ? optionalKey(value, schema->colorKey)
-                                                 : &requireKey(value, at, schema->colorKey);
-        material.color = color ? textured(schema->colorKey, readColor, glm::vec3(1.0f),
-                                          &Material::baseColorTexture)
-                               : *schema->colorDefault;
+        const Json* color = schema->colorDefault || base ? optionalKey(value, schema->colorKey)
+                                                         : &requireKey(value, at, schema->colorKey);
+        if (color)
+            material.color = textured(schema->colorKey, readColor, glm::vec3(1.0f), &Material::baseColorTexture,
+                                      fileValues.color);
+        else if (!base)
+            material.color = *schema->colorDefault;
     }
     if (schema->hasIor) {
         if (const Json* ior = optionalKey(value, "ior")) material.ior = readInRange(*ior, at / "ior", ranges::kIor);
     }
     if (schema->hasRoughness) {
         if (optionalKey(value, "roughness"))
-            material.roughness = textured("roughness", readIn(ranges::kRoughness), 1.0f, &Material::roughnessTexture);
+            material.roughness = textured("roughness", readIn(ranges::kRoughness), 1.0f, &Material::roughnessTexture,
+                                          fileValues.roughness);
     }
     if (principled) {
         // glTF's defaults: fully metallic and rough when the file says nothing would surprise in
         // a hand-written scene, so ours are a smooth-ish dielectric: metallic 0, roughness 0.5.
-        if (!optionalKey(value, "roughness")) material.roughness = 0.5f;
+        if (!optionalKey(value, "roughness") && !base) material.roughness = 0.5f;
         if (optionalKey(value, "metallic"))
-            material.metallic = textured("metallic", readIn(ranges::kMetallic), 1.0f, &Material::metallicTexture);
+            material.metallic = textured("metallic", readIn(ranges::kMetallic), 1.0f, &Material::metallicTexture,
+                                         fileValues.metallic);
         if (const Json* t = optionalKey(value, "transmission"))
             material.transmission = readInRange(*t, at / "transmission", ranges::kTransmission);
         if (const Json* a = optionalKey(value, "alpha")) material.alpha = readInRange(*a, at / "alpha", ranges::kAlpha);
         if (const Json* c = optionalKey(value, "alpha_cutoff"))
             material.alphaCutoff = readInRange(*c, at / "alpha_cutoff", ranges::kAlphaCutoff);
         // A tangent-space normal map: its factor is glTF's normalTexture.scale. Without a texture
-        // the key would say nothing, so a bare number is refused rather than ignored.
+        // the key would say nothing, so a bare number is refused rather than ignored; in an
+        // override it says that the file's normal map is removed (and keeps the scale).
         if (const Json* normalMap = optionalKey(value, "normal_map")) {
-            if (!normalMap->is_string() && !normalMap->is_object())
+            if (!normalMap->is_string() && !normalMap->is_object() && !base)
                 fail(at / "normal_map", "expected a texture: a file name or {\"texture\": file, \"factor\": scale}");
-            material.normalScale = textured("normal_map", readIn(ranges::kNormalScale), 1.0f, &Material::normalTexture);
+            material.normalScale = textured("normal_map", readIn(ranges::kNormalScale), 1.0f, &Material::normalTexture,
+                                            fileValues.normalScale);
         }
         if (const Json* mode = optionalKey(value, "alpha_mode")) {
             std::string name = readString(*mode, at / "alpha_mode");
@@ -919,16 +955,17 @@ struct SceneDraft {
     std::vector<MeshMaterialRequest> meshRequests;
     std::vector<TextureRequest> textureRequests;
     std::vector<Pointer> importPlaces; // where each of scene.imports was declared
+    std::vector<const Json*> importOverrides; // each entry's "materials", or null; applied once the file is read
 };
 
-// "gltf": [{"file": "helmet.glb", "transform": {...}}]: glTF files placed in the scene, read
-// once the rest is (resolveImports).
+// "gltf": [{"file": "helmet.glb", "transform": {...}, "materials": {...}}]: glTF files placed in
+// the scene, read once the rest is, and their materials' overrides (resolveImports).
 void readImports(const Json& value, const Pointer& at, SceneDraft& draft) {
     if (!value.is_array()) fail(at, "expected an array, got " + describe(value));
     for (std::size_t i = 0; i < value.size(); ++i) {
         const Pointer entryAt = at / i;
         requireObject(value[i], entryAt);
-        checkKeys(value[i], entryAt, {"file", "transform"});
+        checkKeys(value[i], entryAt, {"file", "transform", "materials"});
         SceneImport entry;
         std::string file = readString(requireKey(value[i], entryAt, "file"), entryAt / "file");
         if (!isGltfFile(std::filesystem::u8path(file)))
@@ -936,8 +973,11 @@ void readImports(const Json& value, const Pointer& at, SceneDraft& draft) {
         entry.file = std::filesystem::u8path(file);
         if (const Json* transform = optionalKey(value[i], "transform"))
             entry.transform = readTransform(*transform, entryAt / "transform");
+        const Json* overrides = optionalKey(value[i], "materials");
+        if (overrides) requireObject(*overrides, entryAt / "materials");
         draft.scene.imports.push_back(entry);
         draft.importPlaces.push_back(entryAt / "file");
+        draft.importOverrides.push_back(overrides);
     }
 }
 
@@ -1150,10 +1190,9 @@ void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
 
 // Decodes every texture the materials name, each file once (TextureLoader.h), relative to the
 // scene file; textures of the same file and sampler are one Scene::textures entry.
-void resolveTextures(SceneDraft& draft, const std::filesystem::path& sceneFile) {
-    Scene& scene = draft.scene;
+void resolveTextures(const std::vector<TextureRequest>& requests, const std::filesystem::path& sceneFile, Scene& scene) {
     TextureImageCache cache;
-    for (const TextureRequest& request : draft.textureRequests) {
+    for (const TextureRequest& request : requests) {
         std::filesystem::path file = request.file.is_relative() ? sceneFile.parent_path() / request.file : request.file;
         int index = -1;
         for (std::size_t t = 0; t < scene.textures.size() && index < 0; ++t) {
@@ -1182,19 +1221,48 @@ void resolveTextures(SceneDraft& draft, const std::filesystem::path& sceneFile) 
     }
 }
 
+// An entry's "materials": each key names a material the file made (in scene.materials from
+// `first` on), its value an override of it (readMaterial with a base). Texture files the overrides
+// name become requests.
+void applyMaterialOverrides(const Json& overrides, const Pointer& at, const SceneImport& entry, std::size_t first,
+                            Scene& scene, std::vector<TextureRequest>& textures) {
+    for (auto it = overrides.begin(); it != overrides.end(); ++it) {
+        int found = findMaterial(scene.materials, it.key());
+        if (found < static_cast<int>(first)) { // not one of this file's (-1: none at all)
+            std::string names;
+            std::size_t listed = 0;
+            for (const Material& material : entry.fileMaterials)
+                if (listed++ < 4) names += (names.empty() ? "" : ", ") + ("\"" + material.name + "\"");
+            if (entry.fileMaterials.size() > 4) names += ", ...";
+            fail(at / it.key(), "no material of " + entry.file.filename().string() + " has this name (" +
+                                    (names.empty() ? "it has none" : "it has " + names) + ")");
+        }
+        Material& material = scene.materials[static_cast<std::size_t>(found)];
+        const Material file = material;
+        material = readMaterial(file.name, it.value(), at / it.key(), static_cast<std::size_t>(found), textures, &file);
+    }
+}
+
 // Appends each glTF file the scene places, after the scene's own parts, so that their indices
-// (and the file's own order) are those of the file.
+// (and the file's own order) are those of the file, and applies the entry's material overrides.
 void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile) {
     Scene& scene = draft.scene;
+    std::vector<TextureRequest> overrideTextures;
     for (std::size_t i = 0; i < scene.imports.size(); ++i) {
         SceneImport& entry = scene.imports[i];
         if (entry.file.is_relative()) entry.file = sceneFile.parent_path() / entry.file;
+        const std::size_t first = scene.materials.size();
         try {
             appendGltf(entry.file, entry.transform.objectToWorld(), static_cast<int>(i), scene);
         } catch (const SceneError& error) {
             fail(draft.importPlaces[i], error.what());
         }
+        entry.fileMaterials.assign(scene.materials.begin() + static_cast<std::ptrdiff_t>(first), scene.materials.end());
+        if (const Json* overrides = draft.importOverrides[i])
+            applyMaterialOverrides(*overrides, draft.importPlaces[i].parent_pointer() / "materials", entry, first, scene,
+                                   overrideTextures);
     }
+    resolveTextures(overrideTextures, sceneFile, scene);
 }
 
 } // namespace
@@ -1223,7 +1291,7 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         Json::sax_parse(jsonText, &builder, Json::input_format_t::json, /*strict=*/true);
         SceneDraft draft = readScene(builder.root);
         resolveMeshes(draft, sourceName);
-        resolveTextures(draft, sourceName);
+        resolveTextures(draft.textureRequests, sourceName, draft.scene);
         resolveImports(draft, sourceName);
         Scene scene = std::move(draft.scene);
         scene.path = sourceName;

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -249,6 +250,85 @@ Json materialJson(const Material& material, const std::string& pointer, const Sc
     return json;
 }
 
+// A textured input of an override (docs/scene-format.md, `gltf`): when the slot holds the file's
+// own texture, the object form without "texture" (the file's texture may be embedded in a .glb,
+// which no path names), with the scale and offset where they differ from the file's; else as a
+// material of the scene writes it (a plain value: no texture).
+Json overrideTexturedJson(Json factor, const TextureSlot& slot, const TextureSlot& fileSlot, const Scene& scene,
+                          const std::string& pointer) {
+    if (!slot.used() || slot.texture != fileSlot.texture) return texturedJson(std::move(factor), slot, scene, pointer);
+    Json json{{"factor", std::move(factor)}};
+    if (slot.scale != fileSlot.scale) json["scale"] = Json::array({slot.scale.x, slot.scale.y});
+    if (slot.offset != fileSlot.offset) json["offset"] = Json::array({slot.offset.x, slot.offset.y});
+    return json;
+}
+
+// One key of an override: the material's value of that input, written even where a material of
+// the scene would leave it out as the default (the file's value may differ from the default).
+Json overrideKeyJson(const std::string& key, const Material& material, const Material& file, const Scene& scene,
+                     const std::string& pointer) {
+    const MaterialSchema& schema = materialSchema(material.type);
+    const std::string at = pointer + "/" + key;
+    if (key == "type") return schema.name;
+    if (key == schema.radianceKey) {
+        Json radiance = vec3InRange(material.radiance, ranges::kRadiance, at);
+        if (schema.radianceRequired) return radiance;
+        return overrideTexturedJson(std::move(radiance), material.emissionTexture, file.emissionTexture, scene, at);
+    }
+    if (schema.colorKey && key == schema.colorKey)
+        return overrideTexturedJson(vec3InRange(material.color, ranges::kColor, at), material.baseColorTexture,
+                                    file.baseColorTexture, scene, at);
+    if (key == "ior") return numberInRange(material.ior, ranges::kIor, at);
+    if (key == "roughness")
+        return overrideTexturedJson(numberInRange(material.roughness, ranges::kRoughness, at), material.roughnessTexture,
+                                    file.roughnessTexture, scene, at);
+    if (key == "metallic")
+        return overrideTexturedJson(numberInRange(material.metallic, ranges::kMetallic, at), material.metallicTexture,
+                                    file.metallicTexture, scene, at);
+    if (key == "transmission") return numberInRange(material.transmission, ranges::kTransmission, at);
+    if (key == "alpha") return numberInRange(material.alpha, ranges::kAlpha, at);
+    if (key == "alpha_mode") {
+        static const char* const modes[] = {"opaque", "mask", "blend"};
+        return modes[static_cast<int>(material.alphaMode)];
+    }
+    if (key == "alpha_cutoff") return numberInRange(material.alphaCutoff, ranges::kAlphaCutoff, at);
+    if (key == "normal_map") // a plain number: no normal map (the scale kept)
+        return overrideTexturedJson(numberInRange(material.normalScale, ranges::kNormalScale, at), material.normalTexture,
+                                    file.normalTexture, scene, at);
+    fail(at, "no override is written for this key"); // emission_strength: the emission holds it
+}
+
+// The keys of a material a glTF file made whose value differs from the file's, each as the
+// loader reads an override: a key left out keeps the file's value, so a key is needed exactly
+// when copying the material's input onto the file's changes it. Empty when the material is as
+// the file made it.
+Json overrideJson(const Material& material, const Material& file, const Scene& scene, const std::string& pointer) {
+    const MaterialSchema& schema = materialSchema(material.type);
+    Json json = Json::object();
+    for (const char* key : materialKeys(schema)) {
+        Material withKey = file;
+        copyMaterialInput(schema, key, material, withKey);
+        if (!sameMaterial(withKey, file)) json[key] = overrideKeyJson(key, material, file, scene, pointer);
+    }
+    return json;
+}
+
+// An import's "materials": the overrides of the materials it made, by name; empty when none differs.
+Json overridesJson(const Scene& scene, int importIndex, const std::string& pointer) {
+    const SceneImport& entry = scene.imports[static_cast<std::size_t>(importIndex)];
+    Json overrides = Json::object();
+    for (const Material& material : scene.materials) {
+        if (material.importedFrom != importIndex) continue;
+        const std::string at = joinPointer(pointer, material.name);
+        auto file = std::find_if(entry.fileMaterials.begin(), entry.fileMaterials.end(),
+                                 [&](const Material& m) { return m.name == material.name; });
+        if (file == entry.fileMaterials.end()) fail(at, "no material of " + entry.file.filename().string() + " has this name");
+        Json json = overrideJson(material, *file, scene, at);
+        if (!json.empty()) overrides[material.name] = std::move(json);
+    }
+    return overrides;
+}
+
 Json materialName(const std::vector<Material>& materials, int index, const std::string& pointer) {
     if (index < 0 || static_cast<std::size_t>(index) >= materials.size())
         fail(pointer, "material index " + std::to_string(index) + " is out of range");
@@ -360,6 +440,42 @@ Json environmentJson(const Scene& scene) {
                 {"rotation_deg", numberInRange(scene.environmentRotationDeg, ranges::kEnvironmentRotation, "/environment/rotation_deg")}};
 }
 
+
+// Whether two slots, of a material of `a` and one of `b`, read the same texture the same way:
+// the file read back has its own texture list, in which a texture the user loaded twice is one
+// entry, so the entries are compared by sampler and pixels rather than by index.
+bool sameSlotAcross(const TextureSlot& slotA, const Scene& a, const TextureSlot& slotB, const Scene& b) {
+    if (slotA.used() != slotB.used() || slotA.scale != slotB.scale || slotA.offset != slotB.offset) return false;
+    if (!slotA.used()) return true;
+    const SceneTexture& x = a.textures.at(static_cast<std::size_t>(slotA.texture));
+    const SceneTexture& y = b.textures.at(static_cast<std::size_t>(slotB.texture));
+    if (x.colorSpace != y.colorSpace || x.wrapU != y.wrapU || x.wrapV != y.wrapV || x.bilinear != y.bilinear) return false;
+    if (x.image == y.image) return true;
+    return x.image && y.image && x.image->width == y.image->width && x.image->height == y.image->height &&
+           x.image->rgba == y.image->rgba;
+}
+
+// The first material a glTF file made that the file read back does not give as it is in memory
+// (every field, as sameMaterial; textures by what they read); nullptr when every one comes back.
+const Material* importedMaterialNotReadBack(const Scene& edited, const Scene& readBack) {
+    static TextureSlot Material::*const slots[] = {&Material::baseColorTexture, &Material::roughnessTexture,
+                                                   &Material::metallicTexture, &Material::normalTexture,
+                                                   &Material::emissionTexture};
+    for (const Material& material : edited.materials) {
+        if (material.importedFrom < 0) continue;
+        auto back = std::find_if(readBack.materials.begin(), readBack.materials.end(),
+                                 [&](const Material& m) { return m.name == material.name; });
+        if (back == readBack.materials.end()) return &material;
+        Material compared = *back; // with the slots of the same textures as in memory
+        for (TextureSlot Material::*slot : slots) {
+            if (!sameSlotAcross(material.*slot, edited, (*back).*slot, readBack)) return &material;
+            compared.*slot = material.*slot;
+        }
+        if (!sameMaterial(compared, material)) return &material;
+    }
+    return nullptr;
+}
+
 } // namespace
 
 std::string sceneToJson(const Scene& scene) {
@@ -392,13 +508,17 @@ std::string sceneToJson(const Scene& scene) {
         if (light.importedFrom < 0) lights.push_back(lightJson(light, "/lights/" + std::to_string(lights.size())));
     if (!lights.empty()) root["lights"] = std::move(lights);
 
-    // A glTF file's parts are written as the reference to it (edits to them are not kept).
+    // A glTF file's parts are written as the reference to it, and edits to its materials as
+    // overrides in that reference.
     if (!scene.imports.empty()) {
         Json imports = Json::array();
         for (const SceneImport& entry : scene.imports) {
+            const std::string at = "/gltf/" + std::to_string(imports.size());
             Json json{{"file", relativePathText(entry.file, scene.path.parent_path())}};
             Json transform = transformJson(entry.transform);
             if (!transform.empty()) json["transform"] = std::move(transform);
+            Json overrides = overridesJson(scene, static_cast<int>(imports.size()), at + "/materials");
+            if (!overrides.empty()) json["materials"] = std::move(overrides);
             imports.push_back(std::move(json));
         }
         root["gltf"] = std::move(imports);
@@ -419,7 +539,11 @@ void saveScene(const Scene& scene, const std::filesystem::path& path) {
         placed.path = path;
         text = sceneToJson(placed);
         // Names the file already: parseScene's messages start with the source name.
-        parseScene(text, path);
+        const Scene readBack = parseScene(text, path);
+        // A material of our own is written whole; one a glTF file made is written as the keys
+        // that differ from the file's, which must give it back exactly.
+        if (const Material* lost = importedMaterialNotReadBack(placed, readBack))
+            throw std::runtime_error("the material \"" + lost->name + "\" would not load back as it is");
     } catch (const SceneError& error) {
         throw std::runtime_error(std::string(error.what()) + " (not saved: it would not load back)");
     } catch (const std::runtime_error& error) {

@@ -7,7 +7,8 @@
 // seeds' mesh files there; any other file name fails with a SceneError, which is fine too.
 // "../meshes/fuzz.obj" uses materials "a" and "b" from fuzz.mtl, which the input writes: the bytes
 // after its first "\n#mtl\n" (none: an empty file), so that MTL values reach the conversion of
-// a mesh file's materials into scene materials.
+// a mesh file's materials into scene materials. "../gltf/tiny.gltf" is a glTF file of two materials
+// and no meshes, for a "gltf" entry's material overrides.
 //
 // A SceneError is the documented refusal; anything else (a sanitizer report, another exception, a
 // scene that breaks the promises of Scene.h) is a finding.
@@ -56,6 +57,8 @@ Ks 1 1 1
 Ns 50
 Ke 4 4 4
 )";
+const char kTinyGltf[] = R"({"asset": {"version": "2.0"}, "materials": [{"name": "red",
+    "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 0.5], "metallicFactor": 0.25}}, {"name": "blue"}]})";
 const char kPlainObj[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 const char kFuzzObj[] = "mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 2 4 3\n";
 
@@ -126,6 +129,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     ptview::fuzz::writeInput(gDirectory / "meshes" / "slots.mtl", kSlotsMtl);
     ptview::fuzz::writeInput(gDirectory / "meshes" / "plain.obj", kPlainObj);
     ptview::fuzz::writeInput(gDirectory / "meshes" / "fuzz.obj", kFuzzObj);
+    fs::create_directories(gDirectory / "gltf");
+    ptview::fuzz::writeInput(gDirectory / "gltf" / "tiny.gltf", kTinyGltf);
     gSceneFile = gDirectory / "scenes" / "fuzz.json";
     return 0;
 }
