@@ -41,6 +41,7 @@ Material retyped(const Material& material, MaterialType type, const glm::vec3& s
     const MaterialSchema& to = materialSchema(type);
     Material result;
     result.name = material.name;
+    result.importedFrom = material.importedFrom; // still the glTF file's, saved as an override of it
     result.type = type;
     if (type == MaterialType::Emitter) {
         result.radiance = emitterColor(shownColor) * kDefaultStrength;
@@ -323,9 +324,9 @@ void MaterialsPanel::save(ViewerSession& session) {
 
 void MaterialsPanel::saveTo(ViewerSession& session, const std::string& path) {
     try {
-        const std::string notSaved = session.saveSceneAs(path);
-        saveFailed_ = !notSaved.empty(); // shown in the warning colour
-        saveStatus_ = "saved " + path + (notSaved.empty() ? "" : "; " + notSaved);
+        session.saveSceneAs(path);
+        saveFailed_ = false;
+        saveStatus_ = "saved " + path;
     } catch (const std::exception& error) {
         saveFailed_ = true;
         saveStatus_ = error.what();

@@ -481,10 +481,7 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
          }},
         {"reload", [](Step& s) { s.session.reloadScene(); }},
         {"wait-reload", waitReload},
-        {"save-scene", [](Step& s) {
-             const std::string notSaved = s.session.saveSceneAs(s.word);
-             if (!notSaved.empty()) std::fprintf(stderr, "ptview: %s\n", notSaved.c_str());
-         }},
+        {"save-scene", [](Step& s) { s.session.saveSceneAs(s.word); }},
         {"copy-file", [](Step& s) {
              std::filesystem::copy_file(s.command.words[0], s.command.words[1], std::filesystem::copy_options::overwrite_existing);
          }},

@@ -229,20 +229,8 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
 
 // Compared as the file would hold them, so that an edit counts exactly when saving would change
 // the file, and a field the file does not keep (one the material's type does not use) does not.
-// Materials a glTF file made are not in what the writer writes (it writes the file's reference
-// back), so their edits are compared here: Save cannot keep them, and they must not go unasked.
-namespace {
-std::vector<std::string> editedImportedMaterials(const Scene& edited, const Scene& file) {
-    std::vector<std::string> names;
-    for (std::size_t i = 0; i < edited.materials.size() && i < file.materials.size(); ++i)
-        if (edited.materials[i].importedFrom >= 0 && !sameMaterial(edited.materials[i], file.materials[i]))
-            names.push_back(edited.materials[i].name);
-    return names;
-}
-} // namespace
-
+// Materials a glTF file made are in it too, as overrides in the file's reference.
 bool ViewerSession::hasUnsavedEdits() const {
-    if (!editedImportedMaterials(model_.scene, model_.fileScene).empty()) return true;
     try {
         return sceneToJson(model_.scene) != sceneToJson(model_.fileScene);
     } catch (const std::exception&) { // a model no file can hold is certainly not the file's
@@ -254,7 +242,6 @@ std::vector<std::string> ViewerSession::unsavedEdits() const {
     const Scene& file = model_.fileScene;
     const Scene& edited = model_.scene;
     std::vector<std::string> kinds;
-    if (!editedImportedMaterials(edited, file).empty()) kinds.push_back("materials from glTF files (Save cannot keep them)");
     try {
         const std::string fileJson = sceneToJson(file);
         if (sceneToJson(edited) == fileJson) return kinds;
@@ -280,25 +267,12 @@ std::vector<std::string> ViewerSession::unsavedEdits() const {
     return kinds;
 }
 
-std::string ViewerSession::saveSceneAs(const std::filesystem::path& path) {
+void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
     saveScene(model_.scene, path);
-    const std::vector<std::string> notSaved = editedImportedMaterials(model_.scene, model_.fileScene);
-    const std::vector<Material> fileMaterials = model_.fileScene.materials;
-    std::string warning;
     model_.scene.path = path;
     model_.fileScene = model_.scene;
-    // What the file does not hold stays an unsaved edit (the title keeps its *, quitting asks).
-    for (std::size_t i = 0; i < fileMaterials.size() && i < model_.fileScene.materials.size(); ++i)
-        if (model_.fileScene.materials[i].importedFrom >= 0) model_.fileScene.materials[i] = fileMaterials[i];
-    if (!notSaved.empty()) {
-        std::string names;
-        for (const std::string& name : notSaved) names += (names.empty() ? "" : ", ") + name;
-        warning = "not saved: the edits to " + names + ", which came from a glTF file (a scene file keeps only its reference)";
-        model_.notice = "saved " + path.string() + "; " + warning;
-    }
     saveTarget_ = path.string();
     watchFiles();
-    return warning;
 }
 
 bool ViewerSession::saveReplacesAnotherFile(const std::filesystem::path& path) const {

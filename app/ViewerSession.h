@@ -83,16 +83,14 @@ public:
     // included (a view the user set up is work): what quitting or opening another scene would
     // throw away.
     bool hasUnsavedEdits() const;
-    // The kinds of those edits, in this order: "materials from glTF files (Save cannot keep
-    // them)", "materials", "lights", "camera", "environment", and "scene" for anything else;
-    // empty when there are none.
+    // The kinds of those edits, in this order: "materials" (those a glTF file made too),
+    // "lights", "camera", "environment", and "scene" for anything else; empty when there are none.
     std::vector<std::string> unsavedEdits() const;
     // Writes the scene with the user's edits (atomically) and makes that file the scene's file,
     // the one hot reload watches, and the save target. Throws SceneError naming the file when it
-    // cannot be written.
-    // Returns what the file could not keep ("" when nothing): edits to materials a glTF file
-    // made, which stay unsaved edits (also set as the model's notice).
-    std::string saveSceneAs(const std::filesystem::path& path);
+    // cannot be written. Edits to materials a glTF file made are saved as overrides in the scene
+    // file's reference to it (docs/scene-format.md, `gltf`).
+    void saveSceneAs(const std::filesystem::path& path);
     // What Save writes to (the Materials panel's "Save scene as" field): the open scene's own
     // file, or what the user typed since it was opened. Opening a scene, or saving as another
     // file, makes that file the target.

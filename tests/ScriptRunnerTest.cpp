@@ -2,7 +2,10 @@
 // always has a handler, and no handler waits for a command the parser would refuse.
 #include "GlTestContext.h"
 #include "ImageIO.h"
+#include "MaterialsPanel.h"
 #include "SceneInput.h"
+#include "SceneLoader.h"
+#include "SceneWriter.h"
 #include "ScriptRunner.h"
 #include "TestFiles.h"
 #include "ViewerScript.h"
@@ -55,6 +58,22 @@ struct ScriptedSession {
 // The Materials panel's edits by script: principled factors live, a texture removed (none) or
 // given from a file (a diffuse material becoming principled, keeping its colour), the slot then
 // naming a new scene texture in the input's colour space.
+// The panel's and the script's type change keeps a glTF file's material the file's, so that Save
+// writes it as an override of it (it became a material of the scene's own, of the same name as the
+// one the glTF file makes again on loading).
+TEST(ScriptRunner, ATypeChangeOfAGltfMaterialIsSavedAsAnOverride) {
+    testing::ScratchFiles files("retype");
+    files.write("tiny.gltf", R"({"asset": {"version": "2.0"}, "materials": [{"name": "red", "pbrMetallicRoughness": {"roughnessFactor": 0.25}}]})");
+    Scene scene = loadScene(files.write("scene.json", R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40,
+        "resolution": [8, 8]}, "materials": {}, "shapes": [], "gltf": [{"file": "tiny.gltf"}]})"));
+    ASSERT_EQ(scene.materials.size(), 1u);
+    scene.materials[0] = retypedMaterial(scene.materials[0], MaterialType::Plastic);
+    EXPECT_EQ(scene.materials[0].importedFrom, 0);
+    const std::string written = sceneToJson(scene);
+    EXPECT_NE(written.find(R"("materials": {"tiny/red": {"type": "plastic"})"), std::string::npos) << written;
+    EXPECT_NE(written.find(R"("materials": {},)"), std::string::npos) << written;
+}
+
 TEST(ScriptRunner, SetMaterialEditsPrincipledFactorsAndTextures) {
     testing::ScratchFiles files("script");
     const std::filesystem::path png = files.write("t.png", "");

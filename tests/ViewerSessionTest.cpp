@@ -11,6 +11,7 @@
 #include "ViewerSession.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -422,10 +423,10 @@ TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneW
     fs::remove_all(directory);
 }
 
-// A material a glTF file made: the scene file keeps only the glTF's reference, so it cannot hold
-// that material's edits. They count as unsaved edits (they used to count as none, and quitting
-// dropped them unasked), Save says which it could not keep, and they stay unsaved after it.
-TEST_F(ViewerSessionTest, EditsToGltfMaterialsStayUnsavedAndSaveSaysSo) {
+// A material a glTF file made is saved as an override in the scene file's reference to the glTF
+// (it used to stay an unsaved edit that Save could not keep): after Save nothing is unsaved (the
+// title loses its *), and the saved file opens with the edit.
+TEST_F(ViewerSessionTest, EditsToGltfMaterialsAreSavedAsOverrides) {
     fs::path directory = freshDirectory("gltf_edits");
     auto session = openSession(PTVIEW_ASSETS_DIR "/scenes/helmet.json");
     ViewerModel& model = session->model();
@@ -434,14 +435,25 @@ TEST_F(ViewerSessionTest, EditsToGltfMaterialsStayUnsavedAndSaveSaysSo) {
     ASSERT_NE(imported, model.scene.materials.end());
     const std::string name = imported->name;
     EXPECT_FALSE(session->hasUnsavedEdits());
-    imported->metallic = imported->metallic == 0.25f ? 0.5f : 0.25f;
+    const float metallic = imported->metallic == 0.25f ? 0.5f : 0.25f;
+    imported->metallic = metallic;
     EXPECT_TRUE(session->hasUnsavedEdits());
-    EXPECT_EQ(session->unsavedEdits(), std::vector<std::string>{"materials from glTF files (Save cannot keep them)"});
+    EXPECT_EQ(session->unsavedEdits(), std::vector<std::string>{"materials"});
 
-    const std::string notSaved = session->saveSceneAs(directory / "helmet.json");
-    EXPECT_NE(notSaved.find(name), std::string::npos) << notSaved;
-    EXPECT_TRUE(session->hasUnsavedEdits()) << "the edit is still in no file";
-    EXPECT_NE(model.notice.find("not saved"), std::string::npos) << model.notice;
+    const fs::path saved = directory / "helmet.json";
+    session->saveSceneAs(saved);
+    EXPECT_FALSE(session->hasUnsavedEdits()) << "the edit is in the file";
+    EXPECT_EQ(model.fileScene.path, saved);
+    // The helmet's metallic comes from its texture, which the override keeps.
+    const nlohmann::json written = nlohmann::json::parse(testing::readFileBytes(saved));
+    EXPECT_EQ(written["gltf"][0]["materials"], (nlohmann::json{{name, {{"metallic", {{"factor", metallic}}}}}}))
+        << written["gltf"].dump();
+    const Scene reopened = loadScene(saved);
+    auto again = std::find_if(reopened.materials.begin(), reopened.materials.end(),
+                              [&](const Material& m) { return m.name == name; });
+    ASSERT_NE(again, reopened.materials.end());
+    EXPECT_EQ(again->metallic, metallic);
+    EXPECT_EQ(again->importedFrom, 0) << "still the glTF file's material";
     fs::remove_all(directory);
 }
 
