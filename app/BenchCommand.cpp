@@ -89,7 +89,7 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options, con
     tracer.restart();
     Clock::time_point start = Clock::now();
     do {
-        tracer.renderSample();
+        tracer.renderSamples(tracer.samplesPerPass());
         glFinish();
     } while (secondsSince(start) < options.seconds);
     result.renderSeconds = secondsSince(start);

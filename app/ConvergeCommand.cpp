@@ -88,7 +88,7 @@ ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const Co
     double seconds = 0.0;
     for (int target = 1; target <= options.maxSpp; target *= 2) {
         Clock::time_point start = Clock::now();
-        while (tracer.sampleCount() < target) tracer.renderSample();
+        tracer.renderSamples(target - tracer.sampleCount());
         glFinish();
         seconds += std::chrono::duration<double>(Clock::now() - start).count();
         result.checkpoints.push_back(Checkpoint{target, seconds, compareToReference(tracer.readMean(), reference)});
@@ -335,7 +335,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
             tracer.restart();
             std::fprintf(stderr, "ptview: rendering the reference (%d spp, full, depth %d, seed %u)\n", options.referenceSpp,
                          settings.maxDepth, settings.seed);
-            for (int i = 0; i < options.referenceSpp; ++i) tracer.renderSample();
+            tracer.renderSamples(options.referenceSpp);
             PixelStatistics statistics = tracer.readStatistics();
             reference = statistics.mean;
             floor = referenceNoiseFloor(statistics);

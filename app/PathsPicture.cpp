@@ -156,7 +156,7 @@ std::optional<glm::vec2> projectToImage(const CameraDesc& camera, glm::ivec2 siz
 ImageRgba8 drawPathsPicture(PathTracer& tracer, const CameraDesc& view, const std::vector<RecordedPath>& paths,
                             int spp, const DisplaySettings& display, float escapeLength) {
     tracer.setCamera(view);
-    for (int i = 0; i < spp; ++i) tracer.renderSample();
+    tracer.renderSamples(spp);
     ImageRgba8 image = tracer.readToneMapped(display);
     const glm::ivec2 size(image.width, image.height);
     Canvas canvas(image);

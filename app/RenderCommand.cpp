@@ -83,7 +83,7 @@ private:
 ImageRgbF renderDebugView(PathTracer& tracer, RenderSettings settings, DebugView view, int spp) {
     settings.debugView = view;
     tracer.setSettings(settings); // restarts: the view changed
-    while (tracer.sampleCount() < spp) tracer.renderSample();
+    tracer.renderSamples(spp - tracer.sampleCount());
     return tracer.readMean();
 }
 
@@ -163,26 +163,30 @@ int runRenderCommand(const RenderOptions& requested) {
         if (!options.program.backend)
             std::fprintf(stderr, "ptview: backend auto: %s\n", tracer.chooseBackend().describe().c_str());
 
-        // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample.
+        // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample. They
+        // are whole passes of the tracer's samplesPerPass() (but the last), so that where passes
+        // end, and so the sums' rounding, does not depend on how fast the machine is.
         ProgressReporter progress(options.scenePath, maxSamples, options.timeLimitSeconds);
-        int batch = 1;
+        const int perPass = tracer.samplesPerPass();
+        int batch = perPass;
         bool outOfTime = false;
-        double secondsPerPass = 0.0; // of the last batch
+        double secondsPerSample = 0.0; // of the last batch
         // With --time, a batch ends near the limit: as many passes as the last batch's pace fits in
         // the time left, and at least one, so the render stops at the first whole pass after it.
-        auto passesBefore = [&secondsPerPass](double secondsLeft) {
-            if (!(secondsPerPass > 0.0)) return 1;
-            return static_cast<int>(std::clamp(secondsLeft / secondsPerPass, 1.0, 1024.0));
+        auto samplesBefore = [&secondsPerSample, perPass](double secondsLeft) {
+            if (!(secondsPerSample > 0.0)) return perPass;
+            int passes = static_cast<int>(std::clamp(secondsLeft / (secondsPerSample * perPass), 1.0, 1024.0));
+            return passes * perPass;
         };
         while (tracer.sampleCount() < maxSamples && !outOfTime) {
             Clock::time_point batchStart = Clock::now();
             int count = std::min(batch, maxSamples - tracer.sampleCount());
-            if (options.timeLimitSeconds) count = std::min(count, passesBefore(*options.timeLimitSeconds - progress.elapsed()));
-            for (int i = 0; i < count; ++i) tracer.renderSample();
+            if (options.timeLimitSeconds) count = std::min(count, samplesBefore(*options.timeLimitSeconds - progress.elapsed()));
+            tracer.renderSamples(count);
             glFinish();
             double batchSeconds = secondsSince(batchStart);
-            secondsPerPass = batchSeconds / count;
-            if (batchSeconds < 0.2 && batch < 1024) batch *= 2;
+            secondsPerSample = batchSeconds / count;
+            if (batchSeconds < 0.2 && batch < 1024 * perPass) batch *= 2;
             progress.update(tracer.sampleCount());
             outOfTime = options.timeLimitSeconds && progress.elapsed() >= *options.timeLimitSeconds;
         }

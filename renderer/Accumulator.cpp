@@ -93,10 +93,10 @@ void Accumulator::beginPass(int firstUnit) const {
     glViewport(0, 0, size_.x, size_.y);
 }
 
-void Accumulator::endPass() {
+void Accumulator::endPass(int samplesAdded) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     writeIndex_ = 1 - writeIndex_;
-    ++sampleCount_;
+    sampleCount_ += samplesAdded;
     staleSampleCount_ = 0;
 }
 

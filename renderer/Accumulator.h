@@ -33,11 +33,12 @@ public:
     static void bindImages(const GlProgram& program, int firstImageUnit);
 
     // Binds the target to draw into and the previous sums for reading; the caller then draws
-    // one sample per pixel with a program that calls accumulateSample().
+    // samples per pixel with a program that calls accumulateSamples(), then ends the pass with
+    // how many it added.
     void beginPass(int firstUnit) const;
     // The same for a compute dispatch: the target's textures become images to store into.
     void beginComputePass(int firstUnit, int firstImageUnit) const;
-    void endPass();
+    void endPass(int samplesAdded);
 
     // Binds the latest sum and compensation for display.
     void bindLatest(int sumUnit, int compensationUnit) const;

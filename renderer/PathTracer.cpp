@@ -304,7 +304,7 @@ glm::ivec2 PathTracer::shownPreviewSize() const {
     return shown ? shown->size() : glm::ivec2(0);
 }
 
-void PathTracer::updateFrameUniforms(const Accumulator& target) {
+void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPass) {
     glm::ivec2 size = target.size();
     glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
     glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
@@ -320,6 +320,7 @@ void PathTracer::updateFrameUniforms(const Accumulator& target) {
     frame.environmentRadiance = environmentRadiance_;
     frame.maxDepth = settings_.maxDepth;
     frame.lightPathBounces = settings_.lightPathBounces;
+    frame.samplesPerPass = static_cast<std::uint32_t>(samplesPerPass);
     frame.imageSize = size;
     frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
     frame.sampleBudget = settings_.sampleBudget;
@@ -347,7 +348,7 @@ std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
         surfaceProbe_ = std::move(probe);
     }
     const GlProgram& program = *surfaceProbe_->program;
-    updateFrameUniforms(accumulator_);
+    updateFrameUniforms(accumulator_, 1);
     resetPassState();
     gpuScene_.attach(program, kSceneUnit);
     attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
@@ -402,7 +403,7 @@ ImageRgba8 PathTracer::readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const 
 
 void PathTracer::useSceneIn(const GlProgram& program) {
     program.bindUniformBlock("FrameBlock", kFrameBlockBinding);
-    updateFrameUniforms(accumulator_);
+    updateFrameUniforms(accumulator_, 1);
     resetPassState();
     gpuScene_.attach(program, kSceneUnit);
     environmentMap_.attach(program, kEnvironmentUnit);
@@ -417,23 +418,35 @@ void PathTracer::renderSample() {
     renderRows(accumulator_.size().y);
 }
 
+void PathTracer::renderSamples(int count) {
+    const int target = accumulator_.sampleCount() + count;
+    if (nextRow_ > 0) renderRows(accumulator_.size().y); // a pass begun by renderRows ends first
+    while (accumulator_.sampleCount() < target)
+        renderRowsInto(accumulator_, nextRow_, accumulator_.size().y, std::min(samplesPerPass(), target - accumulator_.sampleCount()));
+}
+
+int PathTracer::samplesPerPass() const {
+    glm::ivec2 size = accumulator_.size();
+    return std::clamp(kPixelSamplesPerPass / std::max(1, size.x * size.y), 1, kMaxSamplesPerPass);
+}
+
 bool PathTracer::renderRows(int rowCount) {
-    return renderRowsInto(accumulator_, nextRow_, rowCount);
+    return renderRowsInto(accumulator_, nextRow_, rowCount, 1);
 }
 
 bool PathTracer::renderPreviewRows(int rowCount) {
     if (previewLevel_ >= previews_.size()) return false;
     Accumulator& level = previews_[previewLevel_];
-    bool done = renderRowsInto(level, previewNextRow_, rowCount);
+    bool done = renderRowsInto(level, previewNextRow_, rowCount, 1);
     if (done && level.sampleCount() >= kPreviewSamples) ++previewLevel_; // then the next, finer one
     return done;
 }
 
-bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount) {
+bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass) {
     glm::ivec2 size = target.size();
     int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
     const TraceProgram& trace = useTraceProgram();
-    updateFrameUniforms(target);
+    updateFrameUniforms(target, samplesPerPass);
     resetPassState();
     glUseProgram(trace.program->id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
@@ -462,7 +475,7 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount)
         nextRow = endRow;
         return false;
     }
-    target.endPass();
+    target.endPass(samplesPerPass);
     nextRow = 0;
     return true;
 }

@@ -75,6 +75,18 @@ public:
 
     // One sample per pixel over the whole image.
     void renderSample();
+    // count samples per pixel over the whole image, in passes of samplesPerPass() (the last may
+    // be shorter): a pixel's program goes on to its next sample as soon as a path ends, which
+    // keeps SIMD lanes busy (pathtrace_sample.glsl). The image is that of count renderSample()
+    // calls up to float rounding: the samples are the same, but a pass's are summed before they
+    // are added to the accumulation, so where passes end changes the last bits. A caller that
+    // wants the same bits for the same sample count asks in whole passes.
+    void renderSamples(int count);
+    // kPixelSamplesPerPass over the pixel count, in [1, kMaxSamplesPerPass]: a pass of about a
+    // million paths, which the software rasterizer traces in about a second.
+    int samplesPerPass() const;
+    static constexpr int kPixelSamplesPerPass = 1 << 20;
+    static constexpr int kMaxSamplesPerPass = 16;
     // Part of a sample: the next rowCount rows (or fewer, at the top) of the pass in progress, so
     // that a slow GPU can spread one pass over several displayed frames. The new sums become
     // visible (sampleCount() grows) when the pass's last row is done; returns whether it was.
@@ -175,8 +187,8 @@ private:
     TraceProgram buildTraceProgram(const ProgramKey& key) const;
     TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
     void updateProgramKey();
-    void updateFrameUniforms(const Accumulator& target);
-    bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount);
+    void updateFrameUniforms(const Accumulator& target, int samplesPerPass);
+    bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass);
     void resizePreview();
     void drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const;
 

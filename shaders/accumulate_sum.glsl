@@ -11,7 +11,9 @@ uniform sampler2D uPrevSum;
 uniform sampler2D uPrevCompensation;
 uniform sampler2D uPrevSumSquares;
 
-void accumulatedSums(ivec2 pixel, vec3 sampleValue, out vec4 sumOut, out vec4 compensationOut, out vec4 sumSquaresOut) {
+// sampleSum and sampleSquares: the sum of this pass's samples of the pixel, and of their squares.
+void accumulatedSums(ivec2 pixel, vec3 sampleSum, vec3 sampleSquares, out vec4 sumOut, out vec4 compensationOut,
+                     out vec4 sumSquaresOut) {
     vec3 sum = vec3(0.0);
     vec3 compensation = vec3(0.0);
     vec3 sumSquares = vec3(0.0);
@@ -20,10 +22,10 @@ void accumulatedSums(ivec2 pixel, vec3 sampleValue, out vec4 sumOut, out vec4 co
         compensation = texelFetch(uPrevCompensation, pixel, 0).rgb;
         sumSquares = texelFetch(uPrevSumSquares, pixel, 0).rgb;
     }
-    precise vec3 corrected = sampleValue - compensation;
+    precise vec3 corrected = sampleSum - compensation;
     precise vec3 newSum = sum + corrected;
     precise vec3 newCompensation = (newSum - sum) - corrected;
     sumOut = vec4(newSum, 1.0);
     compensationOut = vec4(newCompensation, 1.0);
-    sumSquaresOut = vec4(sumSquares + sampleValue * sampleValue, 1.0);
+    sumSquaresOut = vec4(sumSquares + sampleSquares, 1.0);
 }

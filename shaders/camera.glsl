@@ -1,6 +1,7 @@
 #include "frame_uniforms.glsl"
 #include "ray.glsl"
 #include "sampler.glsl"
+#include "specialization.glsl"
 // The lens: camera_thin_lens.glsl, replaced by camera_pinhole.glsl in a program for a camera
 // without an aperture (renderer/gpu/ShaderFeatures.cpp), which leaves the pinhole ray as it is.
 #include "camera_thin_lens.glsl"
@@ -18,4 +19,12 @@ Ray generatePinholeRay(vec2 filmPos) {
 // The camera ray of a film position: the pinhole ray, bent by the lens when there is one.
 Ray generateCameraRay(vec2 filmPos, Sampler sampler) {
     return refractThroughLens(generatePinholeRay(filmPos), sampler);
+}
+
+// The camera ray of a pixel's sample sampleIndex, and the sampler its path goes on with: a
+// position inside the pixel (a box filter one pixel wide), then the lens.
+Ray generatePixelRay(uvec2 pixel, uint sampleIndex, out Sampler sampler) {
+    sampler = createSampler(pixel, sampleIndex, uSeed, kSamplerMode, uSampleBudget);
+    vec2 filmPos = vec2(pixel) + samplerGet2D(sampler, kDimensionCamera);
+    return generateCameraRay(filmPos, sampler);
 }

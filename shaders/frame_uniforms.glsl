@@ -9,5 +9,5 @@ layout(std140) uniform FrameBlock {
     ivec2 uImageSize;         uint uSamplerMode;   uint uSampleBudget; // see sampler.glsl
     uint uIntegrator;         float uSceneRadius;  // of the scene's bounding sphere: sets ray offsets
     float uApertureRadius;    float uFocusDistance; // thin lens (camera_thin_lens.glsl); 0: a pinhole
-    float uRadianceClamp;     int uLightPathBounces; uint uPad2; uint uPad3; // largest component of one contribution (0: off); k of the light-path views (light_paths.glsl)
+    float uRadianceClamp;     int uLightPathBounces; uint uSamplesPerPass; uint uPad3; // largest component of one contribution (0: off); k of the light-path views (light_paths.glsl); samples each pixel adds in this pass
 };

@@ -80,82 +80,103 @@ float emissionWeight(int light, vec3 previousPos, vec3 wi, float hitDistance, ve
     return powerHeuristic(pdfBsdf, pdfLight);
 }
 
-vec3 estimateRadiance(Ray ray, Sampler sampler) {
+// A path under construction: what estimateRadiance carries from one bounce to the next. Kept in
+// a struct so that a program can trace several paths one after the other in one loop
+// (pathtrace_sample.glsl), starting the next path in a SIMD lane as soon as its last one ends.
+struct PathState {
+    Ray ray;
+    int bounce;               // scattering events so far
+    vec3 radiance;            // what the path has gathered
+    vec3 throughput;
+    vec3 previousPos;
+    float previousPdf;        // solid-angle density of the BSDF sample that made this ray
+    bool previousDelta;       // the camera ray counts as delta: nothing else could find it
+    PathHistory history;      // for the light-path views (light_paths.glsl)
+};
+
+PathState startPath(Ray cameraRay) {
+    return PathState(cameraRay, 0, vec3(0.0), vec3(1.0), cameraRay.origin, 0.0, true, startPathHistory());
+}
+
+// Follows the path one bounce: the surface the ray finds, its emission, next-event estimation and
+// the BSDF sample that makes the next ray. Returns false once the path has ended, with its
+// estimate in path.radiance.
+bool extendPath(inout PathState path, Sampler sampler) {
     bool lightSampling = kIntegrator != kIntegratorNaive;
     bool mis = kIntegrator == kIntegratorMis || kIntegrator == kIntegratorFull;
     // Direct and DirectMIS stop after the first surface's direct lighting.
     int lastBounce = kIntegrator == kIntegratorFull || kIntegrator == kIntegratorNaive ? uMaxDepth : min(uMaxDepth, 1);
+    int bounce = path.bounce;
 
-    vec3 radiance = vec3(0.0);
-    vec3 throughput = vec3(1.0);
-    vec3 previousPos = ray.origin;
-    float previousPdf = 0.0;     // solid-angle density of the BSDF sample that made this ray
-    bool previousDelta = true;   // the camera ray counts as delta: nothing else could find it
-    PathHistory history = startPathHistory(); // for the light-path views (light_paths.glsl)
-    for (int bounce = 0; bounce <= lastBounce; ++bounce) {
-        Hit hit;
-        bool found = intersectScene(ray, hit);
-        recordSurface(bounce, found, hit, ray, throughput);
+    Hit hit;
+    bool found = intersectScene(path.ray, hit);
+    recordSurface(bounce, found, hit, path.ray, path.throughput);
 
-        // ---- Emission reached by the camera ray or a BSDF sample -------------------------------
-        // `direct` counts only what the camera sees (light sampling covers the next bounce);
-        // `mis` and `full` count it with the weight of BSDF sampling against light sampling.
-        bool countEmission = bounce == 0 || !lightSampling || mis;
-        if (!found) {
-            if (countEmission) {
-                vec3 environment = environmentRadiance(ray.direction); // one map lookup for both uses
-                float weight = (!lightSampling || previousDelta || uEnvironmentLight < 0) ? 1.0
-                             : emissionWeight(uEnvironmentLight, previousPos, ray.direction, kInfinity, vec3(0.0), previousPdf);
-                weight = recordEmissionWeight(bounce, weight, environment);
-                weight *= lightPathWeight(bounce, history, bounce > 0);
-                radiance += recordEmission(bounce, clampContribution(throughput * environment * weight));
-            }
-            break;
-        }
-        Material material = fetchSurfaceMaterial(hit.material, hit.uv);
+    // ---- Emission reached by the camera ray or a BSDF sample -------------------------------
+    // `direct` counts only what the camera sees (light sampling covers the next bounce);
+    // `mis` and `full` count it with the weight of BSDF sampling against light sampling.
+    bool countEmission = bounce == 0 || !lightSampling || mis;
+    if (!found) {
         if (countEmission) {
-            vec3 emitted = emittedRadiance(material, hit.normalGeom, -ray.direction);
-            if (any(greaterThan(emitted, vec3(0.0)))) {
-                float weight = (!lightSampling || previousDelta) ? 1.0
-                             : emissionWeight(hit.light, previousPos, ray.direction, hit.t, hit.normalGeom, previousPdf);
-                weight = recordEmissionWeight(bounce, weight, emitted);
-                weight *= lightPathWeight(bounce, history, bounce > 0);
-                radiance += recordEmission(bounce, clampContribution(throughput * emitted * weight));
-            }
+            vec3 environment = environmentRadiance(path.ray.direction); // one map lookup for both uses
+            float weight = (!lightSampling || path.previousDelta || uEnvironmentLight < 0) ? 1.0
+                         : emissionWeight(uEnvironmentLight, path.previousPos, path.ray.direction, kInfinity, vec3(0.0), path.previousPdf);
+            weight = recordEmissionWeight(bounce, weight, environment);
+            weight *= lightPathWeight(bounce, path.history, bounce > 0);
+            path.radiance += recordEmission(bounce, clampContribution(path.throughput * environment * weight));
         }
-        if (bounce == lastBounce || material.type == kMaterialEmitter) break; // emitters reflect nothing
-
-        ShadingFrame frame = makeShadingFrame(hit.normalShading); // BSDFs handle either side themselves
-        vec3 woLocal = toLocal(frame, -ray.direction);
-
-        // ---- Next-event estimation --------------------------------------------------------------
-        if (lightSampling)
-            radiance += recordDirectLighting(bounce, clampContribution(throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis)) *
-                                                     lightPathWeight(bounce + 1, history, false));
-        if (kIntegrator == kIntegratorDirect) break;
-
-        // ---- BSDF sampling -----------------------------------------------------------------------
-        BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
-                                   samplerGet2D(sampler, bsdfDimension(bounce)));
-        recordBsdfSample(bounce, bs, material, frame, woLocal);
-        if (bs.pdfSolidAngle == 0.0) break;
-        vec3 wiWorld = toWorld(frame, bs.wiLocal);
-        if (!consistentSides(-ray.direction, wiWorld, hit)) break;
-        throughput *= bs.weight; // weight already holds f*|cos|/pdf
-        if (all(equal(throughput, vec3(0.0)))) break;
-        previousPos = hit.posWorld;
-        previousPdf = bs.pdfSolidAngle;
-        previousDelta = bs.isDelta;
-        recordScattering(history, bs.isDelta);
-        ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
-
-        // ---- Russian roulette: survive with the throughput's largest component ------------------
-        if (kIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
-            float survival = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
-            if (recordRoulette(bounce, survival, samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival)) break;
-            throughput /= survival; // unbiased: no clamp on 1/survival
-        }
-        recordThroughput(bounce, throughput);
+        return false;
     }
-    return radiance;
+    Material material = fetchSurfaceMaterial(hit.material, hit.uv);
+    if (countEmission) {
+        vec3 emitted = emittedRadiance(material, hit.normalGeom, -path.ray.direction);
+        if (any(greaterThan(emitted, vec3(0.0)))) {
+            float weight = (!lightSampling || path.previousDelta) ? 1.0
+                         : emissionWeight(hit.light, path.previousPos, path.ray.direction, hit.t, hit.normalGeom, path.previousPdf);
+            weight = recordEmissionWeight(bounce, weight, emitted);
+            weight *= lightPathWeight(bounce, path.history, bounce > 0);
+            path.radiance += recordEmission(bounce, clampContribution(path.throughput * emitted * weight));
+        }
+    }
+    if (bounce >= lastBounce || material.type == kMaterialEmitter) return false; // emitters reflect nothing
+
+    ShadingFrame frame = makeShadingFrame(hit.normalShading); // BSDFs handle either side themselves
+    vec3 woLocal = toLocal(frame, -path.ray.direction);
+
+    // ---- Next-event estimation --------------------------------------------------------------
+    if (lightSampling)
+        path.radiance += recordDirectLighting(bounce, clampContribution(path.throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis)) *
+                                                      lightPathWeight(bounce + 1, path.history, false));
+    if (kIntegrator == kIntegratorDirect) return false;
+
+    // ---- BSDF sampling -----------------------------------------------------------------------
+    BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
+                               samplerGet2D(sampler, bsdfDimension(bounce)));
+    recordBsdfSample(bounce, bs, material, frame, woLocal);
+    if (bs.pdfSolidAngle == 0.0) return false;
+    vec3 wiWorld = toWorld(frame, bs.wiLocal);
+    if (!consistentSides(-path.ray.direction, wiWorld, hit)) return false;
+    path.throughput *= bs.weight; // weight already holds f*|cos|/pdf
+    if (all(equal(path.throughput, vec3(0.0)))) return false;
+    path.previousPos = hit.posWorld;
+    path.previousPdf = bs.pdfSolidAngle;
+    path.previousDelta = bs.isDelta;
+    recordScattering(path.history, bs.isDelta);
+    path.ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
+    path.bounce = bounce + 1;
+
+    // ---- Russian roulette: survive with the throughput's largest component ------------------
+    if (kIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
+        float survival = min(1.0, max(path.throughput.r, max(path.throughput.g, path.throughput.b)));
+        if (recordRoulette(bounce, survival, samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival)) return false;
+        path.throughput /= survival; // unbiased: no clamp on 1/survival
+    }
+    recordThroughput(bounce, path.throughput);
+    return true;
+}
+
+vec3 estimateRadiance(Ray ray, Sampler sampler) {
+    PathState path = startPath(ray);
+    while (extendPath(path, sampler)) {}
+    return path.radiance;
 }

@@ -25,9 +25,8 @@ layout(location = 3) out vec4 outField3;
 void main() {
     int item = int(gl_FragCoord.y) * uWidth + int(gl_FragCoord.x);
     int path = item / uVerticesPerPath;
-    Sampler sampler = createSampler(uvec2(uPixel), uint(uFirstSample + path), uSeed, kSamplerMode, uSampleBudget);
-    vec2 filmPos = vec2(uPixel) + samplerGet2D(sampler, kDimensionCamera);
-    Ray ray = generateCameraRay(filmPos, sampler);
+    Sampler sampler;
+    Ray ray = generatePixelRay(uvec2(uPixel), uint(uFirstSample + path), sampler);
     startRecording(item % uVerticesPerPath, ray);
     gRecord[11].xyz = item < uCount ? estimateRadiance(ray, sampler) : vec3(0.0);
     gRecord[0].w = float(gFlags);

@@ -1,8 +1,8 @@
 #version 410 core
-// Fragment entry: a full-screen triangle, one fragment per pixel, one sample per pass.
+// Fragment entry: a full-screen triangle, one fragment per pixel, uSamplesPerPass samples per pass.
 #include "accumulate.glsl"
 #include "pathtrace_sample.glsl"
 
 void main() {
-    traceSample(ivec2(gl_FragCoord.xy));
+    traceSamples(uvec2(gl_FragCoord.xy));
 }

@@ -42,7 +42,7 @@ void accumulateProbe(Accumulator& accumulator, int frames, int framesBeforeResta
         glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameBuffer.id());
         glBindVertexArray(vertexArray.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        accumulator.endPass();
+        accumulator.endPass(1);
     }
 }
 

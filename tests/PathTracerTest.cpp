@@ -154,6 +154,50 @@ TEST(PathTracer, RowTilesAccumulateExactlyLikeWholePasses) {
     for (size_t i = 0; i < a.rgb.size(); ++i) ASSERT_EQ(a.rgb[i], b.rgb[i]) << "at float " << i;
 }
 
+// renderSamples traces a pass's samples in one loop, starting a pixel's next path as soon as its
+// last one ends (pathtrace_sample.glsl). Those are the samples single passes trace, so the means
+// and second moments agree to float rounding (each pass's samples are summed before the Kahan
+// add); a reused or skipped sample index would be a difference of the size of the noise.
+TEST(PathTracer, SeveralSamplesPerPassAreTheSamplesOfSinglePasses) {
+    testing::glContext();
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell_spheres.json");
+    constexpr int kSamples = 20; // at 48x48, a pass of 16 and one of 4
+    struct Case { Integrator integrator; SamplerMode sampler; DebugView view; };
+    for (Case c : {Case{Integrator::Naive, SamplerMode::Random, DebugView::Radiance},
+                   Case{Integrator::Direct, SamplerMode::Sobol, DebugView::Radiance},
+                   Case{Integrator::Mis, SamplerMode::Random, DebugView::Radiance},
+                   Case{Integrator::Full, SamplerMode::Sobol, DebugView::Radiance},
+                   Case{Integrator::Full, SamplerMode::Random, DebugView::Normals}}) {
+        RenderSettings settings;
+        settings.integrator = c.integrator;
+        settings.sampler = c.sampler;
+        settings.debugView = c.view;
+        settings.maxDepth = 16;
+        settings.seed = 7;
+        PathTracer single, batched;
+        for (PathTracer* tracer : {&single, &batched}) {
+            tracer->setScene(scene);
+            tracer->setImageSize(kSize);
+            tracer->setSettings(settings);
+        }
+        ASSERT_EQ(batched.samplesPerPass(), 16);
+        for (int i = 0; i < kSamples; ++i) single.renderSample();
+        batched.renderSamples(kSamples);
+        ASSERT_EQ(batched.sampleCount(), kSamples);
+        PixelStatistics a = single.readStatistics(), b = batched.readStatistics();
+        ASSERT_EQ(a.mean.rgb.size(), b.mean.rgb.size());
+        double spread = 0.0; // the noise a wrong sample would show: mean standard error
+        for (size_t i = 0; i < a.mean.rgb.size(); ++i) {
+            const float x = a.mean.rgb[i], y = b.mean.rgb[i];
+            ASSERT_NEAR(x, y, 1e-5f * std::max(1.0f, std::abs(x))) << "at float " << i << ", integrator " << int(c.integrator);
+            const float vx = a.varianceOfMean.rgb[i], vy = b.varianceOfMean.rgb[i];
+            ASSERT_NEAR(vx, vy, 1e-4f * std::max(1e-3f, std::abs(vx))) << "at float " << i;
+            spread += std::sqrt(vx);
+        }
+        EXPECT_GT(spread / a.mean.rgb.size(), 1e-3) << "the image has noise a wrong sample would change";
+    }
+}
+
 TEST(PathTracer, RestartMidPassStartsTheNextPassAtRowZero) {
     testing::glContext();
     PathTracer tracer;
@@ -233,10 +277,11 @@ TEST(PathTracer, NonFinitePixelsAreHighlightedInMagenta) {
     std::ofstream(shaders / "pathtrace_sample.glsl") << R"(#include "frame_uniforms.glsl"
 #include "specialization.glsl"
 uniform float uZero; // 0, but unknown to the compiler
-void traceSample(ivec2 pixel) {
+void traceSamples(uvec2 pixel) {
     float nan = uZero / uZero;
     float inf = 1.0 / uZero;
-    accumulateSample(pixel, pixel.x < uImageSize.x / 2 ? vec3(nan) : pixel.y >= uImageSize.y - 2 ? vec3(inf) : vec3(0.25));
+    vec3 value = pixel.x < uImageSize.x / 2 ? vec3(nan) : pixel.y >= uImageSize.y - 2 ? vec3(inf) : vec3(0.25);
+    accumulateSamples(ivec2(pixel), value, value * value);
 }
 )";
     PathTracer tracer(shaders);

@@ -33,7 +33,7 @@ struct FrameUniforms {
     float focusDistance;        // metres along the view direction
     float radianceClamp;        // largest component of one path vertex's contribution; 0: no clamp
     std::int32_t lightPathBounces; // k of the light-path views exactly / at most k (light_paths.glsl)
-    std::uint32_t pad2;
+    std::uint32_t samplesPerPass; // samples each pixel adds in one pass (pathtrace_sample.glsl)
     std::uint32_t pad3;
 };
 static_assert(sizeof(FrameUniforms) == 128, "FrameUniforms must match the std140 FrameBlock");
