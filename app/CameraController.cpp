@@ -16,35 +16,6 @@ constexpr float kMinPolarRad = glm::radians(1.0f);
 // direction within about 1% of where it was.
 constexpr float kMinZoomDistanceRelative = 1e-5f;
 
-struct CameraFrame {
-    glm::vec3 forward; // unit, eye to target
-    glm::vec3 right;   // unit, orthogonal to forward and to worldUp
-    glm::vec3 up;      // unit, cross(right, forward)
-    glm::vec3 worldUp; // unit, the camera's `up` as given
-};
-
-// The renderer's frame, with fallbacks where it would divide by zero. The caller has checked
-// that eye != target.
-CameraFrame cameraFrame(const CameraDesc& camera) {
-    CameraFrame frame;
-    frame.forward = glm::normalize(camera.target - camera.eye);
-    float upLength = glm::length(camera.up);
-    frame.worldUp = upLength > 0.0f ? camera.up / upLength : glm::vec3(0.0f, 1.0f, 0.0f);
-    glm::vec3 right = glm::cross(frame.forward, frame.worldUp);
-    if (glm::length(right) < 1e-6f) {
-        // Looking along up: any axis orthogonal to forward will do; cross it with the world
-        // axis it is least aligned with so the cross product is well conditioned.
-        glm::vec3 a = glm::abs(frame.forward);
-        glm::vec3 axis = a.x <= a.y && a.x <= a.z ? glm::vec3(1, 0, 0)
-                       : a.y <= a.z              ? glm::vec3(0, 1, 0)
-                                                 : glm::vec3(0, 0, 1);
-        right = glm::cross(frame.forward, axis);
-    }
-    frame.right = glm::normalize(right);
-    frame.up = glm::cross(frame.right, frame.forward);
-    return frame;
-}
-
 } // namespace
 
 std::string cameraProblem(const CameraDesc& camera) {

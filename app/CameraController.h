@@ -4,9 +4,10 @@
 // never changes its resolution, field of view or `up` (the scene's world up, which the renderer
 // projects to be orthogonal to the view).
 //
-// The camera frame is the renderer's (renderer/PathTracer.cpp): forward = normalize(target - eye),
-// right = normalize(cross(forward, up)), cameraUp = cross(right, forward). A camera whose eye
-// sits on its target is returned unchanged; one that looks along `up` gets a fallback right axis.
+// The camera frame is the renderer's (cameraFrame in renderer/scene/Scene.h): forward =
+// normalize(target - eye), right = normalize(cross(forward, up)), cameraUp = cross(right, forward).
+// A camera whose eye sits on its target is returned unchanged; one that looks along `up` gets a
+// fallback right axis.
 // No input camera produces a NaN.
 
 #include "Scene.h"

@@ -13,11 +13,12 @@ struct CameraBasis {
 
 // The renderer's pinhole camera (PathTracer::updateFrameUniforms, shaders/camera.glsl).
 CameraBasis basisOf(const CameraDesc& camera) {
+    const CameraFrame frame = cameraFrame(camera);
     CameraBasis b;
     b.eye = camera.eye;
-    b.forward = glm::normalize(camera.target - camera.eye);
-    b.right = glm::normalize(glm::cross(b.forward, camera.up));
-    b.up = glm::cross(b.right, b.forward);
+    b.forward = frame.forward;
+    b.right = frame.right;
+    b.up = frame.up;
     b.tanHalfFovY = std::tan(glm::radians(camera.vfovDeg) * 0.5f);
     return b;
 }

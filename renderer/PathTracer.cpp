@@ -306,16 +306,15 @@ glm::ivec2 PathTracer::shownPreviewSize() const {
 
 void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPass) {
     glm::ivec2 size = target.size();
-    glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
-    glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
+    const CameraFrame camera = cameraFrame(camera_);
     FrameUniforms frame{};
     frame.cameraEye = camera_.eye;
     frame.tanHalfFovY = std::tan(glm::radians(camera_.vfovDeg) * 0.5f);
-    frame.cameraRight = right;
+    frame.cameraRight = camera.right;
     frame.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-    frame.cameraUp = glm::cross(right, forward);
+    frame.cameraUp = camera.up;
     frame.frameIndex = static_cast<std::uint32_t>(target.sampleCount());
-    frame.cameraForward = forward;
+    frame.cameraForward = camera.forward;
     frame.seed = settings_.seed;
     frame.environmentRadiance = environmentRadiance_;
     frame.maxDepth = settings_.maxDepth;

@@ -39,6 +39,26 @@ float defaultFocusDistance(const CameraDesc& camera) {
     return std::min(glm::length(camera.target - camera.eye), kMaxSceneExtent);
 }
 
+CameraFrame cameraFrame(const CameraDesc& camera) {
+    CameraFrame frame;
+    frame.forward = glm::normalize(camera.target - camera.eye);
+    float upLength = glm::length(camera.up);
+    frame.worldUp = upLength > 0.0f ? camera.up / upLength : glm::vec3(0.0f, 1.0f, 0.0f);
+    glm::vec3 right = glm::cross(frame.forward, frame.worldUp);
+    if (glm::length(right) < 1e-6f) {
+        // Looking along up: any axis orthogonal to forward will do; cross it with the world
+        // axis it is least aligned with so the cross product is well conditioned.
+        glm::vec3 a = glm::abs(frame.forward);
+        glm::vec3 axis = a.x <= a.y && a.x <= a.z ? glm::vec3(1, 0, 0)
+                       : a.y <= a.z              ? glm::vec3(0, 1, 0)
+                                                 : glm::vec3(0, 0, 1);
+        right = glm::cross(frame.forward, axis);
+    }
+    frame.right = glm::normalize(right);
+    frame.up = glm::cross(frame.right, frame.forward);
+    return frame;
+}
+
 glm::mat3 boxRotation(const Shape& box) {
     return rotationMatrix(box.rotationAxis, box.rotationDeg);
 }

@@ -31,6 +31,19 @@ struct CameraDesc {
 // The focus distance a camera has when its file names none: the plane through the target.
 float defaultFocusDistance(const CameraDesc& camera);
 
+// The camera's orthonormal frame: what the renderer's rays are built from (shaders/camera.glsl),
+// and so what the viewer orbits about and the paths picture projects with.
+struct CameraFrame {
+    glm::vec3 forward; // unit, eye to target
+    glm::vec3 right;   // unit, orthogonal to forward and to worldUp
+    glm::vec3 up;      // unit, cross(right, forward)
+    glm::vec3 worldUp; // unit, the camera's `up` as given
+};
+
+// With fallbacks where it would divide by zero (up of length 0, or along the view direction,
+// which a scene file refuses but an orbit may come close to). eye must differ from target.
+CameraFrame cameraFrame(const CameraDesc& camera);
+
 // The order is the GPU's: shaders/material.glsl numbers the types the same way.
 enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic, Principled };
 
