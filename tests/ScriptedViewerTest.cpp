@@ -831,6 +831,16 @@ quit
     fs::remove_all(directory);
 }
 
+// open-material with a name the scene does not have ends the script, naming the line.
+TEST_F(ScriptedViewer, OpenMaterialOfAnUnknownNameIsAnErrorAtItsLine) {
+    fs::path directory = freshDirectory("open_material");
+    testing::CommandResult result = runViewer(directory, kCornell, "resolution-scale 0.125\nopen-material red\nopen-material nope\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:3: open-material: the scene has no material \"nope\""), std::string::npos)
+        << result.output;
+    fs::remove_all(directory);
+}
+
 // The Materials panel's texture slot driven by mouse and keyboard (xdotool, tests/window_textures.sh):
 // a path typed into the base colour field and Load show the image's thumbnail and put the image
 // in the render; a file that does not decode shows its error in red and leaves texture and render

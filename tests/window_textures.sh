@@ -29,10 +29,11 @@ load() {  # $1: the field's y; types $2 into it (after selecting what it holds) 
   click 160 "$1" && xdotool key ctrl+a sleep 0.2 type --delay 50 "$2" && sleep 0.3 && click 324 "$1"
 }
 
-# Field and Load at y 252 with no texture; at 304 with one (a 48-pixel thumbnail above); Remove at 284.
-wait_for_status 1 && load 252 good.png && touch scene.json
-wait_for_status 2 && load 304 broken.png && touch scene.json
-wait_for_status 3 && click 109 284 && touch scene.json
+# Field and Load at y 252 with no texture; at 304 with one (a 48-pixel thumbnail above); Remove at
+# 284. The second of sleep lets a slow frame take the click before the reload ends the wait.
+wait_for_status 1 && load 252 good.png && sleep 1 && touch scene.json
+wait_for_status 2 && load 304 broken.png && sleep 1 && touch scene.json
+wait_for_status 3 && click 109 284 && sleep 1 && touch scene.json
 ( sleep 60; kill $pid ) >/dev/null 2>&1 & watchdog=$!
 wait $pid; code=$?
 kill $watchdog 2>/dev/null
