@@ -274,22 +274,27 @@ bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t 
                 // The image's aspect ratio, its longer side kThumbnailSide.
                 const float longer = float(std::max(texture.image->width, texture.image->height));
                 const ImVec2 aspect(float(texture.image->width) / longer, float(texture.image->height) / longer);
-                ImGui::Image(id, ImVec2(kThumbnailSide * aspect.x, kThumbnailSide * aspect.y));
+                const float width = kThumbnailSide * aspect.x;
+                ImGui::Image(id, ImVec2(width, kThumbnailSide * aspect.y));
                 if (ImGui::IsItemHovered()) {
                     ImGui::BeginTooltip();
                     ImGui::Image(id, ImVec2(kThumbnailTexels * aspect.x, kThumbnailTexels * aspect.y));
                     ImGui::EndTooltip();
                 }
-                ImGui::SameLine();
+                // The text column starts at the same place for every aspect ratio.
+                ImGui::SameLine(0.0f, ImGui::GetStyle().ItemSpacing.x + kThumbnailSide - width);
             }
             ImGui::BeginGroup();
-            // The file's name on one line; its whole path (a long one wrapped mid-word) on hover.
+            // The file's name; its whole path (long ones wrapped mid-word) on hover. The lines
+            // wrap at the sidebar's edge rather than being cut there.
+            ImGui::PushTextWrapPos(0.0f);
             ImGui::TextUnformatted(textureSourceName(texture.source).c_str());
             itemTooltip(fullTextureSource(texture.source).c_str());
             ImGui::TextDisabled("%dx%d, %s, uv x (%.3g, %.3g) + (%.3g, %.3g)", texture.image ? texture.image->width : 0,
                                 texture.image ? texture.image->height : 0,
                                 texture.colorSpace == TextureColorSpace::Srgb ? "sRGB" : "linear", slot.scale.x,
                                 slot.scale.y, slot.offset.x, slot.offset.y);
+            ImGui::PopTextWrapPos();
             if (ImGui::SmallButton("Remove")) {
                 setMaterialTexture(scene, material, input, {});
                 textureErrors_.erase(key); // the error of an earlier Load no longer describes the slot

@@ -844,7 +844,8 @@ TEST_F(ScriptedViewer, OpenMaterialOfAnUnknownNameIsAnErrorAtItsLine) {
 // The Materials panel's texture slot driven by mouse and keyboard (xdotool, tests/window_textures.sh):
 // a path typed into the base colour field and Load show the image's thumbnail and put the image
 // in the render; a file that does not decode shows its error in red and leaves texture and render
-// as they were; Remove brings back the render of the factor alone. The layout is fixed: a
+// as they were; Remove brings back the render of the factor alone. The roughness thumbnail shows
+// the G channel it reads. The layout is fixed: a
 // 1000x520 screen (window 852x472), the material's node at the top of the sidebar (open-material).
 TEST_F(ScriptedViewer, TexturePanelLoadsShowsAndRemovesATextureByMouse) {
     fs::path directory = freshDirectory("texture_panel");
@@ -866,6 +867,7 @@ TEST_F(ScriptedViewer, TexturePanelLoadsShowsAndRemovesATextureByMouse) {
 seed 3
 depth 1
 target-spp 2
+set-material card.roughness-texture good.png
 open-material card
 wait-spp 2
 frames 3
@@ -947,6 +949,9 @@ quit
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(thumbnail[c], kTexel[c], 3.0) << "thumbnail channel " << c;
     EXPECT_GT(glm::length(panel0.mean(33, 73, 246, 286) - glm::dvec3(kTexel)), 100.0);
     EXPECT_NEAR(panel2.mean(33, 73, 246, 286).b, kTexel.b, 3.0) << "a refused file leaves the thumbnail";
+    // The roughness slot (given good.png by the script) shows the channel it reads, G, as grey.
+    const glm::dvec3 roughness = panel0.mean(33, 73, 288, 326);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(roughness[c], kTexel.g, 3.0) << "roughness thumbnail channel " << c;
 
     // The error of broken.png, red, under the field (y 316 to 340); none there before.
     auto isErrorRed = [](glm::ivec3 c) { return c.r > 150 && c.g < 150 && c.b < 140 && c.r > c.g + 60; };
