@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <iterator>
 #include <string>
 
 namespace ptview {
@@ -113,6 +114,10 @@ std::string textureSourceName(const std::string& source) {
 
 void MaterialsPanel::draw(ViewerSession& session) {
     Scene& scene = session.model().scene;
+    // A thumbnail whose image only the cache still holds (the scene reloaded or replaced, the
+    // texture removed) goes, and its image with it: a reload decodes every image again.
+    for (auto it = thumbnails_.begin(); it != thumbnails_.end();)
+        it = it->second.first.use_count() == 1 ? thumbnails_.erase(it) : std::next(it);
     emitters_.resize(scene.materials.size());
     bool changed = false;
     if (scene.materials.empty()) ImGui::TextDisabled("the scene has no materials");
