@@ -13,6 +13,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <filesystem>
+#include <iterator>
+#include <string>
 
 namespace ptview {
 namespace {
@@ -83,10 +86,38 @@ const char* colorTooltip(MaterialType type) {
     return "";
 }
 
+// The thumbnail in the list, in pixels, and its texels (the size of the view on hover).
+constexpr float kThumbnailSide = 48.0f;
+constexpr int kThumbnailTexels = 192;
+
+// The channel a thumbnail shows as grey: the one the input reads (docs/materials.md), so that
+// a shared metallic-roughness image shows each input's own data; -1: the image as stored.
+int thumbnailChannel(TextureSlot Material::*slot) {
+    if (slot == &Material::roughnessTexture) return 1;
+    if (slot == &Material::metallicTexture) return 2;
+    return -1;
+}
+
+std::string fullTextureSource(const std::string& source) {
+    return std::filesystem::u8path(source).lexically_normal().u8string();
+}
+
+// "spot_texture.png" for a file, "model.glb#/images/3" for an image inside a glTF file.
+std::string textureSourceName(const std::string& source) {
+    const std::size_t hash = source.find('#');
+    const std::string file = source.substr(0, hash);
+    const std::string name = std::filesystem::u8path(file).filename().u8string();
+    return (name.empty() ? file : name) + (hash == std::string::npos ? "" : source.substr(hash));
+}
+
 } // namespace
 
 void MaterialsPanel::draw(ViewerSession& session) {
     Scene& scene = session.model().scene;
+    // A thumbnail whose image only the cache still holds (the scene reloaded or replaced, the
+    // texture removed) goes, and its image with it: a reload decodes every image again.
+    for (auto it = thumbnails_.begin(); it != thumbnails_.end();)
+        it = it->second.first.use_count() == 1 ? thumbnails_.erase(it) : std::next(it);
     emitters_.resize(scene.materials.size());
     bool changed = false;
     if (scene.materials.empty()) ImGui::TextDisabled("the scene has no materials");
@@ -192,11 +223,12 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
     return changed;
 }
 
-GLuint MaterialsPanel::thumbnail(const std::shared_ptr<const TextureImage>& image) {
-    auto found = thumbnails_.find(image.get());
+GLuint MaterialsPanel::thumbnail(const std::shared_ptr<const TextureImage>& image, int channel) {
+    auto found = thumbnails_.find({image.get(), channel});
     if (found != thumbnails_.end()) return found->second.second.id();
-    // At most 64 texels a side, nearest texel: enough to tell which image it is.
-    constexpr int kSide = 64;
+    // At most kThumbnailTexels a side, nearest texel: enough for the larger view on hover; the
+    // mipmaps keep the small one in the list from aliasing.
+    constexpr int kSide = kThumbnailTexels;
     const int width = std::max(1, std::min(kSide, image->width * kSide / std::max(image->width, image->height)));
     const int height = std::max(1, std::min(kSide, image->height * kSide / std::max(image->width, image->height)));
     std::vector<std::uint8_t> texels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
@@ -204,8 +236,12 @@ GLuint MaterialsPanel::thumbnail(const std::shared_ptr<const TextureImage>& imag
         for (int x = 0; x < width; ++x) {
             const std::size_t from = (static_cast<std::size_t>(y * image->height / height) * static_cast<std::size_t>(image->width) +
                                       static_cast<std::size_t>(x * image->width / width)) * 4;
-            std::copy_n(image->rgba.begin() + static_cast<std::ptrdiff_t>(from), 4,
-                        texels.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(y) * width + x) * 4));
+            std::uint8_t* to = texels.data() + (static_cast<std::size_t>(y) * width + x) * 4;
+            std::copy_n(image->rgba.begin() + static_cast<std::ptrdiff_t>(from), 4, to);
+            if (channel >= 0) { // that channel as grey, opaque
+                std::fill_n(to, 3, image->rgba[from + static_cast<std::size_t>(channel)]);
+                to[3] = 255;
+            }
         }
     // The renderer binds its own textures on its own units; the one bound here is put back.
     GLint activeUnit = 0, bound = 0;
@@ -216,12 +252,13 @@ GLuint MaterialsPanel::thumbnail(const std::shared_ptr<const TextureImage>& imag
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
     glActiveTexture(static_cast<GLenum>(activeUnit));
     const GLuint id = texture.id();
-    thumbnails_.emplace(image.get(), std::make_pair(image, std::move(texture)));
+    thumbnails_.emplace(std::make_pair(image.get(), channel), std::make_pair(image, std::move(texture)));
     return id;
 }
 
@@ -232,24 +269,40 @@ bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t 
         ImGui::PushID(k);
         TextureSlot& slot = material.*input.slot;
         const bool used = slot.used() && static_cast<std::size_t>(slot.texture) < scene.textures.size();
+        const auto key = std::make_pair(index, k);
         ImGui::Text("%s texture", input.label);
         if (used) {
             const SceneTexture& texture = scene.textures[static_cast<std::size_t>(slot.texture)];
             if (texture.image) {
-                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(thumbnail(texture.image))),
-                             ImVec2(48.0f, 48.0f));
-                ImGui::SameLine();
+                const auto id = reinterpret_cast<ImTextureID>(
+                    static_cast<std::uintptr_t>(thumbnail(texture.image, thumbnailChannel(input.slot))));
+                // The image's aspect ratio, its longer side kThumbnailSide.
+                const float longer = float(std::max(texture.image->width, texture.image->height));
+                const ImVec2 aspect(float(texture.image->width) / longer, float(texture.image->height) / longer);
+                const float width = kThumbnailSide * aspect.x;
+                ImGui::Image(id, ImVec2(width, kThumbnailSide * aspect.y));
+                if (ImGui::IsItemHovered()) {
+                    ImGui::BeginTooltip();
+                    ImGui::Image(id, ImVec2(kThumbnailTexels * aspect.x, kThumbnailTexels * aspect.y));
+                    ImGui::EndTooltip();
+                }
+                // The text column starts at the same place for every aspect ratio.
+                ImGui::SameLine(0.0f, ImGui::GetStyle().ItemSpacing.x + kThumbnailSide - width);
             }
             ImGui::BeginGroup();
+            // The file's name; its whole path (long ones wrapped mid-word) on hover. The lines
+            // wrap at the sidebar's edge rather than being cut there.
             ImGui::PushTextWrapPos(0.0f);
-            ImGui::TextDisabled("%s", texture.source.c_str());
-            ImGui::PopTextWrapPos();
+            ImGui::TextUnformatted(textureSourceName(texture.source).c_str());
+            itemTooltip(fullTextureSource(texture.source).c_str());
             ImGui::TextDisabled("%dx%d, %s, uv x (%.3g, %.3g) + (%.3g, %.3g)", texture.image ? texture.image->width : 0,
                                 texture.image ? texture.image->height : 0,
                                 texture.colorSpace == TextureColorSpace::Srgb ? "sRGB" : "linear", slot.scale.x,
                                 slot.scale.y, slot.offset.x, slot.offset.y);
+            ImGui::PopTextWrapPos();
             if (ImGui::SmallButton("Remove")) {
                 setMaterialTexture(scene, material, input, {});
+                textureErrors_.erase(key); // the error of an earlier Load no longer describes the slot
                 changed = true;
             }
             ImGui::EndGroup();
@@ -257,7 +310,6 @@ bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t 
             ImGui::SameLine();
             ImGui::TextDisabled("none (the factor alone)");
         }
-        const auto key = std::make_pair(index, k);
         std::string& path = texturePaths_[key];
         ImGui::SetNextItemWidth(-60.0f);
         bool load = ImGui::InputTextWithHint("##texture", "image file (PNG or JPEG)", &path,

@@ -46,14 +46,16 @@ private:
     // each, a path field with Load, and Remove. Returns whether a texture changed (which may need
     // another program: the session uploads the scene again).
     bool drawTextures(Scene& scene, Material& material, std::size_t index);
-    // A small GL texture of the image for ImGui::Image, made once per image.
-    GLuint thumbnail(const std::shared_ptr<const TextureImage>& image);
+    // A small GL texture of the image for ImGui::Image, made once per image and channel: the
+    // image as stored (channel -1), or one channel as grey.
+    GLuint thumbnail(const std::shared_ptr<const TextureImage>& image, int channel);
     void save(ViewerSession& session);
     void saveTo(ViewerSession& session, const std::string& path);
 
     std::vector<EmitterControls> emitters_; // one per material, used by emitters only
-    // Thumbnails by image; the entry holds the image, so its address is not reused while cached.
-    std::map<const TextureImage*, std::pair<std::shared_ptr<const TextureImage>, GlTexture>> thumbnails_;
+    // Thumbnails by image and channel; the entry holds the image, so its address is not reused
+    // while cached.
+    std::map<std::pair<const TextureImage*, int>, std::pair<std::shared_ptr<const TextureImage>, GlTexture>> thumbnails_;
     // The path typed into each (material, input)'s field, and the last Load's error there.
     std::map<std::pair<std::size_t, int>, std::string> texturePaths_;
     std::map<std::pair<std::size_t, int>, std::string> textureErrors_;

@@ -1,5 +1,9 @@
 #include "SceneMerge.h"
 
+#include "MaterialTextures.h"
+
+#include <algorithm>
+
 namespace ptview {
 namespace {
 
@@ -56,9 +60,10 @@ auto findNamed(Items& items, const std::string& name, int occurrence) -> decltyp
 
 // Merges the user's edits to named items into `merged` (a copy of the file's list), in place so
 // that the file's order, which shapes index, is kept.
-template <typename T, typename Same>
+// `adopt(theirs, mine)` puts the user's item in place of the file's.
+template <typename T, typename Same, typename Adopt>
 void mergeNamed(const std::vector<T>& base, const std::vector<T>& edited, std::vector<T>& merged, Same same,
-                const char* kind, std::vector<std::string>& overridden)
+                Adopt adopt, const char* kind, std::vector<std::string>& overridden)
 {
     for (size_t i = 0; i < edited.size(); ++i) {
         const T& mine = edited[i];
@@ -72,9 +77,34 @@ void mergeNamed(const std::vector<T>& base, const std::vector<T>& edited, std::v
         if (!theirs)
             overridden.push_back(label + " (removed from the file)");
         else if (same(*theirs, *original))
-            *theirs = mine;
+            adopt(*theirs, mine);
         else if (!same(*theirs, mine)) // both changed it, differently: the file wins
             overridden.push_back(label);
+    }
+}
+
+bool sameTexture(const SceneTexture& a, const SceneTexture& b)
+{
+    return a.source == b.source && a.file == b.file && a.colorSpace == b.colorSpace && a.wrapU == b.wrapU &&
+           a.wrapV == b.wrapV && a.bilinear == b.bilinear;
+}
+
+// The user's material in the merged scene: its texture slots index the edited scene's textures
+// (a texture loaded in the panel is in no file), so each is found again in the merged scene's
+// list, or appended to it. Copied as it was, an index could be out of range or name another
+// image (seen: the window exited on the first reload after a texture was loaded in the panel).
+void adoptMaterial(Material& theirs, const Material& mine, const std::vector<SceneTexture>& editedTextures,
+                   std::vector<SceneTexture>& mergedTextures)
+{
+    theirs = mine;
+    for (const MaterialTextureInput& input : kMaterialTextureInputs) {
+        TextureSlot& slot = theirs.*input.slot;
+        if (!slot.used()) continue;
+        const SceneTexture& texture = editedTextures.at(static_cast<std::size_t>(slot.texture));
+        auto found = std::find_if(mergedTextures.begin(), mergedTextures.end(),
+                                  [&](const SceneTexture& t) { return sameTexture(t, texture); });
+        if (found == mergedTextures.end()) found = mergedTextures.insert(mergedTextures.end(), texture);
+        slot.texture = static_cast<int>(found - mergedTextures.begin());
     }
 }
 
@@ -85,8 +115,13 @@ SceneMergeResult mergeReloadedScene(const Scene& base, const Scene& edited, cons
     SceneMergeResult result{reloaded, {}};
     Scene& merged = result.scene;
 
-    mergeNamed(base.materials, edited.materials, merged.materials, sameMaterial, "material", result.overridden);
-    mergeNamed(base.lights, edited.lights, merged.lights, sameLight, "light", result.overridden);
+    auto adoptWithTextures = [&](Material& theirs, const Material& mine) {
+        adoptMaterial(theirs, mine, edited.textures, merged.textures);
+    };
+    mergeNamed(base.materials, edited.materials, merged.materials, sameMaterial, adoptWithTextures, "material",
+               result.overridden);
+    mergeNamed(base.lights, edited.lights, merged.lights, sameLight, [](Light& theirs, const Light& mine) { theirs = mine; },
+               "light", result.overridden);
 
     if (!sameView(edited.camera, base.camera)) {
         if (sameView(reloaded.camera, base.camera)) {

@@ -25,6 +25,8 @@ struct SceneMergeResult {
 // `reloaded` with each item the user changed and the file did not put back to the user's value.
 // Shapes, the order of materials (shapes index them) and lights, and Scene::path come from the
 // file. Items that are in `edited` but not in `base` (nothing the UI makes) are left out.
+// A material taken from `edited` brings the textures its slots name (found in the result's list
+// by source and sampling, or appended to it).
 SceneMergeResult mergeReloadedScene(const Scene& base, const Scene& edited, const Scene& reloaded);
 
 } // namespace ptview

@@ -298,6 +298,15 @@ void focusAt(Step& s) {
         s.fail("nothing there to focus on (the ray leaves the scene); the focus is left as it was");
 }
 
+// What the Pixel panel's "open" does: the window opens the Materials panel at that material's
+// node, scrolled to the top of the sidebar (a fixed place for window tests and pictures).
+void openMaterial(Step& s) {
+    auto found = std::find_if(s.scene.materials.begin(), s.scene.materials.end(),
+                              [&](const Material& m) { return m.name == s.word; });
+    if (found == s.scene.materials.end()) return s.fail("the scene has no material \"" + s.word + "\"");
+    s.panels.materialToOpen = static_cast<int>(found - s.scene.materials.begin());
+}
+
 // ---- the pixel inspector
 
 // What Alt+click does; waits for the first sample, so that the render has its size.
@@ -505,6 +514,7 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
              if (!s.session.setReference(pathOrNone(s))) s.fail(s.session.model().sceneError);
          }},
         {"open-panel", [](Step& s) { s.panels.panelsToOpen.push_back(s.word); }},
+        {"open-material", openMaterial},
         {"pin-pixel", pinPixel},
         {"unpin-pixel", [](Step& s) { s.model.pinnedPixel.reset(); }},
         {"save-pixel", savePixel},

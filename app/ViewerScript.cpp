@@ -261,7 +261,9 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"reference", {pathArg({".pfm", ".exr"}, "none")}, nullptr,
          "load a reference image (.pfm or .exr) for the true error in Stats and status, or none"},
         {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,
-         "open a sidebar panel (and a materials panel's materials), or all of them"},
+         "open a sidebar panel, or all of them"},
+        {"open-material", {tokenArg("NAME")}, nullptr,
+         "open the Materials panel at the material named NAME, as the Pixel panel's open button does"},
         // The pixel inspector
         {"pin-pixel", {integerArg("X", 0), integerArg("Y", 0)}, nullptr,
          "pin the render's pixel X Y (from the top-left; within the image) in the Pixel panel, as Alt+click does"},

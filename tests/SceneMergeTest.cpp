@@ -344,3 +344,35 @@ TEST_F(FileWatcherTest, WatchReplacesTheSet)
     write("three");
     EXPECT_EQ(watcher.poll(t0_), Paths{});
 }
+
+// Before: the user's material was copied with its slots' indices into the edited scene's
+// textures; after a texture loaded in the panel (in no file), the first reload left an index
+// past the end of the merged list, and the window exited ("texture index 0 is out of range").
+TEST(SceneMerge, AMaterialEditKeepsTheTextureItsSlotNames)
+{
+    Scene base = parse(kBaseJson);
+    Scene edited = base;
+    SceneTexture loaded;
+    loaded.source = "wood.png";
+    loaded.file = "wood.png";
+    loaded.image = std::make_shared<const TextureImage>(TextureImage{1, 1, {10, 20, 30, 255}});
+    edited.textures.push_back(loaded);
+    Material& glass = edited.materials[1];
+    glass.type = MaterialType::Principled;
+    glass.baseColorTexture.texture = 0;
+    glass.roughnessTexture.texture = 0; // two slots, one texture: one copy in the result
+    Scene reloaded = parse(edit(kBaseJson, "[0.7, 0.7, 0.7]", "[0.5, 0.5, 0.5]"));
+    SceneTexture fileTexture = loaded;
+    fileTexture.source = "other.png";
+    reloaded.textures.push_back(fileTexture); // the result's list does not start empty
+
+    SceneMergeResult merged = mergeReloadedScene(base, edited, reloaded);
+    const Material& result = materialNamed(merged.scene, "glass");
+    ASSERT_EQ(merged.scene.textures.size(), 2u);
+    ASSERT_TRUE(result.baseColorTexture.used());
+    ASSERT_LT(result.baseColorTexture.texture, 2);
+    EXPECT_EQ(merged.scene.textures[std::size_t(result.baseColorTexture.texture)].source, "wood.png");
+    EXPECT_EQ(merged.scene.textures[std::size_t(result.baseColorTexture.texture)].image, loaded.image);
+    EXPECT_EQ(result.roughnessTexture.texture, result.baseColorTexture.texture);
+    EXPECT_EQ(materialNamed(merged.scene, "white").color, glm::vec3(0.5f)) << "the file's change is kept";
+}

@@ -1,6 +1,7 @@
 // The real viewer binary in a real window (Xvfb), driven by `--script` files: settings and edits
 // restart accumulation and change the image the way a headless render of the edited scene says,
-// the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots.
+// the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots,
+// the Materials panel loads, refuses and removes a texture by mouse.
 #include "ExrIO.h"
 #include "ImageIO.h"
 #include "Provenance.h"
@@ -827,6 +828,151 @@ quit
     EXPECT_EQ(viewerImage.width, headlessImage.width);
     EXPECT_EQ(viewerImage.height, headlessImage.height);
     EXPECT_TRUE(viewerImage.rgb == headlessImage.rgb) << "the viewer's render and its headless reproduction differ";
+    fs::remove_all(directory);
+}
+
+// open-material with a name the scene does not have ends the script, naming the line.
+TEST_F(ScriptedViewer, OpenMaterialOfAnUnknownNameIsAnErrorAtItsLine) {
+    fs::path directory = freshDirectory("open_material");
+    testing::CommandResult result = runViewer(directory, kCornell, "resolution-scale 0.125\nopen-material red\nopen-material nope\n");
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("script.txt:3: open-material: the scene has no material \"nope\""), std::string::npos)
+        << result.output;
+    fs::remove_all(directory);
+}
+
+// The Materials panel's texture slot driven by mouse and keyboard (xdotool, tests/window_textures.sh):
+// a path typed into the base colour field and Load show the image's thumbnail and put the image
+// in the render; a file that does not decode shows its error in red and leaves texture and render
+// as they were; Remove brings back the render of the factor alone. The roughness thumbnail shows
+// the G channel it reads. The layout is fixed: a
+// 1000x520 screen (window 852x472), the material's node at the top of the sidebar (open-material).
+TEST_F(ScriptedViewer, TexturePanelLoadsShowsAndRemovesATextureByMouse) {
+    fs::path directory = freshDirectory("texture_panel");
+    std::ofstream(directory / "scene.json") << R"({
+  "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "vfov_deg": 30, "resolution": [64, 64]},
+  "environment": {"color": [1, 1, 1]},
+  "materials": {"card": {"type": "principled", "base_color": [0.8, 0.8, 0.8], "roughness": 1}},
+  "shapes": [{"name": "card", "type": "quad", "center": [0, 0, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "card"}]
+})";
+    const glm::ivec3 kTexel(40, 80, 230); // sRGB bytes of the image loaded by hand
+    ImageRgba8 good{8, 8, {}};
+    for (int i = 0; i < good.width * good.height; ++i)
+        good.rgba.insert(good.rgba.end(), {std::uint8_t(kTexel.r), std::uint8_t(kTexel.g), std::uint8_t(kTexel.b), 255});
+    writePng(directory / "good.png", good);
+    std::ofstream(directory / "broken.png") << "not an image";
+    // Each phase: the image of the finished render (PFM), the window, a status line; then the
+    // driver acts and touches scene.json, which ends the wait.
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.125
+seed 3
+depth 1
+target-spp 2
+set-material card.roughness-texture good.png
+open-material card
+wait-spp 2
+frames 3
+screenshot factor.pfm
+screenshot-window panel0.png
+status
+wait-reload
+wait-spp 2
+frames 3
+screenshot loaded.pfm
+screenshot-window panel1.png
+status
+wait-reload
+wait-spp 2
+frames 3
+screenshot refused.pfm
+screenshot-window panel2.png
+status
+wait-reload
+wait-spp 2
+frames 3
+screenshot removed.pfm
+screenshot-window panel3.png
+save-scene removed.json
+quit
+)";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " +
+                                                        testing::xvfbRun("1000x520x24") + "bash " + PTVIEW_TEST_SCRIPT_DIR +
+                                                        "/window_textures.sh " + PTVIEW_BINARY);
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    ASSERT_EQ(statusLines(result.output).size(), 3u) << result.output;
+
+    struct Window {
+        int width = 0, height = 0;
+        std::vector<glm::ivec3> pixels;
+        glm::dvec3 mean(int x0, int x1, int y0, int y1) const {
+            glm::dvec3 sum(0.0);
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) sum += glm::dvec3(pixels[std::size_t(y * width + x)]);
+            return sum / double((x1 - x0) * (y1 - y0));
+        }
+        int count(int x0, int x1, int y0, int y1, bool (*is)(glm::ivec3)) const {
+            int n = 0;
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) n += is(pixels[std::size_t(y * width + x)]);
+            return n;
+        }
+    };
+    auto readWindow = [&](const char* name) {
+        Window window;
+        int channels = 0;
+        unsigned char* data = stbi_load((directory / name).string().c_str(), &window.width, &window.height, &channels, 3);
+        EXPECT_NE(data, nullptr) << name;
+        if (!data) return window;
+        for (int i = 0; i < window.width * window.height; ++i)
+            window.pixels.emplace_back(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
+        stbi_image_free(data);
+        return window;
+    };
+    const Window panel0 = readWindow("panel0.png"), panel1 = readWindow("panel1.png"), panel2 = readWindow("panel2.png"),
+                 panel3 = readWindow("panel3.png");
+    ASSERT_EQ(panel0.width, 852) << "the driver's coordinates are for an 852x472 window";
+    ASSERT_EQ(panel0.height, 472);
+
+    // The clicks went to buttons (blue, lighter than a field; white text on it): where the driver clicks Load before
+    // and after the thumbnail, and Remove. If these fail, the panel's layout changed: look at the
+    // panel*.png and move the coordinates in window_textures.sh.
+    auto buttonAt = [](const Window& w, int x, int y, const char* what) {
+        glm::dvec3 c = w.mean(x - 4, x + 5, y - 2, y + 3);
+        EXPECT_TRUE(c.b > 100.0 && c.b > c.r + 35.0) << what << " is not at " << x << " " << y << ": mean colour there "
+                                                   << c.r << " " << c.g << " " << c.b;
+    };
+    buttonAt(panel0, 324, 252, "Load (no texture)");
+    buttonAt(panel1, 324, 304, "Load (with a texture)");
+    buttonAt(panel1, 109, 284, "Remove");
+
+    // The thumbnail (48x48 at x 29, y 242) shows the loaded image's colour, and nothing was there before.
+    const glm::dvec3 thumbnail = panel1.mean(33, 73, 246, 286);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(thumbnail[c], kTexel[c], 3.0) << "thumbnail channel " << c;
+    EXPECT_GT(glm::length(panel0.mean(33, 73, 246, 286) - glm::dvec3(kTexel)), 100.0);
+    EXPECT_NEAR(panel2.mean(33, 73, 246, 286).b, kTexel.b, 3.0) << "a refused file leaves the thumbnail";
+    // The roughness slot (given good.png by the script) shows the channel it reads, G, as grey.
+    const glm::dvec3 roughness = panel0.mean(33, 73, 288, 326);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(roughness[c], kTexel.g, 3.0) << "roughness thumbnail channel " << c;
+
+    // The error of broken.png, red, under the field (y 316 to 340); none there before.
+    auto isErrorRed = [](glm::ivec3 c) { return c.r > 150 && c.g < 150 && c.b < 140 && c.r > c.g + 60; };
+    EXPECT_GT(panel2.count(20, 378, 316, 340, isErrorRed), 30) << "the error of broken.png is shown";
+    EXPECT_EQ(panel1.count(20, 378, 316, 340, isErrorRed), 0);
+    EXPECT_EQ(panel3.count(20, 378, 0, panel3.height, isErrorRed), 0) << "Remove clears the error";
+
+    // The render: the factor's grey, then factor x texture (blue), unchanged by the refused file,
+    // and the factor's grey again after Remove.
+    const ImageRgbF factor = readPfm(directory / "factor.pfm"), loaded = readPfm(directory / "loaded.pfm"),
+                    refused = readPfm(directory / "refused.pfm"), removed = readPfm(directory / "removed.pfm");
+    auto whole = [](const ImageRgbF& image) { return regionMean(image, 0, image.width, 0, image.height); };
+    EXPECT_NEAR(whole(factor).b / whole(factor).r, 1.0, 0.05);
+    EXPECT_GT(whole(loaded).b / whole(loaded).r, 10.0) << "the loaded image is in the render";
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(whole(refused)[c], whole(loaded)[c], 0.01 * whole(loaded)[c]) << "refused, channel " << c;
+        EXPECT_NEAR(whole(removed)[c], whole(factor)[c], 0.01 * whole(factor)[c]) << "removed, channel " << c;
+    }
+    Scene saved = loadScene(directory / "removed.json");
+    ASSERT_EQ(saved.materials.size(), 1u);
+    EXPECT_FALSE(saved.materials[0].baseColorTexture.used()) << "Remove took the texture away";
     fs::remove_all(directory);
 }
 

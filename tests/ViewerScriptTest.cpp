@@ -83,6 +83,7 @@ wait-reload
 status
 quit
 open-panel materials
+open-material gold
 reference ref.pfm
 wait-seconds 0.5
 clamp 10
@@ -104,7 +105,7 @@ save-paths out/paths.json
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 57u);
+    ASSERT_EQ(script.commands.size(), 58u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -141,13 +142,13 @@ TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     EXPECT_EQ(c[33].words, std::vector<std::string>{"out/render.pfm"});
     EXPECT_EQ(c[37].words, (std::vector<std::string>{"a.json", "b.json"}));
     EXPECT_EQ(c[40].verb, "quit");
-    EXPECT_EQ(c[49].words, std::vector<std::string>{"exactly"});
-    EXPECT_EQ(c[50].integer(0), 2);
-    EXPECT_EQ(c[51].integer(0), 3);
-    EXPECT_EQ(c[51].integer(1), 48);
-    EXPECT_EQ(c[53].words, std::vector<std::string>{"out/pixel.json"});
-    EXPECT_EQ(c[54].integer(0), 8);
-    EXPECT_EQ(c[56].words, std::vector<std::string>{"out/paths.json"});
+    EXPECT_EQ(c[50].words, std::vector<std::string>{"exactly"});
+    EXPECT_EQ(c[51].integer(0), 2);
+    EXPECT_EQ(c[52].integer(0), 3);
+    EXPECT_EQ(c[52].integer(1), 48);
+    EXPECT_EQ(c[54].words, std::vector<std::string>{"out/pixel.json"});
+    EXPECT_EQ(c[55].integer(0), 8);
+    EXPECT_EQ(c[57].words, std::vector<std::string>{"out/paths.json"});
 }
 
 TEST(ViewerScript, CommentsAndBlankLinesAreSkippedButCountedAsLines) {
@@ -349,7 +350,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 54u);
+    EXPECT_EQ(referenceVerbs().size(), 55u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
