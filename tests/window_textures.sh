@@ -12,16 +12,11 @@
 # Coordinates are window pixels from the window's top-left, for the layout the script sets up;
 # the test checks in its screenshots that a button is where each click goes. Prints the output.
 set -u
+source "$(dirname "$0")/window_driver.sh"
 binary=$1
-"$binary" scene.json --script script.txt > out.txt 2>&1 & pid=$!
-window=$(timeout 30 xdotool search --sync --name '^ptview' | head -1)
-if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
-xdotool windowfocus "$window" 2>/dev/null
+start_viewer scene.json --script script.txt
+focus_viewer
 
-wait_for_status() {  # $1: how many status lines to wait for
-  for _ in $(seq 1 600); do [ "$(grep -c '^status ' out.txt)" -ge "$1" ] && return 0; sleep 0.1; done
-  echo "timed out waiting for status line $1"; return 1
-}
 click() {  # $1 $2: where, in window coordinates
   xdotool mousemove --window "$window" "$1" "$2" sleep 0.3 click 1 sleep 0.3
 }
@@ -36,9 +31,4 @@ load() {  # $1: the field's y; types $2 into it (after selecting what it holds) 
 wait_for_status 1 && load 252 good.png && sleep 1 && touch scene.json
 wait_for_status 2 && load 304 broken.png && sleep 1 && touch scene.json
 wait_for_status 3 && click 109 284 && sleep 1 && touch scene.json
-( sleep 60; kill $pid ) >/dev/null 2>&1 & watchdog=$!
-wait $pid; code=$?
-kill $watchdog 2>/dev/null
-cat out.txt
-echo "viewer exit code $code"
-exit $code
+finish_viewer 60

@@ -7,18 +7,12 @@
 # touches scene.json, which ends the script's wait-reload. Prints the viewer's output and exits
 # with its exit code.
 set -u
+source "$(dirname "$0")/window_driver.sh"
 binary=$1; shift
 here=$(dirname "$0")
-"$binary" scene.json --script script.txt > out.txt 2>&1 & pid=$!
-window=$(timeout 30 xdotool search --sync --name '^ptview' | head -1)
-if [ -z "$window" ]; then echo "the viewer window never appeared"; kill $pid; exit 1; fi
-xdotool windowfocus "$window" 2>/dev/null
+start_viewer scene.json --script script.txt
+focus_viewer
 
-statuses() { grep -c '^status ' out.txt; }
-wait_for_status() {  # $1: how many status lines to wait for
-  for _ in $(seq 1 300); do [ "$(statuses)" -ge "$1" ] && return 0; sleep 0.1; done
-  echo "timed out waiting for status line $1"; return 1
-}
 count=0
 for step in "$@"; do
   count=$((count + 1))
@@ -34,9 +28,4 @@ for step in "$@"; do
   if kill -0 $pid 2>/dev/null; then echo "running after $step" >> steps.txt; else echo "exited after $step" >> steps.txt; fi
   touch scene.json
 done
-( sleep 30; kill $pid ) >/dev/null 2>&1 & watchdog=$!
-wait $pid; code=$?
-kill $watchdog 2>/dev/null
-cat out.txt
-echo "viewer exit code $code"
-exit $code
+finish_viewer
