@@ -770,6 +770,53 @@ TEST(GltfLoader, AGltfOpenedAloneSavesAsASceneWithOverrides) {
     EXPECT_TRUE(sameMaterial(again.materials[1], alone.materials[1]));
 }
 
+// Edits to a glTF file's lights (KHR_lights_punctual) are saved as whole lights under its entry's
+// "lights", keyed by name; an unedited light writes nothing, and the file reads back to the edits.
+TEST(GltfLoader, EditsToItsLightsAreSavedAsOverridesThatReadBack) {
+    ScratchFiles files("gltf_light_overrides");
+    GltfBuilder b;
+    b.node({{"mesh", unitTriangle(b)}});
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] =
+        Json::array({{{"type", "point"}, {"intensity", 10.0}, {"name", "lamp"}},
+                     {{"type", "spot"}, {"intensity", 3.0}, {"name", "torch"}, {"spot", {{"outerConeAngle", 0.4}}}}});
+    b.node({{"translation", {0, 2, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.node({{"translation", {1, 0, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    b.scene({0, 1, 2});
+    const std::filesystem::path gltf = files.write("lamps.gltf", b.gltfWithDataUri());
+    Scene scene = loadScene(gltf);
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_FALSE(Json::parse(sceneToJson(scene))["gltf"][0].contains("lights")) << "nothing edited, nothing written";
+    scene.lights[0].intensity = glm::vec3(5.0f, 4.0f, 3.0f);
+    scene.lights[0].position = glm::vec3(0.0f, 3.0f, 0.0f);
+    const std::filesystem::path saved = gltf.parent_path() / "lamps.json";
+    saveScene(scene, saved);
+    Json written = Json::parse(testing::readFileBytes(saved));
+    EXPECT_EQ(written["gltf"][0]["lights"],
+              Json::parse(R"({"lamps/lamp": {"type": "point", "position": [0, 3, 0], "intensity": [5, 4, 3]}})"));
+    EXPECT_FALSE(written.contains("lights")) << "the file's lights stay the file's";
+    Scene again = loadScene(saved);
+    ASSERT_EQ(again.lights.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(again.lights[i].name, scene.lights[i].name);
+        EXPECT_EQ(again.lights[i].importedFrom, 0);
+        expectNear(again.lights[i].position, scene.lights[i].position, 0.0f, "position read back");
+        expectNear(again.lights[i].intensity, scene.lights[i].intensity, 0.0f, "intensity read back");
+        EXPECT_EQ(again.lights[i].outerAngleDeg, scene.lights[i].outerAngleDeg);
+    }
+    EXPECT_EQ(sceneToJson(again), testing::readFileBytes(saved)) << "and writes the same again";
+
+    std::string unknown = loadError(files.write("unknown.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {}, "shapes": [], "gltf": [{"file": "lamps.gltf", "lights": {"lamps/nope": {"type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1]}}}]})"));
+    EXPECT_NE(unknown.find("unknown.json: /gltf/0/lights/lamps~1nope: no light of lamps.gltf has this name (it has "
+                           "\"lamps/lamp\", \"lamps/torch\")"),
+              std::string::npos)
+        << unknown;
+    std::string named = loadError(files.write("named.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+        "materials": {}, "shapes": [], "gltf": [{"file": "lamps.gltf", "lights": {"lamps/lamp": {"name": "x", "type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1]}}}]})"));
+    EXPECT_NE(named.find("named.json: /gltf/0/lights/lamps~1lamp/name: the key names the light"), std::string::npos) << named;
+}
+
 // The shipped helmet scene, unedited, writes exactly as before: no "materials" in its entry.
 TEST(GltfLoader, UneditedHelmetSceneWritesNoOverrides) {
     Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/helmet.json");

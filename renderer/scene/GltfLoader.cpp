@@ -1126,6 +1126,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
     scene.imports.push_back(SceneImport{path, Transform{}, {}});
     GltfContents contents = appendGltf(path, glm::mat4(1.0f), 0, scene);
     scene.imports[0].fileMaterials = scene.materials; // what "Save as" a scene file compares edits to
+    scene.imports[0].fileLights = scene.lights;
     scene.environment = glm::vec3(1.0f);
     if (contents.camera) {
         scene.camera = *contents.camera;

@@ -159,6 +159,9 @@ struct SceneImport {
     // in the entry): what the writer compares the scene's to, so that it writes only the edits.
     // Their texture indices stay valid, since textures are only ever appended.
     std::vector<Material> fileMaterials;
+    // The lights as the file made them (KHR_lights_punctual), before the entry's "lights": the
+    // same, for edits to them.
+    std::vector<Light> fileLights;
 };
 
 struct Scene {

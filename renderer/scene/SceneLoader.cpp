@@ -956,6 +956,7 @@ struct SceneDraft {
     std::vector<TextureRequest> textureRequests;
     std::vector<Pointer> importPlaces; // where each of scene.imports was declared
     std::vector<const Json*> importOverrides; // each entry's "materials", or null; applied once the file is read
+    std::vector<const Json*> importLightOverrides; // each entry's "lights", or null
 };
 
 // "gltf": [{"file": "helmet.glb", "transform": {...}, "materials": {...}}]: glTF files placed in
@@ -965,7 +966,7 @@ void readImports(const Json& value, const Pointer& at, SceneDraft& draft) {
     for (std::size_t i = 0; i < value.size(); ++i) {
         const Pointer entryAt = at / i;
         requireObject(value[i], entryAt);
-        checkKeys(value[i], entryAt, {"file", "transform", "materials"});
+        checkKeys(value[i], entryAt, {"file", "transform", "materials", "lights"});
         SceneImport entry;
         std::string file = readString(requireKey(value[i], entryAt, "file"), entryAt / "file");
         if (!isGltfFile(std::filesystem::u8path(file)))
@@ -978,6 +979,9 @@ void readImports(const Json& value, const Pointer& at, SceneDraft& draft) {
         draft.scene.imports.push_back(entry);
         draft.importPlaces.push_back(entryAt / "file");
         draft.importOverrides.push_back(overrides);
+        const Json* lightOverrides = optionalKey(value[i], "lights");
+        if (lightOverrides) requireObject(*lightOverrides, entryAt / "lights");
+        draft.importLightOverrides.push_back(lightOverrides);
     }
 }
 
@@ -1243,6 +1247,30 @@ void applyMaterialOverrides(const Json& overrides, const Pointer& at, const Scen
     }
 }
 
+// An entry's "lights": each key names a light the file made (in scene.lights from `first` on), its
+// value the whole light in the syntax of "lights" but for its name, which the key gives.
+void applyLightOverrides(const Json& overrides, const Pointer& at, const SceneImport& entry, int importIndex,
+                         std::size_t first, Scene& scene) {
+    for (auto it = overrides.begin(); it != overrides.end(); ++it) {
+        auto found = std::find_if(scene.lights.begin() + static_cast<std::ptrdiff_t>(first), scene.lights.end(),
+                                  [&](const Light& light) { return light.name == it.key(); });
+        if (found == scene.lights.end()) {
+            std::string names;
+            for (std::size_t i = 0; i < entry.fileLights.size() && i < 4; ++i)
+                names += (names.empty() ? "" : ", ") + ("\"" + entry.fileLights[i].name + "\"");
+            if (entry.fileLights.size() > 4) names += ", ...";
+            fail(at / it.key(), "no light of " + entry.file.filename().string() + " has this name (" +
+                                    (names.empty() ? "it has none" : "it has " + names) + ")");
+        }
+        if (it.value().is_object() && it.value().contains("name"))
+            fail(at / it.key() / "name", "the key names the light it overrides; a name is not allowed here");
+        Light light = readLight(it.value(), at / it.key(), static_cast<std::size_t>(found - scene.lights.begin()));
+        light.name = it.key();
+        light.importedFrom = importIndex;
+        *found = light;
+    }
+}
+
 // Appends each glTF file the scene places, after the scene's own parts, so that their indices
 // (and the file's own order) are those of the file, and applies the entry's material overrides.
 void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile) {
@@ -1252,12 +1280,17 @@ void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile) {
         SceneImport& entry = scene.imports[i];
         if (entry.file.is_relative()) entry.file = sceneFile.parent_path() / entry.file;
         const std::size_t first = scene.materials.size();
+        const std::size_t firstLight = scene.lights.size();
         try {
             appendGltf(entry.file, entry.transform.objectToWorld(), static_cast<int>(i), scene);
         } catch (const SceneError& error) {
             fail(draft.importPlaces[i], error.what());
         }
         entry.fileMaterials.assign(scene.materials.begin() + static_cast<std::ptrdiff_t>(first), scene.materials.end());
+        entry.fileLights.assign(scene.lights.begin() + static_cast<std::ptrdiff_t>(firstLight), scene.lights.end());
+        if (const Json* overrides = draft.importLightOverrides[i])
+            applyLightOverrides(*overrides, draft.importPlaces[i].parent_pointer() / "lights", entry, static_cast<int>(i),
+                                firstLight, scene);
         if (const Json* overrides = draft.importOverrides[i])
             applyMaterialOverrides(*overrides, draft.importPlaces[i].parent_pointer() / "materials", entry, first, scene,
                                    overrideTextures);

@@ -418,6 +418,28 @@ Json lightJson(const Light& light, const std::string& pointer) {
     return json;
 }
 
+// The lights of import importIndex that differ from the file's, each whole
+// but for its name, which is the key (docs/scene-format.md, `gltf`).
+Json lightOverridesJson(const Scene& scene, int importIndex, const std::string& pointer) {
+    const SceneImport& entry = scene.imports[static_cast<std::size_t>(importIndex)];
+    Json overrides = Json::object();
+    for (const Light& light : scene.lights) {
+        if (light.importedFrom != importIndex) continue;
+        // Compared field by field: a file's light need not be one our format can hold (a glTF spot's
+        // inner cone angle is 0 by default, which "inner_deg" refuses), and unedited it is not written.
+        auto file = std::find_if(entry.fileLights.begin(), entry.fileLights.end(), [&](const Light& l) {
+            return l.name == light.name && l.type == light.type && l.position == light.position &&
+                   l.intensity == light.intensity && l.direction == light.direction &&
+                   l.innerAngleDeg == light.innerAngleDeg && l.outerAngleDeg == light.outerAngleDeg;
+        });
+        if (file != entry.fileLights.end()) continue;
+        Json json = lightJson(light, joinPointer(pointer, light.name));
+        json.erase("name");
+        overrides[light.name] = std::move(json);
+    }
+    return overrides;
+}
+
 // A file's path (an environment map, a mesh) as the loader resolves it: relative to the directory the scene file is read
 // from, or absolute when the two share nothing below the root (a relative path would then climb
 // all the way up).
@@ -519,6 +541,8 @@ std::string sceneToJson(const Scene& scene) {
             if (!transform.empty()) json["transform"] = std::move(transform);
             Json overrides = overridesJson(scene, static_cast<int>(imports.size()), at + "/materials");
             if (!overrides.empty()) json["materials"] = std::move(overrides);
+            Json lightOverrides = lightOverridesJson(scene, static_cast<int>(imports.size()), at + "/lights");
+            if (!lightOverrides.empty()) json["lights"] = std::move(lightOverrides);
             imports.push_back(std::move(json));
         }
         root["gltf"] = std::move(imports);
