@@ -7,15 +7,8 @@
 namespace ptview {
 namespace {
 
-// Named comparisons rather than operator==: Scene.h does not define equality (C++17 cannot
-// default it), and a private operator== here could clash with one added there later. Floats
-// compare exactly: every value is a copy of one read from a file, never recomputed. Materials
-// compare with Scene.h's sameMaterial, every editable field.
-bool sameLight(const Light& a, const Light& b)
-{
-    return a.name == b.name && a.type == b.type && a.position == b.position && a.intensity == b.intensity &&
-           a.direction == b.direction && a.innerAngleDeg == b.innerAngleDeg && a.outerAngleDeg == b.outerAngleDeg;
-}
+// Named comparisons rather than operator== (Scene.h's sameMaterial and sameLight: C++17 cannot
+// default equality). Floats compare exactly: every value is a copy of one read from a file.
 
 // The camera less its resolution, which is the output size and so always the file's.
 bool sameView(const CameraDesc& a, const CameraDesc& b)

@@ -27,6 +27,11 @@ bool sameMaterial(const Material& a, const Material& b) {
            a.importedFrom == b.importedFrom;
 }
 
+bool sameLight(const Light& a, const Light& b) {
+    return a.name == b.name && a.type == b.type && a.position == b.position && a.intensity == b.intensity &&
+           a.direction == b.direction && a.innerAngleDeg == b.innerAngleDeg && a.outerAngleDeg == b.outerAngleDeg;
+}
+
 glm::mat4 Transform::objectToWorld() const {
     if (matrix) return *matrix;
     glm::mat4 matrix(rotationMatrix(rotationAxis, rotationDeg) * glm::mat3(glm::scale(glm::mat4(1.0f), scale)));

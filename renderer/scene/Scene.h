@@ -149,6 +149,9 @@ struct Light {
     int importedFrom = -1; // into Scene::imports when a glTF file made it (the writer skips it)
 };
 
+// Every field a user can edit, exactly, as sameMaterial.
+bool sameLight(const Light& a, const Light& b);
+
 // A glTF file the scene places ("gltf" in the scene JSON, or the file opened on its own). Its
 // meshes, materials, textures, shapes and lights are appended to the scene, each marked with
 // this import's index, so that saving writes this reference back rather than what it expanded to.

@@ -1225,6 +1225,17 @@ void resolveTextures(const std::vector<TextureRequest>& requests, const std::fil
     }
 }
 
+// The error for an override whose key names none of the parts (materials, lights) a glTF file made,
+// listing a few of their names.
+template <typename Part>
+[[noreturn]] void failNotInFile(const Pointer& at, const char* kind, const SceneImport& entry, const std::vector<Part>& parts) {
+    std::string names;
+    for (std::size_t i = 0; i < parts.size() && i < 4; ++i) names += (names.empty() ? "" : ", ") + ("\"" + parts[i].name + "\"");
+    if (parts.size() > 4) names += ", ...";
+    fail(at, std::string("no ") + kind + " of " + entry.file.filename().string() + " has this name (" +
+                 (names.empty() ? "it has none" : "it has " + names) + ")");
+}
+
 // An entry's "materials": each key names a material the file made (in scene.materials from
 // `first` on), its value an override of it (readMaterial with a base). Texture files the overrides
 // name become requests.
@@ -1232,15 +1243,7 @@ void applyMaterialOverrides(const Json& overrides, const Pointer& at, const Scen
                             Scene& scene, std::vector<TextureRequest>& textures) {
     for (auto it = overrides.begin(); it != overrides.end(); ++it) {
         int found = findMaterial(scene.materials, it.key());
-        if (found < static_cast<int>(first)) { // not one of this file's (-1: none at all)
-            std::string names;
-            std::size_t listed = 0;
-            for (const Material& material : entry.fileMaterials)
-                if (listed++ < 4) names += (names.empty() ? "" : ", ") + ("\"" + material.name + "\"");
-            if (entry.fileMaterials.size() > 4) names += ", ...";
-            fail(at / it.key(), "no material of " + entry.file.filename().string() + " has this name (" +
-                                    (names.empty() ? "it has none" : "it has " + names) + ")");
-        }
+        if (found < static_cast<int>(first)) failNotInFile(at / it.key(), "material", entry, entry.fileMaterials); // -1: none at all
         Material& material = scene.materials[static_cast<std::size_t>(found)];
         const Material file = material;
         material = readMaterial(file.name, it.value(), at / it.key(), static_cast<std::size_t>(found), textures, &file);
@@ -1254,14 +1257,7 @@ void applyLightOverrides(const Json& overrides, const Pointer& at, const SceneIm
     for (auto it = overrides.begin(); it != overrides.end(); ++it) {
         auto found = std::find_if(scene.lights.begin() + static_cast<std::ptrdiff_t>(first), scene.lights.end(),
                                   [&](const Light& light) { return light.name == it.key(); });
-        if (found == scene.lights.end()) {
-            std::string names;
-            for (std::size_t i = 0; i < entry.fileLights.size() && i < 4; ++i)
-                names += (names.empty() ? "" : ", ") + ("\"" + entry.fileLights[i].name + "\"");
-            if (entry.fileLights.size() > 4) names += ", ...";
-            fail(at / it.key(), "no light of " + entry.file.filename().string() + " has this name (" +
-                                    (names.empty() ? "it has none" : "it has " + names) + ")");
-        }
+        if (found == scene.lights.end()) failNotInFile(at / it.key(), "light", entry, entry.fileLights);
         if (it.value().is_object() && it.value().contains("name"))
             fail(at / it.key() / "name", "the key names the light it overrides; a name is not allowed here");
         Light light = readLight(it.value(), at / it.key(), static_cast<std::size_t>(found - scene.lights.begin()));

@@ -425,13 +425,10 @@ Json lightOverridesJson(const Scene& scene, int importIndex, const std::string& 
     Json overrides = Json::object();
     for (const Light& light : scene.lights) {
         if (light.importedFrom != importIndex) continue;
-        // Compared field by field: a file's light need not be one our format can hold (a glTF spot's
+        // Compared as fields, not as written: a file's light need not be one our format can hold (a glTF spot's
         // inner cone angle is 0 by default, which "inner_deg" refuses), and unedited it is not written.
-        auto file = std::find_if(entry.fileLights.begin(), entry.fileLights.end(), [&](const Light& l) {
-            return l.name == light.name && l.type == light.type && l.position == light.position &&
-                   l.intensity == light.intensity && l.direction == light.direction &&
-                   l.innerAngleDeg == light.innerAngleDeg && l.outerAngleDeg == light.outerAngleDeg;
-        });
+        auto file = std::find_if(entry.fileLights.begin(), entry.fileLights.end(),
+                                 [&](const Light& l) { return sameLight(l, light); });
         if (file != entry.fileLights.end()) continue;
         Json json = lightJson(light, joinPointer(pointer, light.name));
         json.erase("name");
