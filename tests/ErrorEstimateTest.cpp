@@ -78,6 +78,43 @@ TEST(ErrorEstimate, JudgesALoneBrightSampleAgainstTheNeighbourhood) {
     EXPECT_FALSE(estimate.reliable) << "one pixel carries it: effective pixels " << estimate.effectivePixels;
 }
 
+// A dark surface (mean 0.001) with 100 pixels, 6 apart, whose mean (1) rests on two bright
+// samples' worth (mean^2 / Var = 2): a light smaller than a pixel, or fireflies on the dark surface.
+// Judged against its own mean such a pixel's relative MSE is about 1 / (1 - 0.5); against its 5x5
+// neighbourhood, the first whose brightness is known, nearly a hundred times that. Which is right
+// decides the whole estimate, so it gives no number. With over three samples' worth (Var 0.3) the
+// pixel's own mean counts: both readings agree and the estimate is their common value.
+PixelStatistics darkSurfaceWithBrightPixels(float brightVarianceOfMean) {
+    PixelStatistics stats = uniformStatistics(64, 64, 64, 0.001f, 0.0f);
+    for (int j = 0; j < 10; ++j)
+        for (int i = 0; i < 10; ++i) {
+            stats.mean.set(3 + 6 * i, 3 + 6 * j, glm::vec3(1.0f));
+            stats.varianceOfMean.set(3 + 6 * i, 3 + 6 * j, glm::vec3(brightVarianceOfMean));
+        }
+    return stats;
+}
+
+TEST(ErrorEstimate, GivesNoNumberWhereAFewBrightSamplesCouldBeAFireflyOrASmallLight) {
+    ImageRgbF earlier = uniformStatistics(64, 64, 32, 0.001f, 0.0f).mean; // the bright pixels were dark
+    ErrorEstimate ambiguous = estimateError(darkSurfaceWithBrightPixels(0.5f), earlier, 32, SamplerMode::Random);
+    EXPECT_GT(ambiguous.effectivePixels, kMinEffectivePixels) << "many pixels carry it";
+    EXPECT_FALSE(ambiguous.reliable);
+    EXPECT_NE(std::string(ambiguous.unreliableReason).find("firefly"), std::string::npos) << ambiguous.unreliableReason;
+    // Own as floor: change^2 / (1 - 0.5 + eps) per bright channel; own once known: over the 5x5
+    // neighbourhood's (1 + 24 * 0.001)^2 / 625 - 0.5 / 625 + eps. The estimate is their geometric mean.
+    double change = 1.0 - double(0.001f);
+    double ownAsFloor = change * change / (1.0 - 0.5 + kRelativeMseEpsilon);
+    double around = (1.0 + 24 * double(0.001f)) / 25.0;
+    double ownOnceKnown = change * change / (around * around - 0.5 / 625.0 + kRelativeMseEpsilon);
+    EXPECT_GT(ownOnceKnown, 4.0 * ownAsFloor);
+    EXPECT_NEAR(ambiguous.relativeMse, std::sqrt(ownAsFloor * ownOnceKnown) * 100.0 / (64.0 * 64.0), 1e-3 * ambiguous.relativeMse);
+
+    ErrorEstimate known = estimateError(darkSurfaceWithBrightPixels(0.3f), earlier, 32, SamplerMode::Random);
+    EXPECT_TRUE(known.reliable) << known.unreliableReason;
+    double ownTerm = change * change / (1.0 - double(0.3f) + kRelativeMseEpsilon);
+    EXPECT_NEAR(known.relativeMse, ownTerm * 100.0 / (64.0 * 64.0), 1e-3 * known.relativeMse);
+}
+
 TEST(ErrorEstimate, GivesNoNumberWithoutAnEarlierMeanOrForTheGridSampler) {
     PixelStatistics stats = uniformStatistics(16, 16, 64, 1.0f, 1e-4f);
     ImageRgbF earlier = uniformStatistics(16, 16, 16, 1.1f, 0.0f).mean;
@@ -120,28 +157,31 @@ TEST(ErrorEstimate, TheViewerShowsANumberOnceItKeptAMeanAtHalfTheSamples) {
 
 // ---- Against the true error on real renders ---------------------------------------------------
 //
-// Renders of each scene (32x32; mis 64x64, see SceneCase) with all four integrators and the random
-// and Sobol' samplers, with checkpoints at 8, 16, ..., 1024 spp (mis: 512); the estimate at n uses
-// the mean at n/2. The true error is
+// Renders of each scene (32x32; mis 256x256, see SceneCase) with all four integrators and the
+// random and Sobol' samplers, with checkpoints at 8, 16, ..., 1024 spp; the estimate at n uses the
+// mean at n/2. The true error is
 // the relative MSE against a reference of another seed, random sampler, 2048 spp, minus the
 // reference's own relative variance (its mean of Var[ref] / (ref^2 + eps), which the random
 // sampler's per-pixel variance estimates without bias): E[(x - ref)^2] = E[(x - mu)^2] + Var[ref].
 // A checkpoint whose true error is below that noise floor cannot be judged and is skipped. Nor can
 // one whose true error is itself carried by fewer than kMinEffectivePixels pixel channels (the
 // same count the estimate needs before it shows a number): there the true error is a random
-// number of a few pixels (a standard error over 18% of itself), no yardstick for a factor of 2.
-// Over all checkpoints above the noise floor, shown or not, the estimate must also have no
-// systematic bias: the geometric mean of estimate / true per integrator and sampler stays within
-// the same factor of 2 (the former 3x3-box estimate read 0.26 of the true error for naive on mis).
+// number of a few pixels (a standard error over 18% of itself; on mis a firefly or the smallest
+// light, whose reference pixel is itself uncertain), no yardstick for a factor of 2.
+// Wherever a judged checkpoint shows a number it must be within a factor of 2, and a share of the
+// judged checkpoints (SceneCase) must show one, so that "-" everywhere cannot pass.
 // naive and full converge to global illumination (reference: full); direct and mis each to their
 // own direct-lighting image (they differ behind mirrors and glass), so each has its own reference.
 
 constexpr int kFirstCheckedSpp = 16;
 constexpr int kReferenceSpp = 2048;
+constexpr int kLargestSpp = 1024;
 constexpr std::uint32_t kRunSeed = 1;
 constexpr std::uint32_t kReferenceSeed = 7919;
 // The bound the estimator is built to hold (in relative error, the square root of relMSE).
 constexpr double kFactor = 2.0;
+// The bound on its systematic bias: the geometric mean of estimate / true per integrator and sampler.
+constexpr double kBiasFactor = 1.5;
 
 struct Reference {
     ImageRgbF mean;
@@ -180,7 +220,7 @@ Reference renderReference(PathTracer& tracer, Integrator integrator) {
     settings.sampleBudget = kReferenceSpp;
     tracer.setSettings(settings);
     tracer.restart();
-    for (int i = 0; i < kReferenceSpp; ++i) tracer.renderSample();
+    tracer.renderSamples(kReferenceSpp);
     PixelStatistics statistics = tracer.readStatistics();
     Reference reference{statistics.mean, 0.0};
     double sum = 0.0;
@@ -203,13 +243,12 @@ std::string caseName(Integrator integrator, SamplerMode sampler) {
 struct SceneCase {
     const char* name;
     int imageSize;
-    int largestSpp;
-    // Of the judged checkpoints, the share that must get a number ("-" everywhere would pass the
-    // bound trivially). The mis scene's error lives in a handful of pixels (the spheres'
-    // reflections of its small lights and the lights themselves, found by rare samples): at 64x64
-    // its true error is carried by fewer than 64 effective pixel channels at every checkpoint, so
-    // none is judged and the estimate rightly declines nearly everywhere; there the geometric-mean
-    // bound is what holds it. (64x64 and up to 512 spp: what the test's time allows.)
+    // Of the judged checkpoints, the share that must get a number. The mis scene's error lives
+    // in few pixels (its smallest light covers about one pixel, and the spheres' reflections of
+    // the lights are found by rare samples): at 64x64 its true error was carried by fewer than 64
+    // effective pixel channels at every checkpoint, so it is rendered at its own resolution, where
+    // about 20 of its 56 checkpoints are judged; the estimate declines at about a third of those,
+    // where the smallest light's pixels decide its value (ErrorEstimate.h).
     double minShownShare;
 };
 
@@ -237,8 +276,8 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
             const Reference& reference = references.at(referenceIntegrator(integrator));
             ImageRgbF earlier;
             int earlierSpp = 0;
-            for (int spp = kFirstCheckedSpp / 2; spp <= GetParam().largestSpp; spp *= 2) {
-                while (tracer.sampleCount() < spp) tracer.renderSample();
+            for (int spp = kFirstCheckedSpp / 2; spp <= kLargestSpp; spp *= 2) {
+                tracer.renderSamples(spp - tracer.sampleCount());
                 PixelStatistics statistics = tracer.readStatistics();
                 if (earlierSpp > 0) {
                     double measured = compareToReference(statistics.mean, reference.mean).relativeMse;
@@ -278,27 +317,23 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
                 checkpoints.size());
     EXPECT_GE(shown, GetParam().minShownShare * judged) << "the estimate declines too often";
 
-    // No systematic bias: per case, the geometric mean of estimate / true over every checkpoint
-    // above the noise floor, whether it shows a number or "-".
+    // No systematic bias: per case, the geometric mean of estimate / true over the judged
+    // checkpoints that show a number stays near 1 (within 1.5x; the factor of 2 above bounds each).
     struct LogRatios {
-        double sum = 0.0, lowest = INFINITY, highest = -INFINITY;
+        double sum = 0.0;
         int count = 0;
     };
     std::map<std::string, LogRatios> logRatios; // of log(estimate / true)
     for (const Checkpoint& c : checkpoints) {
-        if (!c.aboveNoise) continue;
+        if (!c.judged || !c.estimate.reliable) continue;
         LogRatios& logs = logRatios[caseName(c.integrator, c.sampler)];
-        double logRatio = std::log(relativeError(c.estimate.relativeMse) / relativeError(c.trueRelativeMse));
-        logs.sum += logRatio;
-        logs.lowest = std::min(logs.lowest, logRatio);
-        logs.highest = std::max(logs.highest, logRatio);
+        logs.sum += std::log(relativeError(c.estimate.relativeMse) / relativeError(c.trueRelativeMse));
         ++logs.count;
     }
     for (const auto& [name, logs] : logRatios) {
         double geometricMean = std::exp(logs.sum / logs.count);
-        std::printf("%s %-14s over all %d checkpoints above the noise, shown or not: %.2f .. %.2f, geometric mean %.2f\n",
-                    scene, name.c_str(), logs.count, std::exp(logs.lowest), std::exp(logs.highest), geometricMean);
-        EXPECT_TRUE(geometricMean >= 1.0 / kFactor && geometricMean <= kFactor) << scene << " " << name << ": " << geometricMean;
+        std::printf("%s %-14s geometric mean over %d: %.2f\n", scene, name.c_str(), logs.count, geometricMean);
+        EXPECT_TRUE(geometricMean >= 1.0 / kBiasFactor && geometricMean <= kBiasFactor) << scene << " " << name << ": " << geometricMean;
     }
 
     // The split view: two renders whose true errors differ clearly (by 1.5x in relative error)
@@ -316,12 +351,12 @@ TEST_P(ErrorEstimateOnScene, TracksTheTrueErrorAndOrdersRendersAsItDoes) {
                 << relativeError(b.estimate.relativeMse) << ")";
         }
     std::printf("%s: %d clearly different pairs ordered\n", scene, pairs);
-    if (GetParam().minShownShare > 0.0) { EXPECT_GT(pairs, 0); }
+    EXPECT_GT(pairs, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ErrorEstimateOnScene,
-                         ::testing::Values(SceneCase{"cornell", 32, 1024, 0.5}, SceneCase{"cornell_spheres", 32, 1024, 0.5},
-                                           SceneCase{"mis", 64, 512, 0.0}),
+                         ::testing::Values(SceneCase{"cornell", 32, 0.8}, SceneCase{"cornell_spheres", 32, 0.8},
+                                           SceneCase{"mis", 256, 0.5}),
                          [](const ::testing::TestParamInfo<SceneCase>& info) { return std::string(info.param.name); });
 
 } // namespace

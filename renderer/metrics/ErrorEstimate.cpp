@@ -59,15 +59,26 @@ constexpr int kNeighbourhoodRadii[] = {0, 1, 2, 4, 8};
 // A neighbourhood's squared mean is used once its standard error is at most this share of
 // mean^2 + epsilon (the relative error it adds to the estimate is about half that).
 constexpr double kConvergedBrightnessRelativeError = 0.25;
+// A pixel's own mean is its brightness (in the second estimate) once mean^2 >= this * Var[mean]:
+// about three samples' worth of it, where a firefly (one or two bright samples) gives 1 to 2.
+constexpr double kOwnMeanSamples = 3.0;
+// The two estimates differ by more than this (relative MSE; 2x in relative error) where a few
+// pixels' rare bright samples decide the answer: no number then.
+constexpr double kMaxDenominatorDisagreement = 4.0;
 
-// mean^2 + epsilon of the image the pixel converges to, estimated: see the header.
-glm::dvec3 convergedBrightness(const NeighbourhoodSums& sums, int x, int y, glm::vec3 ownMean, glm::vec3 ownVariance) {
-    glm::dvec3 brightness(0.0);
-    for (int c = 0; c < 3; ++c) {
-        double own = double(ownMean[c]) * ownMean[c] - double(ownVariance[c]);
-        brightness[c] = std::max(own, 0.0) + kRelativeMseEpsilon;
-    }
+// mean^2 + epsilon of the image the pixel converges to, estimated two ways (see the header): the
+// pixel's own unbiased mean^2 as a floor under its neighbourhood's, and the pixel's own mean alone
+// once kOwnMeanSamples samples' worth carry it, else its neighbourhood's.
+struct ConvergedBrightness {
+    glm::dvec3 ownAsFloor;
+    glm::dvec3 ownOnceKnown;
+};
+
+ConvergedBrightness convergedBrightness(const NeighbourhoodSums& sums, int x, int y, glm::vec3 ownMean,
+                                        glm::vec3 ownVariance) {
+    glm::dvec3 own(0.0), neighbourhood(0.0);
     bool settled[3] = {false, false, false};
+    for (int c = 0; c < 3; ++c) own[c] = std::max(double(ownMean[c]) * ownMean[c] - double(ownVariance[c]), 0.0);
     for (int radius : kNeighbourhoodRadii) {
         glm::dvec3 mean, variance;
         sums.around(x, y, radius, mean, variance);
@@ -79,10 +90,17 @@ glm::dvec3 convergedBrightness(const NeighbourhoodSums& sums, int x, int y, glm:
             bool known = 2.0 * std::abs(mean[c]) * std::sqrt(variance[c]) <=
                          kConvergedBrightnessRelativeError * (squared + kRelativeMseEpsilon);
             if (!known && !widest) continue;
-            brightness[c] = std::max(brightness[c], std::max(squared - variance[c], 0.0) + kRelativeMseEpsilon);
+            neighbourhood[c] = std::max(squared - variance[c], 0.0);
             settled[c] = true;
         }
         if (settled[0] && settled[1] && settled[2]) break;
+    }
+    ConvergedBrightness brightness;
+    for (int c = 0; c < 3; ++c) {
+        brightness.ownAsFloor[c] = std::max(own[c], neighbourhood[c]) + kRelativeMseEpsilon;
+        // mean^2 / Var[mean]: how many samples' worth carry the mean (one bright sample: about 1).
+        bool ownKnown = double(ownMean[c]) * ownMean[c] >= kOwnMeanSamples * double(ownVariance[c]);
+        brightness.ownOnceKnown[c] = (ownKnown ? own[c] : neighbourhood[c]) + kRelativeMseEpsilon;
     }
     return brightness;
 }
@@ -108,7 +126,7 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
     // E[(x_n - x_m)^2] = Var[x_m] - Var[x_n] = Var[x_n] (n/m - 1) for independent samples.
     const double varianceScale = 1.0 / (double(n) / double(earlierSamples) - 1.0);
     const NeighbourhoodSums sums(mean, statistics.varianceOfMean);
-    double sum = 0.0, sumSquares = 0.0;
+    double sum = 0.0, sumSquares = 0.0, sumOwnOnceKnown = 0.0;
     long long terms = 0;
     for (int y = 0; y < mean.height; ++y) {
         for (int x = 0; x < mean.width; ++x) {
@@ -116,26 +134,36 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
                 !finitePixel(earlierMean, x, y))
                 continue;
             glm::vec3 now = mean.at(x, y), before = earlierMean.at(x, y), variance = statistics.varianceOfMean.at(x, y);
-            glm::dvec3 brightness = convergedBrightness(sums, x, y, now, variance);
+            ConvergedBrightness brightness = convergedBrightness(sums, x, y, now, variance);
             for (int c = 0; c < 3; ++c) {
                 double change = double(now[c]) - double(before[c]);
-                double term = change * change * varianceScale / brightness[c];
+                double squaredError = change * change * varianceScale;
+                double term = squaredError / brightness.ownAsFloor[c];
                 sum += term;
                 sumSquares += term * term;
+                sumOwnOnceKnown += squaredError / brightness.ownOnceKnown[c];
                 ++terms;
             }
         }
     }
     if (terms == 0) return estimate;
-    estimate.relativeMse = sum / double(terms);
     if (sum <= 0.0) {
         estimate.unreliableReason = "nothing has changed yet (no light found, or a black image)";
         return estimate;
     }
+    // ownOnceKnown's denominators are never larger than ownAsFloor's, so its sum is never smaller.
+    estimate.relativeMse = std::sqrt(sum * sumOwnOnceKnown) / double(terms);
     estimate.effectivePixels = sum * sum / sumSquares;
-    estimate.reliable = estimate.effectivePixels >= kMinEffectivePixels;
-    if (!estimate.reliable)
+    if (estimate.effectivePixels < kMinEffectivePixels) {
         estimate.unreliableReason = "too few pixels carry the estimate yet (a few bright samples dominate it)";
+        return estimate;
+    }
+    if (sumOwnOnceKnown > kMaxDenominatorDisagreement * sum) {
+        estimate.unreliableReason = "pixels whose mean rests on a few bright samples decide it: a firefly or a light "
+                                    "smaller than a pixel, which the render cannot tell apart yet";
+        return estimate;
+    }
+    estimate.reliable = true;
     return estimate;
 }
 

@@ -13,20 +13,33 @@
 //                the same accumulation at m <= n/2 samples. For independent samples its
 //                expectation is exactly Var[x_n]; it measures the error the samples actually
 //                make, so a sampler that converges faster (Sobol') gets a smaller number.
-//   denominator  max(x_n^2 - Var^[x_n], X^2 - Var^[X]) + kRelativeMseEpsilon, where x^2 - Var^ is
-//                an unbiased estimate of mean^2 (near 0 for a pixel carried by one bright sample)
-//                and X is the mean of the smallest neighbourhood (the pixel alone, 3x3, 5x5, 9x9,
-//                17x17) whose mean^2 is known to a quarter of mean^2 + epsilon (its standard error,
-//                2 |X| sqrt(Var^[X]), with Var^[X] = sum Var^[x] / count^2), else the 17x17 one: a
-//                bright pixel keeps its own value, a lone hit is judged against a neighbourhood
-//                large enough to say how bright the surface really is, as the true error judges it
-//                against the converged value. (A fixed 3x3 box failed where the light is found by
-//                rare samples: one hit among 9 pixels made the box 1 / (9 p n) times too bright,
-//                and the estimate read 0.09 of the true error for naive on mis at 16 spp.)
+//   denominator  mean^2 + kRelativeMseEpsilon of the image the pixel converges to, estimated from
+//                x^2 - Var^[x_n] (an unbiased estimate of the pixel's own mean^2, near 0 for a
+//                pixel carried by one bright sample) and X^2 - Var^[X], X the mean of the smallest
+//                neighbourhood (the pixel alone, 3x3, 5x5, 9x9, 17x17) whose mean^2 is known to a
+//                quarter of mean^2 + epsilon (its standard error, 2 |X| sqrt(Var^[X]), with
+//                Var^[X] = sum Var^[x] / count^2), else the 17x17 one: a lone hit is judged against
+//                a neighbourhood large enough to say how bright the surface really is, as the true
+//                error judges it against the converged value. (A fixed 3x3 box failed where the
+//                light is found by rare samples: one hit among 9 pixels made the box 1 / (9 p n)
+//                times too bright, and the estimate read 0.09 of the true error for naive on mis.)
+//
+// Where the pixel's own mean rests on a few bright samples, two readings are equally plausible
+// from the render: a light smaller than the pixel, whose own mean is right however poorly known
+// (judged against its dark neighbourhood its error would be hundreds of times too large), or a
+// firefly, a rare path on a dim surface, whose neighbourhood is right (judged against its own
+// mean, inflated by that very sample, its error would be far too small). Both are computed: with
+// the own x^2 - Var^ as a floor under the neighbourhood's ("own as floor"), and with the own one
+// only once the mean carries kOwnMeanSamples samples' worth (x^2 >= 3 Var^), else the
+// neighbourhood's ("own once known"). The estimate is their geometric mean, and it is no number
+// where they differ by more than 4x (2x in relative error): there a few pixels decide the answer,
+// and no estimate from the render can know which reading is right. (The floor alone read 0.3 to
+// 0.75 of the true error with `full` on mis, where fireflies carry it; the second alone 2 to 20
+// times it with `direct`, where the smallest light is a pixel.)
 //
 // The estimate is a mean of per-pixel terms that each rest on one squared difference, so its own
 // relative standard error is about sqrt(2 / effectivePixels), effectivePixels = (sum c)^2 / sum c^2
-// over the per-channel terms c (a grey pixel counts up to 3).
+// over the per-channel terms c (own as floor; a grey pixel counts up to 3).
 // It counts as reliable from kMinEffectivePixels on (a standard error of 18% of itself, so that
 // three of them stay well inside a factor of 2 in relative error); before that, and for the grid
 // sampler (the same deterministic pattern in every pixel: its changes are not noise), it is not.
