@@ -17,6 +17,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Shift+left drag", "pan"},
     {"Wheel", "zoom"},
     {"Alt+click", "pin the pixel under the cursor in the Pixel panel (again: unpin)"},
+    {"Ctrl+click", "focus the lens on the surface under the cursor (Camera panel's aperture)"},
     {"W A S D", "fly (Shift: faster)"},
     {"Q E", "down / up (Shift: faster)"},
     {"F", "reset camera"},

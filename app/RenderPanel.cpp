@@ -83,7 +83,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     itemTooltip("fragment: a full-screen triangle (OpenGL 4.1); compute: a dispatch (OpenGL 4.3), which uses all of a\n"
                 "data-centre GPU's cores. At start the viewer took the one measured faster on this scene and device\n"
                 "(compute only where clearly faster), remembered per device and program.");
-    if (!model.backendChoice.empty()) ImGui::TextDisabled("auto: %s", model.backendChoice.c_str());
+    if (!model.backendChoice.empty()) noteText("auto: " + model.backendChoice);
     const PathTracer& tracer = session.tracer(ViewerSession::Side::Left);
     ImGui::TextDisabled("%d programs compiled (hover: this scene's features)", tracer.programsCompiled());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tracer.features().describe().c_str());

@@ -467,8 +467,8 @@ void ViewerWindow::drawCompareLabels() {
         ViewerSession::ViewStats stats = session_.stats(side);
         char text[160];
         char error[32] = "-"; // until the estimate is reliable (the Stats panel's tooltip says why)
-        if (stats.error.reliable) std::snprintf(error, sizeof(error), "%.2f%%", 100.0 * relativeError(stats.error.relativeMse));
-        std::snprintf(text, sizeof(text), "%s / %s / depth %d\n%d spp, %.1f s, error ~%s", integratorName(settings.integrator),
+        if (stats.error.reliable) std::snprintf(error, sizeof(error), "~%.2f%%", 100.0 * relativeError(stats.error.relativeMse));
+        std::snprintf(text, sizeof(text), "%s / %s / depth %d\n%d spp, %.1f s, error %s", integratorName(settings.integrator),
                       samplerModeName(settings.sampler), settings.maxDepth, stats.samples, stats.renderSeconds, error);
         ImVec2 size = ImGui::CalcTextSize(text);
         ImVec2 position(alignRight ? x - size.x - 10.0f : x + 10.0f, top);
