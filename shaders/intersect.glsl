@@ -78,9 +78,10 @@ float intersectSphere(Ray ray, vec4 sphere) {
 const float kQuadHitError = 1e-6; // ~16 ulps: the rounding of o + t*d - center, t's included
 
 float intersectQuad(Ray ray, Quad quad) {
-    float denom = dot(ray.direction, quad.normal);
+    vec3 normal = cross(quad.reciprocalU, quad.reciprocalV); // along cross(u, v), see fetchQuad
+    float denom = dot(ray.direction, normal);
     if (denom == 0.0) return kInfinity;
-    float t = dot(quad.center - ray.origin, quad.normal) / denom;
+    float t = dot(quad.center - ray.origin, normal) / denom;
     if (!(t > 0.0)) return kInfinity;
     vec3 offset = ray.origin + t * ray.direction - quad.center;
     float error = kQuadHitError * (maxMagnitude(ray.origin) + t + quad.centerMagnitude);
@@ -189,7 +190,7 @@ bool intersectScene(Ray ray, out Hit hit) {
         Quad quad = fetchQuad(quadHit);
         vec3 u, v;
         quadEdges(quadHit, u, v);
-        hit.normalGeom = normalize(quad.normal);
+        hit.normalGeom = normalize(quadNormal(quadHit));
         hit.uv = quadSurfaceUv(hit.posWorld, quad);
         quadSurfaceTangents(u, v, tangent, bitangent);
         hit.posWorld = quadSurfacePoint(hit.posWorld, quad, u, v, spawnOffset(hit.posWorld));

@@ -42,20 +42,26 @@ const int kQuadTexels = 6;
 struct Quad {
     vec3 center;
     float centerMagnitude; // max |component|
-    vec3 normal;           // cross(u, v)
     vec3 reciprocalU;
     float reciprocalUSum;  // |x| + |y| + |z| of reciprocalU
     vec3 reciprocalV;
     float reciprocalVSum;
 };
 
-// What a ray test reads (four texels); quadEdges reads u and v where they are needed.
+// What a ray test reads: three texels. Its plane's normal is cross(reciprocalU, reciprocalV)
+// there (parallel to cross(u, v)): on llvmpipe a cross product costs less than a fourth texel
+// read in the loops over every quad. quadNormal and quadEdges read the rest where it is needed.
 Quad fetchQuad(int quad) {
     vec4 centerAndMagnitude = texelFetch(uQuads, kQuadTexels * quad);
     vec4 reciprocalU = texelFetch(uQuads, kQuadTexels * quad + 2);
     vec4 reciprocalV = texelFetch(uQuads, kQuadTexels * quad + 3);
-    return Quad(centerAndMagnitude.xyz, centerAndMagnitude.w, texelFetch(uQuads, kQuadTexels * quad + 1).xyz,
-                reciprocalU.xyz, reciprocalU.w, reciprocalV.xyz, reciprocalV.w);
+    return Quad(centerAndMagnitude.xyz, centerAndMagnitude.w, reciprocalU.xyz, reciprocalU.w, reciprocalV.xyz,
+                reciprocalV.w);
+}
+
+// cross(u, v): the front side.
+vec3 quadNormal(int quad) {
+    return texelFetch(uQuads, kQuadTexels * quad + 1).xyz;
 }
 
 // The half-edges u and v of a quad.
