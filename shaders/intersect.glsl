@@ -7,6 +7,8 @@
 #include "surface_textures.glsl"
 #include "normal_map.glsl"
 #include "surface_alpha.glsl"
+// kLightQuad, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
+#include "enums.glsl"
 
 // Ray offsets (spawnRay): relative to the hit position's magnitude and to the scene's size.
 const float kRelativeOffset = 1e-4;
@@ -65,9 +67,8 @@ float intersectSphere(Ray ray, vec4 sphere) {
     return intersectSphereAfter(ray, sphere, 0.0);
 }
 
-// Parallelogram center ± u ± v. `dual` turns the hit offset into the coordinates along u and v
-// without assuming u and v orthogonal: a = dot(offset, cross(v, dual)), b = dot(offset,
-// cross(dual, u)), the reciprocal basis of (u, v).
+// Parallelogram center ± u ± v (scene_data.glsl Quad). The reciprocal basis turns the hit offset
+// into the coordinates along u and v without assuming u and v orthogonal.
 //
 // The coordinate test is conservative by the rounding error of the hit offset (a few ulps of the
 // magnitudes that went into it, mapped through the reciprocal basis): a ray aimed exactly at an
@@ -76,18 +77,16 @@ float intersectSphere(Ray ray, vec4 sphere) {
 // small beside their distance from the origin.
 const float kQuadHitError = 1e-6; // ~16 ulps: the rounding of o + t*d - center, t's included
 
-float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
-    vec3 n = cross(u, v);
-    float denom = dot(ray.direction, n);
+float intersectQuad(Ray ray, Quad quad) {
+    vec3 normal = cross(quad.reciprocalU, quad.reciprocalV); // along cross(u, v), see fetchQuad
+    float denom = dot(ray.direction, normal);
     if (denom == 0.0) return kInfinity;
-    float t = dot(center - ray.origin, n) / denom;
+    float t = dot(quad.center - ray.origin, normal) / denom;
     if (!(t > 0.0)) return kInfinity;
-    vec3 offset = ray.origin + t * ray.direction - center;
-    vec3 du = cross(v, dual);
-    vec3 dv = cross(dual, u);
-    float error = kQuadHitError * (maxMagnitude(ray.origin) + t + maxMagnitude(center));
-    return (abs(dot(offset, du)) <= 1.0 + error * dot(abs(du), vec3(1.0)) &&
-            abs(dot(offset, dv)) <= 1.0 + error * dot(abs(dv), vec3(1.0))) ? t : kInfinity;
+    vec3 offset = ray.origin + t * ray.direction - quad.center;
+    float error = kQuadHitError * (maxMagnitude(ray.origin) + t + quad.centerMagnitude);
+    return (abs(dot(offset, quad.reciprocalU)) <= 1.0 + error * quad.reciprocalUSum &&
+            abs(dot(offset, quad.reciprocalV)) <= 1.0 + error * quad.reciprocalVSum) ? t : kInfinity;
 }
 
 // The point of a quad a ray hit, rebuilt from its coordinates (so it lies on the quad's plane up
@@ -96,13 +95,13 @@ float intersectQuad(Ray ray, vec3 center, vec3 u, vec3 v, vec3 dual) {
 // spawnRay pushes it off this quad only, so a ray leaving towards the other quad starts on its
 // plane at t = 0 and passes through the seam. Moved inside by as much as spawnRay moves it off,
 // the vertex sits at 45 degrees from the edge, inside any corner of more than 45 degrees.
-vec3 quadSurfacePoint(vec3 p, vec3 center, vec3 u, vec3 v, vec3 dual, float inset) {
-    vec3 du = cross(v, dual); // 1 / length(du): the distance from an edge along v per unit of a
-    vec3 dv = cross(dual, u);
-    vec3 offset = p - center;
-    float aMax = max(1.0 - inset * length(du), 0.0);
-    float bMax = max(1.0 - inset * length(dv), 0.0);
-    return center + clamp(dot(offset, du), -aMax, aMax) * u + clamp(dot(offset, dv), -bMax, bMax) * v;
+vec3 quadSurfacePoint(vec3 p, Quad quad, vec3 u, vec3 v, float inset) {
+    vec3 offset = p - quad.center;
+    // 1 / length(reciprocalU): the distance from an edge along v per unit of a
+    float aMax = max(1.0 - inset * length(quad.reciprocalU), 0.0);
+    float bMax = max(1.0 - inset * length(quad.reciprocalV), 0.0);
+    return quad.center + clamp(dot(offset, quad.reciprocalU), -aMax, aMax) * u +
+           clamp(dot(offset, quad.reciprocalV), -bMax, bMax) * v;
 }
 
 // Disk of the given center, unit normal and radius.
@@ -130,14 +129,11 @@ float intersectPresentSphere(Ray ray, int i, float tMax) {
 }
 
 float intersectPresentQuad(Ray ray, int i, float tMax) {
-    vec3 center = texelFetch(uQuads, 4 * i).xyz;
-    vec3 u = texelFetch(uQuads, 4 * i + 1).xyz;
-    vec3 v = texelFetch(uQuads, 4 * i + 2).xyz;
-    vec3 dual = texelFetch(uQuads, 4 * i + 3).xyz;
-    float t = intersectQuad(ray, center, u, v, dual);
+    Quad quad = fetchQuad(i);
+    float t = intersectQuad(ray, quad);
     if (!(t < tMax)) return kInfinity;
     vec3 p = ray.origin + t * ray.direction;
-    return surfacePresent(quadIds(i).x, quadSurfaceUv(p, center, u, v, dual), p) ? t : kInfinity;
+    return surfacePresent(quadIds(i).x, quadSurfaceUv(p, quad), p) ? t : kInfinity;
 }
 
 float intersectPresentDisk(Ray ray, int i, float tMax) {
@@ -191,14 +187,13 @@ bool intersectScene(Ray ray, out Hit hit) {
         ids = sphereIds(sphereHit);
         hit.primitive = ivec2(kPrimitiveSphere, sphereHit);
     } else if (quadHit >= 0) {
-        vec3 center = texelFetch(uQuads, 4 * quadHit).xyz;
-        vec3 u = texelFetch(uQuads, 4 * quadHit + 1).xyz;
-        vec3 v = texelFetch(uQuads, 4 * quadHit + 2).xyz;
-        vec3 dual = texelFetch(uQuads, 4 * quadHit + 3).xyz;
-        hit.normalGeom = normalize(cross(u, v));
-        hit.uv = quadSurfaceUv(hit.posWorld, center, u, v, dual);
+        Quad quad = fetchQuad(quadHit);
+        vec3 u, v;
+        quadEdges(quadHit, u, v);
+        hit.normalGeom = normalize(quadNormal(quadHit));
+        hit.uv = quadSurfaceUv(hit.posWorld, quad);
         quadSurfaceTangents(u, v, tangent, bitangent);
-        hit.posWorld = quadSurfacePoint(hit.posWorld, center, u, v, dual, spawnOffset(hit.posWorld));
+        hit.posWorld = quadSurfacePoint(hit.posWorld, quad, u, v, spawnOffset(hit.posWorld));
         ids = quadIds(quadHit);
         hit.primitive = ivec2(kPrimitiveQuad, quadHit);
     } else {
@@ -215,14 +210,20 @@ bool intersectScene(Ray ray, out Hit hit) {
 // Whether something other than `light` itself lies on the ray closer than maxDistance, stopping
 // at the first such thing. Checking the light's identity, not a shortened distance, keeps the
 // test exact for points close to the light, where the ray's offset origin can be nearer to it
-// than the sampled distance says.
+// than the sampled distance says. The light's own shape is known by its index from the light's
+// record (one read), not by reading every shape's light id in the loops.
 bool occluded(Ray ray, float maxDistance, int light) {
+    uvec2 kindAndPrimitive = lightKindAndPrimitive(light);
+    int own = int(kindAndPrimitive.y);
+    int ownSphere = kindAndPrimitive.x == kLightSphere ? own : -1;
+    int ownQuad = kindAndPrimitive.x == kLightQuad ? own : -1;
+    int ownDisk = kindAndPrimitive.x == kLightDisk ? own : -1;
     for (int i = 0; i < uSphereCount; ++i)
-        if (sphereIds(i).y != light && intersectPresentSphere(ray, i, maxDistance) < maxDistance) return true;
+        if (i != ownSphere && intersectPresentSphere(ray, i, maxDistance) < maxDistance) return true;
     for (int i = 0; i < uQuadCount; ++i)
-        if (quadIds(i).y != light && intersectPresentQuad(ray, i, maxDistance) < maxDistance) return true;
+        if (i != ownQuad && intersectPresentQuad(ray, i, maxDistance) < maxDistance) return true;
     for (int i = 0; i < uDiskCount; ++i)
-        if (diskIds(i).y != light && intersectPresentDisk(ray, i, maxDistance) < maxDistance) return true;
+        if (i != ownDisk && intersectPresentDisk(ray, i, maxDistance) < maxDistance) return true;
     float tMax = maxDistance;
     MeshHit ignored;
     return traverseMeshes(ray, tMax, ignored, true, light);

@@ -120,9 +120,9 @@ QuadLightView viewQuadLight(vec3 center, vec3 edgeU, vec3 edgeV, vec3 posWorld) 
 }
 
 LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
-    vec3 center = texelFetch(uQuads, 4 * primitive).xyz;
-    vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
-    vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
+    vec3 center = texelFetch(uQuads, kQuadTexels * primitive).xyz;
+    vec3 edgeU, edgeV;
+    quadEdges(primitive, edgeU, edgeV);
     vec3 normal = normalize(cross(edgeU, edgeV));
     // Emission is one-sided: from behind (or in its plane), no direction brings light.
     if (dot(posWorld - center, normal) <= 0.0) return failedLightSample();
@@ -141,9 +141,9 @@ LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
 }
 
 float quadLightPdf(int primitive, vec3 posWorld, float distance2, float cosLight) {
-    vec3 center = texelFetch(uQuads, 4 * primitive).xyz;
-    vec3 edgeU = texelFetch(uQuads, 4 * primitive + 1).xyz;
-    vec3 edgeV = texelFetch(uQuads, 4 * primitive + 2).xyz;
+    vec3 center = texelFetch(uQuads, kQuadTexels * primitive).xyz;
+    vec3 edgeU, edgeV;
+    quadEdges(primitive, edgeU, edgeV);
     if (dot(posWorld - center, cross(edgeU, edgeV)) <= 0.0) return 0.0; // as sampleQuadLight
     QuadLightView view = viewQuadLight(center, edgeU, edgeV, posWorld);
     if (view.bySolidAngle) return sphericalRectanglePdf(view.rectangle);
@@ -286,10 +286,6 @@ LightSample sampleEnvironmentLight(vec2 u) {
 }
 
 // ---- Dispatch on the light's kind -------------------------------------------------------------
-
-uvec2 lightKindAndPrimitive(int light) {
-    return uvec2(texelFetch(uLights, 4 * light).xy); // exact small integers, stored as float values
-}
 
 LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
     uvec2 kindAndPrimitive = lightKindAndPrimitive(light);

@@ -7,9 +7,9 @@
 
 // Quads: center + a u + b v with (a, b) in [-1, 1]^2; uv = ((a + 1) / 2, (1 - b) / 2), so an image
 // is upright on a quad whose u points right and v up as seen from its front (cross(u, v)).
-vec2 quadSurfaceUv(vec3 posWorld, vec3 center, vec3 u, vec3 v, vec3 dual) {
-    vec3 offset = posWorld - center;
-    return vec2(0.5 * (dot(offset, cross(v, dual)) + 1.0), 0.5 * (1.0 - dot(offset, cross(dual, u))));
+vec2 quadSurfaceUv(vec3 posWorld, Quad quad) {
+    vec3 offset = posWorld - quad.center;
+    return vec2(0.5 * (dot(offset, quad.reciprocalU) + 1.0), 0.5 * (1.0 - dot(offset, quad.reciprocalV)));
 }
 
 // Spheres: equirectangular from the outward normal, v = 0 at +y (the top), u = 0.5 toward +z,

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace ptview {
 namespace {
 
@@ -31,11 +34,19 @@ TEST(FlattenScene, BoxBecomesSixOutwardQuadsCoveringItsSurface) {
     ASSERT_EQ(primitives.quads.size(), 6u);
     double area = 0.0;
     for (const GpuQuad& quad : primitives.quads) {
-        glm::vec3 center(quad.center), n = glm::cross(glm::vec3(quad.u), glm::vec3(quad.v));
+        glm::vec3 center(quad.center), u(quad.u), v(quad.v), n = glm::cross(u, v);
         EXPECT_GT(glm::dot(n, center - box.center), 0.0f) << "face normal must leave the box";
+        EXPECT_EQ(glm::vec3(quad.normal), n);
         area += 4.0 * glm::length(n);
-        // dual * |n|^2 == n: the intersection code relies on it.
-        EXPECT_NEAR(glm::length(glm::vec3(quad.dual) * glm::dot(n, n) - n), 0.0f, 1e-5f);
+        // The intersection code relies on the reciprocal basis: dot(a u + b v, reciprocalU) = a,
+        // dot(a u + b v, reciprocalV) = b.
+        glm::vec3 reciprocalU(quad.reciprocalU), reciprocalV(quad.reciprocalV);
+        EXPECT_NEAR(glm::dot(u, reciprocalU), 1.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(v, reciprocalU), 0.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(u, reciprocalV), 0.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(v, reciprocalV), 1.0f, 1e-5f);
+        EXPECT_EQ(quad.reciprocalU.w, std::abs(reciprocalU.x) + std::abs(reciprocalU.y) + std::abs(reciprocalU.z));
+        EXPECT_EQ(quad.center.w, std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}));
     }
     const glm::vec3 s = 2.0f * box.halfSize;
     EXPECT_NEAR(area, 2.0 * (s.x * s.y + s.y * s.z + s.z * s.x), 1e-5);

@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, RecordedPaths,
                                            ReproduceCase{"spheres_full_roulette", "cornell_spheres", Integrator::Full, SamplerMode::Sobol, 8}),
                          [](const ::testing::TestParamInfo<ReproduceCase>& info) { return std::string(info.param.name); });
 
-// Roulette ends paths (full integrator, depth 8, from bounce 3 on) and a path that survives it
+// Roulette ends paths (full integrator, depth 8, from bounce 4 on) and a path that survives it
 // carries 1 / survival more: what the recorded throughputs say.
 TEST(RecordedPaths, RouletteEndsSomePathsAndReweightsTheSurvivors) {
     const Traced traced = renderAndRecord(scene("cornell"), settingsFor(Integrator::Full, SamplerMode::Random, 8), {32, 32}, 64, {{8, 28}});

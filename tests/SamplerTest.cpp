@@ -152,6 +152,35 @@ TEST(Sampler, StratifiedJitterNeverRoundsIntoTheNextCell) {
     EXPECT_EQ(outside, 0) << "samples with a coordinate of 1";
 }
 
+// Owen-scrambled Sobol' points of one pixel, in aligned blocks of 2^k samples, are (0, k, 2)-nets:
+// every elementary interval of area 2^-k (2^a by 2^(k-a) cells, any a) holds exactly one point. A
+// wrong generator for dimension 1 (its closed form, sobolDimension1) breaks this: a wrong step of
+// its sum over bit supersets that moves bit j + 2^s to bit j shows from k = 2^s + 1 on (below, the
+// bits it moves are the same in the whole block, a digital shift that keeps the net), so blocks
+// go up to 2^17 samples.
+TEST(Sampler, SobolBlocksOfAPowerOfTwoSamplesAreNets) {
+    const int maxLog2 = 17, samplesPerPixel = 1 << maxLog2, pixels = 1;
+    for (std::uint32_t dimension : {0u, 1u, 6u}) {
+        SCOPED_TRACE("path dimension " + std::to_string(dimension));
+        std::vector<glm::vec2> points =
+            samplerPoints({SamplerMode::Sobol, samplesPerPixel * pixels, std::uint32_t(samplesPerPixel), dimension, 0u, 3u});
+        int crowdedIntervals = 0;
+        for (int log2 = 1; log2 <= maxLog2; ++log2) {
+            const int block = 1 << log2;
+            for (int start = 0; start < samplesPerPixel * pixels; start += block)
+                for (int a = 0; a <= log2; ++a) { // 2^a columns, 2^(log2 - a) rows
+                    std::vector<int> hits(std::size_t(block), 0);
+                    for (int i = start; i < start + block; ++i) {
+                        glm::vec2 u = points[std::size_t(i)]; // 24-bit values: the scaling is exact
+                        int column = int(u.x * float(1 << a)), row = int(u.y * float(1 << (log2 - a)));
+                        crowdedIntervals += ++hits[std::size_t((row << a) + column)] > 1 ? 1 : 0;
+                    }
+                }
+        }
+        EXPECT_EQ(crowdedIntervals, 0) << "elementary intervals with a second point";
+    }
+}
+
 // ---- Uniformity
 
 TEST(Sampler, RandomStratifiedAndSobolAreUniform) {

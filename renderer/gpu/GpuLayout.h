@@ -45,13 +45,19 @@ struct GpuSphere {
 };
 static_assert(sizeof(GpuSphere) == 16, "one RGBA32F texel");
 
+// The parallelogram center +- u +- v, and what its ray test needs precomputed (scene_data.glsl
+// fetchQuad, intersect.glsl intersectQuad): with dual = normal / |normal|^2, the reciprocal basis
+// reciprocalU = cross(v, dual), reciprocalV = cross(dual, u) turns a hit's offset from the center
+// into its coordinates along u and v; the w's are magnitudes for the test's rounding bound.
 struct GpuQuad {
-    glm::vec4 center; // w unused
-    glm::vec4 u;
-    glm::vec4 v;
-    glm::vec4 dual;   // cross(u, v) / |cross(u, v)|^2, turns hit offsets into (a, b) coordinates
+    glm::vec4 center;      // w: max |component| of center
+    glm::vec4 normal;      // cross(u, v), the front side; w unused
+    glm::vec4 reciprocalU; // w: |x| + |y| + |z|
+    glm::vec4 reciprocalV; // w: |x| + |y| + |z|
+    glm::vec4 u;           // w unused
+    glm::vec4 v;           // w unused
 };
-static_assert(sizeof(GpuQuad) == 64, "four RGBA32F texels");
+static_assert(sizeof(GpuQuad) == 96, "six RGBA32F texels (kQuadTexels)");
 
 struct GpuDisk {
     glm::vec3 center;

@@ -12,8 +12,15 @@ namespace {
 
 GpuQuad makeQuad(glm::vec3 center, glm::vec3 u, glm::vec3 v) {
     glm::vec3 n = glm::cross(u, v);
-    return GpuQuad{glm::vec4(center, 0.0f), glm::vec4(u, 0.0f), glm::vec4(v, 0.0f),
-                   glm::vec4(n / glm::dot(n, n), 0.0f)};
+    glm::vec3 dual = n / glm::dot(n, n);
+    glm::vec3 reciprocalU = glm::cross(v, dual), reciprocalV = glm::cross(dual, u);
+    auto sumOfMagnitudes = [](glm::vec3 a) { return std::abs(a.x) + std::abs(a.y) + std::abs(a.z); };
+    return GpuQuad{glm::vec4(center, std::max(std::abs(center.x), std::max(std::abs(center.y), std::abs(center.z)))),
+                   glm::vec4(n, 0.0f),
+                   glm::vec4(reciprocalU, sumOfMagnitudes(reciprocalU)),
+                   glm::vec4(reciprocalV, sumOfMagnitudes(reciprocalV)),
+                   glm::vec4(u, 0.0f),
+                   glm::vec4(v, 0.0f)};
 }
 
 // Six faces with outward normals: each (u, v) pair is ordered so cross(u, v) leaves the box.
