@@ -120,7 +120,7 @@ QuadLightView viewQuadLight(vec3 center, vec3 edgeU, vec3 edgeV, vec3 posWorld) 
 }
 
 LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
-    vec3 center = texelFetch(uQuads, kQuadTexels * primitive).xyz;
+    vec3 center = quadCenter(primitive);
     vec3 edgeU, edgeV;
     quadEdges(primitive, edgeU, edgeV);
     vec3 normal = normalize(cross(edgeU, edgeV));
@@ -141,7 +141,7 @@ LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
 }
 
 float quadLightPdf(int primitive, vec3 posWorld, float distance2, float cosLight) {
-    vec3 center = texelFetch(uQuads, kQuadTexels * primitive).xyz;
+    vec3 center = quadCenter(primitive);
     vec3 edgeU, edgeV;
     quadEdges(primitive, edgeU, edgeV);
     if (dot(posWorld - center, cross(edgeU, edgeV)) <= 0.0) return 0.0; // as sampleQuadLight

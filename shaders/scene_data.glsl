@@ -59,6 +59,10 @@ Quad fetchQuad(int quad) {
                 reciprocalV.w);
 }
 
+vec3 quadCenter(int quad) {
+    return texelFetch(uQuads, kQuadTexels * quad).xyz;
+}
+
 // cross(u, v): the front side.
 vec3 quadNormal(int quad) {
     return texelFetch(uQuads, kQuadTexels * quad + 1).xyz;
