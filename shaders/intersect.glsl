@@ -3,6 +3,7 @@
 #include "frame_uniforms.glsl"
 #include "ray.glsl"
 #include "scene_data.glsl"
+#include "shape_loops.glsl"
 #include "mesh_intersect.glsl"
 #include "surface_textures.glsl"
 #include "normal_map.glsl"
@@ -150,18 +151,12 @@ bool intersectScene(Ray ray, out Hit hit) {
     int sphereHit = -1;
     int quadHit = -1;
     int diskHit = -1;
-    for (int i = 0; i < uSphereCount; ++i) {
-        float t = intersectPresentSphere(ray, i, hit.t);
-        if (t < hit.t) { hit.t = t; sphereHit = i; }
-    }
-    for (int i = 0; i < uQuadCount; ++i) {
-        float t = intersectPresentQuad(ray, i, hit.t);
-        if (t < hit.t) { hit.t = t; quadHit = i; sphereHit = -1; }
-    }
-    for (int i = 0; i < uDiskCount; ++i) {
-        float t = intersectPresentDisk(ray, i, hit.t);
-        if (t < hit.t) { hit.t = t; diskHit = i; quadHit = -1; sphereHit = -1; }
-    }
+#define NEAREST_SPHERE(i) { float t = intersectPresentSphere(ray, i, hit.t); if (t < hit.t) { hit.t = t; sphereHit = i; } }
+#define NEAREST_QUAD(i) { float t = intersectPresentQuad(ray, i, hit.t); if (t < hit.t) { hit.t = t; quadHit = i; sphereHit = -1; } }
+#define NEAREST_DISK(i) { float t = intersectPresentDisk(ray, i, hit.t); if (t < hit.t) { hit.t = t; diskHit = i; quadHit = -1; sphereHit = -1; } }
+    FOR_EACH_SPHERE(NEAREST_SPHERE)
+    FOR_EACH_QUAD(NEAREST_QUAD)
+    FOR_EACH_DISK(NEAREST_DISK)
     MeshHit meshHit;
     bool onMesh = traverseMeshes(ray, hit.t, meshHit, false, -1);
     if (hit.t == kInfinity) return false;
@@ -218,12 +213,12 @@ bool occluded(Ray ray, float maxDistance, int light) {
     int ownSphere = kindAndPrimitive.x == kLightSphere ? own : -1;
     int ownQuad = kindAndPrimitive.x == kLightQuad ? own : -1;
     int ownDisk = kindAndPrimitive.x == kLightDisk ? own : -1;
-    for (int i = 0; i < uSphereCount; ++i)
-        if (i != ownSphere && intersectPresentSphere(ray, i, maxDistance) < maxDistance) return true;
-    for (int i = 0; i < uQuadCount; ++i)
-        if (i != ownQuad && intersectPresentQuad(ray, i, maxDistance) < maxDistance) return true;
-    for (int i = 0; i < uDiskCount; ++i)
-        if (i != ownDisk && intersectPresentDisk(ray, i, maxDistance) < maxDistance) return true;
+#define BLOCKS_SPHERE(i) if (i != ownSphere && intersectPresentSphere(ray, i, maxDistance) < maxDistance) return true;
+#define BLOCKS_QUAD(i) if (i != ownQuad && intersectPresentQuad(ray, i, maxDistance) < maxDistance) return true;
+#define BLOCKS_DISK(i) if (i != ownDisk && intersectPresentDisk(ray, i, maxDistance) < maxDistance) return true;
+    FOR_EACH_SPHERE(BLOCKS_SPHERE)
+    FOR_EACH_QUAD(BLOCKS_QUAD)
+    FOR_EACH_DISK(BLOCKS_DISK)
     float tMax = maxDistance;
     MeshHit ignored;
     return traverseMeshes(ray, tMax, ignored, true, light);

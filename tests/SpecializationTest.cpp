@@ -140,6 +140,31 @@ TEST(Specialization, EachFeatureBringsItsCode) {
     EXPECT_FALSE(contains(mirror, kDielectricCode));
 }
 
+// The loops over the scene's spheres, quads and disks are unrolled for its counts, up to a cap;
+// beyond it, and in the uber program, they loop over the counts set at run time.
+TEST(Specialization, ShapeLoopsAreUnrolledForTheScenesCountsUpToACap) {
+    Scene cornell = shippedScene("cornell"); // five walls, a light and two boxes of six faces
+    ASSERT_TRUE(sceneFeatures(cornell).unrolledShapes.has_value());
+    EXPECT_TRUE(*sceneFeatures(cornell).unrolledShapes == (ShapeCounts{0, 18, 0}));
+    std::string source = programSource(cornell);
+    EXPECT_TRUE(contains(source, "#define FOR_EACH_QUAD(STEP) STEP(0) STEP(1)"));
+    EXPECT_TRUE(contains(source, " STEP(17)\n"));
+    EXPECT_FALSE(contains(source, "STEP(18)"));
+    EXPECT_FALSE(contains(source, "quad < uQuadCount"));
+    EXPECT_TRUE(contains(programSource(cornell, PathTracerOptions{true, std::nullopt}), "quad < uQuadCount"));
+
+    Scene many = cornell;
+    Shape sphere;
+    sphere.type = ShapeType::Sphere;
+    sphere.radius = 0.01f;
+    sphere.material = 0;
+    while (shapeCounts(many).total() <= ShaderFeatures::kMaxUnrolledShapes) many.shapes.push_back(sphere);
+    EXPECT_FALSE(sceneFeatures(many).unrolledShapes.has_value());
+    EXPECT_TRUE(contains(programSource(many), "quad < uQuadCount"));
+    many.shapes.pop_back();
+    EXPECT_TRUE(sceneFeatures(many).unrolledShapes.has_value()) << "the cap itself is unrolled";
+}
+
 struct Render {
     PixelStatistics statistics;
     int programsCompiled;
@@ -180,8 +205,9 @@ void expectSameImage(const PixelStatistics& a, const PixelStatistics& b, float p
     EXPECT_LE(farPixels, int(n / 200)) << farPixels << " of " << n;
 }
 
+// Unrolled shape loops included: cornell's 18 quads, materials' spheres and quads, lights' disks.
 TEST(Specialization, SpecializedAndUberProgramsRenderTheSameImage) {
-    for (const char* name : {"cornell", "materials", "meshes"}) {
+    for (const char* name : {"cornell", "materials", "lights", "meshes"}) {
         SCOPED_TRACE(name);
         Scene scene = shippedScene(name);
         Render specialized = render(scene, PathTracerOptions{false, Backend::Fragment}, Integrator::Full, 16);

@@ -13,9 +13,22 @@
 #include "ShaderAssembler.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace ptview {
+
+// How many spheres, quads and disks (a box is six quads) a scene's shapes make.
+struct ShapeCounts {
+    int spheres = 0;
+    int quads = 0;
+    int disks = 0;
+
+    int total() const { return spheres + quads + disks; }
+    bool operator==(const ShapeCounts& other) const;
+};
+
+ShapeCounts shapeCounts(const Scene& scene);
 
 struct ShaderFeatures {
     std::uint32_t materialModels = 0; // bit (1 << MaterialType) for each model a shape uses
@@ -30,6 +43,16 @@ struct ShaderFeatures {
     bool normalMaps = false;          // ... a normal map (normal_map.glsl); implies textures
     bool alpha = false;               // ... alpha mode MASK or BLEND (surface_alpha.glsl); implies
                                       //   textures, since the coverage is read at texture coordinates
+    // The loops over every sphere, quad and disk unrolled for exactly these counts
+    // (shape_loops.glsl), or none: loops over the counts the scene sets at run time (the uber
+    // program, and scenes of more than kMaxUnrolledShapes shapes).
+    std::optional<ShapeCounts> unrolledShapes;
+
+    // Unrolled, each shape's ray test reads its data at a constant index, which llvmpipe does once
+    // per SIMD group instead of once per lane (0.72x the instructions of a Cornell box pass,
+    // docs/performance.md); each test is compiled in twice (nearest hit and shadow ray), so the
+    // count is capped to keep compilation short.
+    static constexpr int kMaxUnrolledShapes = 32;
 
     static ShaderFeatures all(); // the uber-shader: every model, map and meshes
 
