@@ -20,6 +20,7 @@
 #include "spherical_rectangle.glsl"
 #include "shading_frame.glsl"
 #include "environment.glsl"
+#include "light_kinds.glsl"
 // kLightQuad, ...: generated from the table of LightKind (renderer/gpu/GpuScene.h, GlslEnums.cpp).
 #include "enums.glsl"
 
@@ -286,40 +287,38 @@ LightSample sampleEnvironmentLight(vec2 u) {
 }
 
 // ---- Dispatch on the light's kind -------------------------------------------------------------
+// Over the kinds this program was built for (hasLightKind, light_kinds.glsl: a constant of the
+// program, so the other kinds' code is compiled out).
 
 LightSample sampleLight(int light, vec3 posWorld, vec2 u) {
     uvec2 kindAndPrimitive = lightKindAndPrimitive(light);
+    uint kind = kindAndPrimitive.x;
     int primitive = int(kindAndPrimitive.y);
-    switch (kindAndPrimitive.x) {
-    case kLightEnvironment: return sampleEnvironmentLight(u);
-    case kLightPoint: return samplePointLight(light, posWorld, false);
-    case kLightSpot: return samplePointLight(light, posWorld, true);
-    case kLightDirectional: return sampleDirectionalLight(light);
-    case kLightQuad: return sampleQuadLight(primitive, posWorld, u);
-    case kLightTriangle: return sampleTriangleLight(light, primitive, posWorld, u);
-    case kLightDisk: return sampleDiskLight(primitive, posWorld, u);
-    case kLightSphere: return sampleSphereLight(primitive, posWorld, u);
-    }
+    if (hasLightKind(kLightEnvironment) && kind == kLightEnvironment) return sampleEnvironmentLight(u);
+    if (hasLightKind(kLightPoint) && kind == kLightPoint) return samplePointLight(light, posWorld, false);
+    if (hasLightKind(kLightSpot) && kind == kLightSpot) return samplePointLight(light, posWorld, true);
+    if (hasLightKind(kLightDirectional) && kind == kLightDirectional) return sampleDirectionalLight(light);
+    if (hasLightKind(kLightQuad) && kind == kLightQuad) return sampleQuadLight(primitive, posWorld, u);
+    if (hasLightKind(kLightTriangle) && kind == kLightTriangle) return sampleTriangleLight(light, primitive, posWorld, u);
+    if (hasLightKind(kLightDisk) && kind == kLightDisk) return sampleDiskLight(primitive, posWorld, u);
+    if (hasLightKind(kLightSphere) && kind == kLightSphere) return sampleSphereLight(primitive, posWorld, u);
     return failedLightSample();
 }
 
 // Solid-angle density with which sampleLight(light, posWorld, .) produces direction wi that
 // reaches the light at distance hitDistance with geometric normal hitNormal (selection excluded).
-// 0 for delta lights: no other strategy can find them.
+// 0 for delta lights (point, spot, directional): no other strategy can find them.
 float lightPdf(int light, vec3 posWorld, vec3 wi, float hitDistance, vec3 hitNormal) {
     uvec2 kindAndPrimitive = lightKindAndPrimitive(light);
     uint kind = kindAndPrimitive.x;
     int primitive = int(kindAndPrimitive.y);
-    if (kind == kLightEnvironment) return environmentPdf(wi);
-    if (kind == kLightPoint || kind == kLightSpot || kind == kLightDirectional) return 0.0;
+    if (hasLightKind(kLightEnvironment) && kind == kLightEnvironment) return environmentPdf(wi);
     float cosLight = abs(dot(hitNormal, wi));
     if (cosLight == 0.0) return 0.0;
     float distance2 = hitDistance * hitDistance;
-    switch (kind) {
-    case kLightQuad: return quadLightPdf(primitive, posWorld, distance2, cosLight);
-    case kLightDisk: return diskLightPdf(primitive, distance2, cosLight);
-    case kLightTriangle: return triangleLightPdf(light, distance2, cosLight);
-    case kLightSphere: return sphereLightPdf(primitive, posWorld, distance2, cosLight);
-    }
+    if (hasLightKind(kLightQuad) && kind == kLightQuad) return quadLightPdf(primitive, posWorld, distance2, cosLight);
+    if (hasLightKind(kLightDisk) && kind == kLightDisk) return diskLightPdf(primitive, distance2, cosLight);
+    if (hasLightKind(kLightTriangle) && kind == kLightTriangle) return triangleLightPdf(light, distance2, cosLight);
+    if (hasLightKind(kLightSphere) && kind == kLightSphere) return sphereLightPdf(primitive, posWorld, distance2, cosLight);
     return 0.0;
 }

@@ -140,6 +140,34 @@ TEST(Specialization, EachFeatureBringsItsCode) {
     EXPECT_FALSE(contains(mirror, kDielectricCode));
 }
 
+// A program samples only the kinds of light its scene has (light_kinds.glsl), and a material or
+// environment edit that brings a kind brings its code.
+TEST(Specialization, OnlyTheScenesKindsOfLightAreSampled) {
+    auto kinds = [](std::initializer_list<LightKind> list) {
+        std::uint32_t mask = 0;
+        for (LightKind kind : list) mask |= 1u << static_cast<int>(kind);
+        return mask;
+    };
+    Scene cornell = shippedScene("cornell");
+    EXPECT_EQ(sceneFeatures(cornell).lightKinds, kinds({LightKind::Quad}));
+    EXPECT_TRUE(contains(programSource(cornell), "bool hasLightKind(uint kind) {\n    return kind == kLightQuad;\n}"));
+    EXPECT_TRUE(contains(sceneFeatures(cornell).describe(), "lights: quad\n"));
+    EXPECT_EQ(sceneFeatures(shippedScene("lights")).lightKinds, kinds({LightKind::Disk, LightKind::Point, LightKind::Spot}));
+    EXPECT_EQ(sceneFeatures(shippedScene("meshes")).lightKinds, kinds({LightKind::Environment}));
+    EXPECT_EQ(ShaderFeatures::all().lightKinds, 0xffu);
+
+    Scene spheres = shippedScene("cornell_spheres");
+    std::uint32_t before = sceneFeatures(spheres).lightKinds;
+    for (Shape& shape : spheres.shapes)
+        if (shape.type == ShapeType::Sphere) spheres.materials[static_cast<std::size_t>(shape.material)].radiance = glm::vec3(1.0f);
+    EXPECT_EQ(sceneFeatures(spheres).lightKinds, before | kinds({LightKind::Sphere}));
+    spheres.environment = glm::vec3(0.1f);
+    EXPECT_EQ(sceneFeatures(spheres).lightKinds, before | kinds({LightKind::Sphere, LightKind::Environment}));
+    EXPECT_TRUE(contains(programSource(spheres), "kind == kLightSphere"));
+    cornell.shapes.clear();
+    EXPECT_TRUE(contains(programSource(cornell), "bool hasLightKind(uint kind) {\n    return false;\n}"));
+}
+
 // The loops over the scene's spheres, quads and disks are unrolled for its counts, up to a cap;
 // beyond it, and in the uber program, they loop over the counts set at run time.
 TEST(Specialization, ShapeLoopsAreUnrolledForTheScenesCountsUpToACap) {
@@ -205,7 +233,8 @@ void expectSameImage(const PixelStatistics& a, const PixelStatistics& b, float p
     EXPECT_LE(farPixels, int(n / 200)) << farPixels << " of " << n;
 }
 
-// Unrolled shape loops included: cornell's 18 quads, materials' spheres and quads, lights' disks.
+// Unrolled shape loops and the light kinds included: cornell's 18 quads and quad light, materials'
+// spheres and quads lit by quads and the environment, lights' disks, disk, point and spot lights.
 TEST(Specialization, SpecializedAndUberProgramsRenderTheSameImage) {
     for (const char* name : {"cornell", "materials", "lights", "meshes"}) {
         SCOPED_TRACE(name);

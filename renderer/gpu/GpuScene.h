@@ -9,6 +9,7 @@
 #include "GpuMeshes.h"
 #include "SurfaceHit.h"
 #include "GpuTextures.h"
+#include "LightKind.h"
 #include "Scene.h"
 
 #include <cstdint>
@@ -27,23 +28,6 @@ struct ScenePrimitives {
     std::vector<Light> lights; // point and spot
     std::vector<GpuMaterial> materials;
 };
-
-// The kinds of the light table; shaders/lights.glsl gets their constants from this table (GlslEnums.h).
-enum class LightKind : std::uint32_t { Quad = 0, Sphere = 1, Disk = 2, Environment = 3, Point = 4, Spot = 5, Triangle = 6, Directional = 7 };
-
-inline const EnumTable<LightKind>& lightKindNames() {
-    static const EnumTable<LightKind> table = {
-        {LightKind::Quad, "quad", nullptr, "", "kLightQuad"},
-        {LightKind::Sphere, "sphere", nullptr, "", "kLightSphere"},
-        {LightKind::Disk, "disk", nullptr, "", "kLightDisk"},
-        {LightKind::Environment, "environment", nullptr, "", "kLightEnvironment"},
-        {LightKind::Point, "point", nullptr, "", "kLightPoint"},
-        {LightKind::Spot, "spot", nullptr, "", "kLightSpot"},
-        {LightKind::Triangle, "triangle", nullptr, "", "kLightTriangle"},
-        {LightKind::Directional, "directional", nullptr, "", "kLightDirectional"},
-    };
-    return table;
-}
 
 // Every light the integrators can sample, chosen in proportion to its emitted power.
 struct LightTable {

@@ -1,12 +1,14 @@
 #pragma once
-// Simulate only what the scene calls for: the features a scene uses (material models, lights,
-// environment map, meshes, a lens) and the GLSL specialization that compiles in those and nothing else.
+// Simulate only what the scene calls for: the features a scene uses (material models, kinds of
+// light, environment map, meshes, a lens) and the GLSL specialization that compiles in those and
+// nothing else.
 // Whole functions are chosen: the BSDF dispatch is generated with a case for each model used and
 // only those models' files, and the environment and mesh queries come from a full or an empty
 // variant of the same functions. The integrator and sampler become constants of the program.
 
 #include "DebugView.h"
 #include "Integrator.h"
+#include "LightKind.h"
 #include "LightPaths.h"
 #include "SamplerMode.h"
 #include "Scene.h"
@@ -32,10 +34,9 @@ ShapeCounts shapeCounts(const Scene& scene);
 
 struct ShaderFeatures {
     std::uint32_t materialModels = 0; // bit (1 << MaterialType) for each model a shape uses
-    bool areaLights = false;          // emitting surfaces (shapes or mesh triangles)
-    bool pointLights = false;
-    bool spotLights = false;
-    bool directionalLights = false;
+    std::uint32_t lightKinds = 0;     // bit (1 << LightKind) for each kind of light the scene can
+                                      //   have in its light table (emitting shapes, triangles, the
+                                      //   environment, point lights...): only those are sampled
     bool environmentMap = false;      // else the constant colour
     bool meshes = false;
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
@@ -57,6 +58,7 @@ struct ShaderFeatures {
     static ShaderFeatures all(); // the uber-shader: every model, map and meshes
 
     bool usesModel(MaterialType type) const { return (materialModels >> static_cast<int>(type)) & 1u; }
+    bool hasLightKind(LightKind kind) const { return (lightKinds >> static_cast<int>(kind)) & 1u; }
     bool transmission() const;
     // Whether every feature of `other` is compiled into a program for these features.
     bool covers(const ShaderFeatures& other) const;
