@@ -111,9 +111,9 @@ QuadLightView viewQuadLight(vec3 center, vec3 edgeU, vec3 edgeV, vec3 posWorld) 
     view.bySolidAngle = false;
     vec3 toCenter = center - posWorld;
     float near2 = kSolidAngleSamplingMaxDistance * kSolidAngleSamplingMaxDistance * (dot(edgeU, edgeU) + dot(edgeV, edgeV));
-    // A loop run once, not an if: llvmpipe (SIMD lanes under a mask) runs an if's body even when no
-    // lane takes it, but leaves a loop as soon as no lane is in it, so far points pay nothing here.
-    for (bool near = dot(toCenter, toCenter) <= near2 && quadIsRectangle(edgeU, edgeV); near; near = false) {
+    // llvmpipe runs this body for every SIMD group, masked, even where no lane is near (a loop run
+    // once skips nothing either: its first iteration runs the same way); GPUs branch around it.
+    if (dot(toCenter, toCenter) <= near2 && quadIsRectangle(edgeU, edgeV)) {
         view.rectangle = viewRectangleFrom(posWorld, center - edgeU - edgeV, 2.0 * edgeU, 2.0 * edgeV);
         view.bySolidAngle = sphericalRectangleUsable(view.rectangle);
     }
@@ -129,7 +129,7 @@ LightSample sampleQuadLight(int primitive, vec3 posWorld, vec2 u) {
     if (dot(posWorld - center, normal) <= 0.0) return failedLightSample();
     Material material = fetchMaterial(quadIds(primitive).x);
     QuadLightView view = viewQuadLight(center, edgeU, edgeV, posWorld);
-    for (bool once = view.bySolidAngle; once; once = false) { // a loop for llvmpipe, as in viewQuadLight
+    if (view.bySolidAngle) {
         vec3 toLight = sampleSphericalRectangle(view.rectangle, u);
         float distance = length(toLight);
         if (!(distance > 0.0)) return failedLightSample();
