@@ -6,3 +6,7 @@
 bool hasLightKind(uint kind) {
     return true;
 }
+
+// Whether any surface comes near enough a quad light's front to sample it by solid angle
+// (lights.glsl viewQuadLight; renderer/gpu/QuadLightReach.h): here, maybe.
+const bool kQuadLightsUpClose = true;

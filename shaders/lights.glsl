@@ -101,19 +101,17 @@ struct QuadLightView {
     SphericalRectangle rectangle; // if bySolidAngle
 };
 
-// Seen from farther than this many half-diagonals of the quad, area sampling's density
-// (distance^2 / cos) varies by little over the quad, and the spherical rectangle's trigonometry
-// would cost more than its lower variance saves.
-const float kSolidAngleSamplingMaxDistance = 2.0;
-
 QuadLightView viewQuadLight(vec3 center, vec3 edgeU, vec3 edgeV, vec3 posWorld) {
     QuadLightView view;
     view.bySolidAngle = false;
     vec3 toCenter = center - posWorld;
+    // Within kSolidAngleSamplingMaxDistance half-diagonals (enums.glsl, from renderer/gpu/
+    // QuadLightReach.h, which says why), by solid angle.
     float near2 = kSolidAngleSamplingMaxDistance * kSolidAngleSamplingMaxDistance * (dot(edgeU, edgeU) + dot(edgeV, edgeV));
     // llvmpipe runs this body for every SIMD group, masked, even where no lane is near (a loop run
     // once skips nothing either: its first iteration runs the same way); GPUs branch around it.
-    if (dot(toCenter, toCenter) <= near2 && quadIsRectangle(edgeU, edgeV)) {
+    // So a program for a scene with no surface that near leaves it out (kQuadLightsUpClose).
+    if (kQuadLightsUpClose && dot(toCenter, toCenter) <= near2 && quadIsRectangle(edgeU, edgeV)) {
         view.rectangle = viewRectangleFrom(posWorld, center - edgeU - edgeV, 2.0 * edgeU, 2.0 * edgeV);
         view.bySolidAngle = sphericalRectangleUsable(view.rectangle);
     }

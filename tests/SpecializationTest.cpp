@@ -193,6 +193,49 @@ TEST(Specialization, ShapeLoopsAreUnrolledForTheScenesCountsUpToACap) {
     EXPECT_TRUE(sceneFeatures(many).unrolledShapes.has_value()) << "the cap itself is unrolled";
 }
 
+Shape* findShape(Scene& scene, const std::string& name) {
+    for (Shape& shape : scene.shapes)
+        if (shape.name == name) return &shape;
+    return nullptr;
+}
+
+// Solid-angle sampling of quad lights (lights.glsl viewQuadLight) is compiled in only where a
+// surface comes within its reach: in front of an emitting quad, within
+// kSolidAngleSamplingMaxDistance half-diagonals of its center (QuadLightReach.h).
+TEST(Specialization, QuadLightsAreSampledBySolidAngleOnlyWhereASurfaceComesNear) {
+    Scene cornell = shippedScene("cornell"); // light 0.32 half-diagonal, 0.01 below the ceiling
+    EXPECT_FALSE(sceneFeatures(cornell).quadLightsUpClose) << "the ceiling is behind the light, the rest out of reach";
+    EXPECT_TRUE(contains(programSource(cornell), "const bool kQuadLightsUpClose = false;"));
+    EXPECT_TRUE(contains(sceneFeatures(cornell).describe(), "quad lights sampled: by area\n"));
+    EXPECT_TRUE(ShaderFeatures::all().quadLightsUpClose);
+    EXPECT_TRUE(sceneFeatures(shippedScene("materials")).quadLightsUpClose);
+    EXPECT_FALSE(contains(sceneFeatures(shippedScene("lights")).describe(), "quad lights")) << "it has none";
+
+    Scene lowered = cornell; // 0.3 above the tall box's top: within 2 x 0.32
+    findShape(lowered, "light")->center.y = 1.5f;
+    EXPECT_TRUE(sceneFeatures(lowered).quadLightsUpClose);
+    EXPECT_TRUE(contains(programSource(lowered), "const bool kQuadLightsUpClose = true;"));
+    findShape(lowered, "light")->center.y = 1.9f; // 0.7 above it
+    EXPECT_FALSE(sceneFeatures(lowered).quadLightsUpClose);
+
+    Scene flipped = cornell; // facing the ceiling, 0.01 in front of it
+    std::swap(findShape(flipped, "light")->u, findShape(flipped, "light")->v);
+    EXPECT_TRUE(sceneFeatures(flipped).quadLightsUpClose);
+
+    Scene dark = flipped; // the quad emits nothing: not a light
+    dark.materials[static_cast<std::size_t>(findShape(dark, "light")->material)].radiance = glm::vec3(0.0f);
+    EXPECT_FALSE(sceneFeatures(dark).quadLightsUpClose);
+
+    Scene glowingBox = cornell; // the short box's six faces emit; the tall box is 0.34 from it
+    findShape(glowingBox, "short_box")->material = findShape(glowingBox, "light")->material;
+    EXPECT_TRUE(sceneFeatures(glowingBox).quadLightsUpClose);
+
+    Scene bunny = shippedScene("cornell_bunny"); // a mesh's box counts as a surface
+    ASSERT_FALSE(sceneFeatures(bunny).quadLightsUpClose);
+    findShape(bunny, "bunny")->transform.translate.y += 1.0f;
+    EXPECT_TRUE(sceneFeatures(bunny).quadLightsUpClose);
+}
+
 struct Render {
     PixelStatistics statistics;
     int programsCompiled;
@@ -234,11 +277,15 @@ void expectSameImage(const PixelStatistics& a, const PixelStatistics& b, float p
 }
 
 // Unrolled shape loops and the light kinds included: cornell's 18 quads and quad light, materials'
-// spheres and quads lit by quads and the environment, lights' disks, disk, point and spot lights.
+// spheres and quads lit by quads and the environment, lights' disks, disk, point and spot lights;
+// and whether quad lights are sampled by solid angle: not in cornell, but with its light lowered
+// to 0.3 above the tall box.
 TEST(Specialization, SpecializedAndUberProgramsRenderTheSameImage) {
-    for (const char* name : {"cornell", "materials", "lights", "meshes"}) {
+    for (const char* name : {"cornell", "materials", "lights", "meshes", "cornell, light lowered"}) {
         SCOPED_TRACE(name);
-        Scene scene = shippedScene(name);
+        const bool lowered = std::string(name) == "cornell, light lowered";
+        Scene scene = shippedScene(lowered ? "cornell" : name);
+        if (lowered) findShape(scene, "light")->center.y = 1.5f;
         Render specialized = render(scene, PathTracerOptions{false, Backend::Fragment}, Integrator::Full, 16);
         Render uber = render(scene, PathTracerOptions{true, Backend::Fragment}, Integrator::Full, 16);
         expectSameImage(specialized.statistics, uber.statistics, 1e-3f);

@@ -406,4 +406,14 @@ bool intersectAny(const Bvh& bvh, const std::vector<glm::vec3>& positions,
     return traverse<true>(bvh, positions, triangles, origin, direction, tMax).has_value();
 }
 
+Aabb transformedBounds(const Aabb& bounds, const glm::mat4& objectToWorld) {
+    Aabb world;
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                    (corner & 4) ? bounds.max.z : bounds.min.z);
+        world.extend(glm::vec3(objectToWorld * glm::vec4(p, 1.0f)));
+    }
+    return world;
+}
+
 } // namespace ptview

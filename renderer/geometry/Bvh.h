@@ -53,6 +53,9 @@ struct Aabb {
     }
 };
 
+// The box around `bounds` carried by an affine map (its eight corners' box).
+Aabb transformedBounds(const Aabb& bounds, const glm::mat4& objectToWorld);
+
 // One node, 32 bytes: bounds and two integers, laid out as the two 16-byte texels of the GPU's
 // node (GpuBvhNode in GpuMeshes.h). The GPU copy is not these bytes: GpuMeshes.cpp makes the
 // indices absolute and stores each integer as a float of the same value (exact below 2^24, which

@@ -1,7 +1,8 @@
 #pragma once
 // The GLSL constants of the enum tables (integrators, samplers, debug views, tone mappers, light
-// kinds), generated from the C++ tables as the include "enums.glsl": the shaders name the values
-// (kIntegratorMis, kLightQuad, ...) and never number them, so the two sides cannot disagree.
+// kinds) and of the few numbers both sides use (kSolidAngleSamplingMaxDistance), generated from
+// the C++ as the include "enums.glsl": the shaders name the values (kIntegratorMis, kLightQuad,
+// ...) and never number them, so the two sides cannot disagree.
 
 #include "ShaderAssembler.h"
 

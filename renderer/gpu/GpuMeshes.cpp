@@ -25,16 +25,6 @@ GpuBvhNode placed(const BvhNode& node, std::uint32_t nodeOffset, std::uint32_t p
     return GpuBvhNode{node.boundsMin, exactFloat(firstOrRight), node.boundsMax, static_cast<float>(node.primitiveCount)};
 }
 
-Aabb transformedBounds(const Aabb& bounds, const glm::mat4& objectToWorld) {
-    Aabb world;
-    for (int corner = 0; corner < 8; ++corner) {
-        glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
-                    (corner & 4) ? bounds.max.z : bounds.min.z);
-        world.extend(glm::vec3(objectToWorld * glm::vec4(p, 1.0f)));
-    }
-    return world;
-}
-
 // Rows of the upper 3x4 of a matrix: row r holds (m[0][r], m[1][r], m[2][r], m[3][r]), so that
 // dot(row, vec4(p, 1)) is the r-th coordinate of m * p.
 void appendRows(const glm::mat4& m, std::vector<glm::vec4>& out) {

@@ -154,20 +154,26 @@ void addAreaLights(const std::vector<Primitive>& primitives, const std::vector<s
 
 } // namespace
 
+Aabb primitiveBounds(const GpuQuad& quad) {
+    glm::vec3 c(quad.center), u(quad.u), v(quad.v);
+    Aabb bounds;
+    for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) bounds.extend(corner);
+    return bounds;
+}
+
+Aabb primitiveBounds(const GpuSphere& sphere) {
+    return Aabb{sphere.center - sphere.radius, sphere.center + sphere.radius};
+}
+
+Aabb primitiveBounds(const GpuDisk& disk) {
+    return Aabb{disk.center - disk.radius, disk.center + disk.radius};
+}
+
 float sceneBoundingRadius(const ScenePrimitives& geometry, const Aabb& meshBounds) {
     Aabb bounds = meshBounds;
-    for (const GpuQuad& quad : geometry.quads) {
-        glm::vec3 c(quad.center), u(quad.u), v(quad.v);
-        for (glm::vec3 corner : {c - u - v, c + u + v, c + u - v, c - u + v}) bounds.extend(corner);
-    }
-    for (const GpuSphere& sphere : geometry.spheres) {
-        bounds.extend(sphere.center - sphere.radius);
-        bounds.extend(sphere.center + sphere.radius);
-    }
-    for (const GpuDisk& disk : geometry.disks) {
-        bounds.extend(disk.center - disk.radius);
-        bounds.extend(disk.center + disk.radius);
-    }
+    for (const GpuQuad& quad : geometry.quads) bounds.extend(primitiveBounds(quad));
+    for (const GpuSphere& sphere : geometry.spheres) bounds.extend(primitiveBounds(sphere));
+    for (const GpuDisk& disk : geometry.disks) bounds.extend(primitiveBounds(disk));
     return bounds.empty() ? 1.0f : 0.5f * glm::length(bounds.max - bounds.min);
 }
 

@@ -38,6 +38,10 @@ struct LightTable {
 };
 
 // Pure CPU steps, testable without a GL context.
+// The box around a primitive (around a disk, the box of its sphere).
+Aabb primitiveBounds(const GpuQuad& quad);
+Aabb primitiveBounds(const GpuSphere& sphere);
+Aabb primitiveBounds(const GpuDisk& disk);
 // Half the diagonal of the box around every primitive (1 for an empty scene).
 float sceneBoundingRadius(const ScenePrimitives& geometry, const Aabb& meshBounds = {});
 ScenePrimitives flattenScene(const Scene& scene);

@@ -37,6 +37,8 @@ struct ShaderFeatures {
     std::uint32_t lightKinds = 0;     // bit (1 << LightKind) for each kind of light the scene can
                                       //   have in its light table (emitting shapes, triangles, the
                                       //   environment, point lights...): only those are sampled
+    bool quadLightsUpClose = false;   // a surface comes near enough a quad light's front to sample
+                                      //   it by solid angle (QuadLightReach.h); else only by area
     bool environmentMap = false;      // else the constant colour
     bool meshes = false;
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
