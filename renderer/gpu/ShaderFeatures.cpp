@@ -1,6 +1,7 @@
 #include "ShaderFeatures.h"
 
 #include "GlslEnums.h"
+#include "GpuScene.h"
 #include "MaterialSchema.h"
 #include "QuadLightReach.h"
 
@@ -111,17 +112,9 @@ bool ShapeCounts::operator==(const ShapeCounts& other) const {
 }
 
 ShapeCounts shapeCounts(const Scene& scene) {
-    ShapeCounts counts;
-    for (const Shape& shape : scene.shapes) {
-        switch (shape.type) {
-        case ShapeType::Sphere: ++counts.spheres; break;
-        case ShapeType::Quad: ++counts.quads; break;
-        case ShapeType::Box: counts.quads += 6; break; // GpuScene.cpp appendBox
-        case ShapeType::Disk: ++counts.disks; break;
-        case ShapeType::Mesh: break;
-        }
-    }
-    return counts;
+    ScenePrimitives primitives = flattenScene(scene); // the primitives the GPU holds: a box is six quads
+    return ShapeCounts{static_cast<int>(primitives.spheres.size()), static_cast<int>(primitives.quads.size()),
+                       static_cast<int>(primitives.disks.size())};
 }
 
 ShaderFeatures ShaderFeatures::all() {

@@ -30,6 +30,7 @@ struct ShapeCounts {
     bool operator==(const ShapeCounts& other) const;
 };
 
+// As flattenScene (GpuScene.h) lays them out for the GPU.
 ShapeCounts shapeCounts(const Scene& scene);
 
 struct ShaderFeatures {
