@@ -849,5 +849,247 @@ TEST(GltfLoader, HelmetSceneLoadsTheHelmetUnderTheStudioMap) {
     EXPECT_EQ(scene.environmentMap.filename(), "studio_small_03_1k.hdr");
 }
 
+
+// --- Files from strangers: resources, budgets and bounds (docs/scene-format.md, "glTF files") ----
+
+std::string loadError(const std::filesystem::path& path, const ReadScope& scope) {
+    try {
+        loadScene(path, scope);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(loaded without an error)";
+}
+
+// A glTF in its own folder "model/" of the scratch directory, with a file beside that folder.
+struct ModelBesideASecret {
+    ScratchFiles files{"gltf"};
+    std::filesystem::path folder;
+    std::filesystem::path secret;
+
+    explicit ModelBesideASecret(const std::string& secretBytes) {
+        secret = files.write("secret.bin", secretBytes);
+        folder = secret.parent_path() / "model";
+        std::filesystem::create_directories(folder);
+    }
+    std::filesystem::path writeModel(const std::string& name, const std::string& text) const {
+        return files.write("model/" + name, text);
+    }
+};
+
+// The bytes of the triangle's buffer whose first index would be 114 ('r' of "root:..."), as the
+// start of /etc/passwd once made "element 0 is vertex 114".
+GltfBuilder indexedTriangle() {
+    GltfBuilder b;
+    int positions = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    int indices = b.accessor(b.view(std::string("\0\1\2\0", 4)), kUnsignedByte, 3, "SCALAR");
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", positions}}}, {"indices", indices}})}});
+    return b;
+}
+
+TEST(GltfLoader, UrisLeavingTheModelsFolderAreRefusedBeforeAnyRead) {
+    GltfBuilder b = indexedTriangle();
+    ModelBesideASecret place(("root:x:0:0:root:/root:/bin/bash\n" + std::string(64, 'r')).substr(0, b.bin.size()));
+    // A buffer: refused naming the file and the pointer, before the bytes are looked at.
+    const auto buffer = place.writeModel("buffer.gltf", b.gltfWithBin("../secret.bin"));
+    std::string error = loadError(buffer);
+    EXPECT_EQ(error.rfind(buffer.string() + ": /buffers/0/uri: ", 0), 0u) << error;
+    EXPECT_NE(error.find(place.secret.string() + " is outside the folder of buffer.gltf"), std::string::npos) << error;
+    EXPECT_NE(error.find("--allow-dir"), std::string::npos) << error;
+    EXPECT_EQ(error.find("vertex 114"), std::string::npos) << "a refused file's bytes show in the message: " << error;
+    // An image: the same.
+    GltfBuilder textured = indexedTriangle();
+    textured.doc["images"] = Json::array({{{"uri", "../secret.bin"}}});
+    textured.doc["textures"] = Json::array({{{"source", 0}}});
+    textured.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    textured.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    const auto image = place.writeModel("image.gltf", textured.gltfWithDataUri());
+    error = loadError(image);
+    EXPECT_EQ(error.rfind(image.string() + ": /images/0/uri: " + place.secret.string() + " is outside", 0), 0u) << error;
+    // A directory the user allowed: read, and the first index then names the secret's first byte.
+    const ReadScope allowed = ReadScope::anywhere({place.secret.parent_path()});
+    error = loadError(buffer, allowed);
+    EXPECT_NE(error.find("/accessors/1: element 0 is vertex 114"), std::string::npos) << error;
+    // data: URIs and files inside the folder load as before.
+    EXPECT_NO_THROW(loadScene(place.writeModel("data.gltf", b.gltfWithDataUri())));
+    place.writeModel("inside.bin", b.bin);
+    EXPECT_NO_THROW(loadScene(place.writeModel("inside.gltf", b.gltfWithBin("inside.bin"))));
+    std::filesystem::create_directories(place.folder / "sub");
+    place.writeModel("sub/deeper.bin", b.bin);
+    EXPECT_NO_THROW(loadScene(place.writeModel("deeper.gltf", b.gltfWithBin("sub/../sub/deeper.bin"))));
+}
+
+TEST(GltfLoader, AbsoluteUrisAreRefusedAsAbsoluteNotAsMissing) {
+    GltfBuilder b = indexedTriangle();
+    ModelBesideASecret place("secret");
+    for (const auto& [uri, reason] : std::vector<std::pair<std::string, std::string>>{
+             {place.secret.string(), "is an absolute path: a glTF file names its buffers and images by URIs relative"},
+             {"%2F" + place.secret.string().substr(1), "is an absolute path"},
+             {"file://" + place.secret.string(), "is an absolute URI (scheme file:)"},
+             {"https://example.com/model.bin", "is an absolute URI (scheme https:)"},
+             {"C:/Windows/model.bin", "is an absolute path (a drive letter)"},
+             {"\\\\server\\share\\model.bin", "is an absolute path"}}) {
+        const auto path = place.writeModel("absolute.gltf", b.gltfWithBin(uri));
+        const std::string error = loadError(path);
+        EXPECT_EQ(error.rfind(path.string() + ": /buffers/0/uri: ", 0), 0u) << uri << ": " << error;
+        EXPECT_NE(error.find(reason), std::string::npos) << uri << ": " << error;
+        EXPECT_EQ(error.find("not found"), std::string::npos) << uri << ": " << error;
+        // Even where the user allowed the folder: glTF URIs are relative.
+        EXPECT_NE(loadError(path, ReadScope::anywhere({"/"})).find(reason), std::string::npos) << uri;
+    }
+}
+
+TEST(GltfLoader, ASymlinkInTheModelsFolderToAFileOutsideIsRefused) {
+    GltfBuilder b = indexedTriangle();
+    ModelBesideASecret place(b.bin);
+    std::filesystem::create_symlink(place.secret, place.folder / "link.bin");
+    const auto path = place.writeModel("link.gltf", b.gltfWithBin("link.bin"));
+    const std::string error = loadError(path);
+    EXPECT_EQ(error.rfind(path.string() + ": /buffers/0/uri: " + place.secret.string() + " is outside", 0), 0u) << error;
+    EXPECT_NO_THROW(loadScene(path, ReadScope::anywhere({place.secret.parent_path()})));
+}
+
+TEST(GltfLoader, CountsBeyondTheBudgetsAreRefusedBeforeAllocation) {
+    ScratchFiles files("gltf");
+    auto expectError = [&](const std::string& name, GltfBuilder& b, const std::string& expected) {
+        const auto path = files.write(name, b.gltfWithDataUri());
+        const std::string error = loadError(path);
+        EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
+        EXPECT_NE(error.find(expected), std::string::npos) << error;
+    };
+    {
+        // The 400-byte file that once asked for 3.3 GB of zeros.
+        GltfBuilder b;
+        int zeros = b.accessor(0, kFloat, 400000000, "VEC3");
+        b.doc["accessors"][static_cast<std::size_t>(zeros)].erase("bufferView");
+        b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", zeros}}}})}});
+        expectError("zeros.gltf", b, "/accessors/0/count: 400000000 elements, more than the 50331648 an accessor may hold");
+    }
+    {
+        // Under the accessor's limit but without a buffer view: all at the origin, skipped unread.
+        GltfBuilder b;
+        int zeros = b.accessor(0, kFloat, 50000000, "VEC3");
+        b.doc["accessors"][static_cast<std::size_t>(zeros)].erase("bufferView");
+        b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", zeros}}}})}});
+        b.node({{"mesh", unitTriangle(b)}});
+        Scene scene = loadScene(files.write("origin.gltf", b.gltfWithDataUri()));
+        EXPECT_EQ(scene.meshes.size(), 1u) << "only the unit triangle";
+        EXPECT_TRUE(hasWarning(scene, "/meshes/0/primitives/0/attributes/POSITION: no buffer view")) << scene.warnings.size();
+    }
+    {
+        // Two primitives reading one accessor count twice: 2 x 9M vertices pass the file's 16.7M.
+        GltfBuilder b;
+        int shared = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+        b.doc["accessors"][static_cast<std::size_t>(shared)]["count"] = 9000000; // the view is checked only when read
+        Json primitive = {{"attributes", {{"POSITION", shared}}}};
+        b.doc["meshes"].push_back({{"primitives", Json::array({primitive, primitive})}});
+        b.node({{"mesh", 0}});
+        expectError("vertices.gltf", b, "/meshes/0/primitives/1: the file's meshes hold 18000000 vertices up to here, more than the 16777216");
+    }
+    {
+        GltfBuilder b;
+        int positions = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
+        int indices = b.accessor(b.view(std::string("\0\1\2\0", 4)), kUnsignedByte, 30000000, "SCALAR");
+        Json primitive = {{"attributes", {{"POSITION", positions}}}, {"indices", indices}};
+        b.doc["meshes"].push_back({{"primitives", Json::array({primitive})}});
+        b.doc["meshes"].push_back({{"primitives", Json::array({primitive})}});
+        b.node({{"mesh", 0}});
+        b.node({{"mesh", 1}});
+        expectError("indices.gltf", b, "/meshes/1/primitives/0: the file's meshes hold 60000000 triangle corners up to here, more than the 50331648");
+    }
+}
+
+TEST(GltfLoader, ValuesBeyondTheSceneFormatsBoundsAreRefusedNamingThePlace) {
+    ScratchFiles files("gltf");
+    auto expectError = [&](const std::string& name, GltfBuilder& b, const std::string& expected) {
+        const auto path = files.write(name, b.gltfWithDataUri());
+        const std::string error = loadError(path);
+        EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
+        EXPECT_NE(error.find(expected), std::string::npos) << error;
+    };
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}, {"translation", {0, 0, 1e20}}});
+        expectError("far.gltf", b, "/nodes/0: it places vertex 0 of /meshes/0 at (0, 0, 1e+20), beyond the scene's bound of 1e+09 m");
+        b.doc["nodes"][0]["translation"] = {0, 0, 9e8}; // within: loads
+        EXPECT_NO_THROW(loadScene(files.write("near.gltf", b.gltfWithDataUri())));
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}});
+        b.node({{"camera", 0}, {"translation", {1e20, 0, 0}}});
+        expectError("camera.gltf", b, "/nodes/1: it places the camera at (1e+20, 0, 0), beyond");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 1e300}}});
+        b.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+        expectError("light.gltf", b, "/extensions/KHR_lights_punctual/lights/0/intensity: 1e+300: expected a number in [0, 1000000000]");
+        b.doc["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = -1;
+        expectError("dark.gltf", b, "/extensions/KHR_lights_punctual/lights/0/intensity: -1: expected");
+        b.doc["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 1;
+        b.doc["nodes"][1]["translation"] = {0, -2e9, 0};
+        expectError("lamp.gltf", b, "/nodes/1: it places the light at (0, -2e+09, 0), beyond");
+    }
+    for (double scale : {1e30, -1e30, -1.0}) {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["images"] = Json::array({{{"uri", "data:image/png;base64," + base64(pngBytes(1, 1, {128, 128, 255, 255}))}}});
+        b.doc["textures"] = Json::array({{{"source", 0}}});
+        b.doc["materials"] = Json::array({{{"normalTexture", {{"index", 0}, {"scale", scale}}}}});
+        b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+        expectError("normal.gltf", b, "/materials/0/normalTexture/scale: ");
+        expectError("normal.gltf", b, "expected a number in [0, 100] (normal scale");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}});
+        b.doc["materials"] = Json::array({{{"emissiveFactor", {1, 1, 1}}, {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e300}}}}}}});
+        b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+        expectError("emission.gltf", b, "/materials/0/emissiveFactor/0: 1e+300: expected a number in [0, 1000000000] (radiance");
+        b.doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {1.5, 0, 0, 1}}}}}});
+        expectError("colour.gltf", b, "/materials/0/pbrMetallicRoughness/baseColorFactor/0: 1.5: expected a number in [0, 1]");
+    }
+    {
+        GltfBuilder b;
+        b.node({{"mesh", unitTriangle(b)}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0.5, 0, 0, 0, 1}}});
+        expectError("projective.gltf", b, "/nodes/0/matrix: not an affine transform: its last row is 0 0 0.5 1, where glTF requires 0 0 0 1");
+        // Finite in double, each factor; their product is beyond a float.
+        b.doc["nodes"][0] = {{"mesh", 0}, {"scale", {1e30, 1e30, 1e30}}};
+        b.node({{"children", {0}}, {"scale", {1e30, 1e30, 1e30}}});
+        b.scene({1});
+        expectError("huge.gltf", b, "/nodes/0: its world matrix (the product of its and its parents' transforms) is not finite as a float");
+    }
+}
+
+// Whatever a glTF file holds that loads, its scene writes back (sceneToJson) and that loads again.
+TEST(GltfLoader, AModelAtTheEdgesOfTheBoundsWritesBackAndLoadsAgain) {
+    ScratchFiles files("gltf");
+    GltfBuilder b;
+    // A model from -1e9 to 1e9 in z: framed from +Z, the eye would be beyond the bounds.
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", b.positions({0, 0, -1e9f, 1, 0, 1e9f, 0, 1, 0})}}}})}});
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({{{"type", "point"}, {"intensity", 1e9}}});
+    b.node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {0, 0, 1e9}}});
+    b.doc["images"] = Json::array({{{"uri", "data:image/png;base64," + base64(pngBytes(1, 1, {128, 128, 255, 255}))}}});
+    b.doc["textures"] = Json::array({{{"source", 0}}});
+    b.doc["materials"] = Json::array({{{"normalTexture", {{"index", 0}, {"scale", 100}}}, {"emissiveFactor", {1, 1, 1}},
+                                       {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e9}}}}}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    const auto path = files.write("edge.gltf", b.gltfWithDataUri());
+    Scene scene = loadScene(path);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_LE(std::abs(scene.camera.eye[i]), 1e9f) << "eye " << i;
+        EXPECT_LE(std::abs(scene.camera.target[i]), 1e9f) << "target " << i;
+    }
+    std::string json;
+    ASSERT_NO_THROW(json = sceneToJson(scene));
+    Scene again;
+    ASSERT_NO_THROW(again = parseScene(json, path.parent_path() / "edge.json")) << json;
+    EXPECT_EQ(again.camera.eye, scene.camera.eye);
+    EXPECT_EQ(again.lights.size(), 1u);
+}
+
 } // namespace
 } // namespace ptview

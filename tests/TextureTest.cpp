@@ -1,4 +1,5 @@
 // Textures: decoding (TextureLoader), and on the GPU the exact texel values a render returns.
+#include "ClaimingPng.h"
 #include "GlTestContext.h"
 #include "GpuTextures.h"
 #include "ImageIO.h"
@@ -386,6 +387,83 @@ TEST(TexturedScene, UndecodableTextureNamesTheFileAndThePointer) {
         EXPECT_NE(message.find("/materials/m/albedo/texture"), std::string::npos) << message;
         EXPECT_NE(message.find("bad.png"), std::string::npos) << message;
         EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+    }
+}
+
+
+TEST(TextureLoader, TheSizeIsReadFromTheHeaderWithoutDecoding) {
+    EXPECT_EQ(readImageSize(testing::pngClaimingSize(16384, 16384), "claim.png"), glm::ivec2(16384, 16384));
+    EXPECT_EQ(readImageSize(testing::pngClaimingSize(3, 5), "small.png"), glm::ivec2(3, 5));
+    try {
+        readImageSize(testing::pngClaimingSize(16385, 1), "wide.png");
+        ADD_FAILURE() << "a width over the limit was read";
+    } catch (const TextureError& e) {
+        EXPECT_EQ(std::string(e.what()), "wide.png: image too large (16385x1; at most 16384 on a side)");
+    }
+}
+
+// Six small files claiming 16384 x 16384 pixels: the second passes 1 GiB, refused before either is
+// decoded (the claims are a hundred bytes each: decoding would fail, with other words).
+TEST(TextureLoader, TheCacheRefusesTheFileThatPassesTheSceneTotalBeforeDecoding) {
+    ScratchFiles files("texture_budget");
+    TextureImageCache cache;
+    cache.reserve(files.write("0.png", testing::pngClaimingSize(16384, 16384)));
+    EXPECT_EQ(cache.spentBytes(), kMaxSceneTextureBytes);
+    const auto second = files.write("1.png", testing::pngClaimingSize(16384, 16384));
+    try {
+        cache.reserve(second);
+        ADD_FAILURE() << "a second 1 GiB image was allowed";
+    } catch (const TextureError& e) {
+        EXPECT_EQ(std::string(e.what()), second.string() + ": a 16384x16384 image takes 1024 MiB decoded; with the 1024 MiB the scene's "
+                                         "textures take already, that passes the limit of 1024 MiB for the textures of one scene "
+                                         "(docs/scene-format.md, \"Limits\")");
+    }
+    EXPECT_EQ(cache.spentBytes(), kMaxSceneTextureBytes) << "a refused image counts nothing";
+    // One file reserved again (by another name) counts once.
+    ASSERT_NO_THROW(cache.reserve(second.parent_path() / "." / "0.png"));
+    EXPECT_EQ(cache.spentBytes(), kMaxSceneTextureBytes);
+}
+
+// What the loaders start their budgets from: each image the scene holds once, however many
+// textures and MTL maps share it.
+TEST(TextureLoader, AScenesDecodedBytesCountEachImageOnce) {
+    auto image = std::make_shared<TextureImage>();
+    image->width = 4;
+    image->height = 2;
+    auto other = std::make_shared<TextureImage>();
+    other->width = 1;
+    other->height = 1;
+    Scene scene;
+    scene.textures.resize(2);
+    scene.textures[0].image = image;
+    scene.textures[1].image = image;
+    auto mesh = std::make_shared<TriangleMesh>();
+    mesh->fileMaterials.resize(1);
+    mesh->fileMaterials[0].diffuseMap.image = image;
+    mesh->fileMaterials[0].normalMap.image = other;
+    scene.meshes.push_back(SceneMesh{"m", "m.obj", mesh, -1});
+    EXPECT_EQ(decodedTextureBytes(scene), 4u * 2u * 4u + 4u);
+}
+
+TEST(TexturedScene, TexturesOfOneSceneShareOneBudgetNamingTheFileThePointerAndTheLimit) {
+    ScratchFiles files("texture_budget_scene");
+    std::string materials;
+    for (int i = 0; i < 6; ++i) {
+        files.write("bomb" + std::to_string(i) + ".png", testing::pngClaimingSize(16384, 16384));
+        materials += std::string(i ? ", " : "") + "\"m" + std::to_string(i) + "\": {\"type\": \"diffuse\", \"albedo\": {\"texture\": \"bomb" +
+                     std::to_string(i) + ".png\"}}";
+    }
+    const auto path = files.write("scene.json", R"({"camera": {"eye": [0, 0, 1], "target": [0, 0, 0], "vfov_deg": 90, "resolution": [8, 8]},
+  "materials": {)" + materials + R"(},
+  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "m0"}]})");
+    try {
+        loadScene(path);
+        ADD_FAILURE() << "six textures of 1 GiB each loaded";
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.rfind(path.string() + ": /materials/m1/albedo/texture: ", 0), 0u) << message;
+        EXPECT_NE(message.find("bomb1.png: a 16384x16384 image takes 1024 MiB decoded"), std::string::npos) << message;
+        EXPECT_NE(message.find("the limit of 1024 MiB"), std::string::npos) << message;
     }
 }
 

@@ -1,9 +1,13 @@
 // Reads glTF 2.0 into the scene model (GltfLoader.h). Three passes:
 //  1. checkDocument: the container (a .glb's header and chunks) and, on the raw JSON, what tinygltf
 //     would read out of bounds or report without a place: every buffer view inside its buffer,
-//     every external buffer and image present and long enough, every required extension known.
-//  2. tinygltf parses the JSON and fetches the buffers (through InputFile) and the encoded images.
-//  3. GltfReader turns the model into ours, checking each index and each accessor's bytes itself.
+//     every external buffer and image inside the model's read scope (ReadScope.h), present and long
+//     enough, every accessor's count within its budget, every required extension known.
+//  2. tinygltf parses the JSON and fetches the buffers (through InputFile, and the read scope again)
+//     and the encoded images.
+//  3. GltfReader turns the model into ours, checking each index and each accessor's bytes itself,
+//     the file's vertex, index and texture budgets before it reads a mesh or decodes an image, and
+//     every value against the scene format's bounds (SceneRanges.h) as the float it stores.
 
 #include "GltfLoader.h"
 
@@ -39,6 +43,18 @@ using Json = nlohmann::json;
 // A .glb holds its buffer and images; 2 GiB is tinygltf's own ceiling (it takes lengths as int).
 constexpr std::uintmax_t kMaxGltfFileBytes = 2047 * kMiB;
 constexpr std::uintmax_t kMaxResourceBytes = 2047 * kMiB; // an external .bin or image
+
+// Budgets for what a file may make us allocate (docs/scene-format.md, "Limits"), checked on the
+// counts a file declares before anything is allocated: a count costs nothing to write (an accessor
+// without a buffer view is all zeros; many primitives may read one accessor), so file size alone
+// bounds nothing. A vertex takes up to 48 bytes here (position, normal, texture coordinates,
+// tangent) and a triangle 52, so the limits come to about 0.8 GB of vertices and 0.9 GB of
+// triangles: ample for scans ten times the 1.1M-triangle bunny of assets/ (the shipped helmet has
+// 14556 vertices), and far from what a 400-byte file once asked for (4e8 elements, 3.3 GB).
+constexpr std::uint64_t kMaxGltfVertices = std::uint64_t(1) << 24;        // per file, all meshes
+constexpr std::uint64_t kMaxGltfIndices = 3 * (std::uint64_t(1) << 24);   // corners per file: 16.7M triangles
+// No use of an accessor reads more elements than the larger of the two.
+constexpr std::uint64_t kMaxAccessorElements = kMaxGltfIndices;
 
 // What we read of an extension, so one marked required is not refused.
 const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
@@ -79,9 +95,43 @@ std::string decodeUri(const std::string& uri) {
     return out;
 }
 
-std::filesystem::path resourcePath(const std::filesystem::path& gltfFile, const std::string& uri) {
-    std::filesystem::path relative = std::filesystem::u8path(decodeUri(uri));
-    return relative.is_absolute() ? relative : gltfFile.parent_path() / relative;
+// A URI as messages quote it: short, since it comes from the file.
+std::string quotedUri(const std::string& uri) {
+    return "\"" + (uri.size() > 80 ? uri.substr(0, 77) + "..." : uri) + "\"";
+}
+
+// Why a buffer's or image's URI names no file inside the model's folder by its form alone, before
+// any file is looked at; nullopt for a relative reference. glTF files name their resources by
+// URIs relative to the file, or data: URIs (glTF 2.0, "URIs"); anything else is refused rather
+// than looked for, so that a model cannot make us read /etc/passwd or a network path.
+std::optional<std::string> absoluteUriReason(const std::string& uri) {
+    const std::string why = ": a glTF file names its buffers and images by URIs relative to its own folder, or data: URIs";
+    std::size_t schemeEnd = 0;
+    while (schemeEnd < uri.size() && (std::isalnum(static_cast<unsigned char>(uri[schemeEnd])) ||
+                                      uri[schemeEnd] == '+' || uri[schemeEnd] == '-' || uri[schemeEnd] == '.'))
+        ++schemeEnd;
+    if (schemeEnd > 0 && schemeEnd < uri.size() && uri[schemeEnd] == ':' && std::isalpha(static_cast<unsigned char>(uri[0]))) {
+        if (schemeEnd == 1) return quotedUri(uri) + " is an absolute path (a drive letter)" + why;
+        return quotedUri(uri) + " is an absolute URI (scheme " + uri.substr(0, schemeEnd) + ":)" + why;
+    }
+    const std::string decoded = decodeUri(uri);
+    if (decoded.find('\0') != std::string::npos) return quotedUri(uri) + " holds a NUL character" + why;
+    if (!decoded.empty() && (decoded[0] == '/' || decoded[0] == '\\'))
+        return quotedUri(uri) + " is an absolute path" + why;
+    if (decoded.size() >= 2 && std::isalpha(static_cast<unsigned char>(decoded[0])) && decoded[1] == ':')
+        return quotedUri(uri) + " is an absolute path (a drive letter)" + why;
+    return std::nullopt;
+}
+
+// The file a buffer's or image's URI names, relative to the glTF file, once `modelScope` allows it
+// (its refusal names the file and says how to allow it). Fails at `where` otherwise, before the
+// file is looked at: nothing of a refused file is ever read, so no message can quote it.
+std::filesystem::path resourcePath(const std::filesystem::path& gltfFile, const std::string& uri,
+                                   const ReadScope& modelScope, const std::string& where) {
+    if (std::optional<std::string> reason = absoluteUriReason(uri)) fail(where, *reason);
+    std::filesystem::path resolved = gltfFile.parent_path() / std::filesystem::u8path(decodeUri(uri));
+    if (std::optional<std::string> refusal = modelScope.refusal(resolved)) fail(where, *refusal);
+    return resolved;
 }
 
 // The bytes a base64 data URI decodes to, from its length alone.
@@ -177,7 +227,7 @@ void checkResourceFile(const std::filesystem::path& file, const std::string& whe
 }
 
 // Pass 1, on the raw JSON: what tinygltf would trust or report without saying where.
-void checkDocument(const Json& root, const std::filesystem::path& file, const GlbChunks* glb) {
+void checkDocument(const Json& root, const std::filesystem::path& file, const GlbChunks* glb, const ReadScope& modelScope) {
     if (!root.is_object()) fail("", "expected a JSON object at the top level");
     auto asset = root.find("asset");
     if (asset == root.end() || !asset->is_object() || !asset->contains("version") || !(*asset)["version"].is_string())
@@ -218,7 +268,7 @@ void checkDocument(const Json& root, const std::filesystem::path& file, const Gl
                          std::to_string(byteLength) + " bytes, but its data URI holds " + std::to_string(held));
                 continue;
             }
-            std::filesystem::path resource = resourcePath(file, text);
+            std::filesystem::path resource = resourcePath(file, text, modelScope, at("buffers", i) + "/uri");
             checkResourceFile(resource, at("buffers", i) + "/uri", "glTF buffer");
             std::error_code error;
             std::uintmax_t size = std::filesystem::file_size(resource, error);
@@ -249,7 +299,21 @@ void checkDocument(const Json& root, const std::filesystem::path& file, const Gl
             if (!image.is_object()) fail(at("images", i), "expected an object");
             auto uri = image.find("uri");
             if (uri != image.end() && uri->is_string() && !isDataUri(uri->get<std::string>()))
-                checkResourceFile(resourcePath(file, uri->get<std::string>()), at("images", i) + "/uri", "glTF image");
+                checkResourceFile(resourcePath(file, uri->get<std::string>(), modelScope, at("images", i) + "/uri"),
+                                  at("images", i) + "/uri", "glTF image");
+        }
+    }
+
+    // Before tinygltf copies them: a count is checked before anything is sized by it.
+    if (auto accessors = root.find("accessors"); accessors != root.end() && accessors->is_array()) {
+        for (std::size_t i = 0; i < accessors->size(); ++i) {
+            const Json& accessor = (*accessors)[i];
+            if (!accessor.is_object()) fail(at("accessors", i), "expected an object");
+            std::uint64_t count = unsignedOr(accessor, "count", 0, at("accessors", i));
+            if (count > kMaxAccessorElements)
+                fail(at("accessors", i) + "/count", std::to_string(count) + " elements, more than the " +
+                                                        std::to_string(kMaxAccessorElements) +
+                                                        " an accessor may hold (docs/scene-format.md, \"Limits\")");
         }
     }
 }
@@ -260,16 +324,25 @@ struct LoadContext {
     std::vector<std::vector<unsigned char>> encodedImages; // per glTF image; decoded only when used
 };
 
-bool fileExists(const std::string& path, void*) {
+// tinygltf looks for a resource beside the model and then in the working directory, and joins
+// the URI as it is; checkDocument refused every URI outside the model's scope already, and the
+// callbacks refuse again whatever path tinygltf comes up with (user data: the model's ReadScope).
+bool fileExists(const std::string& path, void* user) {
+    const std::filesystem::path file = std::filesystem::u8path(path);
+    if (static_cast<const ReadScope*>(user)->refusal(file)) return false;
     std::error_code error;
-    return std::filesystem::is_regular_file(std::filesystem::u8path(path), error);
+    return std::filesystem::is_regular_file(file, error);
 }
 
 std::string expandFilePath(const std::string& path, void*) {
     return path; // no ~ or $VAR expansion: a file names its resources literally
 }
 
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    if (std::optional<std::string> refusal = static_cast<const ReadScope*>(user)->refusal(std::filesystem::u8path(path))) {
+        if (err) *err = *refusal;
+        return false;
+    }
     try {
         std::string bytes = readInputFile(std::filesystem::u8path(path), kMaxResourceBytes, "glTF resource");
         out->assign(bytes.begin(), bytes.end());
@@ -374,6 +447,15 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, const std::string& where) {
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) fail(where + "/matrix", "expected 16 numbers");
         finite(node.matrix, "matrix");
+        // glTF: a node's matrix is a translation x rotation x scale, so its last row is 0 0 0 1; a
+        // projective one would make the renderer divide by w, which it never does.
+        const std::vector<double>& m = node.matrix; // column-major: the last row is m[3], m[7], m[11], m[15]
+        if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0) {
+            char row[128];
+            std::snprintf(row, sizeof row, "%.6g %.6g %.6g %.6g", m[3], m[7], m[11], m[15]);
+            fail(where + "/matrix", std::string("not an affine transform: its last row is ") + row +
+                                        ", where glTF requires 0 0 0 1");
+        }
         return glm::make_mat4(node.matrix.data()); // column-major, as glTF stores it
     }
     glm::dmat4 m(1.0);
@@ -398,15 +480,52 @@ glm::dmat4 localMatrix(const tinygltf::Node& node, const std::string& where) {
     return m;
 }
 
+// A number of the file as the float the scene stores, checked against the scene format's range for
+// it (SceneRanges.h), so that a glTF scene holds only what a scene file could: refused as scene
+// JSON refuses it, at the file's pointer.
+float inRange(double value, const SceneRange& range, const std::string& where) {
+    const bool fitsFloat = std::abs(value) <= double(std::numeric_limits<float>::max());
+    const float stored = fitsFloat ? static_cast<float>(value) : 0.0f;
+    if (!fitsFloat || !range.contains(stored)) {
+        char written[32];
+        std::snprintf(written, sizeof written, "%.9g", value);
+        fail(where, std::string(written) + ": expected " + range.expected() + " (" + range.quantity +
+                        (fitsFloat ? "" : "; as a float it is not even finite") + ")");
+    }
+    return stored;
+}
+
+// A point the file places (after every node's transform, in double): each coordinate within the
+// scene format's bound (kMaxSceneExtent), as scene JSON's positions are.
+bool withinSceneExtent(const glm::dvec3& p) {
+    return std::abs(p.x) <= double(kMaxSceneExtent) && std::abs(p.y) <= double(kMaxSceneExtent) &&
+           std::abs(p.z) <= double(kMaxSceneExtent);
+}
+
+[[noreturn]] void failBeyondSceneExtent(const std::string& where, const std::string& what, const glm::dvec3& p) {
+    char text[200];
+    std::snprintf(text, sizeof text, " (%.6g, %.6g, %.6g), beyond the scene's bound of %g m on an axis (as in a scene file)",
+                  p.x, p.y, p.z, double(kMaxSceneExtent));
+    fail(where, what + text);
+}
+
+glm::vec3 placedPoint(const glm::dvec3& p, const std::string& where, const std::string& what) {
+    if (!withinSceneExtent(p)) failBeyondSceneExtent(where, what, p);
+    return glm::vec3(p);
+}
+
 class GltfReader {
 public:
     GltfReader(const tinygltf::Model& model, LoadContext& context, const std::filesystem::path& file,
-               const glm::mat4& placement, int importIndex, Scene& scene)
+               const ReadScope& modelScope, const glm::mat4& placement, int importIndex, Scene& scene)
         : model_(model), context_(context), file_(file), fileName_(file.filename().string()),
-          stem_(file.stem().string()), placement_(placement), importIndex_(importIndex), scene_(scene) {}
+          stem_(file.stem().string()), modelScope_(modelScope), placement_(placement), importIndex_(importIndex),
+          scene_(scene) {}
 
     GltfContents read() {
         warnUnsupported();
+        checkMeshBudget();
+        chargeImages();
         for (std::size_t m = 0; m < model_.materials.size(); ++m) materialIndex_.push_back(readMaterial(m));
         meshIndex_.assign(model_.meshes.size(), -2); // -2: not read yet, -1: no triangles
         readNodes();
@@ -415,6 +534,95 @@ public:
     }
 
 private:
+    // --- Budgets, before anything is allocated ---
+
+    // An accessor that holds data (one without a buffer view is all zeros), else nullptr.
+    const tinygltf::Accessor* accessorWithData(int index) const {
+        if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) return nullptr;
+        const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
+        return a.bufferView >= 0 ? &a : nullptr;
+    }
+
+    static bool isTriangleMode(int mode) {
+        return mode < 0 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+               mode == TINYGLTF_MODE_TRIANGLE_FAN;
+    }
+
+    // The vertices and corners readPrimitive would make, over every mesh a node uses, as the file
+    // declares them (the accessors' bytes are checked when read): refused before the first is read.
+    void checkMeshBudget() const {
+        std::vector<bool> used(model_.meshes.size(), false);
+        for (const tinygltf::Node& node : model_.nodes)
+            if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < used.size()) used[static_cast<std::size_t>(node.mesh)] = true;
+        std::uint64_t vertices = 0, corners = 0;
+        for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+            if (!used[m]) continue;
+            const std::vector<tinygltf::Primitive>& primitives = model_.meshes[m].primitives;
+            for (std::size_t p = 0; p < primitives.size(); ++p) {
+                const tinygltf::Primitive& primitive = primitives[p];
+                auto position = primitive.attributes.find("POSITION");
+                if (!isTriangleMode(primitive.mode) || position == primitive.attributes.end()) continue;
+                const tinygltf::Accessor* positions = accessorWithData(position->second);
+                if (!positions) continue; // skipped by readPrimitive: all its vertices are at the origin
+                vertices += positions->count;
+                if (primitive.indices < 0) {
+                    corners += positions->count;
+                } else if (const tinygltf::Accessor* indices = accessorWithData(primitive.indices)) {
+                    corners += indices->count;
+                }
+                const std::string where = at("meshes", m) + "/primitives/" + std::to_string(p);
+                if (vertices > kMaxGltfVertices)
+                    fail(where, "the file's meshes hold " + std::to_string(vertices) + " vertices up to here, more than the " +
+                                    std::to_string(kMaxGltfVertices) + " a glTF file may hold (docs/scene-format.md, \"Limits\")");
+                if (corners > kMaxGltfIndices)
+                    fail(where, "the file's meshes hold " + std::to_string(corners) + " triangle corners up to here, more than the " +
+                                    std::to_string(kMaxGltfIndices) + " a glTF file may hold (docs/scene-format.md, \"Limits\")");
+            }
+        }
+    }
+
+    // What an image is called in messages: its file, or for one inside the glTF "image".
+    std::string imageSource(std::size_t index) const {
+        const tinygltf::Image& image = model_.images[index];
+        if (!image.uri.empty() && !isDataUri(image.uri))
+            return resourcePath(file_, image.uri, modelScope_, at("images", index) + "/uri").string();
+        return "image";
+    }
+
+    // Every image a material's texture would decode, charged to the scene's texture budget
+    // (TextureLoader.h) from its header, before the first is decoded: six small files claiming
+    // 16384 x 16384 pixels each are refused without decoding one.
+    void chargeImages() {
+        textureBudget_ = TextureBudget(decodedTextureBytes(scene_));
+        for (const tinygltf::Material& material : model_.materials) {
+            const std::pair<int, int> slots[] = {
+                {material.pbrMetallicRoughness.baseColorTexture.index, material.pbrMetallicRoughness.baseColorTexture.texCoord},
+                {material.pbrMetallicRoughness.metallicRoughnessTexture.index,
+                 material.pbrMetallicRoughness.metallicRoughnessTexture.texCoord},
+                {material.normalTexture.index, material.normalTexture.texCoord},
+                {material.emissiveTexture.index, material.emissiveTexture.texCoord}};
+            for (const auto& [texture, texCoord] : slots) {
+                if (texture < 0 || texCoord != 0 || static_cast<std::size_t>(texture) >= model_.textures.size()) continue;
+                const int source = model_.textures[static_cast<std::size_t>(texture)].source;
+                if (source < 0 || static_cast<std::size_t>(source) >= model_.images.size()) continue;
+                chargeImage(static_cast<std::size_t>(source));
+            }
+        }
+    }
+
+    // Once per image; nothing for one without bytes (image() says so).
+    void chargeImage(std::size_t index) {
+        if (index >= context_.encodedImages.size() || context_.encodedImages[index].empty()) return;
+        if (!chargedImages_.insert(index).second) return;
+        const std::vector<unsigned char>& bytes = context_.encodedImages[index];
+        try {
+            const std::string name = imageSource(index);
+            textureBudget_.charge(readImageSize(std::string(bytes.begin(), bytes.end()), name), name);
+        } catch (const TextureError& e) {
+            fail(at("images", index), e.what());
+        }
+    }
+
     void warn(const std::string& where, const std::string& message) {
         scene_.warnings.push_back(file_.string() + ": " + (where.empty() ? "" : where + ": ") + message);
     }
@@ -477,10 +685,11 @@ private:
         const std::string where = at("images", index);
         if (index >= context_.encodedImages.size() || context_.encodedImages[index].empty())
             fail(where, "no image data could be read");
+        chargeImage(index); // done already, for every image a material uses (chargeImages)
         const std::vector<unsigned char>& bytes = context_.encodedImages[index];
         std::shared_ptr<const TextureImage> decodedImage;
         try {
-            decodedImage = decodeTextureImage(std::string(bytes.begin(), bytes.end()), "image");
+            decodedImage = decodeTextureImage(std::string(bytes.begin(), bytes.end()), imageSource(index));
         } catch (const TextureError& e) {
             fail(where, e.what());
         }
@@ -511,7 +720,7 @@ private:
         SceneTexture out;
         const tinygltf::Image& gltfImage = model_.images[source];
         if (!gltfImage.uri.empty() && !isDataUri(gltfImage.uri)) {
-            out.file = resourcePath(file_, gltfImage.uri);
+            out.file = resourcePath(file_, gltfImage.uri, modelScope_, at("images", source) + "/uri");
             out.source = out.file.string();
         } else {
             out.source = file_.string() + "#" + at("images", source);
@@ -573,10 +782,6 @@ private:
             if (!taken(name + " (" + std::to_string(i) + ")")) return name + " (" + std::to_string(i) + ")";
     }
 
-    static float unitFactor(double value) {
-        return std::isfinite(value) ? static_cast<float>(std::clamp(value, 0.0, 1.0)) : 0.0f;
-    }
-
     static const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name,
                                             const char* key) {
         auto found = extensions.find(name);
@@ -593,16 +798,17 @@ private:
         material.importedFrom = importIndex_;
         material.name = uniqueMaterialName(stem_ + "/" + (source.name.empty() ? "material " + std::to_string(index) : source.name));
         const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+        const std::string pbrAt = where + "/pbrMetallicRoughness";
         if (pbr.baseColorFactor.size() == 4) {
-            material.color = glm::vec3(unitFactor(pbr.baseColorFactor[0]), unitFactor(pbr.baseColorFactor[1]),
-                                       unitFactor(pbr.baseColorFactor[2]));
-            material.alpha = unitFactor(pbr.baseColorFactor[3]);
+            for (int c = 0; c < 3; ++c)
+                material.color[c] = inRange(pbr.baseColorFactor[static_cast<std::size_t>(c)], ranges::kColor,
+                                            pbrAt + "/baseColorFactor/" + std::to_string(c));
+            material.alpha = inRange(pbr.baseColorFactor[3], ranges::kAlpha, pbrAt + "/baseColorFactor/3");
         } else {
             material.color = glm::vec3(1.0f);
         }
-        material.metallic = unitFactor(pbr.metallicFactor);
-        material.roughness = unitFactor(pbr.roughnessFactor);
-        const std::string pbrAt = where + "/pbrMetallicRoughness";
+        material.metallic = inRange(pbr.metallicFactor, ranges::kMetallic, pbrAt + "/metallicFactor");
+        material.roughness = inRange(pbr.roughnessFactor, ranges::kRoughness, pbrAt + "/roughnessFactor");
         material.baseColorTexture = slot(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                          pbr.baseColorTexture.extensions, colorSpaceOf(&Material::baseColorTexture), pbrAt + "/baseColorTexture");
         material.roughnessTexture = slot(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
@@ -611,7 +817,7 @@ private:
         material.metallicTexture = material.roughnessTexture; // one texture: roughness in G, metalness in B
         material.normalTexture = slot(source.normalTexture.index, source.normalTexture.texCoord,
                                       source.normalTexture.extensions, colorSpaceOf(&Material::normalTexture), where + "/normalTexture");
-        material.normalScale = std::isfinite(source.normalTexture.scale) ? static_cast<float>(source.normalTexture.scale) : 1.0f;
+        material.normalScale = inRange(source.normalTexture.scale, ranges::kNormalScale, where + "/normalTexture/scale");
         material.emissionTexture = slot(source.emissiveTexture.index, source.emissiveTexture.texCoord,
                                         source.emissiveTexture.extensions, colorSpaceOf(&Material::emissionTexture), where + "/emissiveTexture");
         if (source.occlusionTexture.index >= 0 && !warnedOcclusion_) {
@@ -622,10 +828,10 @@ private:
         if (const tinygltf::Value* s = extension(source.extensions, "KHR_materials_emissive_strength", "emissiveStrength"))
             strength = s->GetNumberAsDouble();
         if (source.emissiveFactor.size() == 3) {
-            for (int c = 0; c < 3; ++c) {
-                double value = source.emissiveFactor[static_cast<std::size_t>(c)] * strength;
-                material.radiance[c] = std::isfinite(value) ? static_cast<float>(std::clamp(value, 0.0, double(kMaxSceneRadiance))) : 0.0f;
-            }
+            // The radiance is the factor times the strength (KHR_materials_emissive_strength).
+            for (int c = 0; c < 3; ++c)
+                material.radiance[c] = inRange(source.emissiveFactor[static_cast<std::size_t>(c)] * strength, ranges::kRadiance,
+                                               where + "/emissiveFactor/" + std::to_string(c));
         }
         if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior", "ior")) {
             double value = ior->GetNumberAsDouble();
@@ -634,7 +840,8 @@ private:
         if (source.extensions.count("KHR_materials_transmission")) {
             material.transmission = 0.0f;
             if (const tinygltf::Value* t = extension(source.extensions, "KHR_materials_transmission", "transmissionFactor"))
-                material.transmission = unitFactor(t->GetNumberAsDouble());
+                material.transmission = inRange(t->GetNumberAsDouble(), ranges::kTransmission,
+                                                where + "/extensions/KHR_materials_transmission/transmissionFactor");
             const tinygltf::Value& ext = source.extensions.at("KHR_materials_transmission");
             if (ext.Has("transmissionTexture"))
                 warn(where + "/extensions/KHR_materials_transmission/transmissionTexture",
@@ -648,7 +855,7 @@ private:
             material.alphaMode = AlphaMode::Opaque;
         else
             fail(where + "/alphaMode", "\"" + source.alphaMode + "\" (expected OPAQUE, MASK or BLEND)");
-        material.alphaCutoff = unitFactor(source.alphaCutoff);
+        material.alphaCutoff = inRange(source.alphaCutoff, ranges::kAlphaCutoff, where + "/alphaCutoff");
         int sceneIndex = static_cast<int>(scene_.materials.size());
         scene_.materials.push_back(std::move(material));
         return sceneIndex;
@@ -689,6 +896,21 @@ private:
         AccessorData positions = accessor(position->second, attributesAt + "/POSITION");
         if (positions.components != 3 || positions.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
             fail(at("accessors", static_cast<std::size_t>(position->second)), "POSITION must be VEC3 of floats");
+        // An accessor without a buffer view is all zeros: every triangle of such positions or
+        // indices has zero area. Skipped before anything is allocated for its count (which costs
+        // a file nothing to declare; checkMeshBudget leaves it out).
+        if (!positions.data && positions.count > 0) {
+            warn(attributesAt + "/POSITION", "no buffer view: every vertex is at the origin, so the primitive has no triangle: skipped");
+            return;
+        }
+        std::optional<AccessorData> indices;
+        if (primitive.indices >= 0) {
+            indices = accessor(primitive.indices, where + "/indices");
+            if (!indices->data && indices->count > 0) {
+                warn(where + "/indices", "no buffer view: every index is 0, so the primitive has no triangle: skipped");
+                return;
+            }
+        }
         std::size_t vertexCount = positions.count;
         auto sameCount = [&](const AccessorData& data, const std::string& name) {
             if (data.count != vertexCount)
@@ -754,16 +976,15 @@ private:
 
         // The corners, as a list of vertex numbers, before strips and fans are unrolled.
         std::vector<std::uint32_t> corners;
-        if (primitive.indices >= 0) {
-            AccessorData indices = accessor(primitive.indices, where + "/indices");
+        if (indices) {
             const std::string indicesAt = at("accessors", static_cast<std::size_t>(primitive.indices));
-            if (indices.components != 1 || (indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                            indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                            indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+            if (indices->components != 1 || (indices->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                             indices->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                             indices->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
                 fail(indicesAt, "indices must be SCALAR unsigned bytes, shorts or ints");
-            corners.reserve(indices.count);
-            for (std::size_t i = 0; i < indices.count; ++i) {
-                std::uint32_t index = indices.index(i);
+            corners.reserve(indices->count);
+            for (std::size_t i = 0; i < indices->count; ++i) {
+                std::uint32_t index = indices->index(i);
                 if (index >= vertexCount)
                     fail(indicesAt, "element " + std::to_string(i) + " is vertex " + std::to_string(index) +
                                         ", past the primitive's " + std::to_string(vertexCount) + " vertices");
@@ -914,13 +1135,17 @@ private:
         }
         if (node.mesh >= 0) {
             int mesh = sceneMesh(node.mesh, where + "/mesh");
-            glm::mat4 matrix(world);
-            float determinant = glm::determinant(glm::mat3(matrix));
+            // A matrix beyond a float's range places every vertex at infinity: refused, as the
+            // vertices it places beyond the scene's bounds are below. A singular one (a zero scale,
+            // which animations use to hide a part) is only left out.
             bool finite = true;
             for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(matrix[c][r]);
-            if (!finite || !(std::abs(determinant) > 1e-30f)) {
-                warn(where, "its world matrix is singular or not finite (a zero scale?): the mesh is not shown");
+                for (int r = 0; r < 4; ++r) finite = finite && std::abs(world[c][r]) <= double(std::numeric_limits<float>::max());
+            if (!finite) fail(where, "its world matrix (the product of its and its parents' transforms) is not finite as a float");
+            glm::mat4 matrix(world);
+            float determinant = glm::determinant(glm::mat3(matrix));
+            if (!(std::abs(determinant) > 1e-30f)) {
+                warn(where, "its world matrix is singular (a zero scale?): the mesh is not shown");
             } else if (mesh >= 0) {
                 Shape shape;
                 shape.name = nodeName(node, index);
@@ -929,11 +1154,19 @@ private:
                 shape.transform.matrix = matrix;
                 shape.slotMaterials = meshSlotMaterials_[static_cast<std::size_t>(node.mesh)];
                 shape.importedFrom = importIndex_;
+                // Every vertex a triangle uses, where the shape places it (in double, as the matrix
+                // was made), within the scene's bounds.
                 const TriangleMesh& data = *scene_.meshes[static_cast<std::size_t>(mesh)].data;
-                for (const glm::vec3& p : data.positions) {
-                    glm::vec3 w(matrix * glm::vec4(p, 1.0f));
-                    contents_.boundsMin = glm::min(contents_.boundsMin, w);
-                    contents_.boundsMax = glm::max(contents_.boundsMax, w);
+                const glm::dmat4 placed(matrix);
+                for (const MeshTriangle& triangle : data.triangles) {
+                    for (std::uint32_t v : triangle.position) {
+                        glm::dvec3 w(placed * glm::dvec4(glm::dvec3(data.positions[v]), 1.0));
+                        if (!withinSceneExtent(w))
+                            failBeyondSceneExtent(where, "it places vertex " + std::to_string(v) + " of " +
+                                                             at("meshes", static_cast<std::size_t>(node.mesh)) + " at", w);
+                        contents_.boundsMin = glm::min(contents_.boundsMin, glm::vec3(w));
+                        contents_.boundsMax = glm::max(contents_.boundsMax, glm::vec3(w));
+                    }
                 }
                 scene_.shapes.push_back(std::move(shape));
             }
@@ -966,7 +1199,8 @@ private:
         cameraFound_ = true;
         firstCameraAt_ = where;
         CameraDesc desc;
-        desc.eye = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        desc.eye = placedPoint(glm::dvec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0)), at("nodes", index),
+                               "it places the camera at");
         glm::dvec3 forward = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0); // glTF cameras look down -Z
         glm::dvec3 up = glm::dmat3(world) * glm::dvec3(0.0, 1.0, 0.0);
         if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0) || glm::length(glm::cross(forward, up)) == 0.0)
@@ -984,6 +1218,7 @@ private:
 
     // The target sits where the view direction passes the bounds' centre, so orbiting turns
     // about the model; one unit ahead when there is nothing in front.
+    // The target stays within the scene's bounds, as a scene file's must: else one unit ahead.
     void finishCamera() {
         if (!contents_.camera) return;
         CameraDesc& camera = *contents_.camera;
@@ -993,7 +1228,12 @@ private:
             double along = glm::dot(centre - glm::dvec3(camera.eye), cameraForward_);
             if (along > 1e-6) distance = along;
         }
-        camera.target = glm::vec3(glm::dvec3(camera.eye) + cameraForward_ * distance);
+        glm::vec3 target(glm::dvec3(camera.eye) + cameraForward_ * distance);
+        if (!withinSceneExtent(target) || target == camera.eye) target = glm::vec3(glm::dvec3(camera.eye) + cameraForward_);
+        // At the very edge of the bounds, looking out of them: nothing a file could show.
+        if (!withinSceneExtent(target) || target == camera.eye)
+            fail(firstCameraAt_, "the camera at the edge of the scene's bounds looks out of them");
+        camera.target = target;
     }
 
     void readLight(int lightIndex, const std::string& where, const tinygltf::Node& node, std::size_t index,
@@ -1009,10 +1249,12 @@ private:
         if (source.color.size() == 3) color = glm::dvec3(source.color[0], source.color[1], source.color[2]);
         // Candela (point, spot) as W/sr and lux (directional) as W/m^2, one for one: our units are
         // radiometric and a photometric conversion would only scale the whole image.
+        for (int c = 0; c < 3; ++c) inRange(color[c], ranges::kColor, lightAt + "/color/" + std::to_string(c));
         glm::dvec3 intensity = color * source.intensity;
-        for (int c = 0; c < 3; ++c)
-            light.intensity[c] = std::isfinite(intensity[c]) ? static_cast<float>(std::clamp(intensity[c], 0.0, double(kMaxSceneRadiance))) : 0.0f;
-        light.position = glm::vec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        for (int c = 0; c < 3; ++c) light.intensity[c] = inRange(intensity[c], ranges::kIntensity, lightAt + "/intensity");
+        // A directional light has no position; a point's and a spot's is in the scene's bounds.
+        const glm::dvec3 position(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        if (source.type != "directional") light.position = placedPoint(position, at("nodes", index), "it places the light at");
         glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0); // lights shine down -Z
         if (source.type == "point") {
             light.type = LightType::Point;
@@ -1040,6 +1282,7 @@ private:
     std::filesystem::path file_;
     std::string fileName_;
     std::string stem_;
+    const ReadScope& modelScope_;
     glm::mat4 placement_;
     int importIndex_;
     Scene& scene_;
@@ -1049,6 +1292,8 @@ private:
     std::map<std::size_t, std::vector<int>> meshSlotMaterials_;
     std::map<std::pair<int, TextureColorSpace>, int> textureIndex_;
     std::map<std::size_t, std::shared_ptr<const TextureImage>> decoded_;
+    TextureBudget textureBudget_;
+    std::set<std::size_t> chargedImages_;
     int defaultMaterial_ = -1;
     bool warnedOcclusion_ = false;
     bool warnedMorph_ = false;
@@ -1074,7 +1319,8 @@ bool isGltfFile(const std::filesystem::path& path) {
     return extension == ".gltf" || extension == ".glb";
 }
 
-GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& placement, int importIndex, Scene& scene) {
+GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& placement, int importIndex, Scene& scene,
+                        const ReadScope& scope) {
     std::string bytes;
     try {
         bytes = readInputFile(path, kMaxGltfFileBytes, "glTF file");
@@ -1089,11 +1335,13 @@ GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& plac
         checkNesting(jsonText);
         Json root = Json::parse(jsonText, nullptr, /*allow_exceptions=*/false);
         if (root.is_discarded()) fail("", std::string("malformed JSON") + (binary ? " in the .glb's JSON chunk" : ""));
-        checkDocument(root, path, binary ? &chunks : nullptr);
+        const ReadScope modelScope = scope.forModel(path);
+        checkDocument(root, path, binary ? &chunks : nullptr, modelScope);
 
         LoadContext context;
         tinygltf::TinyGLTF parser;
-        parser.SetFsCallbacks(tinygltf::FsCallbacks{&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, nullptr});
+        parser.SetFsCallbacks(tinygltf::FsCallbacks{&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile,
+                                                    const_cast<ReadScope*>(&modelScope)});
         parser.SetImageLoader(&keepImageBytes, &context);
         tinygltf::Model model;
         std::string err;
@@ -1106,7 +1354,7 @@ GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& plac
                                                       static_cast<unsigned int>(bytes.size()), baseDir);
         if (!ok) fail("", tinygltfReason(err));
         root = Json(); // checked; tinygltf holds its own copy
-        GltfReader reader(model, context, path, placement, importIndex, scene);
+        GltfReader reader(model, context, path, modelScope, placement, importIndex, scene);
         return reader.read();
     } catch (const PlaceError& e) {
         throw SceneError(oneLine(path.string() + ": " + (e.where.empty() ? "" : e.where + ": ") + e.what()));
@@ -1120,11 +1368,11 @@ GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& plac
     }
 }
 
-Scene loadGltfScene(const std::filesystem::path& path) {
+Scene loadGltfScene(const std::filesystem::path& path, const ReadScope& scope) {
     Scene scene;
     scene.path = path;
-    scene.imports.push_back(SceneImport{path, Transform{}, {}});
-    GltfContents contents = appendGltf(path, glm::mat4(1.0f), 0, scene);
+    scene.imports.push_back(SceneImport{path, Transform{}, {}, {}});
+    GltfContents contents = appendGltf(path, glm::mat4(1.0f), 0, scene, scope);
     scene.imports[0].fileMaterials = scene.materials; // what "Save as" a scene file compares edits to
     scene.imports[0].fileLights = scene.lights;
     scene.environment = glm::vec3(1.0f);
@@ -1135,8 +1383,17 @@ Scene loadGltfScene(const std::filesystem::path& path) {
         glm::vec3 centre = 0.5f * (contents.boundsMin + contents.boundsMax);
         float radius = std::max(0.5f * glm::length(contents.boundsMax - contents.boundsMin), 1e-3f);
         float distance = radius / std::sin(glm::radians(0.5f * scene.camera.vfovDeg)) * 1.05f;
-        scene.camera.target = centre;
-        scene.camera.eye = centre + glm::vec3(0.0f, 0.0f, distance);
+        // The eye stays within the scene's bounds, as a scene file's must (the file's save reads
+        // back): a model as large as the bounds is then seen from inside its box.
+        distance = std::min(distance, kMaxSceneExtent - centre.z);
+        const float step = std::max(1.0f, std::abs(centre.z) * 1e-6f); // more than a float's spacing there
+        if (distance >= step) {
+            scene.camera.target = centre;
+            scene.camera.eye = centre + glm::vec3(0.0f, 0.0f, distance);
+        } else { // the bounds' centre on their +Z face: look down -Z from it
+            scene.camera.eye = centre;
+            scene.camera.target = centre - glm::vec3(0.0f, 0.0f, step);
+        }
         scene.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     }
     // glTF 2.0 cameras have no aperture: a pinhole, focused (should the user open the lens) on the target.

@@ -7,6 +7,7 @@
 // here (every index, every accessor's bytes against its view and buffer), since a file is input
 // from anyone and tinygltf trusts it. Errors are SceneError "FILE: /json/pointer: reason".
 
+#include "ReadScope.h"
 #include "SceneLoader.h"
 
 #include <glm/glm.hpp>
@@ -33,11 +34,13 @@ bool isGltfFile(const std::filesystem::path& path);
 // Principled material per glTF material (and a default one for primitives without), the
 // textures they use, the KHR_lights_punctual lights; each marked importedFrom = importIndex.
 // Warnings (ignored animation, skins, occlusion ...) go to scene.warnings, naming the file.
-GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& placement, int importIndex, Scene& scene);
+// The file's buffers and images are read only inside scope.forModel(path) (ReadScope.h).
+GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& placement, int importIndex, Scene& scene,
+                        const ReadScope& scope = ReadScope());
 
 // A scene of the glTF file alone, as `ptview model.glb` opens it: the file's camera, else one
 // framing its bounds from +Z; a constant white environment of radiance 1 (a "studio" that shows
 // base colours as they are), since a glTF file carries no environment.
-Scene loadGltfScene(const std::filesystem::path& path);
+Scene loadGltfScene(const std::filesystem::path& path, const ReadScope& scope = ReadScope());
 
 } // namespace ptview

@@ -6,11 +6,14 @@
 // after the first "\n#bin\n" become in.bin, which the JSON reaches with "uri": "in.bin".
 //
 // A SceneError is the documented refusal; anything else (a sanitizer report, another exception, a
-// scene that breaks the promises of Scene.h and TriangleMesh.h) is a finding.
+// scene that breaks the promises of Scene.h and TriangleMesh.h, one beyond the scene format's bounds
+// or one that does not write back) is a finding.
 
 #include "FuzzScratch.h"
 #include "GltfLoader.h"
 #include "MeshTangents.h"
+#include "SceneRanges.h"
+#include "SceneWriter.h"
 
 #include <cmath>
 #include <cstddef>
@@ -35,6 +38,17 @@ void require(bool holds, const char* promise) {
 
 bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Within the scene format's bounds (SceneRanges.h), as a scene file's points are; a little slack
+// for the float product of matrix and position.
+bool inScene(const glm::vec3& p) {
+    const float bound = ptview::kMaxSceneExtent * 1.000001f;
+    return std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound;
+}
+
+bool inRange(const glm::vec3& v, const ptview::SceneRange& range) {
+    return range.contains(v.x) && range.contains(v.y) && range.contains(v.z);
 }
 
 void checkScene(const ptview::Scene& scene) {
@@ -63,6 +77,15 @@ void checkScene(const ptview::Scene& scene) {
         for (int m : shape.slotMaterials) require(m >= 0 && static_cast<std::size_t>(m) < scene.materials.size(), "slot material");
         glm::mat4 matrix = shape.transform.objectToWorld();
         for (int c = 0; c < 4; ++c) require(finite(glm::vec3(matrix[c])), "finite placement");
+        const ptview::TriangleMesh& data = *scene.meshes[static_cast<std::size_t>(shape.mesh)].data;
+        for (const ptview::MeshTriangle& t : data.triangles)
+            for (std::uint32_t v : t.position)
+                require(inScene(glm::vec3(matrix * glm::vec4(data.positions[v], 1.0f))), "vertices within the scene's bounds, placed");
+    }
+    for (const ptview::Material& material : scene.materials) {
+        require(inRange(material.color, ptview::ranges::kColor), "base colour in [0, 1]");
+        require(inRange(material.radiance, ptview::ranges::kRadiance), "emission in [0, 1e9]");
+        require(ptview::ranges::kNormalScale.contains(material.normalScale), "normal scale in [0, 100]");
     }
     for (const ptview::Material& material : scene.materials)
         for (const ptview::TextureSlot* slot : {&material.baseColorTexture, &material.roughnessTexture, &material.metallicTexture,
@@ -73,8 +96,19 @@ void checkScene(const ptview::Scene& scene) {
                 require(image.rgba.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4,
                         "decoded image size");
             }
-    for (const ptview::Light& light : scene.lights) require(finite(light.position) && finite(light.intensity), "finite light");
+    for (const ptview::Light& light : scene.lights) {
+        require(finite(light.position) && finite(light.intensity), "finite light");
+        require(inScene(light.position) && inRange(light.intensity, ptview::ranges::kIntensity), "light within the bounds");
+    }
     require(finite(scene.camera.eye) && finite(scene.camera.target), "finite camera");
+    require(inScene(scene.camera.eye) && inScene(scene.camera.target), "camera within the scene's bounds");
+    // What loads writes back: the writer refuses only what the loader would.
+    try {
+        ptview::sceneToJson(scene);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "fuzz_gltf_loader: %s\n", e.what());
+        require(false, "the loaded scene writes back (sceneToJson)");
+    }
 }
 
 } // namespace

@@ -1,0 +1,16 @@
+#pragma once
+// Text from a file, made safe to print on a terminal or show in a panel: metadata, names and
+// paths in a file someone sent may hold control sequences (a window title, colours, "\r" that
+// overwrites a line), which are shown as escapes instead of being obeyed.
+
+#include <string>
+#include <string_view>
+
+namespace ptview {
+
+// `text` with every control character (C0, DEL, and C1 in UTF-8) and every byte that is not part
+// of valid UTF-8 written as an escape: "\n", "\r", "\t", "\e" for ESC, "\x9b" otherwise; a
+// backslash stays a backslash. Printable UTF-8 passes unchanged.
+std::string printableText(std::string_view text);
+
+} // namespace ptview
