@@ -3,6 +3,7 @@
 #include "CommandErrors.h"
 #include "HeadlessContext.h"
 #include "PathTracer.h"
+#include "PrintableText.h"
 #include "SceneInput.h"
 
 #include <chrono>
@@ -44,7 +45,7 @@ struct BenchResult {
 BenchResult bench(const std::string& scenePath, const BenchOptions& options, const ProgramOptions& program) {
     BenchResult result;
     Clock::time_point loadStart = Clock::now();
-    std::optional<SceneInput> input = loadSceneInput(scenePath);
+    std::optional<SceneInput> input = loadSceneInput(scenePath, options.allowedDirectories);
     if (!input) throw std::invalid_argument(scenePath + ": cannot be read (see above)");
     result.loadSeconds = secondsSince(loadStart);
     // Each image once, however many textures (colour spaces, wraps) share it.
@@ -125,7 +126,7 @@ int runBenchCommand(const BenchOptions& options) {
                 char largest[32] = "-";
                 if (r.largestTexture.x > 0) std::snprintf(largest, sizeof largest, "%dx%d", r.largestTexture.x, r.largestTexture.y);
                 std::printf("| %s | %s | %s | %s | %zu | %.3f | %.3f | %.3f | %.3f | %.1f | %.1f | %s | %dx%d | %d | %.2f |\n",
-                            std::filesystem::path(scene).stem().string().c_str(), program.allFeatures ? "uber" : "specialized",
+                            printableText(std::filesystem::path(scene).stem().string()).c_str(), program.allFeatures ? "uber" : "specialized",
                             backendName(r.backend), compile, r.triangles, r.loadSeconds, r.decodeSeconds, r.buildSeconds, r.tangentSeconds,
                             double(r.meshBytes) / (1024.0 * 1024.0), double(r.textureBytes) / (1024.0 * 1024.0), largest,
                             r.size.x, r.size.y, r.samples, r.samplesPerSecond * 1e-6);

@@ -1,6 +1,7 @@
 #include "CommandErrors.h"
 
 #include "CommandLine.h"
+#include "PrintableText.h"
 
 #include <exception>
 #include <iostream>
@@ -12,10 +13,10 @@ int reportCommandError() {
     try {
         throw;
     } catch (const std::invalid_argument& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return kExitBadInput;
     } catch (const std::exception& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return kExitRuntimeError;
     }
 }

@@ -6,6 +6,7 @@
 #include "ImageIO.h"
 #include "OutputPath.h"
 #include "PathTracer.h"
+#include "PrintableText.h"
 #include "SceneInput.h"
 
 #include <algorithm>
@@ -16,7 +17,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <iostream>
 #include <optional>
 #include <sstream>
 #include <spawn.h>
@@ -288,26 +288,26 @@ std::string programText(const PathTracer& tracer) {
 }
 
 int runConvergeCommand(const ConvergeOptions& options) {
-    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    std::optional<SceneInput> input = loadSceneInput(options.scenePath, options.allowedDirectories);
     if (!input) return kExitBadInput;
     std::optional<ImageRgbF> referenceFile;
     if (!options.referencePath.empty()) {
         try {
             referenceFile = readReferenceImage(options.referencePath);
         } catch (const std::exception& e) {
-            std::cerr << "ptview: " << e.what() << "\n";
+            printMessage(e.what());
             return kExitBadInput;
         }
     }
     glm::ivec2 size = referenceFile ? glm::ivec2(referenceFile->width, referenceFile->height)
                                     : options.size.value_or(input->scene.camera.resolution);
     if (referenceFile && options.size && *options.size != size) {
-        std::cerr << "ptview: " << options.referencePath << ": the reference is " << size.x << "x" << size.y
-                  << ", not the --size asked for\n";
+        printMessage(options.referencePath + ": the reference is " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                   ", not the --size asked for");
         return kExitBadInput;
     }
     if (std::optional<std::string> problem = outputDirectoryProblem(options.outDir)) {
-        std::cerr << "ptview: " << *problem << "\n";
+        printMessage(*problem);
         return kExitBadInput;
     }
     try {
@@ -365,7 +365,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
                                          (options.outDir / "convergence.png").string()};
         if (floor > 0) plot.push_back(number(floor, "%.6g"));
         if (std::optional<std::string> failure = runPlotScript(plot))
-            std::cerr << "ptview: warning: the plot was not made (" << *failure << "); the CSV and summary were\n";
+            printMessage("warning: the plot was not made (" + *failure + "); the CSV and summary were");
         std::fprintf(stderr, "ptview: wrote %s/{convergence.csv,convergence.png,summary.md} on %s\n",
                      options.outDir.string().c_str(), context.description().c_str());
     } catch (const std::exception&) {

@@ -1,5 +1,6 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "PrintableText.h"
 #include "SceneRanges.h"
 
 #include <imgui.h>
@@ -27,7 +28,7 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state) {
     Scene& scene = model.scene;
     bool hasMap = !scene.environmentMap.empty();
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("map: %s", hasMap ? scene.environmentMap.lexically_normal().string().c_str() : "none (constant colour)");
+    ImGui::Text("map: %s", hasMap ? printableText(scene.environmentMap.lexically_normal().string()).c_str() : "none (constant colour)");
     ImGui::PopTextWrapPos();
 
     ImGui::PushID("environment");
@@ -39,7 +40,7 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state) {
     if (ImGui::Button("Remove map")) session.setEnvironmentMap({});
     ImGui::EndDisabled();
     ImGui::PopID();
-    if (isMapError(model.sceneError, state.environmentPathInput)) errorText(model.sceneError);
+    if (isMapError(model.sceneError, state.environmentPathInput)) errorText(printableText(model.sceneError));
 
     const SceneRange& intensity = ranges::kEnvironmentIntensity;
     bool changed = ImGui::DragFloat("intensity", &scene.environmentIntensity, 0.01f, intensity.panelLo,

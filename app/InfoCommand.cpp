@@ -1,22 +1,31 @@
 #include "InfoCommand.h"
 
+#include "CommandErrors.h"
 #include "ExrIO.h"
 #include "ImageIO.h"
+#include "PrintableText.h"
 #include "Provenance.h"
 
 #include <cstdio>
-#include <iostream>
 #include <string>
 
 namespace ptview {
 namespace {
 
-// Each line of a multi-line value indented under its label.
+// Everything printed below came from a file someone may have sent: each line goes through
+// printableText, so that an escape sequence in a value cannot set the terminal's title or
+// colours, nor a "\r" overwrite what was printed before it.
+void printLine(const std::string& text) {
+    std::printf("%s\n", printableText(text).c_str());
+}
+
+// Each line of a multi-line value indented under its label. Split at '\n' before escaping, so the
+// scene JSON keeps its lines while a "\r" or ESC inside one is shown as an escape.
 void printIndented(const std::string& text) {
     std::size_t start = 0;
     while (start < text.size()) {
         const std::size_t end = std::min(text.find('\n', start), text.size());
-        std::printf("  %s\n", text.substr(start, end - start).c_str());
+        printLine("  " + text.substr(start, end - start));
         start = end + 1;
     }
 }
@@ -36,21 +45,29 @@ int runInfoCommand(const InfoOptions& options) {
             metadata = readImageMetadata(options.path);
         }
         const Provenance provenance = parseProvenance(metadata, options.path); // before any output: an error is one line
-        std::printf("%s\n", heading.c_str());
+        printLine(heading);
         std::printf("format:     %d\n", provenance.format);
-        std::printf("ptview:     %s\n", provenance.version.c_str());
-        std::printf("device:     %s\n", provenance.device.c_str());
-        std::printf("scene file: %s\n", provenance.sceneFile.string().c_str());
+        printLine("ptview:     " + provenance.version);
+        printLine("device:     " + provenance.device);
+        printLine("scene file: " + provenance.sceneFile.string());
         std::printf("settings:\n");
         printIndented(recipeToJson(provenance.recipe));
         std::printf("scene:\n");
         printIndented(provenance.sceneJson);
         for (const auto& [key, value] : metadata.entries)
-            if (key.rfind("ptview.", 0) != 0) std::printf("%s: %s\n", key.c_str(), value.c_str());
-        std::printf("render it again: ptview render --from %s --out FILE\n", options.path.c_str());
+            if (key.rfind("ptview.", 0) != 0) {
+                // A value of several lines keeps them, indented, as the scene does.
+                if (value.find('\n') == std::string::npos) {
+                    printLine(key + ": " + value);
+                } else {
+                    printLine(key + ":");
+                    printIndented(value);
+                }
+            }
+        printLine("render it again: ptview render --from " + options.path + " --out FILE");
         return 0;
     } catch (const std::exception& e) { // ProvenanceError and the readers' errors name the file
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return kExitBadInput;
     }
 }

@@ -1,6 +1,7 @@
 #include "CameraController.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "PrintableText.h"
 #include "SceneRanges.h"
 
 #include <imgui.h>
@@ -67,7 +68,7 @@ void drawAreaLights(const Scene& scene) {
         any = true;
         long shapes = std::count_if(scene.shapes.begin(), scene.shapes.end(),
                                     [i](const Shape& shape) { return shape.material == static_cast<int>(i); });
-        ImGui::BulletText("%s: %.3g %.3g %.3g (%ld shape%s)", material.name.c_str(), material.radiance.r,
+        ImGui::BulletText("%s: %.3g %.3g %.3g (%ld shape%s)", printableText(material.name).c_str(), material.radiance.r,
                           material.radiance.g, material.radiance.b, shapes, shapes == 1 ? "" : "s");
     }
     if (any) noteText("edit their emission in Materials");
@@ -89,8 +90,9 @@ void drawLightsPanel(ViewerSession& session) {
     bool changed = false;
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& light = scene.lights[i];
-        // "###": the node keeps its open state when a reload renames the light.
-        std::string label = light.name +
+        // "###": the node keeps its open state when a reload renames the light. The name may come
+        // from a file someone sent: control characters show as escapes (PrintableText.h).
+        std::string label = printableText(light.name) +
                             (light.type == LightType::Spot ? "  (spot)" : light.type == LightType::Directional ? "  (directional)" : "  (point)") +
                             "###light";
         ImGui::PushID(static_cast<int>(i));

@@ -2,6 +2,7 @@
 
 #include "MaterialSchema.h"
 #include "MaterialTextures.h"
+#include "PrintableText.h"
 #include "SceneLoader.h"
 #include "SceneRanges.h"
 
@@ -124,8 +125,9 @@ void MaterialsPanel::draw(ViewerSession& session) {
     ImGui::PushItemWidth(-110.0f); // room for the labels
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         Material& material = scene.materials[i];
-        // "###" keeps the node's id (and open state) when its type changes.
-        std::string label = material.name + "  (" + materialSchema(material.type).name + ")###material" +
+        // "###" keeps the node's id (and open state) when its type changes. Names come from files
+        // someone may have sent: control characters show as escapes (PrintableText.h).
+        std::string label = printableText(material.name) + "  (" + materialSchema(material.type).name + ")###material" +
                             std::to_string(i);
         bool asked = materialToOpen_ == i; // the Pixel panel's "open in Materials"
         if (asked) ImGui::SetNextItemOpen(true);
@@ -293,8 +295,8 @@ bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t 
             // The file's name; its whole path (long ones wrapped mid-word) on hover. The lines
             // wrap at the sidebar's edge rather than being cut there.
             ImGui::PushTextWrapPos(0.0f);
-            ImGui::TextUnformatted(textureSourceName(texture.source).c_str());
-            itemTooltip(fullTextureSource(texture.source).c_str());
+            ImGui::TextUnformatted(printableText(textureSourceName(texture.source)).c_str());
+            itemTooltip(printableText(fullTextureSource(texture.source)).c_str());
             ImGui::TextDisabled("%dx%d, %s, uv x (%.3g, %.3g) + (%.3g, %.3g)", texture.image ? texture.image->width : 0,
                                 texture.image ? texture.image->height : 0,
                                 texture.colorSpace == TextureColorSpace::Srgb ? "sRGB" : "linear", slot.scale.x,
@@ -329,7 +331,7 @@ bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t 
         auto error = textureErrors_.find(key);
         if (error != textureErrors_.end()) {
             ImGui::PushTextWrapPos(0.0f);
-            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error->second.c_str());
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", printableText(error->second).c_str());
             ImGui::PopTextWrapPos();
         }
         ImGui::PopID();
@@ -357,7 +359,7 @@ void MaterialsPanel::save(ViewerSession& session) {
         }
     }
     if (ImGui::BeginPopupModal("Replace file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("%s exists and is not the open scene's file.\nReplace it with this scene?", path.c_str());
+        ImGui::Text("%s exists and is not the open scene's file.\nReplace it with this scene?", printableText(path).c_str());
         if (ImGui::Button("Replace")) {
             saveTo(session, path);
             ImGui::CloseCurrentPopup();
@@ -369,7 +371,7 @@ void MaterialsPanel::save(ViewerSession& session) {
     if (!saveStatus_.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextColored(saveFailed_ ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "%s",
-                           saveStatus_.c_str());
+                           printableText(saveStatus_).c_str());
         ImGui::PopTextWrapPos();
     }
 }

@@ -7,6 +7,7 @@
 #include "PathRecorder.h"
 #include "PathsJson.h"
 #include "PathsPicture.h"
+#include "PrintableText.h"
 #include "SceneInput.h"
 
 #include <cstdio>
@@ -19,7 +20,7 @@ int runPathsCommand(const PathsOptions& options) {
     // Everything the user typed is checked before any GPU work, and no file is written on error.
     if (!checkOutputPath(options.outPath, {".json"})) return kExitBadInput;
     if (!options.imagePath.empty() && !checkOutputPath(options.imagePath, {".png"})) return kExitBadInput;
-    std::optional<SceneInput> input = loadSceneInput(options.scenePath);
+    std::optional<SceneInput> input = loadSceneInput(options.scenePath, options.allowedDirectories);
     if (!input) return kExitBadInput;
     const Scene& scene = input->scene;
     const glm::ivec2 size = options.size.value_or(scene.camera.resolution);
@@ -59,7 +60,7 @@ int runPathsCommand(const PathsOptions& options) {
                          view.eye.y, view.eye.z, options.imageSpp);
         }
     } catch (const std::bad_alloc&) {
-        std::cerr << "ptview: not enough memory for the scene " << options.scenePath << "\n";
+        printMessage("not enough memory for the scene " + options.scenePath);
         return kExitBadInput;
     } catch (const std::exception&) {
         return reportCommandError();

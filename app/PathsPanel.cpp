@@ -3,6 +3,7 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
 #include "PathsJson.h"
+#include "PrintableText.h"
 
 #include <imgui.h>
 
@@ -54,7 +55,7 @@ void vertexTable(const RecordedPath& path, const Scene& scene, PathPick& selecte
         ImGui::TextUnformatted(kindText(v));
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(v.material >= 0 && static_cast<size_t>(v.material) < scene.materials.size()
-                                   ? scene.materials[static_cast<size_t>(v.material)].name.c_str() : "-");
+                                   ? printableText(scene.materials[static_cast<size_t>(v.material)].name).c_str() : "-");
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(vec3Text(v.kind == PathVertex::Kind::Escaped ? v.direction : v.position).c_str());
         ImGui::TableNextColumn();

@@ -1,6 +1,7 @@
 // The Pixel panel: the pixel inspector's numbers for ViewerModel::pinnedPixel (Alt+click pins).
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "PrintableText.h"
 #include "ShapeSchema.h"
 
 #include <glad/gl.h>
@@ -50,13 +51,13 @@ void drawHit(const ViewerSession& session, const SurfaceHit& hit, PanelState& st
     vectorRow("position", hit.position);
     if (hit.shape >= 0 && hit.shape < static_cast<int>(scene.shapes.size())) {
         const Shape& shape = scene.shapes[static_cast<size_t>(hit.shape)];
-        ImGui::Text("shape     %s (%s, #%d)", shape.name.empty() ? "(unnamed)" : shape.name.c_str(), shapeSchema(shape.type).name,
+        ImGui::Text("shape     %s (%s, #%d)", shape.name.empty() ? "(unnamed)" : printableText(shape.name).c_str(), shapeSchema(shape.type).name,
                     hit.shape);
     } else {
         ImGui::TextUnformatted("shape     (not in the scene's list)");
     }
     if (hit.material >= 0 && hit.material < static_cast<int>(scene.materials.size())) {
-        ImGui::Text("material  %s (#%d)", scene.materials[static_cast<size_t>(hit.material)].name.c_str(), hit.material);
+        ImGui::Text("material  %s (#%d)", printableText(scene.materials[static_cast<size_t>(hit.material)].name).c_str(), hit.material);
         ImGui::SameLine();
         if (ImGui::SmallButton("open")) state.materialToOpen = hit.material;
         itemTooltip("open this material in the Materials panel");

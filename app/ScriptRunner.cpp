@@ -1,18 +1,19 @@
 #include "ScriptRunner.h"
 
 #include "CameraController.h"
+#include "CommandErrors.h"
 #include "MaterialSchema.h"
 #include "MaterialTextures.h"
 #include "MaterialsPanel.h"
 #include "SceneLoader.h"
 #include "OutputPath.h"
 #include "PathsJson.h"
+#include "PrintableText.h"
 #include "ImageIO.h"
 #include "SceneRanges.h"
 
 #include <algorithm>
 #include <cstdio>
-#include <iostream>
 #include <utility>
 
 namespace ptview {
@@ -27,12 +28,15 @@ using Clock = std::chrono::steady_clock;
 Integrator integratorNamed(const std::string& name) { return integratorNames().parse(name).value_or(Integrator::Naive); }
 ToneMapper toneMapperNamed(const std::string& name) { return toneMapperNames().parse(name).value_or(ToneMapper::Reinhard); }
 
-// Quoted for the status line: one line, quotes and backslashes escaped.
+// Quoted for the status line: one line, quotes and backslashes escaped. Scene paths and errors
+// may come from a file someone sent: its control characters are shown as escapes (PrintableText.h).
 std::string quoted(const std::string& text) {
+    std::string oneLine = text;
+    std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
     std::string out = "\"";
-    for (char c : text) {
+    for (char c : printableText(oneLine)) {
         if (c == '"' || c == '\\') out += '\\';
-        out += c == '\n' ? ' ' : c;
+        out += c;
     }
     return out + "\"";
 }
@@ -111,13 +115,12 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
 // A script answers no questions: what it throws away it says on stderr.
 void ScriptRunner::noteDiscardedEdits(const ScriptCommand& command, const std::vector<std::string>& edits) const {
     if (edits.empty()) return;
-    std::cerr << "ptview: " << script_.path.string() << ":" << command.line << ": " << command.verb
-              << ": discarded unsaved edits (" << joined(edits, ", ") << ")\n";
+    printMessage(script_.path.string() + ":" + std::to_string(command.line) + ": " + command.verb +
+               ": discarded unsaved edits (" + joined(edits, ", ") + ")");
 }
 
 void ScriptRunner::fail(const ScriptCommand& command, const std::string& reason) {
-    std::cerr << "ptview: " << script_.path.string() << ":" << command.line << ": " << command.verb << ": " << reason
-              << "\n";
+    printMessage(script_.path.string() + ":" + std::to_string(command.line) + ": " + command.verb + ": " + reason);
     exitCode_ = 2;
     quit_ = true;
 }

@@ -1,6 +1,7 @@
 #include "Integrator.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "PrintableText.h"
 #include "SamplerMode.h"
 
 #include <imgui.h>
@@ -94,7 +95,7 @@ void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSecon
     itemTooltip("a .pfm or .exr of this scene at the render's size (e.g. ptview render SCENE --spp 4096 --size WxH --out ref.pfm):\n"
                 "the panel then shows the true error against it");
     if (model.reference) {
-        ImGui::TextDisabled("reference: %s", model.referencePath.filename().string().c_str());
+        ImGui::TextDisabled("reference: %s", printableText(model.referencePath.filename().string()).c_str());
         ImGui::SameLine();
         if (ImGui::SmallButton("none")) session.setReference({});
     }

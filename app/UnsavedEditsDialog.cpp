@@ -1,5 +1,6 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
+#include "PrintableText.h"
 
 #include <imgui.h>
 
@@ -41,17 +42,18 @@ void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state) {
         return;
     }
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
-    ImGui::Text("The scene has edits that are not saved (%s).", joined(prompt.edits()).c_str());
-    ImGui::TextUnformatted(question(prompt).c_str());
+    // Names and paths here may come from a file someone sent: shown through printableText.
+    ImGui::Text("The scene has edits that are not saved (%s).", printableText(joined(prompt.edits())).c_str());
+    ImGui::TextUnformatted(printableText(question(prompt)).c_str());
     const std::string& target = session.saveTarget();
     bool canSave = !target.empty();
     if (!canSave)
         ImGui::TextDisabled("Save needs a file name: type one in Materials > Save scene as.");
     else if (session.saveReplacesAnotherFile(target))
-        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Save replaces %s, which is not this scene's file.", target.c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Save replaces %s, which is not this scene's file.", printableText(target).c_str());
     else
-        ImGui::TextDisabled("Save writes %s.", target.c_str());
-    if (!prompt.saveError().empty()) errorText(prompt.saveError());
+        ImGui::TextDisabled("Save writes %s.", printableText(target).c_str());
+    if (!prompt.saveError().empty()) errorText(printableText(prompt.saveError()));
     ImGui::PopTextWrapPos();
 
     ImGui::BeginDisabled(!canSave);

@@ -7,6 +7,7 @@
 #include "ImageIO.h"
 #include "LimitedChild.h"
 #include "ObjLoader.h"
+#include "RunCommand.h"
 #include "Scene.h"
 #include "SceneLoader.h"
 #include "TestFiles.h"
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -198,6 +200,99 @@ TEST(FuzzRegression, PfmHeaderClaimingMorePixelsThanTheFileHoldsIsRefused) {
     ASSERT_EQ(child.signal, 0) << "the reader crashed";
     EXPECT_EQ(child.code, 0) << "1: not the expected error, 2: another exception (std::bad_alloc: the header's "
                                 "size was allocated), 3: no limit could be set";
+}
+
+// ---- JSON nested 100000 deep (issue 33: a crash that came back) ------------------------------
+
+// `depth` arrays inside one another, innermost empty: [[[...]]].
+std::string nestedArrays(std::size_t depth) {
+    return std::string(depth, '[') + std::string(depth, ']');
+}
+
+// `depth` objects inside one another, each holding the next under "a", innermost empty.
+std::string nestedObjects(std::size_t depth) {
+    std::string text;
+    for (std::size_t i = 1; i < depth; ++i) text += "{\"a\": ";
+    return text + "{}" + std::string(depth - 1, '}');
+}
+
+// What the binary printed and how it ended, for a refusal: exit 2, one line, containing `expected`.
+// A stack overflow is SIGSEGV, which runCommand reports as exit code -1.
+void expectRefusedOnOneLine(const testing::CommandResult& result, const std::string& expected) {
+    EXPECT_EQ(result.exitCode, 2) << result.output.substr(0, 2000);
+    EXPECT_NE(result.output.find(expected), std::string::npos) << result.output.substr(0, 2000);
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output.substr(0, 2000);
+}
+
+// A scene whose camera is 100000 nested arrays, and one whose unknown key holds 100000 nested
+// objects, each followed by another key: ordered_json keeps an object's members in a vector, and
+// growing it for the next key copied the nested value recursively, one stack frame per level
+// (SIGSEGV). The parse now stops at the 65th level, naming the file and the top-level key.
+TEST(FuzzRegression, SceneJsonNested100000DeepIsRefusedNamingTheKey) {
+    testing::ScratchFiles files("fuzz_regression");
+    const fs::path arrays = files.write("arrays.json", "{\"camera\": " + nestedArrays(100000) + ", \"materials\": {}, \"shapes\": []}");
+    const fs::path objects = files.write("objects.json", "{\"extra\": " + nestedObjects(100000) + ", \"camera\": {}}");
+    const fs::path out = arrays.parent_path() / "out.png";
+    for (const auto& [file, key] : {std::pair(arrays, std::string("/camera")), std::pair(objects, std::string("/extra"))}) {
+        SCOPED_TRACE(file.string());
+        expectRefusedOnOneLine(testing::runCommand(std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted(file.string()) +
+                                                   " --out " + testing::shellQuoted(out.string())),
+                               file.string() + ": " + key + ": arrays and objects nested deeper than 64 levels");
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
+// The bound is 64 levels, the document itself being the first: 64 are read (and this camera is
+// refused for what it is), 65 are not.
+TEST(FuzzRegression, SceneJsonNestingIsBoundedAtSixtyFourLevels) {
+    auto errorOf = [](const std::string& json) {
+        try {
+            parseScene(json, "deep.json");
+        } catch (const SceneError& error) {
+            return std::string(error.what());
+        }
+        return std::string("(no SceneError thrown)");
+    };
+    EXPECT_EQ(errorOf("{\"camera\": " + nestedArrays(63) + "}"), "deep.json: /camera: expected an object, got an array");
+    EXPECT_EQ(errorOf("{\"camera\": " + nestedArrays(64) + "}"),
+              "deep.json: /camera: arrays and objects nested deeper than 64 levels");
+    EXPECT_EQ(errorOf(nestedArrays(65)), "deep.json: /0: arrays and objects nested deeper than 64 levels");
+}
+
+// The same nesting in a PNG's metadata: the settings (read by `info` and `render --from`) and the
+// scene (read by `render --from` and the viewer) are refused naming the image, not a crash.
+TEST(FuzzRegression, MetadataJsonNested100000DeepIsRefusedNamingTheImage) {
+    testing::ScratchFiles files("fuzz_regression");
+    const std::string settings = "{\"spp\": 1, \"width\": 4, \"height\": 4}";
+    const std::string scene = "{\"camera\": {}, \"materials\": {}, \"shapes\": []}";
+    auto image = [&](const std::string& name, const std::string& sceneJson, const std::string& settingsJson) {
+        ImageMetadata metadata;
+        metadata.set("ptview.format", "1");
+        metadata.set("ptview.version", "test");
+        metadata.set("ptview.device", "test");
+        metadata.set("ptview.scene_file", files.write("scene.json", scene).string());
+        metadata.set("ptview.scene", sceneJson);
+        metadata.set("ptview.settings", settingsJson);
+        ImageRgba8 pixels;
+        pixels.width = pixels.height = 4;
+        pixels.rgba.assign(4 * 4 * 4, 100);
+        const fs::path path = files.write(name, "");
+        writePng(path, pixels, metadata);
+        return path;
+    };
+    const fs::path nestedSettings =
+        image("settings.png", scene, "{\"spp\": " + nestedArrays(100000) + ", \"width\": 4, \"height\": 4}");
+    expectRefusedOnOneLine(testing::runCommand(std::string(PTVIEW_BINARY) + " info " + testing::shellQuoted(nestedSettings.string())),
+                           nestedSettings.string() + ": the settings nest arrays and objects deeper than 64 levels");
+
+    const fs::path nestedScene =
+        image("scene.png", "{\"camera\": " + nestedObjects(100000) + ", \"materials\": {}, \"shapes\": []}", settings);
+    const fs::path out = nestedScene.parent_path() / "out.png";
+    expectRefusedOnOneLine(testing::runCommand(std::string(PTVIEW_BINARY) + " render --from " +
+                                               testing::shellQuoted(nestedScene.string()) + " --out " +
+                                               testing::shellQuoted(out.string())),
+                           "/camera: arrays and objects nested deeper than 64 levels");
+    EXPECT_FALSE(fs::exists(out));
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "PrintableText.h"
 
 #include <cstdio>
+#include <iostream>
 
 namespace ptview {
 namespace {
@@ -63,6 +64,10 @@ std::string printableText(std::string_view text) {
         }
     }
     return out;
+}
+
+void printMessage(std::string_view message) {
+    std::cerr << "ptview: " << printableText(message) << "\n";
 }
 
 } // namespace ptview

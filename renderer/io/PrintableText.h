@@ -13,4 +13,8 @@ namespace ptview {
 // backslash stays a backslash. Printable UTF-8 passes unchanged.
 std::string printableText(std::string_view text);
 
+// Prints "ptview: MESSAGE" and a newline on stderr, through printableText: the one way messages
+// that quote names, paths and values from files (errors, warnings) reach the terminal.
+void printMessage(std::string_view message);
+
 } // namespace ptview
