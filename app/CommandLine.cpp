@@ -42,11 +42,14 @@ const CLI::Validator kFiniteNumber(
     },
     "NUMBER");
 
-// A number the scene model holds: the range the loader applies (SceneRanges.h), to the float stored.
-CLI::Validator inSceneRange(const SceneRange& range) {
+// A number of the scene model or the render settings: the range its table gives (SceneRanges.h,
+// SettingRanges.h), which the loaders and the provenance reader apply too, to the float stored.
+// After kDecimalInteger or kFiniteNumber, which say what a number is.
+CLI::Validator inRange(const NumberRange& range) {
     return CLI::Validator(
         [&range](std::string& text) -> std::string {
-            if (range.contains(static_cast<float>(std::strtod(text.c_str(), nullptr)))) return {};
+            const double value = std::strtod(text.c_str(), nullptr);
+            if (range.contains(range.integer ? value : static_cast<float>(value))) return {};
             return "the " + std::string(range.quantity) + " must be " + range.text() + ", got " + text;
         },
         "NUMBER");
@@ -88,12 +91,12 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
     addSamplerOption(app, settings.sampler);
     addNamedOption(app, "--integrator", settings.integrator, "integrator", integratorNames().namesAndValues())
         ->default_str(integratorName(settings.integrator));
-    app.add_option("--depth", settings.maxDepth, "maximum number of bounces (0: emitters only)")
-        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024))->capture_default_str();
-    app.add_option("--seed", settings.seed, "random seed; renders with different seeds are independent")
-        ->transform(kDecimalInteger)->capture_default_str();
+    app.add_option("--depth", settings.maxDepth, settingRanges::kMaxDepth.description)
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kMaxDepth))->capture_default_str();
+    app.add_option("--seed", settings.seed, settingRanges::kSeed.description)
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSeed))->capture_default_str();
     app.add_option("--exposure", display.exposureStops, "exposure in stops applied before tone mapping")
-        ->check(kFiniteNumber)->check(CLI::Range(-20.0f, 20.0f))->capture_default_str();
+        ->check(kFiniteNumber)->check(inRange(settingRanges::kExposure))->capture_default_str();
     addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMapperNames().namesAndValues())
         ->default_str(toneMapperName(display.toneMapper));
     addNamedOption(app, "--view", settings.debugView, "view", debugViewNames().namesAndValues())
@@ -101,7 +104,7 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
         ->default_str("radiance");
     app.add_option("--clamp", settings.radianceClamp,
                    "firefly control (biased): scale each path vertex's contribution down to a largest component of VALUE")
-        ->check(kFiniteNumber)->check(CLI::PositiveNumber);
+        ->check(kFiniteNumber)->check(inRange(settingRanges::kRadianceClamp));
     std::string lightPaths = "light-path view (the part of the light shown):";
     for (const EnumEntry<LightPaths>& entry : lightPathsNames())
         lightPaths += std::string("\n  ") + entry.name + ": " + entry.description;
@@ -109,7 +112,7 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
         ->description(lightPaths)
         ->default_str(lightPathsName(settings.lightPaths));
     app.add_option("--bounces", settings.lightPathBounces, "k of --light-paths exactly and at-most")
-        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024))->capture_default_str();
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kLightPathBounces))->capture_default_str();
 }
 
 void addProgramOptions(CLI::App& app, ProgramOptions& program) {
@@ -169,6 +172,14 @@ void addSizeOption(CLI::App& app, std::optional<glm::ivec2>& size, const std::st
         ->check(check);
 }
 
+// --allow-dir, repeatable: folders outside a sent image's or a glTF model's own folder that their
+// files may still be read from (ReadScope.h, docs/robustness.md).
+void addAllowDirOption(CLI::App& app, std::vector<std::filesystem::path>& directories) {
+    app.add_option("--allow-dir", directories,
+                   "let a scene carried in an image, and glTF files, read files in DIR too (repeatable)")
+        ->check(CLI::ExistingDirectory)->type_name("DIR");
+}
+
 // ---- the viewer (no subcommand) and each subcommand: its options, then what is decided once they
 // are parsed, which returns the exit code when they do not go together.
 
@@ -189,6 +200,7 @@ void addViewerOptions(CLI::App& app, ViewerOptions& viewer) {
     addNamedOption(app, "--warp", viewer.warp.warp, "warp", warpNames())
         ->each([&viewer](const std::string&) { viewer.showWarp = true; })
         ->description("open the warp visualizer on this warp (uses --sampler too)");
+    addAllowDirOption(app, viewer.allowedDirectories);
 }
 
 std::optional<int> finishViewerOptions(ViewerOptions& viewer) {
@@ -233,7 +245,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
             return parseAovs(text) ? "" : "expected albedo, normal, depth or variance, comma-separated, got \"" + text + "\"";
         }, "LIST"));
     command->add_option("--spp", render.samplesPerPixel, "samples per pixel (with --time: the most)")
-        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str()
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSamplesPerPixel))->capture_default_str()
         ->each([&render](const std::string&) { render.samplesPerPixelGiven = true; });
     addSizeOption(*command, render.size, "image size WxH (default: the scene's resolution)");
     addRenderSettings(*command, render.settings, render.display);
@@ -242,18 +254,47 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
     command->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
     command->add_option("--time", render.timeLimitSeconds,
                         "stop at the first whole pass after SECONDS of rendering (--spp is still the most)")
-        ->check(kFiniteNumber)->check(CLI::Range(0.0, 1e7));
+        ->check(kFiniteNumber)->check(inRange(settingRanges::kTimeLimit));
     command->add_option("--aperture-radius", render.apertureRadius, "thin-lens aperture radius in metres (0: a pinhole); overrides the scene's")
-        ->check(kFiniteNumber)->check(inSceneRange(ranges::kApertureRadius));
+        ->check(kFiniteNumber)->check(inRange(ranges::kApertureRadius));
     command->add_option("--focus-distance", render.focusDistance, "distance along the view direction to the plane in focus, metres; overrides the scene's")
-        ->check(kFiniteNumber)->check(inSceneRange(ranges::kFocusDistance));
+        ->check(kFiniteNumber)->check(inRange(ranges::kFocusDistance));
+    addAllowDirOption(*command, render.allowedDirectories);
     return command;
 }
 
-std::optional<int> finishRenderOptions(const RenderOptions& render) {
+// What `render --from FILE` does with the other options: these apply (docs/output.md), and are
+// recorded in the new file's provenance where they change it (--spp); every other option would
+// render something else than FILE records, so it is refused rather than ignored or half applied.
+const char* const kOptionsThatApplyWithFrom[] = {"--from", "--out", "--exr-type", "--aovs", "--spp", "--time",
+                                                 "--dump-shader", "--print-features", "--allow-dir", "--help"};
+
+std::optional<int> finishRenderOptions(const CLI::App& command, const RenderOptions& render) {
     if (render.scenePath.empty() == render.fromPath.empty()) {
         std::cerr << "ptview: render: give a scene or --from FILE, not " << (render.scenePath.empty() ? "neither" : "both")
                   << " (see ptview render --help)\n";
+        return kExitBadInput;
+    }
+    if (!render.fromPath.empty()) {
+        for (const CLI::Option* option : command.get_options()) {
+            const std::string name = option->get_name();
+            if (option->count() == 0 || name.rfind("--", 0) != 0) continue; // not given, or the scene
+            if (std::find(std::begin(kOptionsThatApplyWithFrom), std::end(kOptionsThatApplyWithFrom), name) !=
+                std::end(kOptionsThatApplyWithFrom))
+                continue;
+            std::string applying;
+            for (const char* allowed : kOptionsThatApplyWithFrom)
+                if (std::string(allowed) != "--from" && std::string(allowed) != "--help")
+                    applying += (applying.empty() ? "" : ", ") + std::string(allowed);
+            std::cerr << "ptview: render: " << name << " cannot go with --from: the image's recorded settings decide "
+                      << "the render (with --from only " << applying << " apply; to change the scene or settings, open "
+                      << "the image in the viewer and save its scene)\n";
+            return kExitBadInput;
+        }
+    }
+    if (command.get_option("--exr-type")->count() > 0 && !hasExrExtension(render.outPath)) {
+        std::cerr << "ptview: render: --exr-type needs an .exr --out (" << (render.outPath.empty() ? "no --out" : render.outPath)
+                  << " has no EXR pixels)\n";
         return kExitBadInput;
     }
     if (!render.aovs.empty() && !hasExrExtension(render.outPath)) {
@@ -278,6 +319,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& bench, DisplaySettings& d
     addProgramOptions(*command, bench.program);
     command->add_flag("--variants", bench.variants,
                       "run each scene with every program: specialized and uber, fragment and compute");
+    addAllowDirOption(*command, bench.allowedDirectories);
     return command;
 }
 
@@ -304,19 +346,20 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeT
         ->check(CLI::ExistingFile);
     command->add_option("--reference-spp", converge.referenceSpp,
                         "samples per pixel of the reference ptview renders when none is given (another seed)")
-        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSamplesPerPixel))->capture_default_str();
     command->add_option("--reference-depth", converge.referenceDepth,
                         "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
-        ->transform(kDecimalInteger)->check(CLI::Range(0, 1024));
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kMaxDepth));
     command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE], comma-separated (clamp: biased firefly control, as --clamp)")->capture_default_str();
     command->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
     command->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")
-        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSamplesPerPixel))->capture_default_str();
     addSizeOption(*command, converge.size, "image size WxH (default: the scene's resolution)");
     command->add_option("--seed", converge.seed, "seed of the runs (the reference uses another)")
-        ->transform(kDecimalInteger)->capture_default_str();
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSeed))->capture_default_str();
     addProgramOptions(*command, converge.program);
+    addAllowDirOption(*command, converge.allowedDirectories);
     return command;
 }
 
@@ -344,7 +387,8 @@ CLI::App* addWarpCommand(CLI::App& app, WarpOptions& warp, float& coneAngleDeg) 
     addSamplerOption(*command, warp.request.sampler);
     command->add_option("--count", warp.request.count, "number of points")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 22))->capture_default_str();
-    command->add_option("--seed", warp.request.seed, "random seed")->transform(kDecimalInteger)->capture_default_str();
+    command->add_option("--seed", warp.request.seed, "random seed")
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSeed))->capture_default_str();
     command->add_option("--cone-angle", coneAngleDeg, "half-angle of uniform-cone in degrees")
         ->check(kFiniteNumber)->check(CLI::Range(0.1f, 180.0f))->capture_default_str();
     command->add_option("--out,-o", warp.outPath, "output image (.png)")->required();
@@ -363,15 +407,16 @@ CLI::App* addPathsCommand(CLI::App& app, PathsOptions& paths, std::vector<int>& 
     command->add_option("--first-sample", paths.firstSample, "the first sample (render pass) recorded")
         ->transform(kDecimalInteger)->check(CLI::Range(0, 1 << 24))->capture_default_str();
     command->add_option("--spp", paths.samplesPerPixel, "samples per pixel of the render the paths belong to (the grid and stratified patterns depend on it)")
-        ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 24))->capture_default_str();
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kSamplesPerPixel))->capture_default_str();
     addSizeOption(*command, paths.size, "image size WxH (default: the scene's resolution)");
     addRenderSettings(*command, paths.settings, paths.display);
     command->add_option("--out,-o", paths.outPath, "output JSON (docs/output.md has the schema)")->required();
     command->add_option("--image", paths.imagePath, "also a .png of the paths over the scene seen from a second camera");
     command->add_option("--view-from", viewFrom, "X Y Z: that camera's eye, looking at the scene camera's target (default: the scene camera turned 35 degrees sideways)")
-        ->expected(3)->check(kFiniteNumber);
+        ->expected(3)->check(kFiniteNumber)->check(inRange(ranges::kCoordinate));
     command->add_option("--image-spp", paths.imageSpp, "samples per pixel of the --image render")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1 << 16))->capture_default_str();
+    addAllowDirOption(*command, paths.allowedDirectories);
     return command;
 }
 
@@ -431,7 +476,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     }
     if (*renderCommand) {
         out.mode = CommandLine::Mode::Render;
-        if (std::optional<int> exitCode = finishRenderOptions(out.render)) return exitCode;
+        if (std::optional<int> exitCode = finishRenderOptions(*renderCommand, out.render)) return exitCode;
     }
     return std::nullopt;
 }

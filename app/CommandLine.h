@@ -45,6 +45,7 @@ struct RenderOptions {
     std::optional<double> timeLimitSeconds;  // --time: stop at the first whole pass after it (--spp still bounds)
     std::optional<float> apertureRadius;     // --aperture-radius: overrides the scene camera's
     std::optional<float> focusDistance;      // --focus-distance: overrides the scene camera's
+    std::vector<std::filesystem::path> allowedDirectories; // --allow-dir: folders files from strangers may read (ReadScope.h)
 };
 
 struct ViewerOptions {
@@ -59,6 +60,7 @@ struct ViewerOptions {
     std::string referencePath;   // a .pfm or .exr: the Stats panel shows the true error against it
     std::string shaderDir = PTVIEW_SHADER_DIR; // GLSL to compile and watch for hot reload
     WarpRequest warp{Warp::CosineHemisphere, SamplerMode::Random, 1024};
+    std::vector<std::filesystem::path> allowedDirectories; // --allow-dir: folders files from strangers may read (ReadScope.h)
 };
 
 struct BenchOptions {
@@ -68,6 +70,7 @@ struct BenchOptions {
     ProgramOptions program;
     bool variants = false;               // every (specialized, uber) x (fragment, compute) program
     double seconds = 3.0;                // of rendering per scene, at least
+    std::vector<std::filesystem::path> allowedDirectories; // --allow-dir: folders files from strangers may read (ReadScope.h)
 };
 
 struct ConvergeConfig {
@@ -89,6 +92,7 @@ struct ConvergeOptions {
     std::optional<glm::ivec2> size;
     std::uint32_t seed = 1;
     ProgramOptions program;
+    std::vector<std::filesystem::path> allowedDirectories; // --allow-dir: folders files from strangers may read (ReadScope.h)
 };
 
 struct InfoOptions {
@@ -114,6 +118,7 @@ struct PathsOptions {
     std::string imagePath;           // --image: .png of the paths from a second camera
     std::optional<glm::vec3> viewFrom; // --view-from: that camera's eye
     int imageSpp = 16;               // --image-spp
+    std::vector<std::filesystem::path> allowedDirectories; // --allow-dir: folders files from strangers may read (ReadScope.h)
 };
 
 struct CommandLine {

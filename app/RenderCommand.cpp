@@ -1,14 +1,15 @@
 #include "RenderCommand.h"
 
 #include "CommandErrors.h"
-#include "ExrIO.h"
 #include "EnvironmentMap.h"
+#include "ExrIO.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
+#include "OutputPath.h"
 #include "PathTracer.h"
+#include "PrintableText.h"
 #include "Provenance.h"
 #include "Scene.h"
-#include "OutputPath.h"
 #include "SceneFromImage.h"
 #include "SceneInput.h"
 #include "ShaderAssembler.h"
@@ -32,9 +33,6 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-// --spp's largest value, the bound of a render limited by --time alone.
-constexpr int kMaxSamplesPerPixel = 1 << 24;
 
 std::string secondsText(double seconds) {
     char text[32];
@@ -125,8 +123,9 @@ int runRenderCommand(const RenderOptions& requested) {
     OutputFormat format = extension == ".png" ? OutputFormat::Png : extension == ".exr" ? OutputFormat::Exr : OutputFormat::Pfm;
 
     std::optional<Provenance> from;
-    std::optional<SceneInput> input = options.fromPath.empty() ? loadSceneInput(options.scenePath)
-                                                               : loadSceneInputFromImage(options.fromPath, from);
+    std::optional<SceneInput> input = options.fromPath.empty()
+                                          ? loadSceneInput(options.scenePath, options.allowedDirectories)
+                                          : loadSceneInputFromImage(options.fromPath, from, options.allowedDirectories);
     if (from) {
         applyRecipe(from->recipe, options);
         options.scenePath = options.fromPath; // what the progress and error messages name
@@ -202,8 +201,8 @@ int runRenderCommand(const RenderOptions& requested) {
         ImageRgbF mean = tracer.readMean();
         const RenderRecipe recipe{settings, options.display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures};
         if (from && from->device != context.description())
-            std::fprintf(stderr, "ptview: warning: %s was rendered on %s, this is %s: the pixels may differ\n",
-                         options.fromPath.c_str(), from->device.c_str(), context.description().c_str());
+            printMessage("warning: " + options.fromPath + " was rendered on " + from->device + ", this is " +
+                             context.description() + ": the pixels may differ");
         if (format == OutputFormat::Png) {
             writePng(options.outPath, tracer.readToneMapped(options.display),
                      provenanceMetadata(scene, recipe, context.description()));
@@ -229,12 +228,12 @@ int runRenderCommand(const RenderOptions& requested) {
                      seconds, samples / seconds * 1e-6, backendName(tracer.backend()), nonFinite,
                      context.description().c_str());
         const std::string textures = tracer.gpuScene().textures().describe();
-        if (!textures.empty()) std::fprintf(stderr, "ptview: textures: %s\n", textures.c_str());
+        if (!textures.empty()) printMessage("textures: " + textures);
     } catch (const EnvironmentMapError& e) { // too large for this GPU
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return kExitBadInput;
     } catch (const TextureLimitError& e) { // a texture beyond this GPU's limits
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return kExitBadInput;
     } catch (const std::bad_alloc&) {
         // The accumulation targets are checked where they are made (Accumulator); this is what

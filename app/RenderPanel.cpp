@@ -2,6 +2,8 @@
 #include "Panels.h"
 
 #include "PanelWidgets.h"
+#include "PrintableText.h"
+#include "SettingRanges.h"
 
 #include <imgui.h>
 
@@ -23,6 +25,13 @@ void patternNote(const ViewerModel& model) {
                  std::to_string(model.settings.sampleBudget) + " spp");
 }
 
+// An integer setting's slider over the span its range gives the panels (SettingRanges.h); a typed
+// value (Ctrl+click) stays in that span.
+void settingSlider(const char* label, int& value, const NumberRange& range) {
+    ImGui::SliderInt(label, &value, static_cast<int>(range.panelLo), static_cast<int>(range.panelHi), "%d",
+                     ImGuiSliderFlags_AlwaysClamp);
+}
+
 // Firefly control: off (unbiased) or a largest component per path vertex's contribution.
 void clampControls(RenderSettings& settings) {
     constexpr float kFirstClamp = 10.0f; // what turning it on starts from: a few times a lit white wall
@@ -34,7 +43,7 @@ void clampControls(RenderSettings& settings) {
     if (!settings.radianceClamp) return;
     ImGui::SameLine();
     float value = *settings.radianceClamp;
-    if (ImGui::SliderFloat("##clamp value", &value, 0.1f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    if (ImGui::SliderFloat("##clamp value", &value, settingRanges::kRadianceClamp.panelLo, settingRanges::kRadianceClamp.panelHi, "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
         settings.radianceClamp = value;
 }
 
@@ -43,11 +52,13 @@ void clampControls(RenderSettings& settings) {
 void saveScreenshots(ViewerSession& session, PanelState& state) {
     try {
         std::vector<std::filesystem::path> files = session.saveScreenshots("screenshots");
+        // Made printable here (PrintableText.h), line by line, since the panel and a script's
+        // stdout both show it: the files are named after the scene, which may be a stranger's.
         state.screenshotMessage = "saved";
-        for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + file.string();
+        for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + printableText(file.string());
         state.screenshotFailed = false;
     } catch (const std::exception& e) {
-        state.screenshotMessage = std::string("screenshot not saved: ") + e.what();
+        state.screenshotMessage = printableText(std::string("screenshot not saved: ") + e.what());
         state.screenshotFailed = true;
     }
 }
@@ -58,7 +69,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     // Short labels, so the combos have room for whole entries; in compare mode these are the
     // left side's, and the right side's follow a "right side" line below.
     enumCombo("integrator", integratorNames(), settings.integrator);
-    ImGui::SliderInt("MAX_DEPTH", &settings.maxDepth, 0, 64);
+    settingSlider("MAX_DEPTH", settings.maxDepth, settingRanges::kMaxDepth);
     itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
     clampControls(settings);
     enumCombo("sampler", samplerModeNames(), settings.sampler);
@@ -95,10 +106,11 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
     // The light-path explorer: the same paths, only a part of what they carry added up.
     enumCombo("light paths", lightPathsNames(), settings.lightPaths);
-    if (lightPathsUseBounces(settings.lightPaths)) ImGui::SliderInt("bounces k", &settings.lightPathBounces, 0, 16);
+    if (lightPathsUseBounces(settings.lightPaths)) settingSlider("bounces k", settings.lightPathBounces, settingRanges::kLightPathBounces);
 
     ImGui::Separator();
-    ImGui::SliderFloat("exposure", &model.display.exposureStops, -10.0f, 10.0f, "%+.1f stops");
+    ImGui::SliderFloat("exposure", &model.display.exposureStops, settingRanges::kExposure.panelLo, settingRanges::kExposure.panelHi,
+                       "%+.1f stops", ImGuiSliderFlags_AlwaysClamp);
     enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper);
 
     ImGui::Separator();
@@ -108,7 +120,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
         ImGui::TextDisabled("right side (above: the left side):");
         enumCombo("integrator##right", integratorNames(), model.compare.right.integrator);
         enumCombo("sampler##right", samplerModeNames(), model.compare.right.sampler);
-        ImGui::SliderInt("MAX_DEPTH##right", &model.compare.right.maxDepth, 0, 64);
+        settingSlider("MAX_DEPTH##right", model.compare.right.maxDepth, settingRanges::kMaxDepth);
         ImGui::Checkbox("equal time", &model.compare.equalTime);
         itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
                 "off: both get the same number of samples per pixel");

@@ -1,22 +1,26 @@
 #include "SceneInput.h"
 
+#include "PrintableText.h"
 #include "SceneLoader.h"
 
-#include <iostream>
 
 namespace ptview {
 
-std::optional<SceneInput> loadSceneInput(const std::string& scenePath) {
+std::optional<SceneInput> loadSceneInput(const std::string& scenePath,
+                                         const std::vector<std::filesystem::path>& allowedDirectories, ReadScope* scope) {
     SceneInput input;
+    input.allowedDirectories = allowedDirectories;
+    const ReadScope anywhere = ReadScope::anywhere(allowedDirectories);
+    if (scope) *scope = anywhere;
     try {
-        input.scene = loadScene(scenePath);
-        for (const std::string& warning : input.scene.warnings) std::cerr << "ptview: warning: " << warning << "\n";
+        input.scene = loadScene(scenePath, anywhere);
+        for (const std::string& warning : input.scene.warnings) printMessage("warning: " + warning);
         if (!input.scene.environmentMap.empty()) input.environmentMap = loadEnvironmentMap(input.scene.environmentMap);
     } catch (const SceneError& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return std::nullopt;
     } catch (const EnvironmentMapError& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return std::nullopt;
     }
     return input;

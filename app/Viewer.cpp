@@ -8,6 +8,8 @@
 #include "Panels.h"
 #include "PathsOverlay.h"
 #include "Readback.h"
+#include "AllowFolderPrompt.h"
+#include "PrintableText.h"
 #include "SceneFromImage.h"
 #include "SceneInput.h"
 #include "ScriptRunner.h"
@@ -215,7 +217,7 @@ void ViewerWindow::updateTitle() {
     lastTitleUpdate_ = now;
     std::string title = windowTitle(session_);
     if (title == title_) return;
-    glfwSetWindowTitle(window_, title.c_str());
+    glfwSetWindowTitle(window_, printableText(title).c_str()); // the scene's name may be a stranger's
     title_ = std::move(title);
 }
 
@@ -401,7 +403,7 @@ void ViewerWindow::drawSidebar() {
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar;
     if (ImGui::Begin("ptview", nullptr, flags)) {
         ViewerModel& model = session_.model();
-        ImGui::TextUnformatted(model.scene.path.filename().string().c_str());
+        ImGui::TextUnformatted(printableText(model.scene.path.filename().string()).c_str());
         ImGui::SameLine();
         ImGui::TextDisabled("(F1: help, Tab: hide)");
         // Room for the longest label beside a widget ("samples/frame") and no more, so that combo
@@ -449,7 +451,7 @@ void ViewerWindow::drawSidebar() {
         if (!model.sceneError.empty() && !sceneOpen) {
             ImGui::Separator();
             ImGui::PushTextWrapPos(0.0f);
-            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", model.sceneError.c_str());
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", printableText(model.sceneError).c_str());
             ImGui::PopTextWrapPos();
         }
         ImGui::PopItemWidth();
@@ -753,15 +755,21 @@ int runViewer(const ViewerOptions& requested) {
         try {
             script.emplace(loadViewerScript(options.scriptPath));
         } catch (const ScriptError& e) {
-            std::cerr << "ptview: " << e.what() << "\n";
+            printMessage(e.what());
             return kExitBadInput;
         }
     }
     std::optional<Provenance> from; // `ptview shot.png`: the scene and settings it was rendered with
-    std::optional<SceneInput> input = isProvenanceImage(options.scenePath) ? loadSceneInputFromImage(options.scenePath, from)
-                                                                           : loadSceneInput(options.scenePath);
-    if (!input) return kExitBadInput;
-    if (from) applyRecipe(from->recipe, options);
+    ReadScope scope;                // what the load refused, for the question below
+    auto load = [&options, &from, &scope]() {
+        return isProvenanceImage(options.scenePath)
+                   ? loadSceneInputFromImage(options.scenePath, from, options.allowedDirectories, &scope)
+                   : loadSceneInput(options.scenePath, options.allowedDirectories, &scope);
+    };
+    std::optional<SceneInput> input = load();
+    // A file outside the folders a sent file may read is a question for the user; anything else
+    // wrong is bad input, reported before any window opens.
+    if (!input && scope.refusedFiles().empty()) return kExitBadInput;
 
     // Init the window. Destroyed in the reverse order: ImGui, the window, GLFW.
     glfwSetErrorCallback(reportGlfwError);
@@ -770,7 +778,7 @@ int runViewer(const ViewerOptions& requested) {
         std::cerr << "ptview: cannot open a window (no display?); `ptview render` renders without one\n";
         return kExitRuntimeError;
     }
-    WindowHandle window = openWindow(input->scene.camera.resolution);
+    WindowHandle window = openWindow(input ? input->scene.camera.resolution : CameraDesc().resolution);
     if (!window) return kExitRuntimeError;
     InputEvents inputEvents;
     listenToInput(window.get(), inputEvents);
@@ -778,18 +786,36 @@ int runViewer(const ViewerOptions& requested) {
     // Init ImGui.
     ImGuiOnWindow imgui(window.get());
 
+    // Each folder the scene wants outside its own is asked about once, then the load is tried again.
+    while (!input) {
+        const std::filesystem::path refused = scope.refusedFiles().front();
+        const std::filesystem::path folder = refused.parent_path();
+        const std::string question = printableText(options.scenePath) + " wants to read " + printableText(refused.string()) +
+                                     ", outside the folders a file from someone else may read.\n\nAllow ptview to read files in " +
+                                     printableText(folder.string()) + " for this session?";
+        printMessage("asking in the window whether to read " + folder.string());
+        if (!askToAllowFolder(window.get(), question)) {
+            printMessage("not allowed: " + folder.string() + " (--allow-dir DIR allows it)");
+            return kExitBadInput;
+        }
+        options.allowedDirectories.push_back(folder);
+        input = load();
+        if (!input && scope.refusedFiles().empty()) return kExitBadInput;
+    }
+    if (from) applyRecipe(from->recipe, options);
+
     // Loop, until the user or the script quits.
     try {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
                               PathTracerOptions{options.program.allFeatures, options.program.backend});
         if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
-            std::cerr << "ptview: " << session.model().sceneError << "\n";
+            printMessage(session.model().sceneError);
             return kExitBadInput;
         }
         ViewerWindow viewer(window.get(), session, options);
         return viewer.run(script);
     } catch (const std::exception& e) {
-        std::cerr << "ptview: " << e.what() << "\n";
+        printMessage(e.what());
         return kExitRuntimeError;
     }
 }

@@ -72,17 +72,20 @@ ArgSpec numberArg(const char* meta, double lo = -kInf, double hi = kInf, bool lo
     return arg;
 }
 
-ArgSpec keywordNumberArg(const char* meta, double lo, double hi, bool loOpen, const char* keyword) {
-    ArgSpec arg = numberArg(meta, lo, hi, loOpen);
-    arg.keyword = keyword;
-    return arg;
-}
-
 // A number of the scene model: its range is the loader's (SceneRanges.h), so a script cannot make
 // an edit that the file format cannot hold.
 ArgSpec rangeArg(const char* meta, const SceneRange& range) {
     ArgSpec arg = numberArg(meta, range.lo, range.hi, range.loOpen);
     arg.hiOpen = range.hiOpen;
+    return arg;
+}
+
+// A render setting: its range is the command line's and the provenance reader's (SettingRanges.h).
+ArgSpec settingArg(const char* meta, const NumberRange& range, const char* keyword = nullptr) {
+    ArgSpec arg = !range.integer          ? rangeArg(meta, range)
+                  : range.hi > INT_MAX     ? unsignedArg(meta) // a seed: any uint32
+                                           : integerArg(meta, static_cast<int>(range.lo), static_cast<int>(range.hi));
+    arg.keyword = keyword;
     return arg;
 }
 
@@ -194,14 +197,14 @@ const std::vector<CommandSpec>& commandSpecs() {
         // Render settings
         {"integrator", {choiceArg("NAME", "integrator", integratorChoices)}, nullptr, "the integrator of the main view"},
         {"sampler", {choiceArg("NAME", "sampler", samplerChoices)}, nullptr, "the sample generator"},
-        {"depth", {integerArg("N", 0, 1024)}, nullptr, "maximum bounces (0: only what the camera sees)"},
-        {"clamp", {keywordNumberArg("VALUE", 0.0, kInf, true, "off")}, nullptr,
+        {"depth", {settingArg("N", settingRanges::kMaxDepth)}, nullptr, "maximum bounces (0: only what the camera sees)"},
+        {"clamp", {settingArg("VALUE", settingRanges::kRadianceClamp, "off")}, nullptr,
          "firefly control (biased): largest component of one path vertex's contribution, or off"},
         {"light-paths", {choiceArg("NAME", "light-path view", lightPathsChoices)}, nullptr,
          "show a part of the light: all, exactly, at-most (k: light-path-bounces), direct, indirect, caustics"},
-        {"light-path-bounces", {integerArg("K", 0, 1024)}, nullptr, "k of the light-path views exactly and at-most"},
-        {"seed", {unsignedArg("N")}, nullptr, "random seed (decorrelates renders of the same scene)"},
-        {"exposure", {numberArg("F", -20.0, 20.0)}, nullptr, "exposure in stops"},
+        {"light-path-bounces", {settingArg("K", settingRanges::kLightPathBounces)}, nullptr, "k of the light-path views exactly and at-most"},
+        {"seed", {settingArg("N", settingRanges::kSeed)}, nullptr, "random seed (decorrelates renders of the same scene)"},
+        {"exposure", {settingArg("F", settingRanges::kExposure)}, nullptr, "exposure in stops"},
         {"tone-mapper", {choiceArg("NAME", "tone mapper", toneMapperChoices)}, nullptr, "the display transform"},
         {"resolution-scale", {numberArg("F", 0.125, 2.0)}, nullptr, "render resolution relative to the window"},
         {"samples-per-frame", {integerArg("N", 1, 1024, "auto")}, nullptr,
@@ -244,7 +247,7 @@ const std::vector<CommandSpec>& commandSpecs() {
          "the integrator of the split view's right side"},
         {"compare-sampler", {choiceArg("NAME", "sampler", samplerChoices)}, nullptr,
          "the sampler of the split view's right side"},
-        {"compare-depth", {integerArg("N", 0, 1024)}, nullptr, "the maximum bounces of the split view's right side"},
+        {"compare-depth", {settingArg("N", settingRanges::kMaxDepth)}, nullptr, "the maximum bounces of the split view's right side"},
         {"divider", {numberArg("F", 0.0, 1.0)}, nullptr, "where the split is, as a fraction of the width from the left"},
         // Waiting and output
         {"frames", {integerArg("N", 1)}, nullptr, "let N frames be displayed"},

@@ -59,6 +59,14 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     : shaderDir_(std::move(shaderDir)), programOptions_(program) {
     model_.environmentMap = shareMap(input.environmentMap);
     model_.scene = std::move(input.scene);
+    allowedDirectories_ = std::move(input.allowedDirectories);
+    if (!input.carriedBy.empty()) {
+        // The scene file an image names is the sender's word, not a file of the user's: it is
+        // neither written by Save nor watched for reload (docs/robustness.md).
+        model_.scene.path.clear();
+        model_.notice = "opened the scene carried by " + input.carriedBy.string() +
+                        "; it has no file of its own: type one in Materials > Save scene as to save it";
+    }
     model_.fileScene = model_.scene;
     model_.settings = settings;
     model_.display = display;
@@ -93,7 +101,7 @@ void ViewerSession::applyScene(Scene scene, std::shared_ptr<const EnvironmentMap
 bool ViewerSession::openScene(const std::filesystem::path& path) {
     ++reloadCount_;
     try {
-        Scene scene = loadScene(path);
+        Scene scene = loadScene(path, ReadScope::anywhere(allowedDirectories_));
         std::optional<EnvironmentMap> map;
         if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
         model_.fileScene = scene;
@@ -111,7 +119,7 @@ bool ViewerSession::openScene(const std::filesystem::path& path) {
 bool ViewerSession::reloadScene() {
     ++reloadCount_;
     try {
-        Scene reloaded = loadScene(model_.fileScene.path);
+        Scene reloaded = loadScene(model_.fileScene.path, ReadScope::anywhere(allowedDirectories_));
         std::shared_ptr<const EnvironmentMap> map = model_.environmentMap;
         SceneMergeResult merged = mergeReloadedScene(model_.fileScene, model_.scene, reloaded);
         if (merged.scene.environmentMap != model_.scene.environmentMap || !map) {

@@ -203,6 +203,7 @@ private:
     SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
     bool seenCompare_ = false;
     std::string saveTarget_;
+    std::vector<std::filesystem::path> allowedDirectories_; // --allow-dir and the prompt's answers (ReadScope.h)
     // The pixel inspector's last probe, and what it was probed for.
     struct PixelProbe {
         glm::ivec2 pixel{-1};

@@ -56,7 +56,13 @@ TEST(RenderRecipe, JsonKeepsEveryFieldExactly) {
 }
 
 TEST(RenderRecipe, MissingKeysKeepTheDefaultsAndBadValuesNameTheKey) {
-    expectSameRecipe(recipeFromJson("{\"unknown_future_key\": 1}", "f.png"), RenderRecipe{});
+    RenderRecipe sized;
+    sized.samplesPerPixel = 2;
+    sized.size = {8, 4};
+    expectSameRecipe(recipeFromJson(R"({"spp": 2, "width": 8, "height": 4, "unknown_future_key": 1})", "f.png"), sized);
+    // Every ptview that wrote settings wrote these; without them there is no image to render again.
+    for (const char* json : {R"({"width": 8, "height": 4})", R"({"spp": 2, "height": 4})", R"({"spp": 2, "width": 8})"})
+        EXPECT_THROW(recipeFromJson(json, "f.png"), RecipeError) << json;
     try {
         recipeFromJson("{\"sampler\": \"quantum\"}", "f.png");
         ADD_FAILURE() << "an unknown sampler was read";
@@ -100,7 +106,7 @@ TEST_F(ProvenanceTest, TheSceneIsFoundAgainFromAnotherWorkingDirectory) {
     EXPECT_FALSE(provenance.version.empty());
     EXPECT_EQ(provenance.sceneFile, dir_ / "scenes" / "tri.json");
     expectSameRecipe(provenance.recipe, unusualRecipe());
-    const Scene restored = provenanceScene(provenance, "shot.png");
+    const Scene restored = provenanceScene(provenance, "shot.png", ReadScope());
     ASSERT_EQ(restored.meshes.size(), 1u);
     EXPECT_TRUE(fs::exists(restored.meshes[0].file)) << restored.meshes[0].file;
     EXPECT_EQ(restored.materials[0].color, glm::vec3(0.25f));
@@ -119,7 +125,9 @@ TEST_F(ProvenanceTest, MissingNewerOrBrokenMetadataIsAnErrorNamingTheFile) {
     expectError(ImageMetadata{}, "no ptview metadata");
     Scene scene;
     scene.path = dir_ / "scene.json";
-    ImageMetadata metadata = provenanceMetadata(scene, RenderRecipe{}, "d");
+    RenderRecipe recipe;
+    recipe.size = {8, 8};
+    ImageMetadata metadata = provenanceMetadata(scene, recipe, "d");
     EXPECT_NO_THROW(parseProvenance(metadata, "shot.exr"));
     ImageMetadata newer = metadata;
     newer.set("ptview.format", std::to_string(kProvenanceFormat + 1));

@@ -83,9 +83,9 @@ Provenance readProvenance(const std::filesystem::path& imageFile) {
     return parseProvenance(readImageMetadata(imageFile), imageFile.string());
 }
 
-Scene provenanceScene(const Provenance& provenance, const std::filesystem::path& imageFile) {
+Scene provenanceScene(const Provenance& provenance, const std::filesystem::path& imageFile, const ReadScope& scope) {
     try {
-        return parseScene(provenance.sceneJson, provenance.sceneFile);
+        return parseScene(provenance.sceneJson, provenance.sceneFile, scope);
     } catch (const SceneError& e) {
         throw SceneError(imageFile.string() + ": the scene it was rendered from (ptview.scene): " + e.what());
     }

@@ -10,6 +10,7 @@
 //   ptview.settings    the RenderRecipe as JSON (RenderRecipe.h)
 
 #include "ImageMetadata.h"
+#include "ReadScope.h"
 #include "RenderRecipe.h"
 #include "Scene.h"
 
@@ -47,8 +48,9 @@ ImageMetadata readImageMetadata(const std::filesystem::path& imageFile);
 Provenance parseProvenance(const ImageMetadata& metadata, const std::string& fileName);
 Provenance readProvenance(const std::filesystem::path& imageFile);
 // The scene it holds, loaded as loadScene would load the original file (meshes, textures and maps
-// found from ptview.scene_file's directory). Throws SceneError naming the image file.
-Scene provenanceScene(const Provenance& provenance, const std::filesystem::path& imageFile);
+// found from ptview.scene_file's directory), reading only what `scope` allows (the image's folder,
+// SceneFromImage.h). Throws SceneError naming the image file.
+Scene provenanceScene(const Provenance& provenance, const std::filesystem::path& imageFile, const ReadScope& scope);
 
 // Whether a path names an image that may carry provenance (.png, .exr), by extension.
 bool isProvenanceImage(const std::filesystem::path& path);

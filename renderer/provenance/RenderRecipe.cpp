@@ -1,5 +1,7 @@
 #include "RenderRecipe.h"
 
+#include "SettingRanges.h"
+
 #include <nlohmann/json.hpp>
 
 #include <functional>
@@ -17,39 +19,63 @@ struct RecipeField {
     std::function<void(const Json&, RenderRecipe&)> read; // throws nlohmann's or RecipeError
 };
 
-// A number, a bool or a size, stored as JSON does it. `member(recipe)` names the field.
+// A number of `range` (SettingRanges.h, the command line's bounds): an integer field takes only a
+// JSON integer, a float field the float it rounds to. A file may come from anyone, so a value the
+// command line would refuse is refused here too, not wrapped (-1 as a seed) or truncated (16.7).
+template <typename Value>
+Value numberInRange(const Json& j, const NumberRange& range) {
+    const bool integer = std::is_integral_v<Value>;
+    const bool typeFits = integer ? j.is_number_integer() : j.is_number();
+    double value = 0.0;
+    if (typeFits) value = j.is_number_unsigned() ? double(j.get<std::uint64_t>())
+                          : j.is_number_integer() ? double(j.get<std::int64_t>())
+                                                  : j.get<double>();
+    if (!integer) value = static_cast<float>(value); // as stored
+    if (!typeFits || !range.contains(value))
+        throw RecipeError(std::string("expected ") + range.expected() + " (the " + range.quantity + "), got " + j.dump());
+    return static_cast<Value>(value);
+}
+
+// A number in its range. `member(recipe)` names the field.
 template <typename Member>
-RecipeField valueField(const char* key, Member member) {
+RecipeField numberField(const char* key, const NumberRange& range, Member member) {
     return {key, [member](const RenderRecipe& r) { return Json(member(const_cast<RenderRecipe&>(r))); },
-            [member](const Json& j, RenderRecipe& r) {
+            [member, &range](const Json& j, RenderRecipe& r) {
                 auto& value = member(r);
-                value = j.get<std::decay_t<decltype(value)>>();
+                value = numberInRange<std::decay_t<decltype(value)>>(j, range);
             }};
+}
+
+// A bool, stored as JSON does it.
+template <typename Member>
+RecipeField boolField(const char* key, Member member) {
+    return {key, [member](const RenderRecipe& r) { return Json(member(const_cast<RenderRecipe&>(r))); },
+            [member](const Json& j, RenderRecipe& r) { member(r) = j.get<bool>(); }};
 }
 
 // An enum, by its name in its table (the names users type, which never change).
 template <typename Table, typename Member>
 RecipeField enumField(const char* key, const Table& (*table)(), Member member) {
     return {key, [table, member](const RenderRecipe& r) { return Json(table().name(member(const_cast<RenderRecipe&>(r)))); },
-            [table, member, key](const Json& j, RenderRecipe& r) {
+            [table, member](const Json& j, RenderRecipe& r) {
                 const auto value = table().parse(j.get<std::string>());
-                if (!value) throw RecipeError(std::string("\"") + key + "\": unknown name \"" + j.get<std::string>() + "\"");
+                if (!value) throw RecipeError("unknown name " + j.dump());
                 member(r) = *value;
             }};
 }
 
-// An optional number: null when absent (e.g. no --clamp).
+// An optional number in its range: null when absent (e.g. no --clamp).
 template <typename Member>
-RecipeField optionalNumberField(const char* key, Member member) {
+RecipeField optionalNumberField(const char* key, const NumberRange& range, Member member) {
     return {key,
             [member](const RenderRecipe& r) {
                 const auto& value = member(const_cast<RenderRecipe&>(r));
                 return value ? Json(*value) : Json(nullptr);
             },
-            [member](const Json& j, RenderRecipe& r) {
+            [member, &range](const Json& j, RenderRecipe& r) {
                 auto& value = member(r);
                 if (j.is_null()) value.reset();
-                else value = j.get<typename std::decay_t<decltype(value)>::value_type>();
+                else value = numberInRange<typename std::decay_t<decltype(value)>::value_type>(j, range);
             }};
 }
 
@@ -58,19 +84,19 @@ const std::vector<RecipeField>& recipeFields() {
     static const std::vector<RecipeField> fields = {
         enumField("integrator", integratorNames, [](RenderRecipe& r) -> auto& { return r.settings.integrator; }),
         enumField("sampler", samplerModeNames, [](RenderRecipe& r) -> auto& { return r.settings.sampler; }),
-        valueField("max_depth", [](RenderRecipe& r) -> auto& { return r.settings.maxDepth; }),
-        valueField("seed", [](RenderRecipe& r) -> auto& { return r.settings.seed; }),
-        valueField("sample_budget", [](RenderRecipe& r) -> auto& { return r.settings.sampleBudget; }),
+        numberField("max_depth", settingRanges::kMaxDepth, [](RenderRecipe& r) -> auto& { return r.settings.maxDepth; }),
+        numberField("seed", settingRanges::kSeed, [](RenderRecipe& r) -> auto& { return r.settings.seed; }),
+        numberField("sample_budget", settingRanges::kSampleBudget, [](RenderRecipe& r) -> auto& { return r.settings.sampleBudget; }),
         enumField("view", debugViewNames, [](RenderRecipe& r) -> auto& { return r.settings.debugView; }),
-        optionalNumberField("radiance_clamp", [](RenderRecipe& r) -> auto& { return r.settings.radianceClamp; }),
-        valueField("spp", [](RenderRecipe& r) -> auto& { return r.samplesPerPixel; }),
-        valueField("width", [](RenderRecipe& r) -> auto& { return r.size.x; }),
-        valueField("height", [](RenderRecipe& r) -> auto& { return r.size.y; }),
+        optionalNumberField("radiance_clamp", settingRanges::kRadianceClamp, [](RenderRecipe& r) -> auto& { return r.settings.radianceClamp; }),
+        numberField("spp", settingRanges::kSamplesPerPixel, [](RenderRecipe& r) -> auto& { return r.samplesPerPixel; }),
+        numberField("width", settingRanges::kImageSide, [](RenderRecipe& r) -> auto& { return r.size.x; }),
+        numberField("height", settingRanges::kImageSide, [](RenderRecipe& r) -> auto& { return r.size.y; }),
         enumField("backend", backendNames, [](RenderRecipe& r) -> auto& { return r.backend; }),
-        valueField("all_features", [](RenderRecipe& r) -> auto& { return r.allFeatures; }),
-        valueField("exposure_stops", [](RenderRecipe& r) -> auto& { return r.display.exposureStops; }),
+        boolField("all_features", [](RenderRecipe& r) -> auto& { return r.allFeatures; }),
+        numberField("exposure_stops", settingRanges::kExposure, [](RenderRecipe& r) -> auto& { return r.display.exposureStops; }),
         enumField("tone_mapper", toneMapperNames, [](RenderRecipe& r) -> auto& { return r.display.toneMapper; }),
-        valueField("highlight_non_finite", [](RenderRecipe& r) -> auto& { return r.display.highlightNonFinite; }),
+        boolField("highlight_non_finite", [](RenderRecipe& r) -> auto& { return r.display.highlightNonFinite; }),
     };
     return fields;
 }
@@ -84,9 +110,20 @@ std::string recipeToJson(const RenderRecipe& recipe) {
 }
 
 RenderRecipe recipeFromJson(const std::string& text, const std::string& where) {
+    // The settings are one object of plain values. Deeper nesting is refused while it is read:
+    // ordered_json copies an object's members, recursively, each time the object grows, and
+    // dump() recurses too, so 100000 nested arrays in a PNG overflowed the stack.
+    constexpr int kMaxNesting = 64;
+    const Json::parser_callback_t boundNesting = [&where](int depth, Json::parse_event_t event, Json&) {
+        const bool opens = event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
+        if (opens && depth >= kMaxNesting)
+            throw RecipeError(where + ": the settings nest arrays and objects deeper than " +
+                              std::to_string(kMaxNesting) + " levels");
+        return true;
+    };
     Json json;
     try {
-        json = Json::parse(text);
+        json = Json::parse(text, boundNesting);
     } catch (const Json::exception& e) {
         throw RecipeError(where + ": the settings are not JSON: " + e.what());
     }
@@ -100,9 +137,12 @@ RenderRecipe recipeFromJson(const std::string& text, const std::string& where) {
         } catch (const Json::exception& e) {
             throw RecipeError(where + ": settings \"" + field.key + "\": " + e.what());
         } catch (const RecipeError& e) {
-            throw RecipeError(where + ": settings " + e.what());
+            throw RecipeError(where + ": settings \"" + field.key + "\": " + e.what());
         }
     }
+    // Keys every ptview that wrote settings wrote: without them there is no image to render.
+    for (const char* key : {"spp", "width", "height"})
+        if (json.find(key) == json.end()) throw RecipeError(where + ": settings lack \"" + key + "\"");
     return recipe;
 }
 

@@ -293,13 +293,18 @@ std::string_view readTextureKey(std::string_view key) {
 class MtlReader : public tinyobj::MaterialReader {
 public:
     MtlReader(std::filesystem::path directory, std::string objFile, TriangleMesh& mesh,
-              std::vector<std::string>& warnings)
-        : directory_(std::move(directory)), objFile_(std::move(objFile)), mesh_(mesh), warnings_(warnings) {}
+              std::vector<std::string>& warnings, const ReadScope& scope)
+        : directory_(std::move(directory)), objFile_(std::move(objFile)), mesh_(mesh), warnings_(warnings), scope_(scope) {}
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* nameToIndex, std::string* /*warn*/,
                     std::string* /*err*/) override {
         const std::filesystem::path path = directory_ / name;
+        // Outside what the scene may read: not even whether it exists is looked at.
+        if (std::optional<std::string> refusal = scope_.refusal(path)) {
+            warnings_.push_back(objFile_ + ": material library not read: " + *refusal + "; its faces keep their material names");
+            return false;
+        }
         std::error_code ignored;
         if (!std::filesystem::exists(path, ignored)) {
             warnings_.push_back(objFile_ + ": material library " + name + " not found (looked for " +
@@ -427,7 +432,7 @@ private:
                 std::error_code ignored;
                 if (name.empty())
                     warnings_.push_back(place + std::string(key) + " names no file");
-                else if (!std::filesystem::exists(texture, ignored))
+                else if (!scope_.refusal(texture) && !std::filesystem::exists(texture, ignored))
                     warnings_.push_back(place + std::string(key) + " " + std::string(name) + " not found (looked for " +
                                         texture.string() +
                                         "); ptview does not read this map, but the model may need it");
@@ -458,6 +463,10 @@ private:
         map.clamp = options.clamp;
         map.bumpMultiplier = std::isfinite(options.bump_multiplier) ? options.bump_multiplier : 1.0f;
         const std::string why = "; rendered with the factor alone";
+        if (std::optional<std::string> refusal = scope_.refusal(map.file)) {
+            warnings_.push_back(place + ": " + key + " not read: " + *refusal + why);
+            return map;
+        }
         std::error_code ignored;
         if (!std::filesystem::exists(map.file, ignored)) {
             warnings_.push_back(place + ": " + key + " " + texname + " not found (looked for " + map.file.string() +
@@ -471,8 +480,13 @@ private:
             if (!map.image) warnings_.push_back(place + ": " + key + " " + texname + ": see above" + why);
             return map;
         }
+        // This OBJ's maps share one texture budget (TextureLoader.h): what those decoded so far take.
+        std::uint64_t spent = 0;
+        for (const auto& [decodedFile, image] : decoded_)
+            if (image) spent += decodedBytes({image->width, image->height});
+        TextureBudget budget(spent);
         try {
-            map.image = loadTextureImage(map.file);
+            map.image = loadTextureImage(map.file, &budget);
         } catch (const TextureError& e) {
             warnings_.push_back(place + ": " + key + " " + e.what() + why); // e names the file
         }
@@ -492,6 +506,7 @@ private:
     std::string objFile_;
     TriangleMesh& mesh_;
     std::vector<std::string>& warnings_;
+    const ReadScope& scope_;
 };
 
 // --- Records to triangles ---------------------------------------------------------------------
@@ -812,7 +827,7 @@ void ObjBuilder::finish(std::size_t polylines, std::size_t points, std::vector<s
 }
 
 
-TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* report) {
+TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* report, const ReadScope& scope) {
     MeshLoadReport unread;
     std::vector<std::string>& warnings = (report ? *report : unread).warnings;
     const std::string file = path.string();
@@ -826,7 +841,7 @@ TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
     TriangleMesh mesh;
     mesh.source = file;
     ObjBuilder builder(file, bytes, buffer, mesh);
-    MtlReader mtlReader(path.parent_path(), file, mesh, warnings);
+    MtlReader mtlReader(path.parent_path(), file, mesh, warnings, scope);
     std::string libraryWarnings, libraryErrors;
     const bool read = tinyobj::LoadObjWithCallback(stream, builder.callbacks(), &builder, &mtlReader,
                                                    &libraryWarnings, &libraryErrors);
@@ -849,9 +864,9 @@ TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
 
 } // namespace
 
-TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report) {
+TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report, const ReadScope& scope) {
     try {
-        return readObjMesh(path, report);
+        return readObjMesh(path, report, scope);
     } catch (const std::bad_alloc&) {
         // A mesh larger than memory is a limit of this machine, not a crash: the scene loader and
         // the viewer report it like any other file they cannot use. What was built is freed by now.

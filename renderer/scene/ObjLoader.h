@@ -15,6 +15,7 @@
 // finite or has zero length is dropped from the corners that use it, which then shade flat. A
 // material library that cannot be found is a warning too: the faces keep their slot names.
 
+#include "ReadScope.h"
 #include "TriangleMesh.h"
 
 #include <filesystem>
@@ -44,6 +45,9 @@ struct MeshLoadReport {
 //
 // An MTL key that an entry leaves out keeps tinyobjloader's default, not MeshMaterial's: Kd, Ks
 // and Ke black, Ns 1, Ni 1, d 1, illum 0.
-TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report = nullptr);
+//
+// MTL libraries and maps that `scope` refuses (ReadScope.h) are not read, with a warning.
+TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report = nullptr,
+                         const ReadScope& scope = ReadScope());
 
 } // namespace ptview

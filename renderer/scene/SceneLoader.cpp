@@ -132,10 +132,20 @@ std::string shortSyntaxReason(std::string message) {
     return message;
 }
 
-// Builds the document through nlohmann's SAX interface instead of Json::parse for two things
+// How deeply arrays and objects may sit inside one another; a scene needs fewer than ten levels
+// (the deepest: gltf / entry / materials / name / texture input / scale). Deeper documents are
+// refused while they are read, before any recursive code sees them: ordered_json keeps an
+// object's members in a vector of pair<const key, value>, which grows by copying its members (the
+// pair's move copies the const key, may throw, so the vector does not use it), and that copy
+// recurses once per level, as dump() and operator== do. A file of 100000 nested arrays followed
+// by another key overflowed the stack.
+constexpr std::size_t kMaxNesting = 64;
+
+// Builds the document through nlohmann's SAX interface instead of Json::parse for three things
 // Json::parse cannot do: reject duplicate keys (it keeps the last one silently, so a copied
-// material that was not renamed would replace the original) and name the value whose number
-// overflows, such as 1e999 (it reports that without any position).
+// material that was not renamed would replace the original), name the value whose number
+// overflows, such as 1e999 (it reports that without any position), and bound the nesting
+// (kMaxNesting).
 class DocumentBuilder final : public nlohmann::json_sax<Json> {
 public:
     Json root;
@@ -226,6 +236,10 @@ private:
         return true;
     }
     bool openContainer(Json&& empty) {
+        // Named by the top-level member that holds it: the full pointer would be kMaxNesting
+        // levels long, each a key of any length.
+        if (stack.size() >= kMaxNesting)
+            fail(placeWithin(1), "arrays and objects nested deeper than " + std::to_string(kMaxNesting) + " levels");
         stack.push_back({place(std::move(empty)), {}});
         return true;
     }
@@ -1137,14 +1151,15 @@ Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& s
 // Reads each mesh file once and gives every slot of every mesh shape a scene material: the
 // shape's "materials" entry for it, else its "material", else the scene material of the same
 // name, else one made from the mesh file's own definition.
-void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
+void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile, const ReadScope& scope) {
     Scene& scene = draft.scene;
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         SceneMesh& mesh = scene.meshes[m];
         if (mesh.file.is_relative()) mesh.file = sceneFile.parent_path() / mesh.file;
+        if (std::optional<std::string> refusal = scope.refusal(mesh.file)) fail(draft.meshPlaces[m], *refusal);
         MeshLoadReport report;
         try {
-            mesh.data = std::make_shared<const TriangleMesh>(loadObjMesh(mesh.file, &report));
+            mesh.data = std::make_shared<const TriangleMesh>(loadObjMesh(mesh.file, &report, scope));
         } catch (const MeshError& error) {
             // The mesh's own error names its file and line; say which scene entry wanted it.
             fail(draft.meshPlaces[m], error.what());
@@ -1193,11 +1208,25 @@ void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile) {
 }
 
 // Decodes every texture the materials name, each file once (TextureLoader.h), relative to the
-// scene file; textures of the same file and sampler are one Scene::textures entry.
-void resolveTextures(const std::vector<TextureRequest>& requests, const std::filesystem::path& sceneFile, Scene& scene) {
-    TextureImageCache cache;
+// scene file; textures of the same file and sampler are one Scene::textures entry. Every file's
+// size is charged to the scene's texture budget from its header before any is decoded.
+void resolveTextures(const std::vector<TextureRequest>& requests, const std::filesystem::path& sceneFile,
+                     const ReadScope& scope, Scene& scene) {
+    TextureImageCache cache(decodedTextureBytes(scene));
+    auto fileOf = [&](const TextureRequest& request) {
+        return request.file.is_relative() ? sceneFile.parent_path() / request.file : request.file;
+    };
     for (const TextureRequest& request : requests) {
-        std::filesystem::path file = request.file.is_relative() ? sceneFile.parent_path() / request.file : request.file;
+        std::filesystem::path file = fileOf(request);
+        if (std::optional<std::string> refusal = scope.refusal(file)) fail(request.at, *refusal);
+        try {
+            cache.reserve(file);
+        } catch (const TextureError& error) {
+            fail(request.at, error.what());
+        }
+    }
+    for (const TextureRequest& request : requests) {
+        std::filesystem::path file = fileOf(request);
         int index = -1;
         for (std::size_t t = 0; t < scene.textures.size() && index < 0; ++t) {
             const SceneTexture& known = scene.textures[t];
@@ -1269,16 +1298,17 @@ void applyLightOverrides(const Json& overrides, const Pointer& at, const SceneIm
 
 // Appends each glTF file the scene places, after the scene's own parts, so that their indices
 // (and the file's own order) are those of the file, and applies the entry's material overrides.
-void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile) {
+void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile, const ReadScope& scope) {
     Scene& scene = draft.scene;
     std::vector<TextureRequest> overrideTextures;
     for (std::size_t i = 0; i < scene.imports.size(); ++i) {
         SceneImport& entry = scene.imports[i];
         if (entry.file.is_relative()) entry.file = sceneFile.parent_path() / entry.file;
+        if (std::optional<std::string> refusal = scope.refusal(entry.file)) fail(draft.importPlaces[i], *refusal);
         const std::size_t first = scene.materials.size();
         const std::size_t firstLight = scene.lights.size();
         try {
-            appendGltf(entry.file, entry.transform.objectToWorld(), static_cast<int>(i), scene);
+            appendGltf(entry.file, entry.transform.objectToWorld(), static_cast<int>(i), scene, scope);
         } catch (const SceneError& error) {
             fail(draft.importPlaces[i], error.what());
         }
@@ -1291,13 +1321,13 @@ void resolveImports(SceneDraft& draft, const std::filesystem::path& sceneFile) {
             applyMaterialOverrides(*overrides, draft.importPlaces[i].parent_pointer() / "materials", entry, first, scene,
                                    overrideTextures);
     }
-    resolveTextures(overrideTextures, sceneFile, scene);
+    resolveTextures(overrideTextures, sceneFile, scope, scene);
 }
 
 } // namespace
 
-Scene loadScene(const std::filesystem::path& path) {
-    if (isGltfFile(path)) return loadGltfScene(path);
+Scene loadScene(const std::filesystem::path& path, const ReadScope& scope) {
+    if (isGltfFile(path)) return loadGltfScene(path, scope);
     std::string text;
     try {
         text = readInputFile(path, kMaxSceneFileBytes, "scene file");
@@ -1305,7 +1335,7 @@ Scene loadScene(const std::filesystem::path& path) {
         throw oneLineError(e.what());
     }
     try {
-        return parseScene(text, path);
+        return parseScene(text, path, scope);
     } catch (const std::bad_alloc&) {
         // A document of many small values takes many times its size in memory.
         throw oneLineError(path.string() + ": not enough memory to load the scene (" +
@@ -1313,21 +1343,23 @@ Scene loadScene(const std::filesystem::path& path) {
     }
 }
 
-Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName) {
+Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourceName, const ReadScope& scope) {
     const std::string file = sourceName.string();
     try {
         DocumentBuilder builder;
         Json::sax_parse(jsonText, &builder, Json::input_format_t::json, /*strict=*/true);
         SceneDraft draft = readScene(builder.root);
-        resolveMeshes(draft, sourceName);
-        resolveTextures(draft.textureRequests, sourceName, draft.scene);
-        resolveImports(draft, sourceName);
+        resolveMeshes(draft, sourceName, scope);
+        resolveTextures(draft.textureRequests, sourceName, scope, draft.scene);
+        resolveImports(draft, sourceName, scope);
         Scene scene = std::move(draft.scene);
         scene.path = sourceName;
         // Relative to the scene file, as people write them; not normalised, so that ".." means
         // what the file system says even through symbolic links.
         if (!scene.environmentMap.empty() && scene.environmentMap.is_relative())
             scene.environmentMap = sourceName.parent_path() / scene.environmentMap;
+        if (!scene.environmentMap.empty())
+            if (std::optional<std::string> refusal = scope.refusal(scene.environmentMap)) fail(Pointer("/environment/map"), *refusal);
         return scene;
     } catch (const SyntaxError& error) {
         auto place = [&](std::size_t offset) {

@@ -6,57 +6,16 @@
 //
 // Numbers are checked as the float the model stores, after rounding from what was written.
 
-#include <cmath>
-#include <cstdio>
+#include "NumberRange.h"
+#include "SettingRanges.h"
+
 #include <limits>
-#include <string>
 
 namespace ptview {
 
-struct SceneRange {
-    const char* quantity;    // for messages and docs: "spot cone angle"
-    double lo, hi;           // an infinite bound: unbounded on that side (any finite float)
-    bool loOpen, hiOpen;     // an open end excludes the bound itself
-    const char* unit;        // "deg", "W sr^-1", ""
-    const char* description; // what the quantity is, for tooltips and docs
-    // What the panels' sliders and drags span: inside the range (a slider cannot stop short of an
-    // open end) and, for an unbounded side, what a drag reasonably reaches. The panels clamp a
-    // typed value (Ctrl+click) to it, except the environment rotation, which wraps into one turn.
-    float panelLo, panelHi;
-
-    bool contains(double value) const {
-        if (std::isnan(value)) return false;
-        bool aboveLo = loOpen ? value > lo : value >= lo;
-        bool belowHi = hiOpen ? value < hi : value <= hi;
-        return aboveLo && belowHi;
-    }
-    bool boundedBelow() const { return std::isfinite(lo); }
-    bool boundedAbove() const { return std::isfinite(hi); }
-
-    // "in (0, 90]", ">= 0", "> 0", "<= 1"; empty for any finite number.
-    std::string text() const {
-        if (boundedBelow() && boundedAbove())
-            return std::string("in ") + (loOpen ? "(" : "[") + number(lo) + ", " + number(hi) + (hiOpen ? ")" : "]");
-        if (boundedBelow()) return (loOpen ? "> " : ">= ") + number(lo);
-        if (boundedAbove()) return (hiOpen ? "< " : "<= ") + number(hi);
-        return "";
-    }
-    // As the loader says what it expected: "a number in (0, 90]", "a non-negative number".
-    std::string expected() const {
-        if (boundedBelow() && !boundedAbove() && lo == 0.0) return loOpen ? "a positive number" : "a non-negative number";
-        return text().empty() ? "a number" : "a number " + text();
-    }
-
-private:
-    static std::string number(double value) {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.10g", value);
-        return buffer;
-    }
-};
-
-// Pixels a side of an image: a camera's resolution in a scene file, --size on the command line.
-inline constexpr int kMaxResolution = 16384;
+// The scene model's numbers are NumberRanges (NumberRange.h), as the render settings' are
+// (SettingRanges.h).
+using SceneRange = NumberRange;
 
 // Bounds that keep every image finite (renderer/scene/SceneLoader.cpp says why): positions and lengths
 // (the loader, the script, the camera controls) and every radiance-like range below.
@@ -114,6 +73,12 @@ inline const SceneRange kEnvironmentIntensity{
 inline const SceneRange kEnvironmentRotation{
     "environment rotation", -kUnbounded, kUnbounded, false, false, "deg", "turn of the environment map about +Y",
     0.0f, 360.0f};
+
+// A position's coordinate, as the loader bounds eyes, centres and vertices (kMaxSceneExtent); the
+// command line's --view-from.
+inline const SceneRange kCoordinate{
+    "coordinate", -double(kMaxSceneExtent), double(kMaxSceneExtent), false, false, "m", "a coordinate of a position",
+    -100.0f, 100.0f};
 
 // The rule between a spot's two angles: full intensity up to inner, none beyond outer.
 inline bool coneAnglesOrdered(float innerDeg, float outerDeg) { return innerDeg <= outerDeg; }

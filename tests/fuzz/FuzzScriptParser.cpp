@@ -89,7 +89,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["depth"] = {integer(0, 1024)};
         t["light-paths"] = {choice(namesOf(ptview::lightPathsNames()))};
         t["light-path-bounces"] = {integer(0, 1024)};
-        t["clamp"] = {Arg{Kind::Number, 0.0, kInf, true, {}, "off"}};
+        t["clamp"] = {Arg{Kind::Number, 1e-6, 1e9, false, {}, "off"}}; // docs/robustness.md: the clamp's range
         t["seed"] = {unsignedInteger()};
         t["exposure"] = {number(-20, 20)};
         t["tone-mapper"] = {choice(namesOf(ptview::toneMapperNames()))};
