@@ -3,6 +3,7 @@
 // assets folder and a typed path with its button. Header only: each is a few lines of ImGui.
 
 #include "EnumTable.h"
+#include "PrintableText.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -72,15 +73,15 @@ inline std::vector<std::filesystem::path> filesWithExtension(const std::filesyst
 inline std::optional<std::filesystem::path> fileCombo(const char* label, const std::filesystem::path& directory,
                                                       const std::string& extension,
                                                       const std::filesystem::path& current) {
-    std::string preview = current.empty() ? "choose..." : current.filename().string();
+    std::string preview = current.empty() ? "choose..." : printableText(current.filename().string());
     if (!ImGui::BeginCombo(label, preview.c_str())) return std::nullopt;
     std::optional<std::filesystem::path> picked;
     std::vector<std::filesystem::path> files = filesWithExtension(directory, extension);
-    if (files.empty()) ImGui::TextDisabled("no %s files in %s", extension.c_str(), directory.string().c_str());
+    if (files.empty()) ImGui::TextDisabled("no %s files in %s", extension.c_str(), printableText(directory.string()).c_str());
     for (const std::filesystem::path& file : files) {
         std::error_code error; // `current` may name the same file by another path, or none
         bool isCurrent = !current.empty() && std::filesystem::equivalent(file, current, error);
-        if (ImGui::Selectable(file.filename().string().c_str(), isCurrent)) picked = file;
+        if (ImGui::Selectable(printableText(file.filename().string()).c_str(), isCurrent)) picked = file;
         if (isCurrent) ImGui::SetItemDefaultFocus();
     }
     ImGui::EndCombo();

@@ -949,13 +949,17 @@ TEST(GltfLoader, ASymlinkInTheModelsFolderToAFileOutsideIsRefused) {
     EXPECT_NO_THROW(loadScene(path, ReadScope::anywhere({place.secret.parent_path()})));
 }
 
+// Loading `path` fails with a message that starts with the file's name and says `expected`.
+void expectRefusedNamingTheFile(const std::filesystem::path& path, const std::string& expected) {
+    const std::string error = loadError(path);
+    EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
+    EXPECT_NE(error.find(expected), std::string::npos) << error;
+}
+
 TEST(GltfLoader, CountsBeyondTheBudgetsAreRefusedBeforeAllocation) {
     ScratchFiles files("gltf");
     auto expectError = [&](const std::string& name, GltfBuilder& b, const std::string& expected) {
-        const auto path = files.write(name, b.gltfWithDataUri());
-        const std::string error = loadError(path);
-        EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
-        EXPECT_NE(error.find(expected), std::string::npos) << error;
+        expectRefusedNamingTheFile(files.write(name, b.gltfWithDataUri()), expected);
     };
     {
         // The 400-byte file that once asked for 3.3 GB of zeros.
@@ -1002,10 +1006,7 @@ TEST(GltfLoader, CountsBeyondTheBudgetsAreRefusedBeforeAllocation) {
 TEST(GltfLoader, ValuesBeyondTheSceneFormatsBoundsAreRefusedNamingThePlace) {
     ScratchFiles files("gltf");
     auto expectError = [&](const std::string& name, GltfBuilder& b, const std::string& expected) {
-        const auto path = files.write(name, b.gltfWithDataUri());
-        const std::string error = loadError(path);
-        EXPECT_EQ(error.rfind(path.string() + ": ", 0), 0u) << error;
-        EXPECT_NE(error.find(expected), std::string::npos) << error;
+        expectRefusedNamingTheFile(files.write(name, b.gltfWithDataUri()), expected);
     };
     {
         GltfBuilder b;

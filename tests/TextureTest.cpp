@@ -467,5 +467,30 @@ TEST(TexturedScene, TexturesOfOneSceneShareOneBudgetNamingTheFileThePointerAndTh
     }
 }
 
+// The MTL maps of all the scene's meshes share the scene load's budget too: two OBJs whose maps
+// each claim 16384 x 16384 do not get 1 GiB each. The second map is left out with a warning naming
+// it and the limit (MTL map problems are warnings), before it is decoded.
+TEST(TexturedScene, MtlMapsOfSeveralMeshesShareTheScenesBudget) {
+    ScratchFiles files("texture_budget_meshes");
+    std::string meshes;
+    std::string shapes;
+    for (int i = 0; i < 2; ++i) {
+        const std::string n = std::to_string(i);
+        files.write("bomb" + n + ".png", testing::pngClaimingSize(16384, 16384));
+        files.write("m" + n + ".mtl", "newmtl skin\nKd 1 1 1\nmap_Kd bomb" + n + ".png\n");
+        files.write("m" + n + ".obj", "mtllib m" + n + ".mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl skin\nf 1/1 2/2 3/3\n");
+        meshes += std::string(i ? ", " : "") + "\"mesh" + n + "\": {\"file\": \"m" + n + ".obj\"}";
+        shapes += std::string(i ? ", " : "") + "{\"type\": \"mesh\", \"mesh\": \"mesh" + n + "\"}";
+    }
+    const auto path = files.write("scene.json", R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8]},
+  "materials": {}, "meshes": {)" + meshes + R"(}, "shapes": [)" + shapes + "]}");
+    const Scene scene = loadScene(path);
+    std::string warnings;
+    for (const std::string& warning : scene.warnings) warnings += warning + "\n";
+    EXPECT_EQ(warnings.find("bomb0.png: a 16384x16384 image takes 1024 MiB decoded"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("bomb1.png: a 16384x16384 image takes 1024 MiB decoded"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("the limit of 1024 MiB"), std::string::npos) << warnings;
+}
+
 } // namespace
 } // namespace ptview

@@ -457,6 +457,33 @@ TEST_F(ViewerSessionTest, EditsToGltfMaterialsAreSavedAsOverrides) {
     fs::remove_all(directory);
 }
 
+// A scene an image carries (SceneInput::carriedBy) has no file of its own, whatever its
+// ptview.scene_file says: no save target, nothing watched, and an edit answered with Save in the
+// unsaved-edits question writes nothing (it asks for a name) and leaves the named file alone.
+TEST_F(ViewerSessionTest, ASceneCarriedByAnImageHasNoSaveTarget) {
+    fs::path directory = freshDirectory("carried");
+    const fs::path notes = directory / "notes.txt";
+    writeText(notes, "my notes\n");
+    std::optional<SceneInput> input = loadSceneInput(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    ASSERT_TRUE(input);
+    input->scene.path = notes; // what the sender wrote in ptview.scene_file
+    input->carriedBy = directory / "shot.png";
+    ViewerSession session(std::move(*input), testing::naiveSettings(3, 0), DisplaySettings{}, PTVIEW_SHADER_DIR);
+    EXPECT_EQ(session.saveTarget(), "");
+    EXPECT_TRUE(session.model().fileScene.path.empty());
+    EXPECT_FALSE(session.hasUnsavedEdits()) << "opening is no edit";
+    EXPECT_NE(session.model().notice.find("shot.png"), std::string::npos) << session.model().notice;
+    session.model().scene.materials[0].color *= 0.5f;
+    EXPECT_TRUE(session.hasUnsavedEdits());
+    UnsavedEditsPrompt prompt;
+    prompt.request(session, UnsavedEditsPrompt::Action::Quit);
+    prompt.answer(session, UnsavedEditsPrompt::Answer::Save);
+    EXPECT_FALSE(prompt.quitConfirmed());
+    EXPECT_NE(prompt.saveError().find("no file to save to"), std::string::npos) << prompt.saveError();
+    EXPECT_EQ(testing::readFileBytes(notes), "my notes\n");
+    fs::remove_all(directory);
+}
+
 // Save to a.json, then open another scene: Save must now write that scene's own file, not a.json
 // (the Materials panel kept the first path it showed, and a Save replaced the edited a.json with
 // the other scene). What the user types after opening is the target until the next open or save.

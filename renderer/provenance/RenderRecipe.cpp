@@ -19,6 +19,14 @@ struct RecipeField {
     std::function<void(const Json&, RenderRecipe&)> read; // throws nlohmann's or RecipeError
 };
 
+// A value of the file as a message quotes it: JSON (so controls are escaped), cut at 40 characters
+// (a file may hold a megabyte where a number belongs).
+std::string quotedValue(const Json& j) {
+    constexpr std::size_t kLongest = 40;
+    std::string text = j.dump(-1, ' ', false, Json::error_handler_t::replace);
+    return text.size() <= kLongest ? text : text.substr(0, kLongest) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 // A number of `range` (SettingRanges.h, the command line's bounds): an integer field takes only a
 // JSON integer, a float field the float it rounds to. A file may come from anyone, so a value the
 // command line would refuse is refused here too, not wrapped (-1 as a seed) or truncated (16.7).
@@ -32,7 +40,7 @@ Value numberInRange(const Json& j, const NumberRange& range) {
                                                   : j.get<double>();
     if (!integer) value = static_cast<float>(value); // as stored
     if (!typeFits || !range.contains(value))
-        throw RecipeError(std::string("expected ") + range.expected() + " (the " + range.quantity + "), got " + j.dump());
+        throw RecipeError(std::string("expected ") + range.expected() + " (the " + range.quantity + "), got " + quotedValue(j));
     return static_cast<Value>(value);
 }
 
@@ -59,7 +67,7 @@ RecipeField enumField(const char* key, const Table& (*table)(), Member member) {
     return {key, [table, member](const RenderRecipe& r) { return Json(table().name(member(const_cast<RenderRecipe&>(r)))); },
             [table, member](const Json& j, RenderRecipe& r) {
                 const auto value = table().parse(j.get<std::string>());
-                if (!value) throw RecipeError("unknown name " + j.dump());
+                if (!value) throw RecipeError("unknown name " + quotedValue(j));
                 member(r) = *value;
             }};
 }

@@ -293,8 +293,9 @@ std::string_view readTextureKey(std::string_view key) {
 class MtlReader : public tinyobj::MaterialReader {
 public:
     MtlReader(std::filesystem::path directory, std::string objFile, TriangleMesh& mesh,
-              std::vector<std::string>& warnings, const ReadScope& scope)
-        : directory_(std::move(directory)), objFile_(std::move(objFile)), mesh_(mesh), warnings_(warnings), scope_(scope) {}
+              std::vector<std::string>& warnings, const ReadScope& scope, TextureBudget* sceneBudget)
+        : directory_(std::move(directory)), objFile_(std::move(objFile)), mesh_(mesh), warnings_(warnings), scope_(scope),
+          sceneBudget_(sceneBudget) {}
 
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* nameToIndex, std::string* /*warn*/,
@@ -480,13 +481,14 @@ private:
             if (!map.image) warnings_.push_back(place + ": " + key + " " + texname + ": see above" + why);
             return map;
         }
-        // This OBJ's maps share one texture budget (TextureLoader.h): what those decoded so far take.
+        // The maps share the scene load's texture budget (TextureLoader.h), or, for an OBJ read
+        // alone, one of their own: what those decoded so far take.
         std::uint64_t spent = 0;
         for (const auto& [decodedFile, image] : decoded_)
             if (image) spent += decodedBytes({image->width, image->height});
-        TextureBudget budget(spent);
+        TextureBudget ownBudget(spent);
         try {
-            map.image = loadTextureImage(map.file, &budget);
+            map.image = loadTextureImage(map.file, sceneBudget_ ? sceneBudget_ : &ownBudget);
         } catch (const TextureError& e) {
             warnings_.push_back(place + ": " + key + " " + e.what() + why); // e names the file
         }
@@ -507,6 +509,7 @@ private:
     TriangleMesh& mesh_;
     std::vector<std::string>& warnings_;
     const ReadScope& scope_;
+    TextureBudget* sceneBudget_; // null: the maps of this OBJ alone are budgeted
 };
 
 // --- Records to triangles ---------------------------------------------------------------------
@@ -827,7 +830,8 @@ void ObjBuilder::finish(std::size_t polylines, std::size_t points, std::vector<s
 }
 
 
-TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* report, const ReadScope& scope) {
+TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* report, const ReadScope& scope,
+                         TextureBudget* textureBudget) {
     MeshLoadReport unread;
     std::vector<std::string>& warnings = (report ? *report : unread).warnings;
     const std::string file = path.string();
@@ -841,7 +845,7 @@ TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
     TriangleMesh mesh;
     mesh.source = file;
     ObjBuilder builder(file, bytes, buffer, mesh);
-    MtlReader mtlReader(path.parent_path(), file, mesh, warnings, scope);
+    MtlReader mtlReader(path.parent_path(), file, mesh, warnings, scope, textureBudget);
     std::string libraryWarnings, libraryErrors;
     const bool read = tinyobj::LoadObjWithCallback(stream, builder.callbacks(), &builder, &mtlReader,
                                                    &libraryWarnings, &libraryErrors);
@@ -864,9 +868,10 @@ TriangleMesh readObjMesh(const std::filesystem::path& path, MeshLoadReport* repo
 
 } // namespace
 
-TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report, const ReadScope& scope) {
+TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report, const ReadScope& scope,
+                         TextureBudget* textureBudget) {
     try {
-        return readObjMesh(path, report, scope);
+        return readObjMesh(path, report, scope, textureBudget);
     } catch (const std::bad_alloc&) {
         // A mesh larger than memory is a limit of this machine, not a crash: the scene loader and
         // the viewer report it like any other file they cannot use. What was built is freed by now.

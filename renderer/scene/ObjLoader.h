@@ -16,6 +16,7 @@
 // material library that cannot be found is a warning too: the faces keep their slot names.
 
 #include "ReadScope.h"
+#include "TextureLoader.h"
 #include "TriangleMesh.h"
 
 #include <filesystem>
@@ -46,8 +47,10 @@ struct MeshLoadReport {
 // An MTL key that an entry leaves out keeps tinyobjloader's default, not MeshMaterial's: Kd, Ks
 // and Ke black, Ns 1, Ni 1, d 1, illum 0.
 //
-// MTL libraries and maps that `scope` refuses (ReadScope.h) are not read, with a warning.
+// MTL libraries and maps that `scope` refuses (ReadScope.h) are not read, with a warning. The maps
+// are charged to `textureBudget` (a scene load's, TextureLoader.h) before they are decoded, or to
+// one of their own; a map past it is a warning and is left out.
 TriangleMesh loadObjMesh(const std::filesystem::path& path, MeshLoadReport* report = nullptr,
-                         const ReadScope& scope = ReadScope());
+                         const ReadScope& scope = ReadScope(), TextureBudget* textureBudget = nullptr);
 
 } // namespace ptview

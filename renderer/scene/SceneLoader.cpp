@@ -1153,13 +1153,14 @@ Material materialFromMeshFile(const std::string& meshName, const MeshMaterial& s
 // name, else one made from the mesh file's own definition.
 void resolveMeshes(SceneDraft& draft, const std::filesystem::path& sceneFile, const ReadScope& scope) {
     Scene& scene = draft.scene;
+    TextureBudget textureBudget(decodedTextureBytes(scene)); // every mesh's MTL maps together
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         SceneMesh& mesh = scene.meshes[m];
         if (mesh.file.is_relative()) mesh.file = sceneFile.parent_path() / mesh.file;
         if (std::optional<std::string> refusal = scope.refusal(mesh.file)) fail(draft.meshPlaces[m], *refusal);
         MeshLoadReport report;
         try {
-            mesh.data = std::make_shared<const TriangleMesh>(loadObjMesh(mesh.file, &report, scope));
+            mesh.data = std::make_shared<const TriangleMesh>(loadObjMesh(mesh.file, &report, scope, &textureBudget));
         } catch (const MeshError& error) {
             // The mesh's own error names its file and line; say which scene entry wanted it.
             fail(draft.meshPlaces[m], error.what());
