@@ -132,6 +132,29 @@ TEST(ExrIO, TruncatedOrForeignFilesAreErrorsNamingThem) {
     fs::remove(path);
 }
 
+// OpenEXR sizes a string attribute by the length its header declares before reading it: a
+// 426-byte file declaring a 1.8 GB string took 1.8 GB and 7 s (found by the metadata fuzz target).
+// An attribute declaring more bytes than the file has left is refused, naming it, before the
+// library allocates anything for it.
+TEST(ExrIO, AnAttributeDeclaringMoreBytesThanTheFileHoldsIsRefusedUnread) {
+    std::string bytes = encodeExr(exrOf(randomImage(4, 4, 6)), ExrPixelType::Float);
+    const std::string key = std::string("ptview.test") + '\0' + "string" + '\0';
+    const std::size_t at = bytes.find(key);
+    ASSERT_NE(at, std::string::npos);
+    const std::uint32_t claimed = 0x7ffffff0u;
+    for (int i = 0; i < 4; ++i) bytes[at + key.size() + static_cast<std::size_t>(i)] = static_cast<char>(claimed >> (8 * i) & 0xff);
+    try {
+        decodeExr(bytes, "sent.exr");
+        ADD_FAILURE() << "an attribute of 2 GiB in a file of " << bytes.size() << " bytes was read";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("sent.exr: not a readable EXR file: its header attribute \"ptview.test\" (string) "
+                                              "declares 2147483632 bytes, more than the",
+                                              0),
+                  0u)
+            << e.what();
+    }
+}
+
 // converge --reference and the viewer's reference read through readReferenceImage.
 TEST(ExrIO, ReferenceImagesMayBeExrAsWellAsPfm) {
     const ImageRgbF image = randomImage(5, 4, 5);

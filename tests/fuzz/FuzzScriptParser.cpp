@@ -117,6 +117,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["wait-reload"] = {};
         t["save-scene"] = {path({".json"})};
         t["copy-file"] = {token(), token()};
+        t["open-material"] = {token()};
         t["compare"] = {choice({"on", "off"})};
         t["compare-integrator"] = {choice(namesOf(ptview::integratorNames()))};
         t["compare-sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
