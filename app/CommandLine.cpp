@@ -266,8 +266,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
 // What `render --from FILE` does with the other options: these apply (docs/output.md), and are
 // recorded in the new file's provenance where they change it (--spp); every other option would
 // render something else than FILE records, so it is refused rather than ignored or half applied.
-const char* const kOptionsThatApplyWithFrom[] = {"--from", "--out", "--exr-type", "--aovs", "--spp", "--time",
-                                                 "--dump-shader", "--print-features", "--allow-dir", "--help"};
+const std::vector<std::string> kOptionsThatApplyWithFrom = {"--out",  "--exr-type",    "--aovs",           "--spp",
+                                                            "--time", "--dump-shader", "--print-features", "--allow-dir"};
 
 std::optional<int> finishRenderOptions(const CLI::App& command, const RenderOptions& render) {
     if (render.scenePath.empty() == render.fromPath.empty()) {
@@ -275,22 +275,18 @@ std::optional<int> finishRenderOptions(const CLI::App& command, const RenderOpti
                   << " (see ptview render --help)\n";
         return kExitBadInput;
     }
-    if (!render.fromPath.empty()) {
-        for (const CLI::Option* option : command.get_options()) {
-            const std::string name = option->get_name();
-            if (option->count() == 0 || name.rfind("--", 0) != 0) continue; // not given, or the scene
-            if (std::find(std::begin(kOptionsThatApplyWithFrom), std::end(kOptionsThatApplyWithFrom), name) !=
-                std::end(kOptionsThatApplyWithFrom))
-                continue;
-            std::string applying;
-            for (const char* allowed : kOptionsThatApplyWithFrom)
-                if (std::string(allowed) != "--from" && std::string(allowed) != "--help")
-                    applying += (applying.empty() ? "" : ", ") + std::string(allowed);
-            std::cerr << "ptview: render: " << name << " cannot go with --from: the image's recorded settings decide "
-                      << "the render (with --from only " << applying << " apply; to change the scene or settings, open "
-                      << "the image in the viewer and save its scene)\n";
-            return kExitBadInput;
-        }
+    for (const CLI::Option* option : render.fromPath.empty() ? std::vector<const CLI::Option*>{} : command.get_options()) {
+        const std::string name = option->get_name();
+        const bool applies = std::find(kOptionsThatApplyWithFrom.begin(), kOptionsThatApplyWithFrom.end(), name) !=
+                             kOptionsThatApplyWithFrom.end();
+        // Not given, --from itself, the scene (not a "--" option; refused above) or one that applies.
+        if (option->count() == 0 || name == "--from" || name.rfind("--", 0) != 0 || applies) continue;
+        std::string applying;
+        for (const std::string& allowed : kOptionsThatApplyWithFrom) applying += (applying.empty() ? "" : ", ") + allowed;
+        std::cerr << "ptview: render: " << name << " cannot go with --from: the image's recorded settings decide the "
+                  << "render (with --from only " << applying << " apply; to change the scene or settings, open the "
+                  << "image in the viewer and save its scene)\n";
+        return kExitBadInput;
     }
     if (command.get_option("--exr-type")->count() > 0 && !hasExrExtension(render.outPath)) {
         std::cerr << "ptview: render: --exr-type needs an .exr --out (" << (render.outPath.empty() ? "no --out" : render.outPath)

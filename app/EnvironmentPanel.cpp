@@ -40,7 +40,7 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state) {
     if (ImGui::Button("Remove map")) session.setEnvironmentMap({});
     ImGui::EndDisabled();
     ImGui::PopID();
-    if (isMapError(model.sceneError, state.environmentPathInput)) errorText(printableText(model.sceneError));
+    if (isMapError(model.sceneError, state.environmentPathInput)) errorText(model.sceneError);
 
     const SceneRange& intensity = ranges::kEnvironmentIntensity;
     bool changed = ImGui::DragFloat("intensity", &scene.environmentIntensity, 0.01f, intensity.panelLo,

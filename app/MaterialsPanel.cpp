@@ -296,7 +296,7 @@ bool MaterialsPanel::drawTextures(Scene& scene, Material& material, std::size_t 
             // wrap at the sidebar's edge rather than being cut there.
             ImGui::PushTextWrapPos(0.0f);
             ImGui::TextUnformatted(printableText(textureSourceName(texture.source)).c_str());
-            itemTooltip(printableText(fullTextureSource(texture.source)).c_str());
+            itemTooltip(fullTextureSource(texture.source).c_str());
             ImGui::TextDisabled("%dx%d, %s, uv x (%.3g, %.3g) + (%.3g, %.3g)", texture.image ? texture.image->width : 0,
                                 texture.image ? texture.image->height : 0,
                                 texture.colorSpace == TextureColorSpace::Srgb ? "sRGB" : "linear", slot.scale.x,

@@ -17,8 +17,12 @@
 
 namespace ptview {
 
+// The texts these widgets show may quote names, paths and errors from a file someone sent: each
+// shows its text through printableLines (PrintableText.h), so a control character reads as an
+// escape and a line break stays one.
+// Escaped only when shown (hovered): the panels call this for every widget every frame.
 inline void itemTooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", printableLines(text).c_str());
 }
 
 // A combo over an enum's table: each entry's label, with its description (where it has one) on
@@ -43,13 +47,13 @@ bool enumCombo(const char* label, const EnumTable<E>& table, E& value) {
 // Messages carry whole file paths, so they wrap at the panel's edge instead of widening it.
 inline void errorText(const std::string& text) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", text.c_str());
+    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", printableLines(text).c_str());
     ImGui::PopTextWrapPos();
 }
 
 inline void noteText(const std::string& text) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", text.c_str());
+    ImGui::TextDisabled("%s", printableLines(text).c_str());
     ImGui::PopTextWrapPos();
 }
 

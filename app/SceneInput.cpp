@@ -3,7 +3,6 @@
 #include "PrintableText.h"
 #include "SceneLoader.h"
 
-
 namespace ptview {
 
 std::optional<SceneInput> loadSceneInput(const std::string& scenePath,

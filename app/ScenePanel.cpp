@@ -14,7 +14,7 @@ void drawScenePanel(ViewerSession& session, PanelState& state) {
     // fileScene's path, not scene's: it is the file Reload reads and the watcher follows.
     const std::filesystem::path& file = model.fileScene.path;
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("file: %s", file.empty() ? "none (built in code)" : printableText(file.string()).c_str());
+    ImGui::Text("file: %s", file.empty() ? "none (built in code, or carried by an image: Save asks for a name)" : printableText(file.string()).c_str());
     ImGui::PopTextWrapPos();
 
     ImGui::PushID("scene");
@@ -30,9 +30,8 @@ void drawScenePanel(ViewerSession& session, PanelState& state) {
     itemTooltip("read the file again; with unsaved edits it asks first (Discard reads the file as it is)");
     noteText("a change on disk reloads automatically and keeps your edits to what it did not change");
 
-    // Both may quote names and paths from a file someone sent (PrintableText.h).
-    if (!model.sceneError.empty()) errorText(printableText(model.sceneError));
-    if (!model.notice.empty()) noteText(printableText(model.notice));
+    if (!model.sceneError.empty()) errorText(model.sceneError);
+    if (!model.notice.empty()) noteText(model.notice); // a line per warning
 }
 
 } // namespace ptview

@@ -53,7 +53,7 @@ void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state) {
         ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "Save replaces %s, which is not this scene's file.", printableText(target).c_str());
     else
         ImGui::TextDisabled("Save writes %s.", printableText(target).c_str());
-    if (!prompt.saveError().empty()) errorText(printableText(prompt.saveError()));
+    if (!prompt.saveError().empty()) errorText(prompt.saveError());
     ImGui::PopTextWrapPos();
 
     ImGui::BeginDisabled(!canSave);

@@ -1,5 +1,6 @@
 #include "Viewer.h"
 
+#include "AllowFolderPrompt.h"
 #include "CameraController.h"
 #include "ImageIO.h"
 #include "MaterialsPanel.h"
@@ -7,9 +8,8 @@
 #include "PanelWidgets.h"
 #include "Panels.h"
 #include "PathsOverlay.h"
-#include "Readback.h"
-#include "AllowFolderPrompt.h"
 #include "PrintableText.h"
+#include "Readback.h"
 #include "SceneFromImage.h"
 #include "SceneInput.h"
 #include "ScriptRunner.h"
@@ -788,7 +788,9 @@ int runViewer(const ViewerOptions& requested) {
 
     // Each folder the scene wants outside its own is asked about once, then the load is tried again.
     while (!input) {
-        const std::filesystem::path refused = scope.refusedFiles().front();
+        // The last refusal is the one that stopped the load (earlier ones, of files a mesh's
+        // library names but ptview does not need, were only warnings).
+        const std::filesystem::path refused = scope.refusedFiles().back();
         const std::filesystem::path folder = refused.parent_path();
         const std::string question = printableText(options.scenePath) + " wants to read " + printableText(refused.string()) +
                                      ", outside the folders a file from someone else may read.\n\nAllow ptview to read files in " +

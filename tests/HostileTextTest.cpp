@@ -5,9 +5,9 @@
 #include "ImageIO.h"
 #include "PngText.h"
 #include "RunCommand.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -50,14 +50,6 @@ std::string firstUnsafeByte(const std::string& text) {
 
 class HostileText : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("ptview_hostile_text_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // A PNG ptview rendered (16x16, 1 spp), so that its metadata is what ptview writes.
     fs::path renderedImage() {
         const fs::path image = dir_ / "shot.png";
@@ -78,7 +70,8 @@ protected:
         return out;
     }
 
-    fs::path dir_;
+    testing::ScratchFiles scratch_{"hostile_text"};
+    const fs::path dir_ = scratch_.directory();
 };
 
 TEST_F(HostileText, InfoShowsControlSequencesInMetadataAsEscapes) {

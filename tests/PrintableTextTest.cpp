@@ -59,5 +59,12 @@ TEST(PrintableText, EveryByteValueComesOutInert) {
     }
 }
 
+// A note of several lines (a load and its warnings, a line each) keeps its lines in a panel;
+// everything else is escaped as printableText escapes it.
+TEST(PrintableText, LinesKeepTheirBreaksAndNothingElse) {
+    EXPECT_EQ(printableLines("opened a.json\nwarning: b\x1b]0;t\x07\r"), "opened a.json\nwarning: b\\e]0;t\\x07\\r");
+    EXPECT_EQ(printableText("a\nb"), "a\\nb");
+}
+
 } // namespace
 } // namespace ptview

@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <filesystem>
 #include <functional>
@@ -38,13 +37,9 @@ std::string quoted(const fs::path& path) {
 class StrangerFiles : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("ptview_stranger_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
         fs::create_directories(dir_ / "downloads");
         fs::create_directories(dir_ / "private");
     }
-    void TearDown() override { fs::remove_all(dir_); }
 
     // A PNG ptview wrote of the Cornell box (16x16, 1 spp) in downloads/, as a stranger would send it.
     fs::path sentImage() {
@@ -85,7 +80,8 @@ protected:
         writePng(path, texels);
     }
 
-    fs::path dir_;
+    testing::ScratchFiles scratch_{"stranger"};
+    const fs::path dir_ = scratch_.directory();
 };
 
 // The scene in a PNG may name textures anywhere; only those in the image's folder tree, or in a

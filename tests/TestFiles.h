@@ -36,6 +36,8 @@ public:
         return path;
     }
 
+    const std::filesystem::path& directory() const { return dir_; }
+
 private:
     std::filesystem::path dir_;
 };

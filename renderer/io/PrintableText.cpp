@@ -34,9 +34,7 @@ std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
     return length;
 }
 
-} // namespace
-
-std::string printableText(std::string_view text) {
+std::string escaped(std::string_view text, bool keepLineBreaks) {
     std::string out;
     out.reserve(text.size());
     for (std::size_t i = 0; i < text.size();) {
@@ -47,7 +45,7 @@ std::string printableText(std::string_view text) {
             ++i;
         } else if (length == 1 && (byte < 0x20 || byte == 0x7F)) {
             switch (byte) {
-            case '\n': out += "\\n"; break;
+            case '\n': out += keepLineBreaks ? "\n" : "\\n"; break;
             case '\r': out += "\\r"; break;
             case '\t': out += "\\t"; break;
             case 0x1B: out += "\\e"; break;
@@ -64,6 +62,16 @@ std::string printableText(std::string_view text) {
         }
     }
     return out;
+}
+
+} // namespace
+
+std::string printableText(std::string_view text) {
+    return escaped(text, false);
+}
+
+std::string printableLines(std::string_view text) {
+    return escaped(text, true);
 }
 
 void printMessage(std::string_view message) {

@@ -12,6 +12,9 @@ namespace ptview {
 // of valid UTF-8 written as an escape: "\n", "\r", "\t", "\e" for ESC, "\x9b" otherwise; a
 // backslash stays a backslash. Printable UTF-8 passes unchanged.
 std::string printableText(std::string_view text);
+// The same but for line breaks, which stay: for text of several lines shown as such (a panel's
+// note of a load and its warnings, one per line).
+std::string printableLines(std::string_view text);
 
 // Prints "ptview: MESSAGE" and a newline on stderr, through printableText: the one way messages
 // that quote names, paths and values from files (errors, warnings) reach the terminal.

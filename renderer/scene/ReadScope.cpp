@@ -10,6 +10,17 @@ std::vector<std::filesystem::path> resolvedAll(std::vector<std::filesystem::path
     return directories;
 }
 
+// Whether `file` lies in `directory`'s tree (the directory itself included), both resolved
+// (resolvedPath): component by component, so "/a/bc" is not inside "/a/b".
+bool liesIn(const std::filesystem::path& file, const std::filesystem::path& directory) {
+    auto f = file.begin();
+    for (const std::filesystem::path& component : directory) {
+        if (f == file.end() || *f != component) return false;
+        ++f;
+    }
+    return true;
+}
+
 } // namespace
 
 std::filesystem::path resolvedPath(const std::filesystem::path& file) {
@@ -18,19 +29,6 @@ std::filesystem::path resolvedPath(const std::filesystem::path& file) {
     if (error) absolute = file;
     std::filesystem::path resolved = std::filesystem::weakly_canonical(absolute, error);
     return error ? absolute.lexically_normal() : resolved;
-}
-
-bool isInsideDirectory(const std::filesystem::path& file, const std::filesystem::path& directory) {
-    const std::filesystem::path resolvedFile = resolvedPath(file);
-    const std::filesystem::path resolvedDirectory = resolvedPath(directory);
-    // Component by component: "/a/bc" is not inside "/a/b".
-    auto d = resolvedDirectory.begin();
-    auto f = resolvedFile.begin();
-    for (; d != resolvedDirectory.end(); ++d, ++f) {
-        if (d->empty()) continue; // a trailing separator
-        if (f == resolvedFile.end() || *f != *d) return false;
-    }
-    return true;
 }
 
 ReadScope ReadScope::within(const std::filesystem::path& rootDirectory, std::string rootRole,
@@ -59,10 +57,10 @@ ReadScope ReadScope::forModel(const std::filesystem::path& modelFile) const {
 
 std::optional<std::string> ReadScope::refusal(const std::filesystem::path& file) const {
     if (!root_) return std::nullopt;
-    if (isInsideDirectory(file, *root_)) return std::nullopt;
+    const std::filesystem::path resolved = resolvedPath(file); // the directories are resolved already
+    if (liesIn(resolved, *root_)) return std::nullopt;
     for (const std::filesystem::path& allowed : allowed_)
-        if (isInsideDirectory(file, allowed)) return std::nullopt;
-    const std::filesystem::path resolved = resolvedPath(file);
+        if (liesIn(resolved, allowed)) return std::nullopt;
     refused_->push_back(resolved);
     return resolved.string() + " is outside " + rootRole_ + " " + root_->string() +
            " (files from a scene someone sent are read only there; allow its folder with --allow-dir " +

@@ -51,7 +51,5 @@ private:
 // `file` with symbolic links and "." / ".." resolved as far as it exists (weakly_canonical),
 // absolute. Never throws: a path that cannot be resolved comes back lexically normalized.
 std::filesystem::path resolvedPath(const std::filesystem::path& file);
-// Whether `file` (resolved) lies in `directory`'s tree (resolved), the directory itself included.
-bool isInsideDirectory(const std::filesystem::path& file, const std::filesystem::path& directory);
 
 } // namespace ptview

@@ -2,6 +2,7 @@
 
 #include "ImageDecode.h"
 #include "InputFile.h"
+#include "ReadScope.h"
 #include "Scene.h"
 
 // ptview_scene does not link stb's include directory (only ptview_io decodes); its declarations
@@ -10,19 +11,12 @@
 
 #include <chrono>
 #include <set>
-#include <system_error>
 
 namespace ptview {
 namespace {
 
 std::string mebibytes(std::uint64_t bytes) {
     return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
-}
-
-std::filesystem::path cacheKey(const std::filesystem::path& path) {
-    std::error_code error;
-    std::filesystem::path key = std::filesystem::weakly_canonical(path, error);
-    return error ? path : key;
 }
 
 } // namespace
@@ -109,7 +103,7 @@ SceneTexture loadTexture(const std::filesystem::path& path, TextureColorSpace co
 }
 
 void TextureImageCache::reserve(const std::filesystem::path& path) {
-    const std::filesystem::path key = cacheKey(path);
+    const std::filesystem::path key = resolvedPath(path);
     if (reserved_.count(key)) return;
     const std::string bytes = readInputFileAs<TextureError>(path, kMaxTextureFileBytes, "image file");
     const glm::ivec2 size = readImageSize(bytes, path.string());
@@ -118,7 +112,7 @@ void TextureImageCache::reserve(const std::filesystem::path& path) {
 }
 
 std::shared_ptr<const TextureImage> TextureImageCache::load(const std::filesystem::path& path) {
-    const std::filesystem::path key = cacheKey(path);
+    const std::filesystem::path key = resolvedPath(path);
     auto found = images_.find(key);
     if (found != images_.end()) return found->second;
     const std::string bytes = readInputFileAs<TextureError>(path, kMaxTextureFileBytes, "image file");
