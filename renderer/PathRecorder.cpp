@@ -121,9 +121,7 @@ std::vector<RecordedPath> PathRecorder::record(PathTracer& tracer, glm::ivec2 pi
         const RenderSettings& settings = tracer.settings();
         ShaderAssembler assembler(tracer.shaderDir());
         // The render's radiance program, whatever view is shown: paths carry radiance.
-        specializeShaders(assembler, tracer.features(), settings.integrator, settings.sampler, DebugView::Radiance,
-                          settings.lightPaths);
-        assembler.replaceWithFile("path_recorder.glsl", "path_recorder.glsl"); // the hooks that keep
+        specializePathRecorder(assembler, tracer.features(), settings.integrator, settings.sampler, settings.lightPaths);
         auto built = std::make_unique<Program>();
         built->features = tracer.features();
         built->integrator = settings.integrator;

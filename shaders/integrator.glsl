@@ -62,10 +62,13 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     if (!consistentSides(toWorld(frame, woLocal), ls.wi, hit)) return vec3(0.0);
     vec3 f = bsdfF(material, woLocal, wiLocal);
     if (all(equal(f, vec3(0.0)))) return vec3(0.0);
-    if (recordShadowRay(bounce, occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light))) return vec3(0.0);
+    bool blocked = occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light);
+    recordShadowRay(bounce, blocked);
+    if (blocked) return vec3(0.0);
     float pdfLight = selection * ls.pdfSolidAngle;
     // A delta light has no density to weigh against: only light sampling can find it.
-    float weight = recordLightWeight(bounce, useMis && !ls.isDelta ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0);
+    float weight = useMis && !ls.isDelta ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0;
+    recordLightWeight(bounce, weight);
     return f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
 }
 
@@ -84,7 +87,7 @@ float emissionWeight(int light, vec3 previousPos, vec3 wi, float hitDistance, ve
     return powerHeuristic(pdfBsdf, pdfLight);
 }
 
-// A path under construction: what estimateRadiance carries from one bounce to the next. Kept in
+// A path under construction: what extendPath carries from one bounce to the next. Kept in
 // a struct so that a program can trace several paths one after the other in one loop
 // (pathtrace_sample.glsl), starting the next path in a SIMD lane as soon as its last one ends.
 struct PathState {
@@ -102,58 +105,64 @@ PathState startPath(Ray cameraRay) {
     return PathState(cameraRay, 0, vec3(0.0), vec3(1.0), cameraRay.origin, 0.0, true, startPathHistory());
 }
 
-// Follows the path one bounce: the surface the ray finds, its emission, next-event estimation and
-// the BSDF sample that makes the next ray. Returns false once the path has ended, with its
-// estimate in path.radiance.
-bool extendPath(inout PathState path, Sampler sampler) {
-    bool lightSampling = kIntegrator != kIntegratorNaive;
-    bool mis = kIntegrator == kIntegratorMis || kIntegrator == kIntegratorFull;
-    // Direct and DirectMIS stop after the first surface's direct lighting.
-    int lastBounce = kIntegrator == kIntegratorFull || kIntegrator == kIntegratorNaive ? uMaxDepth : min(uMaxDepth, 1);
+// ---- What each integrator does ------------------------------------------------------------------
+//           light sample   emission the path runs into          scatters at          roulette
+//   naive   no             counted, weight 1                    up to uMaxDepth      no
+//   direct  yes, weight 1  counted where the camera sees it     the first surface:   no
+//                                                               light sample only
+//   mis     yes, MIS       counted, MIS                         the first surface    no
+//   full    yes, MIS       counted, MIS                         up to uMaxDepth      yes
+// kIntegrator is a constant of the program (specialization.glsl), so each predicate below is too,
+// and the compiler keeps only the chosen integrator's code.
+
+// Next-event estimation: a light sample and its shadow ray at each surface.
+bool samplesLights() { return kIntegrator != kIntegratorNaive; }
+
+// Light sampling and BSDF sampling both find emission, weighted by the power heuristic.
+bool weighsByMis() { return kIntegrator == kIntegratorMis || kIntegrator == kIntegratorFull; }
+
+// `direct` counts only what the camera sees: light sampling covers the next bounce, and a BSDF
+// sample finding the same light would count it twice.
+bool countsEmissionFoundAt(int bounce) { return bounce == 0 || !samplesLights() || weighsByMis(); }
+
+// `direct` and `mis` estimate the light at the first surface only.
+int lastBounce() {
+    return kIntegrator == kIntegratorFull || kIntegrator == kIntegratorNaive ? uMaxDepth : min(uMaxDepth, 1);
+}
+
+// `direct` takes no BSDF sample: the light sample was all it wanted of the surface.
+bool samplesBsdf() { return kIntegrator != kIntegratorDirect; }
+
+bool playsRoulette(int bounce) { return kIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart; }
+
+// ---- The phases of a bounce -------------------------------------------------------------------
+
+// Emission the path ran into, a surface's or (light kInfinity away, normal 0) the environment's
+// where the ray escaped: weighted against the light sampling that could have found it too.
+void addEmissionFound(inout PathState path, vec3 emitted, int light, float hitDistance, vec3 hitNormal) {
     int bounce = path.bounce;
+    float weight = (!samplesLights() || path.previousDelta) ? 1.0
+                 : emissionWeight(light, path.previousPos, path.ray.direction, hitDistance, hitNormal, path.previousPdf);
+    recordEmissionWeight(bounce, weight, emitted);
+    weight *= lightPathWeight(bounce, path.history, bounce > 0);
+    vec3 added = clampContribution(path.throughput * emitted * weight);
+    recordEmission(bounce, added);
+    path.radiance += added;
+}
 
-    Hit hit;
-    bool found = intersectScene(path.ray, hit);
-    recordSurface(bounce, found, hit, path.ray, path.throughput);
+void addDirectLighting(inout PathState path, Material material, ShadingFrame frame, Hit hit, vec3 woLocal,
+                       Sampler sampler) {
+    int bounce = path.bounce;
+    vec3 added = clampContribution(path.throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, weighsByMis())) *
+                 lightPathWeight(bounce + 1, path.history, false);
+    recordDirectLighting(bounce, added);
+    path.radiance += added;
+}
 
-    // ---- Emission reached by the camera ray or a BSDF sample -------------------------------
-    // `direct` counts only what the camera sees (light sampling covers the next bounce);
-    // `mis` and `full` count it with the weight of BSDF sampling against light sampling.
-    bool countEmission = bounce == 0 || !lightSampling || mis;
-    if (!found) {
-        if (countEmission) {
-            vec3 environment = environmentRadiance(path.ray.direction); // one map lookup for both uses
-            float weight = (!lightSampling || path.previousDelta || uEnvironmentLight < 0) ? 1.0
-                         : emissionWeight(uEnvironmentLight, path.previousPos, path.ray.direction, kInfinity, vec3(0.0), path.previousPdf);
-            weight = recordEmissionWeight(bounce, weight, environment);
-            weight *= lightPathWeight(bounce, path.history, bounce > 0);
-            path.radiance += recordEmission(bounce, clampContribution(path.throughput * environment * weight));
-        }
-        return false;
-    }
-    Material material = fetchSurfaceMaterial(hit.material, hit.uv);
-    if (countEmission) {
-        vec3 emitted = emittedRadiance(material, hit.normalGeom, -path.ray.direction);
-        if (any(greaterThan(emitted, vec3(0.0)))) {
-            float weight = (!lightSampling || path.previousDelta) ? 1.0
-                         : emissionWeight(hit.light, path.previousPos, path.ray.direction, hit.t, hit.normalGeom, path.previousPdf);
-            weight = recordEmissionWeight(bounce, weight, emitted);
-            weight *= lightPathWeight(bounce, path.history, bounce > 0);
-            path.radiance += recordEmission(bounce, clampContribution(path.throughput * emitted * weight));
-        }
-    }
-    if (bounce >= lastBounce || material.type == kMaterialEmitter) return false; // emitters reflect nothing
-
-    ShadingFrame frame = makeShadingFrame(hit.normalShading); // BSDFs handle either side themselves
-    vec3 woLocal = toLocal(frame, -path.ray.direction);
-
-    // ---- Next-event estimation --------------------------------------------------------------
-    if (lightSampling)
-        path.radiance += recordDirectLighting(bounce, clampContribution(path.throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, mis)) *
-                                                      lightPathWeight(bounce + 1, path.history, false));
-    if (kIntegrator == kIntegratorDirect) return false;
-
-    // ---- BSDF sampling -----------------------------------------------------------------------
+// The BSDF sample that makes the next ray. False: there is none (the sample failed, or it
+// carries nothing).
+bool scatter(inout PathState path, Material material, ShadingFrame frame, Hit hit, vec3 woLocal, Sampler sampler) {
+    int bounce = path.bounce;
     BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
                                samplerGet2D(sampler, bsdfDimension(bounce)));
     recordBsdfSample(bounce, bs, material, frame, woLocal);
@@ -168,13 +177,46 @@ bool extendPath(inout PathState path, Sampler sampler) {
     recordScattering(path.history, bs.isDelta);
     path.ray = spawnRay(hit.posWorld, hit.normalGeom, wiWorld);
     path.bounce = bounce + 1;
+    return true;
+}
 
-    // ---- Russian roulette: survive with the throughput's largest component ------------------
-    if (kIntegrator == kIntegratorFull && bounce + 1 >= kRussianRouletteStart) {
-        float survival = min(1.0, max(path.throughput.r, max(path.throughput.g, path.throughput.b)));
-        if (recordRoulette(bounce, survival, samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival)) return false;
-        path.throughput /= survival; // unbiased: no clamp on 1/survival
+// Russian roulette after the sample of `bounce`: survive with the throughput's largest component.
+bool survivesRoulette(inout PathState path, Sampler sampler, int bounce) {
+    float survival = min(1.0, max(path.throughput.r, max(path.throughput.g, path.throughput.b)));
+    bool ended = samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival;
+    recordRoulette(bounce, survival, ended);
+    if (ended) return false;
+    path.throughput /= survival; // unbiased: no clamp on 1/survival
+    return true;
+}
+
+// Follows the path one bounce: the surface the ray finds, its emission, next-event estimation and
+// the BSDF sample that makes the next ray. Returns false once the path has ended, with its
+// estimate in path.radiance.
+bool extendPath(inout PathState path, Sampler sampler) {
+    int bounce = path.bounce;
+    Hit hit;
+    bool found = intersectScene(path.ray, hit);
+    recordSurface(bounce, found, hit, path.ray, path.throughput);
+    if (!found) {
+        if (countsEmissionFoundAt(bounce))
+            addEmissionFound(path, environmentRadiance(path.ray.direction), uEnvironmentLight, kInfinity, vec3(0.0));
+        return false;
     }
+
+    Material material = fetchSurfaceMaterial(hit.material, hit.uv);
+    if (countsEmissionFoundAt(bounce)) {
+        vec3 emitted = emittedRadiance(material, hit.normalGeom, -path.ray.direction);
+        if (any(greaterThan(emitted, vec3(0.0)))) addEmissionFound(path, emitted, hit.light, hit.t, hit.normalGeom);
+    }
+    if (bounce >= lastBounce() || material.type == kMaterialEmitter) return false; // emitters reflect nothing
+
+    ShadingFrame frame = makeShadingFrame(hit.normalShading); // BSDFs handle either side themselves
+    vec3 woLocal = toLocal(frame, -path.ray.direction);
+    if (samplesLights()) addDirectLighting(path, material, frame, hit, woLocal, sampler);
+    if (!samplesBsdf()) return false;
+    if (!scatter(path, material, frame, hit, woLocal, sampler)) return false;
+    if (playsRoulette(bounce) && !survivesRoulette(path, sampler, bounce)) return false;
     recordThroughput(bounce, path.throughput);
     return true;
 }

@@ -3,8 +3,8 @@
 // report for one vertex of one path (gRecordVertex): vertex 0 is the camera, vertex b + 1 what
 // the ray of bounce b found. Every fragment traces the whole path again, because GL 4.1 fragments
 // have nowhere else to write a list to; the cost is paths x vertices, nothing for a few paths.
-// The hooks that pass a value through return it as it was, so the path traced and the sum added
-// are the render's. Only the recording program includes this file; path_recorder_none.glsl takes
+// The hooks are statements beside the maths and change nothing of it, so the path traced and the
+// sum added are the render's. Only the recording program includes this file; path_recorder_none.glsl takes
 // its place in every other.
 //
 // The record of a vertex is 12 vec4 (kRecordFields), the layout renderer/PathRecorder.cpp reads:
@@ -93,18 +93,16 @@ void recordSurface(int bounce, bool found, Hit hit, Ray ray, vec3 throughput) {
     if (found) gPreviousPos = hit.posWorld;
 }
 
-float recordEmissionWeight(int bounce, float misWeight, vec3 emitted) {
+void recordEmissionWeight(int bounce, float misWeight, vec3 emitted) {
     if (isRecorded(bounce)) {
         gFlags |= kVertexEmission;
         gRecord[8].w = misWeight;
         gRecord[10].xyz = emitted;
     }
-    return misWeight;
 }
 
-vec3 recordEmission(int bounce, vec3 added) {
+void recordEmission(int bounce, vec3 added) {
     if (isRecorded(bounce)) gRecord[9].xyz = added;
-    return added;
 }
 
 void recordLightSample(int bounce, int light, float selection, LightSample ls, Material material, ShadingFrame frame,
@@ -129,19 +127,16 @@ void recordLightSample(int bounce, int light, float selection, LightSample ls, M
     gRecord[7].w = evaluated;
 }
 
-bool recordShadowRay(int bounce, bool blocked) {
+void recordShadowRay(int bounce, bool blocked) {
     if (isRecorded(bounce)) gFlags |= kVertexShadowTraced | (blocked ? kVertexShadowBlocked : 0u);
-    return blocked;
 }
 
-float recordLightWeight(int bounce, float misWeight) {
+void recordLightWeight(int bounce, float misWeight) {
     if (isRecorded(bounce)) gRecord[7].z = misWeight;
-    return misWeight;
 }
 
-vec3 recordDirectLighting(int bounce, vec3 added) {
+void recordDirectLighting(int bounce, vec3 added) {
     if (isRecorded(bounce)) gRecord[8].xyz = added;
-    return added;
 }
 
 void recordBsdfSample(int bounce, BsdfSample bs, Material material, ShadingFrame frame, vec3 woLocal) {
@@ -155,12 +150,11 @@ void recordBsdfSample(int bounce, BsdfSample bs, Material material, ShadingFrame
     gPreviousBsdfPdf = bs.pdfSolidAngle;
 }
 
-bool recordRoulette(int bounce, float survival, bool ended) {
+void recordRoulette(int bounce, float survival, bool ended) {
     if (isRecorded(bounce)) {
         gFlags |= kVertexRoulette | (ended ? kVertexRouletteEnded : 0u);
         gRecord[5].w = survival;
     }
-    return ended;
 }
 
 void recordThroughput(int bounce, vec3 throughput) {

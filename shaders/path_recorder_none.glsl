@@ -1,14 +1,14 @@
-// path_recorder.glsl for the programs that render: every hook passes its value through and keeps
-// nothing, so the integrator compiles to what it was without them (renderer/gpu/ShaderFeatures.cpp
-// puts this file in every program but the path recorder's).
+// path_recorder.glsl for the programs that render: the same hooks, empty, so the integrator
+// compiles to what it would be without them (renderer/gpu/ShaderFeatures.cpp puts this file in
+// every program but the path recorder's).
 void recordSurface(int bounce, bool found, Hit hit, Ray ray, vec3 throughput) {}
-float recordEmissionWeight(int bounce, float misWeight, vec3 emitted) { return misWeight; }
-vec3 recordEmission(int bounce, vec3 added) { return added; }
+void recordEmissionWeight(int bounce, float misWeight, vec3 emitted) {}
+void recordEmission(int bounce, vec3 added) {}
 void recordLightSample(int bounce, int light, float selection, LightSample ls, Material material, ShadingFrame frame,
                        vec3 woLocal, Hit hit) {}
-bool recordShadowRay(int bounce, bool blocked) { return blocked; }
-float recordLightWeight(int bounce, float misWeight) { return misWeight; }
-vec3 recordDirectLighting(int bounce, vec3 added) { return added; }
+void recordShadowRay(int bounce, bool blocked) {}
+void recordLightWeight(int bounce, float misWeight) {}
+void recordDirectLighting(int bounce, vec3 added) {}
 void recordBsdfSample(int bounce, BsdfSample bs, Material material, ShadingFrame frame, vec3 woLocal) {}
-bool recordRoulette(int bounce, float survival, bool ended) { return ended; }
+void recordRoulette(int bounce, float survival, bool ended) {}
 void recordThroughput(int bounce, vec3 throughput) {}

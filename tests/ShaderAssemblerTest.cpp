@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <unistd.h>
 
 namespace ptview {
@@ -60,6 +62,23 @@ TEST_F(ShaderAssemblerTest, MissingIncludeNamesFileAndLine) {
     }
 }
 
+// shaders/ holds readable copies of generated includes (bsdf.glsl, light_kinds.glsl): a program
+// given its own must compile that, not the copy.
+TEST_F(ShaderAssemblerTest, AReplacementWinsOverTheFileOfItsName) {
+    write("main.frag", "#version 410 core\n#include \"generated.glsl\"\n#include \"full.glsl\"\n");
+    write("generated.glsl", "float onDisk() { return 1.0; }\n");
+    write("full.glsl", "float full() { return 1.0; }\n");
+    write("empty.glsl", "float empty() { return 0.0; }\n");
+    ShaderAssembler assembler(dir_);
+    assembler.replaceWithText("generated.glsl", "float generated() { return 2.0; }\n");
+    assembler.replaceWithFile("full.glsl", "empty.glsl");
+    AssembledShader shader = assembler.assemble("main.frag");
+    EXPECT_NE(shader.source.find("float generated()"), std::string::npos);
+    EXPECT_NE(shader.source.find("float empty()"), std::string::npos);
+    EXPECT_EQ(shader.source.find("float onDisk()"), std::string::npos);
+    EXPECT_EQ(shader.source.find("float full()"), std::string::npos);
+}
+
 TEST_F(ShaderAssemblerTest, MissingEntryFileIsAnError) {
     EXPECT_THROW(ShaderAssembler(dir_).assemble("absent.frag"), ShaderError);
 }
@@ -86,6 +105,28 @@ TEST(ProductShaders, EveryEntryPointTargetsGlsl410Core) {
     }
     // The compute entry is the optional OpenGL 4.3 backend, over the same includes.
     EXPECT_EQ(assembler.assemble("pathtrace.comp").source.rfind("#version 430 core\n", 0), 0u);
+}
+
+// So that every include names a file a reader can open, shaders/ holds what the generators write
+// for every feature: bsdf.glsl and light_kinds.glsl (shape_loops.glsl and specialization.glsl
+// there are the run-time defaults of unspecialized programs). PTVIEW_REGENERATE_SHADERS=1 rewrites
+// them from the generators instead of comparing.
+TEST(GeneratedShaders, TheShaderFolderHoldsWhatTheGeneratorsWriteForEveryFeature) {
+    const std::pair<const char*, std::string> generated[] = {
+        {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
+        {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},
+    };
+    const bool regenerate = std::getenv("PTVIEW_REGENERATE_SHADERS") != nullptr;
+    for (const auto& [name, text] : generated) {
+        const fs::path path = fs::path(PTVIEW_SHADER_DIR) / name;
+        if (regenerate) std::ofstream(path, std::ios::binary) << text;
+        std::ifstream in(path, std::ios::binary);
+        std::stringstream onDisk;
+        onDisk << in.rdbuf();
+        EXPECT_EQ(onDisk.str(), text) << "shaders/" << name << " is not what renderer/gpu/ShaderFeatures.cpp generates "
+                                      << "for ShaderFeatures::all(); regenerate it with PTVIEW_REGENERATE_SHADERS=1 "
+                                      << "build/tests/shader_assembler_test --gtest_filter='GeneratedShaders.*'";
+    }
 }
 
 } // namespace

@@ -9,8 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -358,6 +362,119 @@ TEST(Specialization, ProgramCacheCompilesEachCombinationOnce) {
     EXPECT_EQ(tracer.settings().sampler, SamplerMode::Sobol);
     EXPECT_EQ(tracer.settings().integrator, Integrator::Mis);
     EXPECT_EQ(tracer.sampleCount(), 1);
+}
+
+std::string shaderText(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    // Without comments, which mention functions they do not define or call.
+    static const std::regex comment(R"(//[^\n]*|/\*[\s\S]*?\*/)");
+    return std::regex_replace(text.str(), comment, "");
+}
+
+// The files of the shader folder that `file` includes directly (generated includes such as
+// enums.glsl are no files there).
+std::vector<std::string> includes(const std::string& file) {
+    static const std::regex includeLine(R"re(#\s*include\s*"([^"]+)")re");
+    std::string text = shaderText(std::filesystem::path(PTVIEW_SHADER_DIR) / file);
+    std::vector<std::string> files;
+    for (std::sregex_iterator it(text.begin(), text.end(), includeLine), end; it != end; ++it)
+        if (std::filesystem::is_regular_file(std::filesystem::path(PTVIEW_SHADER_DIR) / (*it)[1].str()))
+            files.push_back((*it)[1].str());
+    return files;
+}
+
+// The functions these files define at the top level, as "returnType name(parameters)" by name,
+// the parameters' whitespace collapsed.
+std::multimap<std::string, std::string> definedFunctions(const std::set<std::string>& files) {
+    static const std::regex definition(R"((?:^|\n)(\w+)\s+(\w+)\s*\(([^()]*)\)\s*\{)");
+    static const std::regex space(R"(\s+)");
+    std::multimap<std::string, std::string> functions;
+    for (const std::string& file : files) {
+        std::string text = shaderText(std::filesystem::path(PTVIEW_SHADER_DIR) / file);
+        for (std::sregex_iterator it(text.begin(), text.end(), definition), end; it != end; ++it) {
+            std::string parameters = std::regex_replace((*it)[3].str(), space, " ");
+            functions.emplace((*it)[2].str(), (*it)[1].str() + " " + (*it)[2].str() + "(" + parameters + ")");
+        }
+    }
+    return functions;
+}
+
+bool definesSignature(const std::multimap<std::string, std::string>& functions, const std::string& signature) {
+    for (const auto& entry : functions)
+        if (entry.second == signature) return true;
+    return false;
+}
+
+// An empty variant stands in for its full file wherever the full file is included, so it must
+// define what the files including it call, with the same signatures, and nothing the full file
+// does not. The full file's side is the file and what only it includes (environment.glsl is
+// environment_map.glsl); its helpers, which only it calls, need no stand-in. Full variants of
+// other rows do not count as callers: they compile only with their own feature, which may imply
+// this one (a normal map is read as a texture).
+TEST(Specialization, EachEmptyVariantDeclaresTheFunctionsOfItsFullFile) {
+    std::map<std::string, std::vector<std::string>> includesOf;
+    for (const auto& entry : std::filesystem::directory_iterator(PTVIEW_SHADER_DIR))
+        includesOf[entry.path().filename().string()] = includes(entry.path().filename().string());
+    std::set<std::string> fullVariants;
+    for (const IncludeVariantFiles& row : includeVariantFiles()) fullVariants.insert(row.include);
+    auto includedBy = [&](const std::string& includer, const std::string& file) {
+        const std::vector<std::string>& files = includesOf[includer];
+        return std::find(files.begin(), files.end(), file) != files.end();
+    };
+
+    for (const IncludeVariantFiles& row : includeVariantFiles()) {
+        SCOPED_TRACE(row.include + " / " + row.emptyVariant);
+        std::set<std::string> fullSide{row.include};
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (const std::string& file : std::set<std::string>(fullSide))
+                for (const std::string& included : includesOf[file]) {
+                    bool onlyHere = true;
+                    for (const auto& [includer, files] : includesOf)
+                        if (!fullSide.count(includer) && includedBy(includer, included)) onlyHere = false;
+                    if (onlyHere && fullSide.insert(included).second) grew = true;
+                }
+        }
+        std::multimap<std::string, std::string> full = definedFunctions(fullSide);
+        std::multimap<std::string, std::string> empty = definedFunctions({row.emptyVariant});
+        for (const auto& [name, signature] : empty)
+            EXPECT_TRUE(definesSignature(full, signature))
+                << row.emptyVariant << " defines " << signature << ", which " << row.include << " does not";
+
+        std::string callers;
+        for (const auto& [includer, files] : includesOf)
+            if (!fullSide.count(includer) && includer != row.emptyVariant && !fullVariants.count(includer) &&
+                includedBy(includer, row.include))
+                callers += shaderText(std::filesystem::path(PTVIEW_SHADER_DIR) / includer);
+        EXPECT_FALSE(callers.empty()) << "no shader includes " << row.include;
+        for (const auto& [name, signature] : full) {
+            if (!std::regex_search(callers, std::regex("\\b" + name + "\\s*\\("))) continue; // a helper
+            EXPECT_TRUE(definesSignature(empty, signature))
+                << row.include << " defines " << signature << ", which its includers call and " << row.emptyVariant
+                << " does not";
+        }
+    }
+}
+
+// integrator.glsl runs naive, direct, mis and full through one bounce whose predicates
+// (samplesLights, weighsByMis, ...) test kIntegrator: a constant in every program, so the
+// compiler keeps the chosen integrator's code alone, the recorder's program included.
+TEST(Specialization, TheIntegratorIsAConstantOfEveryProgram) {
+    for (const auto& entry : integratorNames()) {
+        SCOPED_TRACE(entry.name);
+        const std::string constant = std::string("const uint kIntegrator = ") + entry.glslConstant + ";";
+        ShaderAssembler render(PTVIEW_SHADER_DIR);
+        specializeShaders(render, ShaderFeatures::all(), entry.value, SamplerMode::Sobol);
+        ShaderAssembler recorder(PTVIEW_SHADER_DIR);
+        specializePathRecorder(recorder, ShaderFeatures::all(), entry.value, SamplerMode::Sobol, LightPaths::All);
+        for (const std::string& source : {render.assemble("pathtrace.frag").source, render.assemble("pathtrace.comp").source,
+                                          recorder.assemble("path_record.frag").source}) {
+            EXPECT_TRUE(contains(source, constant));
+            EXPECT_FALSE(contains(source, "#define kIntegrator")) << "the run-time default of specialization.glsl";
+        }
+    }
 }
 
 TEST(Specialization, CommandLineDumpsTheShaderAndPrintsTheFeatures) {

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ptview {
 
@@ -76,13 +77,28 @@ struct ShaderFeatures {
 ShaderFeatures sceneFeatures(const Scene& scene);
 
 // Makes `assembler` build the path-tracing program for these features, integrator, sampler, view
-// and light-path view: generated bsdf.glsl and specialization.glsl, and the environment, mesh,
-// texture and light-path variants (light_paths_none.glsl unless a part of the light is shown), and
-// the integrator's path-recording hooks empty (path_recorder_none.glsl).
+// and light-path view: generated bsdf.glsl, light_kinds.glsl, shape_loops.glsl (when unrolled)
+// and specialization.glsl, and the empty variant of each include whose feature the program lacks
+// (kIncludeVariants in ShaderFeatures.cpp; the path recorder's hooks are always empty here).
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
                        SamplerMode sampler, DebugView view = DebugView::Radiance,
                        LightPaths lightPaths = LightPaths::All);
+// The same for the path recorder's program (path_record.frag): the radiance view, with the
+// recording hooks of path_recorder.glsl.
+void specializePathRecorder(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
+                            SamplerMode sampler, LightPaths lightPaths);
 // The BSDF dispatch alone (probes that run BSDFs without a scene use every model).
 void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features);
+
+// For the tests that hold the shader folder to the generator: each row of the table of includes
+// with an empty variant, and what bsdf.glsl and light_kinds.glsl are generated as (shaders/ holds
+// both as generated for ShaderFeatures::all()).
+struct IncludeVariantFiles {
+    std::string include;
+    std::string emptyVariant;
+};
+std::vector<IncludeVariantFiles> includeVariantFiles();
+std::string generateBsdfDispatch(const ShaderFeatures& features);
+std::string generateLightKinds(const ShaderFeatures& features);
 
 } // namespace ptview
