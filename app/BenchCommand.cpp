@@ -59,8 +59,8 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options, con
             result.largestTexture = {texture.image->width, texture.image->height};
     }
 
-    PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{program.allFeatures, program.backend});
-    tracer.setScene(input->scene, input->environmentMapOrNull());
+    PathTracer tracer = makePathTracer(input->scene, input->environmentMapOrNull(),
+                                       PathTracerOptions{program.allFeatures, program.backend}, options.settings);
     const GpuMeshes& meshes = tracer.gpuScene().meshes();
     result.buildSeconds = meshes.lastBuildSeconds();
     result.tangentSeconds = meshes.lastTangentSeconds();
@@ -69,8 +69,6 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options, con
     glm::ivec2 size = options.size.value_or(input->scene.camera.resolution);
     result.size = size;
     tracer.setImageSize(size);
-    RenderSettings settings = options.settings;
-    tracer.setSettings(settings);
     // Assembling, compiling and linking the program, timed on its first build in this process. A
     // driver's own shader cache (Mesa keeps one on disk) can make a rebuild of the same source
     // quick: MESA_SHADER_CACHE_DISABLE=true measures a cold compile. With the backend left to
@@ -85,9 +83,7 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options, con
         result.compileSeconds = -1.0;
     }
     result.backend = tracer.backend();
-    tracer.renderSample();
-    glFinish();
-    tracer.restart();
+    tracer.warmUp();
     Clock::time_point start = Clock::now();
     do {
         tracer.renderSamples(tracer.samplesPerPass());

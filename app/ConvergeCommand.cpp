@@ -81,10 +81,7 @@ ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const Co
     settings.seed = options.seed;
     settings.sampleBudget = static_cast<std::uint32_t>(options.maxSpp); // patterns complete at the last checkpoint
     tracer.setSettings(settings);
-    tracer.restart();
-    tracer.renderSample(); // compiles the program and warms up; not timed, not kept
-    glFinish();
-    tracer.restart();
+    tracer.warmUp(); // not timed, not kept
     double seconds = 0.0;
     for (int target = 1; target <= options.maxSpp; target *= 2) {
         Clock::time_point start = Clock::now();
@@ -312,8 +309,8 @@ int runConvergeCommand(const ConvergeOptions& options) {
     }
     try {
         HeadlessContext context;
-        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{options.program.allFeatures, options.program.backend});
-        tracer.setScene(input->scene, input->environmentMapOrNull());
+        PathTracer tracer = makePathTracer(input->scene, input->environmentMapOrNull(),
+                                           PathTracerOptions{options.program.allFeatures, options.program.backend});
         tracer.setImageSize(size);
 
         ImageRgbF reference;

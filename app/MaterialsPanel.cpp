@@ -1,5 +1,6 @@
 #include "MaterialsPanel.h"
 
+#include "ImageTexture.h"
 #include "MaterialSchema.h"
 #include "MaterialTextures.h"
 #include "PrintableText.h"
@@ -245,20 +246,8 @@ GLuint MaterialsPanel::thumbnail(const std::shared_ptr<const TextureImage>& imag
                 to[3] = 255;
             }
         }
-    // The renderer binds its own textures on its own units; the one bound here is put back.
-    GLint activeUnit = 0, bound = 0;
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &activeUnit);
-    glActiveTexture(GL_TEXTURE0);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
-    GlTexture texture = createTexture();
-    glBindTexture(GL_TEXTURE_2D, texture.id());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
-    glActiveTexture(static_cast<GLenum>(activeUnit));
+    GlTexture texture;
+    uploadImageTexture(texture, ImageRgba8{width, height, std::move(texels)}, TextureFilter::Mipmapped);
     const GLuint id = texture.id();
     thumbnails_.emplace(std::make_pair(image.get(), channel), std::make_pair(image, std::move(texture)));
     return id;

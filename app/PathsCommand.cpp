@@ -32,11 +32,9 @@ int runPathsCommand(const PathsOptions& options) {
     }
     try {
         HeadlessContext context;
-        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{false, Backend::Fragment});
-        tracer.setScene(scene, input->environmentMapOrNull());
         RenderSettings settings = options.settings;
         settings.sampleBudget = static_cast<std::uint32_t>(options.samplesPerPixel); // as `render --spp` sets it
-        tracer.setSettings(settings);
+        PathTracer tracer = makePathTracer(scene, input->environmentMapOrNull(), PathTracerOptions{false, Backend::Fragment}, settings);
         tracer.setImageSize(size);
         const std::vector<RecordedPath> paths = recordPaths(tracer, options.pixel, options.count, options.firstSample);
 

@@ -1,10 +1,10 @@
 // The Pixel panel: the pixel inspector's numbers for ViewerModel::pinnedPixel (Alt+click pins).
+#include "ImageTexture.h"
 #include "PanelWidgets.h"
 #include "Panels.h"
 #include "PrintableText.h"
 #include "ShapeSchema.h"
 
-#include <glad/gl.h>
 #include <imgui.h>
 
 #include <cstdint>
@@ -29,13 +29,7 @@ void drawMagnifier(const ViewerSession& session, const PixelInspection& inspecti
     const PathTracer& tracer = session.tracer(inspection.rightSide ? ViewerSession::Side::Right : ViewerSession::Side::Left);
     ImageRgba8 region = tracer.readDisplayed(inspection.pixel - glm::ivec2(kMagnifierRadius), glm::ivec2(side),
                                              session.model().display);
-    if (texture.id() == 0) texture = createTexture();
-    glBindTexture(GL_TEXTURE_2D, texture.id());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST); // the zoom shows pixels, not a blur
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, side, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, region.rgba.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
+    uploadImageTexture(texture, region, TextureFilter::Nearest); // the zoom shows pixels, not a blur
     float extent = kMagnifierCellSize * static_cast<float>(side) * ImGui::GetIO().FontGlobalScale;
     ImVec2 corner = ImGui::GetCursorScreenPos();
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture.id())), ImVec2(extent, extent));

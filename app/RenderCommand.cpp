@@ -5,6 +5,7 @@
 #include "ExrIO.h"
 #include "HeadlessContext.h"
 #include "ImageIO.h"
+#include "NonFinitePixels.h"
 #include "OutputPath.h"
 #include "PathTracer.h"
 #include "PrintableText.h"
@@ -143,14 +144,13 @@ int runRenderCommand(const RenderOptions& requested) {
                       std::to_string(map->height) + ")";
     try {
         HeadlessContext context;
-        PathTracer tracer(PTVIEW_SHADER_DIR, PathTracerOptions{options.program.allFeatures, options.program.backend});
-        tracer.setScene(scene, input->environmentMapOrNull());
-        if (options.printFeatures) std::printf("%s", tracer.features().describe().c_str());
         // --time alone has no bound but the largest --spp; --spp with it is the most to render.
         const int maxSamples = options.timeLimitSeconds && !options.samplesPerPixelGiven ? kMaxSamplesPerPixel : options.samplesPerPixel;
         RenderSettings settings = options.settings;
         if (!from) settings.sampleBudget = static_cast<std::uint32_t>(maxSamples); // fully stratified at the end
-        tracer.setSettings(settings);
+        PathTracer tracer = makePathTracer(scene, input->environmentMapOrNull(),
+                                           PathTracerOptions{options.program.allFeatures, options.program.backend}, settings);
+        if (options.printFeatures) std::printf("%s", tracer.features().describe().c_str());
         if (!options.dumpShaderPath.empty()) {
             writeFileAtomically(options.dumpShaderPath, tracer.pathTraceSource().source);
             std::fprintf(stderr, "ptview: wrote %s (the %s program's GLSL)\n", options.dumpShaderPath.c_str(),
@@ -214,12 +214,7 @@ int runRenderCommand(const RenderOptions& requested) {
             writePfm(options.outPath, mean);
         }
         // Every render says whether it produced non-finite pixels: one is a bug to report.
-        long long nonFinite = 0;
-        for (int y = 0; y < mean.height; ++y)
-            for (int x = 0; x < mean.width; ++x) {
-                glm::vec3 v = mean.at(x, y);
-                nonFinite += !(std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b));
-            }
+        const long long nonFinite = countNonFinitePixels(mean);
 
         double samples = static_cast<double>(size.x) * size.y * samplesPerPixel;
         std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s, %s backend, %lld NaN/Inf pixels) on %s\n",

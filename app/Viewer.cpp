@@ -209,8 +209,8 @@ void ViewerWindow::answerUnsavedEdits(const std::vector<int>& keys) {
     }
 }
 
-// A few times a second: comparing the scene with its file serializes both (0.4 to 0.9 ms each
-// for the shipped scenes on the 2-core test machine), too much for every frame.
+// A few times a second: comparing the scene with its file serializes both, too much for every
+// frame (docs/performance.md, "Measurements behind code comments").
 void ViewerWindow::updateTitle() {
     Clock::time_point now = Clock::now();
     if (now - lastTitleUpdate_ < kTitleInterval) return;

@@ -71,10 +71,9 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     model_.settings = settings;
     model_.display = display;
     model_.compare.right = settings;
-    left_.tracer = std::make_unique<PathTracer>(shaderDir_, programOptions_);
+    left_.tracer =
+        std::make_unique<PathTracer>(makePathTracer(model_.scene, model_.environmentMap.get(), programOptions_, settings, shaderDir_));
     left_.tracer->setPreviewEnabled(true);
-    left_.tracer->setScene(model_.scene, model_.environmentMap.get());
-    left_.tracer->setSettings(settings);
     if (program.backend) {
         model_.backend = *program.backend;
     } else {
@@ -471,10 +470,10 @@ void ViewerSession::update() {
         if (compare.right == model_.settings)
             compare.right.integrator = model_.settings.integrator == Integrator::Mis ? Integrator::Naive : Integrator::Mis;
         right_ = std::make_unique<View>();
-        right_->tracer = std::make_unique<PathTracer>(shaderDir_, PathTracerOptions{programOptions_.allFeatures, model_.backend});
+        right_->tracer = std::make_unique<PathTracer>(makePathTracer(model_.scene, model_.environmentMap.get(),
+                                                                     PathTracerOptions{programOptions_.allFeatures, model_.backend},
+                                                                     RenderSettings{}, shaderDir_));
         right_->tracer->setPreviewEnabled(true);
-        right_->tracer->setScene(model_.scene, model_.environmentMap.get());
-        right_->tracer->setCamera(model_.scene.camera);
     }
     try {
         syncView(left_, effectiveSettings(model_.settings), changes);

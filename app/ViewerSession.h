@@ -151,7 +151,6 @@ public:
     };
     const TracedPaths& tracePaths(glm::ivec2 pixel, int count);
     const std::optional<TracedPaths>& tracedPaths() const { return tracedPaths_; }
-    void clearTracedPaths() { tracedPaths_.reset(); }
 
 private:
     struct View {

@@ -83,11 +83,24 @@ PathTracer::TraceProgram& PathTracer::useTraceProgram() {
     }
     TraceProgram& trace = found->second;
     if (attached_ != &trace) { // uniform locations differ between programs
-        gpuScene_.attach(*trace.program, kSceneUnit);
-        environmentMap_.attach(*trace.program, kEnvironmentUnit);
+        attachScene(*trace.program);
         attached_ = &trace;
     }
     return trace;
+}
+
+void PathTracer::attachScene(const GlProgram& program) {
+    gpuScene_.attach(program, kSceneUnit);
+    environmentMap_.attach(program, kEnvironmentUnit);
+}
+
+void PathTracer::bindScene(const GlProgram& program, const Accumulator& target, int samplesPerPass) {
+    updateFrameUniforms(target, samplesPerPass);
+    resetPassState();
+    glUseProgram(program.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
+    gpuScene_.bind();
+    environmentMap_.bind();
 }
 
 void PathTracer::updateProgramKey() {
@@ -342,18 +355,11 @@ std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
         SurfaceProbe probe;
         probe.features = programKey_.features;
         probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("surface_probe.frag"));
-        probe.program->bindUniformBlock("FrameBlock", kFrameBlockBinding);
         probe.filmPos = probe.program->uniformLocation("uFilmPos");
         surfaceProbe_ = std::move(probe);
     }
     const GlProgram& program = *surfaceProbe_->program;
-    updateFrameUniforms(accumulator_, 1);
-    resetPassState();
-    gpuScene_.attach(program, kSceneUnit);
-    attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
-    glUseProgram(program.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
-    gpuScene_.bind();
+    useSceneIn(program);
     glUniform2f(surfaceProbe_->filmPos, filmPos.x, filmPos.y);
     std::vector<ProbeData> texels = runProbePass(program, 1, {}, 4);
     glm::vec4 distances = texels[0][0], position = texels[1][0], normalGeom = texels[2][0], normalShading = texels[3][0];
@@ -402,19 +408,19 @@ ImageRgba8 PathTracer::readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const 
 
 void PathTracer::useSceneIn(const GlProgram& program) {
     program.bindUniformBlock("FrameBlock", kFrameBlockBinding);
-    updateFrameUniforms(accumulator_, 1);
-    resetPassState();
-    gpuScene_.attach(program, kSceneUnit);
-    environmentMap_.attach(program, kEnvironmentUnit);
+    attachScene(program);
     attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
-    glUseProgram(program.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
-    gpuScene_.bind();
-    environmentMap_.bind();
+    bindScene(program, accumulator_, 1);
 }
 
 void PathTracer::renderSample() {
     renderRows(accumulator_.size().y);
+}
+
+void PathTracer::warmUp() {
+    renderSample();
+    glFinish();
+    restart();
 }
 
 void PathTracer::renderSamples(int count) {
@@ -445,12 +451,7 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
     glm::ivec2 size = target.size();
     int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
     const TraceProgram& trace = useTraceProgram();
-    updateFrameUniforms(target, samplesPerPass);
-    resetPassState();
-    glUseProgram(trace.program->id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
-    gpuScene_.bind();
-    environmentMap_.bind();
+    bindScene(*trace.program, target, samplesPerPass);
     if (backend_ == Backend::Compute) {
         target.beginComputePass(kAccumulationUnit, 0);
         glUniform2i(trace.tileOrigin, 0, nextRow);
@@ -513,6 +514,14 @@ ImageRgba8 PathTracer::readToneMapped(const DisplaySettings& settings) const {
     return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) {
         drawMean(accumulator_, PixelRect{{0, 0}, size}, settings, PixelRect{{0, 0}, size});
     });
+}
+
+PathTracer makePathTracer(const Scene& scene, const EnvironmentMap* environmentMap, PathTracerOptions options,
+                          const RenderSettings& settings, const std::filesystem::path& shaderDir) {
+    PathTracer tracer(shaderDir, options);
+    tracer.setScene(scene, environmentMap);
+    tracer.setSettings(settings);
+    return tracer;
 }
 
 } // namespace ptview

@@ -1,7 +1,8 @@
 #pragma once
-// The progressive path tracer: one sample per pixel per pass into ping-ponged RGBA32F
-// accumulation targets, and a display pass that tone maps the running mean. Used as-is by the
-// headless renderer and the viewer; it needs a current OpenGL 4.1+ core context.
+// The progressive path tracer: passes of one or more samples per pixel (renderSamples; the
+// viewer's renderRows, one) into ping-ponged RGBA32F accumulation targets, and a display pass
+// that tone maps the running mean. Used as-is by the headless renderer and the viewer; it needs
+// a current OpenGL 4.1+ core context.
 
 #include "Accumulator.h"
 #include "BackendChoice.h"
@@ -45,8 +46,9 @@ public:
     void reloadShaders();
     const std::filesystem::path& shaderDir() const { return shaderDir_; }
 
-    // The program in use is specialized to the scene's features, the integrator, the sampler and
-    // the backend; every program compiled is kept, so going back to a combination costs nothing.
+    // The program in use is specialized to the scene's features, the integrator, the sampler, the
+    // debug view, the light-path filter and the backend (ProgramKey); every program compiled is
+    // kept, so going back to a combination costs nothing.
     const ShaderFeatures& features() const { return programKey_.features; }
     const AssembledShader& pathTraceSource(); // the exact GLSL of the program in use
     int programsCompiled() const { return programsCompiled_; }
@@ -75,6 +77,9 @@ public:
 
     // One sample per pixel over the whole image.
     void renderSample();
+    // One sample, finished, then a restart: compiles the program and pays the first pass's costs,
+    // so that what a caller times next is rendering alone.
+    void warmUp();
     // count samples per pixel over the whole image, in passes of samplesPerPass() (the last may
     // be shorter): a pixel's program goes on to its next sample as soon as a path ends, which
     // keeps SIMD lanes busy (pathtrace_sample.glsl). The image is that of count renderSample()
@@ -83,7 +88,8 @@ public:
     // wants the same bits for the same sample count asks in whole passes.
     void renderSamples(int count);
     // kPixelSamplesPerPass over the pixel count, in [1, kMaxSamplesPerPass]: a pass of about a
-    // million paths, which the software rasterizer traces in about a second.
+    // million paths, short enough on a software rasterizer (docs/performance.md, "Measurements
+    // behind code comments").
     int samplesPerPass() const;
     static constexpr int kPixelSamplesPerPass = 1 << 20;
     static constexpr int kMaxSamplesPerPass = 16;
@@ -122,7 +128,7 @@ public:
     const RenderSettings& settings() const { return settings_; }
     const GpuScene& gpuScene() const { return gpuScene_; }
     // For a probe program assembled like the path-tracing one (the path recorder,
-    // renderer/PathRecorder.*): makes it current with the frame uniforms of the next full-size
+    // renderer/PathRecorder.*, and probeSurface's): makes it current with the frame uniforms of the next full-size
     // sample, and the scene and the environment map attached and bound.
     void useSceneIn(const GlProgram& program);
 
@@ -186,6 +192,11 @@ private:
     DisplayProgram buildDisplayProgram() const;
     TraceProgram buildTraceProgram(const ProgramKey& key) const;
     TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
+    // The scene's and the environment map's samplers and uniform locations, looked up in program.
+    void attachScene(const GlProgram& program);
+    // Makes program (attached) current with the scene, the map and the frame uniforms of the next
+    // pass into target: what every program that traces the scene reads.
+    void bindScene(const GlProgram& program, const Accumulator& target, int samplesPerPass);
     void updateProgramKey();
     void updateFrameUniforms(const Accumulator& target, int samplesPerPass);
     bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass);
@@ -220,5 +231,10 @@ private:
     int nextRow_ = 0;
     int restartCount_ = 0;
 };
+
+// A tracer as every command and the viewer begin: compiled as options ask, with the scene (and the
+// environment map already read for it; else read here) and the settings.
+PathTracer makePathTracer(const Scene& scene, const EnvironmentMap* environmentMap, PathTracerOptions options = {},
+                          const RenderSettings& settings = {}, const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
 
 } // namespace ptview

@@ -45,10 +45,4 @@ inline const WarpInfo& warpInfo(Warp warp) {
     return warpInfos()[static_cast<size_t>(warp)];
 }
 
-inline std::optional<Warp> parseWarp(const std::string& name) {
-    for (const WarpInfo& info : warpInfos())
-        if (name == info.name) return info.warp;
-    return std::nullopt;
-}
-
 } // namespace ptview

@@ -38,31 +38,44 @@ void appendBox(const Shape& box, ScenePrimitives& out) {
     }
 }
 
+// The primitives a shape becomes, after those of the shapes before it.
+void appendShape(const Shape& shape, ScenePrimitives& out) {
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        out.spheres.push_back(GpuSphere{shape.center, shape.radius});
+        out.sphereMaterials.push_back(shape.material);
+        break;
+    case ShapeType::Quad:
+        out.quads.push_back(makeQuad(shape.center, shape.u, shape.v));
+        out.quadMaterials.push_back(shape.material);
+        break;
+    case ShapeType::Box:
+        appendBox(shape, out);
+        break;
+    case ShapeType::Disk:
+        out.disks.push_back(GpuDisk{shape.center, shape.radius, glm::normalize(shape.normal), 0.0f});
+        out.diskMaterials.push_back(shape.material);
+        break;
+    case ShapeType::Mesh: // GpuMeshes
+        break;
+    }
+}
+
+std::size_t primitiveCount(const ScenePrimitives& primitives, PrimitiveKind kind) {
+    switch (kind) {
+    case PrimitiveKind::Sphere: return primitives.spheres.size();
+    case PrimitiveKind::Quad: return primitives.quads.size();
+    case PrimitiveKind::Disk: return primitives.disks.size();
+    case PrimitiveKind::MeshInstance: break; // GpuMeshes' instances
+    }
+    return 0;
+}
+
 } // namespace
 
 ScenePrimitives flattenScene(const Scene& scene) {
     ScenePrimitives out;
-    for (const Shape& shape : scene.shapes) {
-        switch (shape.type) {
-        case ShapeType::Sphere:
-            out.spheres.push_back(GpuSphere{shape.center, shape.radius});
-            out.sphereMaterials.push_back(shape.material);
-            break;
-        case ShapeType::Quad:
-            out.quads.push_back(makeQuad(shape.center, shape.u, shape.v));
-            out.quadMaterials.push_back(shape.material);
-            break;
-        case ShapeType::Box:
-            appendBox(shape, out);
-            break;
-        case ShapeType::Disk:
-            out.disks.push_back(GpuDisk{shape.center, shape.radius, glm::normalize(shape.normal), 0.0f});
-            out.diskMaterials.push_back(shape.material);
-            break;
-        case ShapeType::Mesh: // GpuMeshes
-            break;
-        }
-    }
+    for (const Shape& shape : scene.shapes) appendShape(shape, out);
     out.lights = scene.lights;
     flattenMaterials(scene.materials, out);
     return out;
@@ -72,22 +85,11 @@ int shapeOfPrimitive(const Scene& scene, PrimitiveKind kind, int index, const st
     if (index < 0) return -1;
     if (kind == PrimitiveKind::MeshInstance)
         return index < static_cast<int>(meshInstances.size()) ? meshInstances[static_cast<size_t>(index)].shape : -1;
-    // The primitives each shape adds in flattenScene, in its order.
-    auto primitivesOf = [kind](const Shape& shape) {
-        switch (shape.type) {
-        case ShapeType::Sphere: return kind == PrimitiveKind::Sphere ? 1 : 0;
-        case ShapeType::Quad: return kind == PrimitiveKind::Quad ? 1 : 0;
-        case ShapeType::Box: return kind == PrimitiveKind::Quad ? 6 : 0;
-        case ShapeType::Disk: return kind == PrimitiveKind::Disk ? 1 : 0;
-        case ShapeType::Mesh: return 0;
-        }
-        return 0;
-    };
-    int first = 0;
+    // The shapes flattened again as flattenScene does, until one reaches the index.
+    ScenePrimitives flattened;
     for (size_t i = 0; i < scene.shapes.size(); ++i) {
-        int count = primitivesOf(scene.shapes[i]);
-        if (index < first + count) return static_cast<int>(i);
-        first += count;
+        appendShape(scene.shapes[i], flattened);
+        if (static_cast<std::size_t>(index) < primitiveCount(flattened, kind)) return static_cast<int>(i);
     }
     return -1;
 }

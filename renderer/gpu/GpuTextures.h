@@ -47,13 +47,7 @@ public:
     void bind(int unit) const;
 
     const std::vector<GpuTextureRecord>& records() const { return layout_.records; }
-    // GPU memory of the atlas, and the largest texture (for `ptview bench` and `render`).
-    std::size_t bytes() const;
-    int pageSize() const { return layout_.pageSize; }
-    int pageCount() const { return layout_.pageCount; }
-    int largestWidth() const { return largestWidth_; }
-    int largestHeight() const { return largestHeight_; }
-    const std::string& largestSource() const { return largestSource_; }
+    std::size_t bytes() const; // GPU memory of the atlas
     // "3 textures, 12.0 MiB (2 pages of 2048^2), largest 2048x2048 (wood.png)"; "" when none.
     std::string describe() const;
 

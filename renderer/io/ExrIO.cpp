@@ -28,7 +28,7 @@ namespace {
 }
 
 // OpenEXR trusts the sizes in a header: a string attribute is resized to the length it declares
-// before it is read (a 426-byte file declaring 1.8 GB took 1.8 GB and 7 s in `ptview info`), a
+// before it is read (what that cost: docs/performance.md, "Measurements behind code comments"), a
 // preview image to the pixels it declares, a string vector's strings each to theirs; and a value of
 // a fixed-size type is read at its own size whatever the header says, so a wrong size shifts where
 // the library reads the next attribute from. This walks the header as the library will (OpenEXR

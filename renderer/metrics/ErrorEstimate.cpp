@@ -1,19 +1,17 @@
 #include "ErrorEstimate.h"
 
+#include "NonFinitePixels.h"
+
 #include <iterator>
 #include <vector>
 
 namespace ptview {
 namespace {
 
-bool finitePixel(const ImageRgbF& image, int x, int y) {
-    glm::vec3 v = image.at(x, y);
-    return std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b);
-}
-
 // Sums of the finite pixels' means, variances of the mean and count over any rectangle, from
-// summed-area tables: each pixel's neighbourhoods of several sizes cost a few lookups, so a
-// full-window image costs a few milliseconds once a second.
+// summed-area tables: each pixel's neighbourhoods of several sizes cost a few lookups, so the
+// viewer can afford a full-window estimate once a second (docs/performance.md, "Measurements
+// behind code comments").
 class NeighbourhoodSums {
 public:
     NeighbourhoodSums(const ImageRgbF& mean, const ImageRgbF& varianceOfMean)
@@ -21,7 +19,7 @@ public:
         for (int y = 0; y < height_; ++y)
             for (int x = 0; x < width_; ++x) {
                 double values[kValues] = {};
-                if (finitePixel(mean, x, y) && finitePixel(varianceOfMean, x, y)) {
+                if (isFinitePixel(mean.at(x, y)) && isFinitePixel(varianceOfMean.at(x, y))) {
                     glm::vec3 m = mean.at(x, y), v = varianceOfMean.at(x, y);
                     for (int c = 0; c < 3; ++c) {
                         values[c] = m[c];
@@ -113,7 +111,7 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
     const ImageRgbF& mean = statistics.mean;
     for (int y = 0; y < mean.height; ++y)
         for (int x = 0; x < mean.width; ++x)
-            if (!finitePixel(mean, x, y) || !finitePixel(statistics.varianceOfMean, x, y)) ++estimate.nonFinitePixels;
+            if (!isFinitePixel(mean.at(x, y)) || !isFinitePixel(statistics.varianceOfMean.at(x, y))) ++estimate.nonFinitePixels;
     if (sampler == SamplerMode::Grid) {
         estimate.unreliableReason = "the grid sampler repeats one pattern in every pixel: how its image changes is not "
                                     "noise, and its error is bias, which no estimate from the render can see";
@@ -130,8 +128,8 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
     long long terms = 0;
     for (int y = 0; y < mean.height; ++y) {
         for (int x = 0; x < mean.width; ++x) {
-            if (!finitePixel(mean, x, y) || !finitePixel(statistics.varianceOfMean, x, y) ||
-                !finitePixel(earlierMean, x, y))
+            if (!isFinitePixel(mean.at(x, y)) || !isFinitePixel(statistics.varianceOfMean.at(x, y)) ||
+                !isFinitePixel(earlierMean.at(x, y)))
                 continue;
             glm::vec3 now = mean.at(x, y), before = earlierMean.at(x, y), variance = statistics.varianceOfMean.at(x, y);
             ConvergedBrightness brightness = convergedBrightness(sums, x, y, now, variance);

@@ -1,6 +1,7 @@
 #include "ErrorMetrics.h"
 
 #include "ImageIO.h"
+#include "NonFinitePixels.h"
 
 #include <cmath>
 #include <limits>
@@ -20,7 +21,7 @@ ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& referen
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             glm::vec3 value = image.at(x, y), expected = reference.at(x, y);
-            if (!std::isfinite(value.r) || !std::isfinite(value.g) || !std::isfinite(value.b)) {
+            if (!isFinitePixel(value)) {
                 ++nonFinite;
                 continue;
             }
@@ -50,15 +51,11 @@ ErrorMetrics compareToReference(const ImageRgbF& image, const ImageRgbF& referen
 
 ImageRgbF readReferenceImage(const std::filesystem::path& path) {
     ImageRgbF image = readLinearImage(path);
-    long long nonFinite = 0, first = -1;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            const glm::vec3 value = image.at(x, y);
-            if (std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b)) continue;
-            if (nonFinite++ == 0) first = static_cast<long long>(y) * image.width + x;
-        }
+    const long long nonFinite = countNonFinitePixels(image);
     if (nonFinite == 0) return image;
-    const int x = static_cast<int>(first % image.width), y = static_cast<int>(first / image.width);
+    int x = 0, y = 0; // the first non-finite pixel, rows from the top
+    while (isFinitePixel(image.at(x, y)))
+        if (++x == image.width) x = 0, ++y;
     const glm::vec3 value = image.at(x, y);
     const bool nan = std::isnan(value.r) || std::isnan(value.g) || std::isnan(value.b);
     throw std::runtime_error(path.string() + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " +
