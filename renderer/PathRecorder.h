@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace ptview {
@@ -35,6 +36,9 @@ private:
     struct Program;
     std::unique_ptr<Program> program_;
 };
+
+// The text of "recorded_path.glsl": kRecordFields and the kVertex* flags (RecordedPath.h).
+std::string recordedPathGlsl();
 
 // One-off: a recorder for one call.
 std::vector<RecordedPath> recordPaths(PathTracer& tracer, glm::ivec2 pixel, int count, int firstSample = 0);

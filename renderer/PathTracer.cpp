@@ -336,7 +336,6 @@ void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPa
     frame.imageSize = size;
     frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
     frame.sampleBudget = settings_.sampleBudget;
-    frame.integrator = static_cast<std::uint32_t>(settings_.integrator);
     frame.sceneRadius = gpuScene_.sceneRadius();
     frame.apertureRadius = camera_.apertureRadius;
     frame.focusDistance = camera_.focusDistance;

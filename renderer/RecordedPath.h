@@ -64,6 +64,51 @@ struct PathVertex {
     glm::vec3 contribution() const { return directContribution + emissionContribution; }
 };
 
+// How the recording pass hands a vertex over: kRecordFields vec4 (shaders/path_recorder.glsl says
+// what each holds), field 0's w holding these flags as a float of exact integer value. The GLSL
+// gets both from here, as the generated include "recorded_path.glsl" (PathRecorder.h).
+constexpr int kRecordFields = 12;
+
+enum VertexFlag : unsigned {
+    kVertexExists = 1u,
+    kVertexCamera = 2u,
+    kVertexSurface = 4u,
+    kVertexEmission = 8u,
+    kVertexLightSampled = 16u,
+    kVertexShadowTraced = 32u,
+    kVertexShadowBlocked = 64u,
+    kVertexLightDelta = 128u,
+    kVertexLightAtInfinity = 256u,
+    kVertexBsdfSampled = 512u,
+    kVertexBsdfDelta = 1024u,
+    kVertexRoulette = 2048u,
+    kVertexRouletteEnded = 4096u,
+    kVertexContinued = 8192u,
+};
+
+// Each flag's GLSL name and meaning, for the generated include.
+struct VertexFlagName {
+    VertexFlag flag;
+    const char* name;
+    const char* meaning;
+};
+inline constexpr VertexFlagName kVertexFlagNames[] = {
+    {kVertexExists, "kVertexExists", ""},
+    {kVertexCamera, "kVertexCamera", ""},
+    {kVertexSurface, "kVertexSurface", "else, when it exists and is not the camera, it escaped"},
+    {kVertexEmission, "kVertexEmission", "emission found here was counted (field 8 w, 9, 10)"},
+    {kVertexLightSampled, "kVertexLightSampled", "a light sample of nonzero pdf and radiance was drawn"},
+    {kVertexShadowTraced, "kVertexShadowTraced", "... and its shadow ray traced (f and sides allowed it)"},
+    {kVertexShadowBlocked, "kVertexShadowBlocked", ""},
+    {kVertexLightDelta, "kVertexLightDelta", "the sampled light is a point, spot or directional light"},
+    {kVertexLightAtInfinity, "kVertexLightAtInfinity", ""},
+    {kVertexBsdfSampled, "kVertexBsdfSampled", "a BSDF sample of nonzero pdf was drawn"},
+    {kVertexBsdfDelta, "kVertexBsdfDelta", ""},
+    {kVertexRoulette, "kVertexRoulette", "roulette was played after this vertex's sample"},
+    {kVertexRouletteEnded, "kVertexRouletteEnded", ""},
+    {kVertexContinued, "kVertexContinued", "a ray left this vertex"},
+};
+
 struct RecordedPath {
     int sampleIndex = 0;      // the render's sample (frame) index this path is
     glm::vec3 radiance{0.0f}; // what the integrator returned for it: the sum of the contributions

@@ -1,6 +1,7 @@
 // Ray-shape intersection against every shape of the scene.
 #include "constants.glsl"
 #include "frame_uniforms.glsl"
+#include "gpu_layout.glsl"
 #include "ray.glsl"
 #include "scene_data.glsl"
 #include "shape_loops.glsl"
@@ -38,12 +39,6 @@ struct Hit {
     ivec2 primitive;    // (kind, index among that kind): which shape the ray met, for the pixel
                         // inspector (renderer/gpu/SurfaceHit.h maps it to the scene's shape)
 };
-
-// Hit::primitive.x; the same numbers as PrimitiveKind (renderer/gpu/SurfaceHit.h).
-const int kPrimitiveSphere = 0;
-const int kPrimitiveQuad = 1;
-const int kPrimitiveDisk = 2;
-const int kPrimitiveMeshInstance = 3;
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing
 // Gems, ch. 7) that keeps precision for small spheres far from the origin.

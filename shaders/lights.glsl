@@ -38,7 +38,7 @@ LightSample failedLightSample() {
 }
 
 float lightCdf(int light) {
-    return texelFetch(uLights, 4 * light).z;
+    return texelFetch(uLights, kLightTexels * light).z;
 }
 
 float lightSelectionProbability(int light) {
@@ -172,9 +172,9 @@ float diskLightPdf(int primitive, float distance2, float cosLight) {
 // ---- Mesh triangle: uniform by area; the light table holds its world-space corners -----------
 
 void triangleLightCorners(int light, out vec3 p0, out vec3 p1, out vec3 p2) {
-    p0 = texelFetch(uLights, 4 * light + 1).xyz;
-    p1 = texelFetch(uLights, 4 * light + 2).xyz;
-    p2 = texelFetch(uLights, 4 * light + 3).xyz;
+    p0 = texelFetch(uLights, kLightTexels * light + 1).xyz;
+    p1 = texelFetch(uLights, kLightTexels * light + 2).xyz;
+    p2 = texelFetch(uLights, kLightTexels * light + 3).xyz;
 }
 
 // The primitive is the material.
@@ -249,20 +249,20 @@ float sphereLightPdf(int primitive, vec3 posWorld, float distance2, float cosLig
 
 // A spot's smooth falloff in cos between the outer and inner cones; a hard edge when they coincide.
 float spotFalloff(int light, vec3 wi, float cosInner) {
-    vec4 directionAndCosOuter = texelFetch(uLights, 4 * light + 2);
+    vec4 directionAndCosOuter = texelFetch(uLights, kLightTexels * light + 2);
     float cosAxis = dot(-wi, directionAndCosOuter.xyz);
     float cosOuter = directionAndCosOuter.w;
     return cosInner > cosOuter ? smoothstep(cosOuter, cosInner, cosAxis) : (cosAxis >= cosInner ? 1.0 : 0.0);
 }
 
 LightSample samplePointLight(int light, vec3 posWorld, bool spot) {
-    vec4 positionAndCosInner = texelFetch(uLights, 4 * light + 1);
+    vec4 positionAndCosInner = texelFetch(uLights, kLightTexels * light + 1);
     vec3 toLight = positionAndCosInner.xyz - posWorld;
     float distance2 = dot(toLight, toLight);
     if (distance2 == 0.0) return failedLightSample(); // the light lies on the surface: no direction
     float distance = sqrt(distance2);
     vec3 wi = toLight / distance;
-    vec3 intensity = texelFetch(uLights, 4 * light + 3).rgb;
+    vec3 intensity = texelFetch(uLights, kLightTexels * light + 3).rgb;
     if (spot) intensity *= spotFalloff(light, wi, positionAndCosInner.w);
     return LightSample(wi, distance, intensity / distance2, 1.0, true);
 }
@@ -271,8 +271,8 @@ LightSample samplePointLight(int light, vec3 posWorld, bool spot) {
 
 // texel 2: the unit direction toward the light; texel 3: the irradiance on a surface facing it.
 LightSample sampleDirectionalLight(int light) {
-    vec3 towardLight = texelFetch(uLights, 4 * light + 2).xyz;
-    vec3 irradiance = texelFetch(uLights, 4 * light + 3).rgb;
+    vec3 towardLight = texelFetch(uLights, kLightTexels * light + 2).xyz;
+    vec3 irradiance = texelFetch(uLights, kLightTexels * light + 3).rgb;
     return LightSample(towardLight, kInfinity, irradiance, 1.0, true);
 }
 

@@ -5,18 +5,15 @@
 // short explicit stack; shadow rays stop at the first hit. A triangle whose material cuts it away
 // there (alpha, surface_alpha.glsl) is no hit: both walks go on past it.
 #include "constants.glsl"
+#include "gpu_layout.glsl"
 #include "ray.glsl"
 #include "surface_alpha.glsl"
 
 uniform samplerBuffer uMeshNodes;     // per node: (boundsMin, firstOrRight), (boundsMax, primitive count)
-uniform samplerBuffer uMeshTriangles; // per triangle: 7 texels, see GpuTriangle
-uniform samplerBuffer uMeshInstances; // per instance: 8 texels, then the material tables
+uniform samplerBuffer uMeshTriangles; // per triangle: kTriangleTexels texels, see GpuTriangle
+uniform samplerBuffer uMeshInstances; // per instance: kInstanceTexels texels, then the material tables
 uniform int uMeshInstanceCount;
 uniform int uTopLevelRoot;            // -1: no meshes
-
-const int kBvhStackSize = 64; // renderer/geometry/Bvh.h: kMaxBvhDepth, so the stack never overflows
-const int kTriangleTexels = 7;
-const int kInstanceTexels = 8;
 
 struct MeshHit {
     int instance;

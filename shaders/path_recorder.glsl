@@ -26,23 +26,8 @@
 //  10  emitted radiance found here, pdf of the BSDF sample that found it (0 for the camera ray)
 //  11  the path's radiance (what estimateRadiance returned), distance to the first surface the
 //      shadow ray's line meets (where a blocked one stops; -1: none)
-const int kRecordFields = 12;
-
-// Flags of a vertex, bits of a float holding an exact integer.
-const uint kVertexExists = 1u;
-const uint kVertexCamera = 2u;
-const uint kVertexSurface = 4u;        // else, when it exists and is not the camera, it escaped
-const uint kVertexEmission = 8u;       // emission found here was counted (field 8 w, 9, 10)
-const uint kVertexLightSampled = 16u;  // a light sample of nonzero pdf and radiance was drawn
-const uint kVertexShadowTraced = 32u;  // ... and its shadow ray traced (f and sides allowed it)
-const uint kVertexShadowBlocked = 64u;
-const uint kVertexLightDelta = 128u;   // the sampled light is a point, spot or directional light
-const uint kVertexLightAtInfinity = 256u;
-const uint kVertexBsdfSampled = 512u;  // a BSDF sample of nonzero pdf was drawn
-const uint kVertexBsdfDelta = 1024u;
-const uint kVertexRoulette = 2048u;    // roulette was played after this vertex's sample
-const uint kVertexRouletteEnded = 4096u;
-const uint kVertexContinued = 8192u;   // a ray left this vertex
+// kRecordFields and the kVertex* flags: generated from renderer/RecordedPath.h.
+#include "recorded_path.glsl"
 
 int gRecordVertex;              // the vertex this fragment keeps
 vec4 gRecord[kRecordFields];    // what the hooks reported for it

@@ -1,5 +1,6 @@
 // Scene data as the GPU sees it: buffer textures filled by renderer/gpu/GpuScene.cpp. Buffer textures
 // (not SSBOs) keep the fragment path within OpenGL 4.1.
+#include "gpu_layout.glsl"
 #include "material.glsl"
 
 // Few buffers, since OpenGL 4.1 guarantees only 16 texture units to a fragment shader.
@@ -8,7 +9,7 @@ uniform samplerBuffer uQuads;          // per quad: kQuadTexels texels, see fetc
 uniform samplerBuffer uDisks;          // per disk: (center, radius), (unit normal, -)
 uniform isamplerBuffer uPrimitiveIds;  // per sphere, then quad, then disk: (material, light index or -1)
 uniform samplerBuffer uMaterials;      // per material: kMaterialTexels texels; then the texture records (textures.glsl)
-uniform samplerBuffer uLights;         // per light: 4 texels, see lights.glsl
+uniform samplerBuffer uLights;         // per light: kLightTexels texels, see lights.glsl
 uniform int uSphereCount;
 uniform int uQuadCount;
 uniform int uDiskCount;
@@ -18,7 +19,6 @@ uniform int uEnvironmentLight;         // light index of the environment, or -1 
 // GpuMaterial (GpuLayout.h): (color, ior), (radiance, roughness), (type, metallic, transmission,
 // alpha), (alpha mode, alpha cutoff, normal scale, emission texture), (base colour, roughness,
 // metallic, normal texture), then per texture slot in that order (scale.xy, offset.xy).
-const int kMaterialTexels = 10;
 
 Material fetchMaterial(int index) {
     vec4 colorAndIor = texelFetch(uMaterials, kMaterialTexels * index);
@@ -37,7 +37,6 @@ Material fetchMaterial(int index) {
 // tests over every quad are most of a path's work. GpuQuad (GpuLayout.h) mirrors the texels:
 //   (center, max |component| of center), (normal, -), (reciprocalU, its |x| + |y| + |z|),
 //   (reciprocalV, its |x| + |y| + |z|), (u, -), (v, -)
-const int kQuadTexels = 6;
 
 struct Quad {
     vec3 center;
@@ -79,5 +78,5 @@ ivec2 quadIds(int quad) { return texelFetch(uPrimitiveIds, uSphereCount + quad).
 ivec2 diskIds(int disk) { return texelFetch(uPrimitiveIds, uSphereCount + uQuadCount + disk).rg; }
 
 uvec2 lightKindAndPrimitive(int light) {
-    return uvec2(texelFetch(uLights, 4 * light).xy); // exact small integers, stored as float values
+    return uvec2(texelFetch(uLights, kLightTexels * light).xy); // exact small integers, stored as float values
 }

@@ -1,5 +1,5 @@
 // The scene's textures (renderer/gpu/GpuTextures.h): one RGBA8 atlas of square pages, and per
-// texture two texels of records after the materials in uMaterials: (page, origin x, origin y,
+// texture kTextureRecordTexels (two) texels of records after the materials in uMaterials: (page, origin x, origin y,
 // width), (height, wrap u, wrap v, flags: 1 sRGB, 2 bilinear). Texels are read with texelFetch
 // and filtered here, so that wrap modes work inside the atlas, sRGB is decoded per texel BEFORE
 // filtering, and every GPU returns the same value.
@@ -39,8 +39,8 @@ vec4 atlasTexel(vec4 place, ivec2 texel, bool srgb) {
 
 // The texture's value at uv: RGBA, colours linear.
 vec4 sampleTexture(int texture, vec2 uv) {
-    vec4 place = texelFetch(uMaterials, uTextureRecordStart + 2 * texture);
-    vec4 reading = texelFetch(uMaterials, uTextureRecordStart + 2 * texture + 1);
+    vec4 place = texelFetch(uMaterials, uTextureRecordStart + kTextureRecordTexels * texture);
+    vec4 reading = texelFetch(uMaterials, uTextureRecordStart + kTextureRecordTexels * texture + 1);
     ivec2 size = ivec2(int(place.w), int(reading.x));
     int wrapU = int(reading.y);
     int wrapV = int(reading.z);

@@ -7,15 +7,7 @@
 // uProbeMode 1 (pdf): fragment i reads point i from uPoints and writes (pdf(point), 0, 0, 0).
 #include "sampler.glsl"
 #include "warps.glsl"
-
-const int kWarpSquare = 0;
-const int kWarpUniformDiskPolar = 1;
-const int kWarpUniformDiskConcentric = 2;
-const int kWarpUniformSphere = 3;
-const int kWarpUniformCone = 4;
-const int kWarpUniformHemisphere = 5;
-const int kWarpCosineHemisphere = 6;
-const int kWarpUniformTriangle = 7;
+#include "warp_ids.glsl"
 
 uniform int uProbeMode;
 uniform int uWarp;

@@ -1,6 +1,7 @@
 // The enum tables: names round-trip, and the GLSL side gets its constants from them only.
 #include "Backend.h"
 #include "DebugView.h"
+#include "GeneratedGlsl.h"
 #include "GlslEnums.h"
 #include "GpuScene.h"
 #include "Integrator.h"
@@ -11,6 +12,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -52,32 +54,47 @@ TEST(EnumTables, NamesAreTheOnesUsersType) {
     EXPECT_EQ(backendNames().names(), (Names{"fragment", "compute"}));
 }
 
-std::string shaderSources() {
-    std::string text;
+// Every shader file but the checked-in copies of generated includes: name -> text.
+std::map<std::string, std::string> handWrittenShaders() {
+    std::set<std::string> generated;
+    for (const testing::GeneratedInclude& include : testing::generatedIncludes()) generated.insert(include.name);
+    std::map<std::string, std::string> shaders;
     for (const auto& file : std::filesystem::directory_iterator(PTVIEW_SHADER_DIR)) {
+        const std::string name = file.path().filename().string();
+        if (generated.count(name)) continue;
         std::ifstream in(file.path());
         std::ostringstream content;
         content << in.rdbuf();
-        text += content.str();
+        shaders[name] = content.str();
     }
-    return text;
+    return shaders;
 }
 
-// No shader defines a generated constant itself: a hand-written copy could disagree with the
-// table. (A misspelt name fails to compile in the render tests, which run every integrator,
-// sampler, view and tone mapper.)
+// No shader defines a generated constant or the frame block itself: a hand-written copy could
+// disagree with the C++. (A misspelt name fails to compile in the render tests, which run every
+// integrator, sampler, view and tone mapper.)
 TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
-    const std::string shaders = shaderSources();
-    const std::string generated = glslEnumConstants();
-    static const std::regex definition(R"(const uint (k\w+) = (\d+)u;)");
+    const std::map<std::string, std::string> shaders = handWrittenShaders();
+    static const std::regex definition(R"(const\s+\w+\s+(k\w+)\s*=)");
     int constants = 0;
-    for (std::sregex_iterator it(generated.begin(), generated.end(), definition), end; it != end; ++it) {
-        const std::string name = (*it)[1];
-        ++constants;
-        EXPECT_FALSE(std::regex_search(shaders, std::regex("const\\s+uint\\s+" + name + "\\b")))
-            << name << " is defined by hand in a shader";
+    for (const testing::GeneratedInclude& include : testing::generatedIncludes()) {
+        for (std::sregex_iterator it(include.text.begin(), include.text.end(), definition), end; it != end; ++it) {
+            const std::string name = (*it)[1];
+            ++constants;
+            const std::regex byHand("const\\s+\\w+\\s+" + name + "\\b");
+            for (const auto& [file, text] : shaders)
+                EXPECT_FALSE(std::regex_search(text, byHand))
+                    << file << " defines " << name << ", which " << include.name << " has (generated from C++)";
+        }
     }
-    EXPECT_EQ(constants, 4 + 4 + 4 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
+    for (const auto& [file, text] : shaders)
+        EXPECT_FALSE(std::regex_search(text, std::regex(R"(uniform\s+FrameBlock\b)")))
+            << file << " declares FrameBlock, which frame_uniforms.glsl has (generated from C++)";
+    const std::string enums = glslEnumConstants();
+    static const std::regex enumDefinition(R"(const uint k\w+ = \d+u;)");
+    EXPECT_EQ(std::distance(std::sregex_iterator(enums.begin(), enums.end(), enumDefinition), std::sregex_iterator()),
+              4 + 4 + 4 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
+    EXPECT_GT(constants, 60); // and the layouts' numbers
 }
 
 } // namespace

@@ -8,12 +8,16 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 namespace ptview {
 
-// shaders/frame_uniforms.glsl, std140: a vec3 and the scalar after it share one 16-byte slot.
-struct FrameUniforms {
+// The per-frame values of every pass: the std140 uniform block FrameBlock, whose GLSL
+// (frame_uniforms.glsl) is generated from kFrameBlockFields below, so C++ writes each field at
+// the offset GLSL reads it from. alignas(16): std140 rounds a block up to a whole vec4.
+struct alignas(16) FrameUniforms {
     glm::vec3 cameraEye;
     float tanHalfFovY;
     glm::vec3 cameraRight;
@@ -25,18 +29,87 @@ struct FrameUniforms {
     glm::vec3 environmentRadiance;
     std::int32_t maxDepth;
     glm::ivec2 imageSize;
-    std::uint32_t samplerMode;  // SamplerMode
-    std::uint32_t sampleBudget; // samples per pixel the grid and stratified patterns are sized for
-    std::uint32_t integrator;   // Integrator
-    float sceneRadius;          // bounding sphere of the geometry, for ray offsets (intersect.glsl)
-    float apertureRadius;       // thin lens, metres; 0: a pinhole
-    float focusDistance;        // metres along the view direction
-    float radianceClamp;        // largest component of one path vertex's contribution; 0: no clamp
-    std::int32_t lightPathBounces; // k of the light-path views exactly / at most k (light_paths.glsl)
-    std::uint32_t samplesPerPass; // samples each pixel adds in one pass (pathtrace_sample.glsl)
-    std::uint32_t pad3;
+    std::uint32_t samplerMode; // SamplerMode
+    std::uint32_t sampleBudget;
+    float sceneRadius;
+    float apertureRadius;
+    float focusDistance;
+    float radianceClamp;
+    std::int32_t lightPathBounces;
+    std::uint32_t samplesPerPass;
 };
-static_assert(sizeof(FrameUniforms) == 128, "FrameUniforms must match the std140 FrameBlock");
+static_assert(sizeof(FrameUniforms) == 128, "eight vec4 slots");
+
+// One member of a std140 uniform block: its GLSL declaration and where C++ keeps it.
+struct UniformField {
+    std::string_view glslType; // float, int, uint, ivec2 or vec3
+    const char* name;
+    std::size_t offset;
+    std::size_t size;
+    const char* comment; // for the generated GLSL; "" for none
+};
+
+// FrameBlock, in declaration order; what each value means is said here once, for both sides.
+inline constexpr UniformField kFrameBlockFields[] = {
+    {"vec3", "uCameraEye", offsetof(FrameUniforms, cameraEye), sizeof(FrameUniforms::cameraEye), ""},
+    {"float", "uTanHalfFovY", offsetof(FrameUniforms, tanHalfFovY), sizeof(FrameUniforms::tanHalfFovY), ""},
+    {"vec3", "uCameraRight", offsetof(FrameUniforms, cameraRight), sizeof(FrameUniforms::cameraRight), ""},
+    {"float", "uAspect", offsetof(FrameUniforms, aspect), sizeof(FrameUniforms::aspect), "width / height"},
+    {"vec3", "uCameraUp", offsetof(FrameUniforms, cameraUp), sizeof(FrameUniforms::cameraUp), ""},
+    {"uint", "uFrameIndex", offsetof(FrameUniforms, frameIndex), sizeof(FrameUniforms::frameIndex),
+     "samples already accumulated"},
+    {"vec3", "uCameraForward", offsetof(FrameUniforms, cameraForward), sizeof(FrameUniforms::cameraForward), ""},
+    {"uint", "uSeed", offsetof(FrameUniforms, seed), sizeof(FrameUniforms::seed), ""},
+    {"vec3", "uEnvironmentRadiance", offsetof(FrameUniforms, environmentRadiance),
+     sizeof(FrameUniforms::environmentRadiance), ""},
+    {"int", "uMaxDepth", offsetof(FrameUniforms, maxDepth), sizeof(FrameUniforms::maxDepth),
+     "bounces; 0 shows emitters only"},
+    {"ivec2", "uImageSize", offsetof(FrameUniforms, imageSize), sizeof(FrameUniforms::imageSize), ""},
+    {"uint", "uSamplerMode", offsetof(FrameUniforms, samplerMode), sizeof(FrameUniforms::samplerMode),
+     "SamplerMode; see sampler.glsl"},
+    {"uint", "uSampleBudget", offsetof(FrameUniforms, sampleBudget), sizeof(FrameUniforms::sampleBudget),
+     "samples per pixel the grid and stratified patterns are sized for"},
+    {"float", "uSceneRadius", offsetof(FrameUniforms, sceneRadius), sizeof(FrameUniforms::sceneRadius),
+     "of the scene's bounding sphere: sets ray offsets (intersect.glsl)"},
+    {"float", "uApertureRadius", offsetof(FrameUniforms, apertureRadius), sizeof(FrameUniforms::apertureRadius),
+     "thin lens (camera_thin_lens.glsl), metres; 0: a pinhole"},
+    {"float", "uFocusDistance", offsetof(FrameUniforms, focusDistance), sizeof(FrameUniforms::focusDistance),
+     "metres along the view direction"},
+    {"float", "uRadianceClamp", offsetof(FrameUniforms, radianceClamp), sizeof(FrameUniforms::radianceClamp),
+     "largest component of one path vertex's contribution; 0: no clamp"},
+    {"int", "uLightPathBounces", offsetof(FrameUniforms, lightPathBounces), sizeof(FrameUniforms::lightPathBounces),
+     "k of the light-path views exactly / at most k (light_paths.glsl)"},
+    {"uint", "uSamplesPerPass", offsetof(FrameUniforms, samplesPerPass), sizeof(FrameUniforms::samplesPerPass),
+     "samples each pixel adds in this pass (pathtrace_sample.glsl)"},
+};
+
+namespace std140 {
+
+constexpr std::size_t sizeOf(std::string_view glslType) {
+    return glslType == "vec3" ? 12 : glslType == "ivec2" ? 8 : 4;
+}
+constexpr std::size_t alignmentOf(std::string_view glslType) {
+    return glslType == "vec3" ? 16 : glslType == "ivec2" ? 8 : 4;
+}
+constexpr std::size_t roundUp(std::size_t n, std::size_t alignment) { return (n + alignment - 1) / alignment * alignment; }
+
+// Whether GLSL, placing `fields` one after another by the std140 rules, puts each where C++ has
+// it, and the block's size is `blockSize`: then no field of the C++ struct is left out either.
+template <std::size_t N>
+constexpr bool matches(const UniformField (&fields)[N], std::size_t blockSize) {
+    std::size_t end = 0;
+    for (const UniformField& field : fields) {
+        if (field.size != sizeOf(field.glslType) || field.offset != roundUp(end, alignmentOf(field.glslType)))
+            return false;
+        end = field.offset + field.size;
+    }
+    return blockSize == roundUp(end, 16);
+}
+
+} // namespace std140
+
+static_assert(std140::matches(kFrameBlockFields, sizeof(FrameUniforms)),
+              "kFrameBlockFields must list FrameUniforms' members in order, at their std140 offsets");
 
 // shaders/scene_data.glsl: one texel (RGBA32F) of a buffer texture.
 struct GpuSphere {
@@ -57,7 +130,11 @@ struct GpuQuad {
     glm::vec4 u;           // w unused
     glm::vec4 v;           // w unused
 };
-static_assert(sizeof(GpuQuad) == 96, "six RGBA32F texels (kQuadTexels)");
+static_assert(sizeof(GpuQuad) == 96, "six RGBA32F texels");
+
+// Texels per record: record i of a buffer starts at texel kQuadTexels * i. These sizes are
+// generated into the GLSL (gpu_layout.glsl), which never spells them.
+constexpr int kQuadTexels = sizeof(GpuQuad) / 16;
 
 struct GpuDisk {
     glm::vec3 center;
@@ -89,6 +166,7 @@ struct GpuLight {
     glm::vec4 texels[3];
 };
 static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
+constexpr int kLightTexels = sizeof(GpuLight) / 16;
 
 // shaders/scene_data.glsl: ten RGBA32F texels per material. Texture indices are into
 // Scene::textures, -1 for none; slots (scale.xy, offset.xy) in the order base colour, roughness,
@@ -110,6 +188,7 @@ struct GpuMaterial {
     glm::vec4 slots[5];
 };
 static_assert(sizeof(GpuMaterial) == 160, "ten RGBA32F texels");
+constexpr int kMaterialTexels = sizeof(GpuMaterial) / 16;
 
 // shaders/textures.glsl: two RGBA32F texels per texture, after the materials in their buffer.
 // Where the texture lies in the atlas (layer, texel origin, size) and how it is read.
@@ -124,5 +203,6 @@ struct GpuTextureRecord {
     float flags; // 1: sRGB, 2: bilinear
 };
 static_assert(sizeof(GpuTextureRecord) == 32, "two RGBA32F texels");
+constexpr int kTextureRecordTexels = sizeof(GpuTextureRecord) / 16;
 
 } // namespace ptview

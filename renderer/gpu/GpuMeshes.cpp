@@ -132,7 +132,7 @@ void GpuMeshes::upload(const Scene& scene) {
         placement[built.get()] = {nodeOffset, triangleOffset};
         for (const BvhNode& node : built->bvh.nodes) nodes.push_back(placed(node, nodeOffset, triangleOffset));
         // Tangent texels follow all triangles' texels: the index becomes absolute in the buffer.
-        std::size_t tangentBase = totalTriangles * (sizeof(GpuTriangle) / 16) + tangents.size();
+        std::size_t tangentBase = totalTriangles * kTriangleTexels + tangents.size();
         for (GpuTriangle triangle : built->triangles) {
             if (triangle.tangentTexel >= 0.0f)
                 triangle.tangentTexel = exactFloat(tangentBase + static_cast<std::size_t>(triangle.tangentTexel));
@@ -182,7 +182,7 @@ void GpuMeshes::upload(const Scene& scene) {
     lastBuildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     textures_[0].fill(GL_RGBA32F, 16, nodes);
-    std::vector<glm::vec4> triangleTexels(triangles.size() * (sizeof(GpuTriangle) / 16));
+    std::vector<glm::vec4> triangleTexels(triangles.size() * kTriangleTexels);
     if (!triangles.empty()) std::memcpy(triangleTexels.data(), triangles.data(), triangles.size() * sizeof(GpuTriangle));
     triangleTexels.insert(triangleTexels.end(), tangents.begin(), tangents.end());
     textures_[1].fill(GL_RGBA32F, 16, triangleTexels);
@@ -194,9 +194,7 @@ bool GpuMeshes::tangentsChanged(const Scene& scene) const {
 }
 
 void GpuMeshes::uploadInstances(const std::vector<std::int32_t>& lightBase) {
-    // Per instance: world-to-object rows, object-to-world rows, (bottom root, first triangle,
-    // material table offset, first light or -1), and a spare texel; then the material tables, one
-    // material index per texel.
+    // Per instance its kInstanceTexels; then the material tables, one material index per texel.
     std::vector<glm::vec4> texels;
     std::vector<float> tables;
     for (std::size_t i = 0; i < instances_.size(); ++i) {

@@ -42,6 +42,11 @@ struct GpuTriangle {
     glm::vec4 v1U2V2;   // (v1, u2, v2, -)
 };
 static_assert(sizeof(GpuTriangle) == 112, "seven RGBA32F texels");
+constexpr int kTriangleTexels = sizeof(GpuTriangle) / 16; // generated into gpu_layout.glsl
+
+// Texels per instance: world-to-object and object-to-world rows (three each), (bottom-level root,
+// first triangle, material table offset, first light or -1), and a spare texel (uploadInstances).
+constexpr int kInstanceTexels = 8;
 
 // An instance as the light table sees it: its triangles in world space come from these.
 struct MeshInstance {
@@ -57,7 +62,6 @@ public:
     static constexpr int kTextureCount = 3;
     // The sampler uniforms of shaders/mesh_intersect.glsl, in the order bind() uses units.
     static const char* const kSamplerNames[kTextureCount];
-    static constexpr int kInstanceTexels = 8;
 
     // Builds (or reuses, for mesh data seen before) each mesh's BVH, the top-level BVH over the
     // mesh shapes, and uploads nodes and triangles. Instances follow with uploadInstances, once

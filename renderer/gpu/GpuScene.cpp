@@ -294,11 +294,11 @@ void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);
     // The texture records follow the materials in one buffer (textures.glsl), which saves a unit.
-    std::vector<glm::vec4> texels(primitives.materials.size() * (sizeof(GpuMaterial) / 16) +
-                                  atlas_.records().size() * (sizeof(GpuTextureRecord) / 16));
+    std::vector<glm::vec4> texels(primitives.materials.size() * kMaterialTexels +
+                                  atlas_.records().size() * kTextureRecordTexels);
     if (!primitives.materials.empty())
         std::memcpy(texels.data(), primitives.materials.data(), primitives.materials.size() * sizeof(GpuMaterial));
-    textureRecordStart_ = static_cast<int>(primitives.materials.size() * (sizeof(GpuMaterial) / 16));
+    textureRecordStart_ = static_cast<int>(primitives.materials.size() * kMaterialTexels);
     if (!atlas_.records().empty())
         std::memcpy(texels.data() + textureRecordStart_, atlas_.records().data(),
                     atlas_.records().size() * sizeof(GpuTextureRecord));

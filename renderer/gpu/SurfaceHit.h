@@ -7,7 +7,7 @@
 
 namespace ptview {
 
-// The kind of primitive the GPU intersected; the numbers of shaders/intersect.glsl's kPrimitive*.
+// The kind of primitive the GPU intersected; generated as kPrimitive* into gpu_layout.glsl.
 enum class PrimitiveKind : int { Sphere = 0, Quad = 1, Disk = 2, MeshInstance = 3 };
 
 struct SurfaceHit {

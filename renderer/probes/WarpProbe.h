@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ptview {
@@ -33,6 +34,9 @@ struct WarpSample {
     float pdf = 0.0f;   // the warp's density at point
     glm::vec2 inverse;  // inverse(warp(u)); equals u where the inverse is exact
 };
+
+// The text of "warp_ids.glsl": uWarp's values, kWarpSquare ... (Warp, renderer/geometry/Warp.h).
+std::string warpIdsGlsl();
 
 class WarpProbe {
 public:

@@ -1,0 +1,29 @@
+#pragma once
+// Every include generated from C++ layouts and tables, by the name shaders #include it: the
+// checked-in copies in shaders/ must equal these texts (GeneratedGlslTest), and no other shader
+// may define a constant they define (EnumTableTest).
+#include "GlslEnums.h"
+#include "PathRecorder.h"
+#include "WarpProbe.h"
+
+#include <string>
+#include <vector>
+
+namespace ptview::testing {
+
+struct GeneratedInclude {
+    std::string name;
+    std::string text;
+};
+
+inline std::vector<GeneratedInclude> generatedIncludes() {
+    return {
+        {"enums.glsl", glslEnumConstants()},
+        {"gpu_layout.glsl", glslLayoutConstants()},
+        {"frame_uniforms.glsl", glslFrameBlock()},
+        {"recorded_path.glsl", recordedPathGlsl()},
+        {"warp_ids.glsl", warpIdsGlsl()},
+    };
+}
+
+} // namespace ptview::testing
