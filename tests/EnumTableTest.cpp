@@ -5,6 +5,8 @@
 #include "GpuScene.h"
 #include "Integrator.h"
 #include "SamplerMode.h"
+#include "Scene.h"
+#include "Texture.h"
 #include "ToneMapper.h"
 
 #include <gtest/gtest.h>
@@ -38,6 +40,8 @@ TEST(EnumTables, NamesAndValuesAreUniqueAndRoundTrip) {
     expectConsistent(samplerModeNames());
     expectConsistent(debugViewNames());
     expectConsistent(toneMapperNames());
+    expectConsistent(alphaModeNames());
+    expectConsistent(textureWrapNames());
     expectConsistent(backendNames());
     expectConsistent(lightKindNames());
 }
@@ -50,6 +54,9 @@ TEST(EnumTables, NamesAreTheOnesUsersType) {
     EXPECT_EQ(debugViewNames().names(), (Names{"radiance", "normals", "albedo", "depth"}));
     EXPECT_EQ(toneMapperNames().names(), (Names{"reinhard", "aces", "clamp"}));
     EXPECT_EQ(backendNames().names(), (Names{"fragment", "compute"}));
+    EXPECT_EQ(alphaModeNames().names(), (Names{"opaque", "mask", "blend"})); // glTF's, in lower case
+    EXPECT_EQ(textureWrapNames().names(), (Names{"repeat", "clamp", "mirror"}));
+    EXPECT_EQ(textureWrapNames().nameList(), "repeat, clamp, mirror"); // the loader's message lists them so
 }
 
 std::string shaderSources() {
@@ -63,6 +70,16 @@ std::string shaderSources() {
     return text;
 }
 
+// The numbers the GPU records hold (GpuScene.cpp, GpuTextures.cpp cast the enums) are the ones
+// surface_alpha.glsl and textures.glsl compare with.
+TEST(GlslEnums, AlphaAndWrapModesAreNumberedAsTheGpuRecordsHoldThem) {
+    const std::string generated = glslEnumConstants();
+    for (const char* constant : {"const uint kAlphaModeOpaque = 0u;", "const uint kAlphaModeMask = 1u;",
+                                 "const uint kAlphaModeBlend = 2u;", "const uint kTextureWrapRepeat = 0u;",
+                                 "const uint kTextureWrapClampToEdge = 1u;", "const uint kTextureWrapMirroredRepeat = 2u;"})
+        EXPECT_NE(generated.find(constant), std::string::npos) << constant;
+}
+
 // No shader defines a generated constant itself: a hand-written copy could disagree with the
 // table. (A misspelt name fails to compile in the render tests, which run every integrator,
 // sampler, view and tone mapper.)
@@ -74,10 +91,12 @@ TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
     for (std::sregex_iterator it(generated.begin(), generated.end(), definition), end; it != end; ++it) {
         const std::string name = (*it)[1];
         ++constants;
-        EXPECT_FALSE(std::regex_search(shaders, std::regex("const\\s+uint\\s+" + name + "\\b")))
+        // int as well: the alpha modes and wrap modes were hand-written ints before their tables.
+        EXPECT_FALSE(std::regex_search(shaders, std::regex("const\\s+u?int\\s+" + name + "\\b")))
             << name << " is defined by hand in a shader";
     }
-    EXPECT_EQ(constants, 4 + 4 + 4 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
+    // integrators, samplers, views, tone mappers, light kinds, materials, light paths, alpha modes, wrap modes
+    EXPECT_EQ(constants, 4 + 4 + 4 + 3 + 8 + 9 + 6 + 3 + 3);
 }
 
 } // namespace
