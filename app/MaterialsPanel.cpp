@@ -1,7 +1,7 @@
 #include "MaterialsPanel.h"
 
 #include "ImageTexture.h"
-#include "MaterialSchema.h"
+#include "MaterialInputs.h"
 #include "MaterialTextures.h"
 #include "PrintableText.h"
 #include "SceneLoader.h"
@@ -200,28 +200,17 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
             changed = true;
         itemTooltip("radiance the surface emits from its front side, on top of what it reflects (W sr^-1 m^-2)");
     }
-    if (current.hasIor) {
-        changed |= ImGui::SliderFloat("ior", &material.ior, ranges::kIor.panelLo, ranges::kIor.panelHi, "%.3f",
+    // A slider per number the type takes (MaterialInputs.h), over its range's panel span, saying
+    // what the range's table says; the normal map's scale only where there is a normal map.
+    for (const MaterialInput& input : kMaterialInputs) {
+        if (!input.panelLabel || !input.takenBy(current)) continue;
+        if (input.write == InputWrite::WithTexture && !(material.*input.slot).used()) continue;
+        float& value = material.*input.number;
+        changed |= ImGui::SliderFloat(input.panelLabel, &value, input.range->panelLo, input.range->panelHi, "%.3f",
                                       ImGuiSliderFlags_AlwaysClamp);
-        itemTooltip("index of refraction, inside / outside");
-    }
-    if (current.hasRoughness) {
-        changed |= ImGui::SliderFloat("roughness", &material.roughness, ranges::kRoughness.panelLo,
-                                      ranges::kRoughness.panelHi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        itemTooltip("GGX alpha = roughness^2; 0 is perfectly smooth");
-        ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
-    }
-    if (material.type == MaterialType::Principled) {
-        // Each slider spans its range's panel span, and says what the range's table says.
-        auto factorSlider = [](const char* label, float& value, const SceneRange& range) {
-            bool edited = ImGui::SliderFloat(label, &value, range.panelLo, range.panelHi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            itemTooltip(range.description);
-            return edited;
-        };
-        changed |= factorSlider("metallic", material.metallic, ranges::kMetallic);
-        changed |= factorSlider("transmission", material.transmission, ranges::kTransmission);
-        changed |= factorSlider("alpha", material.alpha, ranges::kAlpha);
-        if (material.normalTexture.used()) changed |= factorSlider("normal scale", material.normalScale, ranges::kNormalScale);
+        itemTooltip(input.range->description);
+        if (input.number == &Material::roughness)
+            ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
     }
     return changed;
 }

@@ -76,11 +76,14 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     patternNote(model);
 
     int perFrame = model.maxSamplesPerFrame;
-    if (ImGui::SliderInt("samples/frame", &perFrame, 0, 64, perFrame == 0 ? "auto" : "%d"))
+    // 0 is "auto", below the range (as the script's word is).
+    if (ImGui::SliderInt("samples/frame", &perFrame, 0, static_cast<int>(settingRanges::kSamplesPerFrame.panelHi),
+                         perFrame == 0 ? "auto" : "%d"))
         model.maxSamplesPerFrame = perFrame;
     itemTooltip("most samples per pixel per displayed frame; auto: as many as fit in 30 ms of GPU time.\n"
             "A slow GPU renders a sample in tiles over several frames, so the window stays responsive.");
-    ImGui::SliderInt("target spp", &model.targetSamples, 0, 65536, model.targetSamples == 0 ? "none" : "%d",
+    ImGui::SliderInt("target spp", &model.targetSamples, static_cast<int>(settingRanges::kTargetSamples.panelLo),
+                     static_cast<int>(settingRanges::kTargetSamples.panelHi), model.targetSamples == 0 ? "none" : "%d",
                      ImGuiSliderFlags_Logarithmic);
     itemTooltip("stop accumulating at this many samples per pixel (grid and stratified samplers are fully\n"
             "stratified there); 0: never stop");
@@ -98,7 +101,8 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     const PathTracer& tracer = session.tracer(ViewerSession::Side::Left);
     ImGui::TextDisabled("%d programs compiled (hover: this scene's features)", tracer.programsCompiled());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tracer.features().describe().c_str());
-    ImGui::SliderFloat("resolution", &model.resolutionScale, 0.125f, 2.0f, "%.3f x");
+    ImGui::SliderFloat("resolution", &model.resolutionScale, settingRanges::kResolutionScale.panelLo,
+                       settingRanges::kResolutionScale.panelHi, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
     enumCombo("view", debugViewNames(), settings.debugView);

@@ -7,15 +7,11 @@
 // intersect.glsl, triangles in the BVH walks of mesh_intersect.glsl), so a cut-away hit is skipped
 // and the walk goes on to what lies behind it. A program for a scene without MASK or BLEND gets
 // surface_alpha_none.glsl instead (specialization): there every surface is always there.
+#include "enums.glsl"
 #include "frame_uniforms.glsl"
 #include "rng.glsl"
 #include "scene_data.glsl"
 #include "textures.glsl"
-
-// ptview::AlphaMode (renderer/scene/Scene.h)
-const int kAlphaModeOpaque = 0;
-const int kAlphaModeMask = 1;
-const int kAlphaModeBlend = 2;
 
 // A number in [0, 1) that is new for each hit point and frame: BLEND's pass-through decision.
 float alphaBlendRandom(vec3 posWorld) {
@@ -27,7 +23,7 @@ float alphaBlendRandom(vec3 posWorld) {
 bool surfacePresent(int material, vec2 uv, vec3 posWorld) {
     // (alpha mode, alpha cutoff, normal scale, emission texture); alpha is texel 2's w.
     vec4 modeAndCutoff = texelFetch(uMaterials, kMaterialTexels * material + 3);
-    int mode = int(modeAndCutoff.x);
+    uint mode = uint(modeAndCutoff.x); // kAlphaMode* (enums.glsl)
     if (mode == kAlphaModeOpaque) return true;
     float coverage = texelFetch(uMaterials, kMaterialTexels * material + 2).w;
     int baseColorTexture = int(texelFetch(uMaterials, kMaterialTexels * material + 4).x);

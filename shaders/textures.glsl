@@ -7,18 +7,14 @@
 // Texture coordinates follow glTF: (0, 0) is the top-left corner of the image as stored (its
 // first row), u right, v down; texel (i, j) covers [i, i + 1] x [j, j + 1] / size, and bilinear
 // filtering interpolates between texel centres.
+#include "enums.glsl"
 #include "scene_data.glsl"
 
 uniform sampler2DArray uTextureAtlas;
 uniform int uTextureRecordStart; // texel of texture 0's record in uMaterials
 
-// ptview::TextureWrap (renderer/scene/Texture.h)
-const int kTextureWrapRepeat = 0;
-const int kTextureWrapClampToEdge = 1;
-const int kTextureWrapMirroredRepeat = 2;
-
-// A texel index in [0, n) for any integer i, as the wrap mode says.
-int wrapTexel(int i, int n, int mode) {
+// A texel index in [0, n) for any integer i, as the wrap mode (kTextureWrap*, enums.glsl) says.
+int wrapTexel(int i, int n, uint mode) {
     if (mode == kTextureWrapClampToEdge) return clamp(i, 0, n - 1);
     int period = mode == kTextureWrapMirroredRepeat ? 2 * n : n;
     int m = i - period * int(floor(float(i) / float(period)));
@@ -42,8 +38,8 @@ vec4 sampleTexture(int texture, vec2 uv) {
     vec4 place = texelFetch(uMaterials, uTextureRecordStart + kTextureRecordTexels * texture);
     vec4 reading = texelFetch(uMaterials, uTextureRecordStart + kTextureRecordTexels * texture + 1);
     ivec2 size = ivec2(int(place.w), int(reading.x));
-    int wrapU = int(reading.y);
-    int wrapV = int(reading.z);
+    uint wrapU = uint(reading.y);
+    uint wrapV = uint(reading.z);
     int flags = int(reading.w);
     bool srgb = (flags & 1) != 0;
     if (any(isnan(uv)) || any(isinf(uv))) uv = vec2(0.0);

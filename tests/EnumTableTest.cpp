@@ -6,6 +6,8 @@
 #include "GpuScene.h"
 #include "Integrator.h"
 #include "SamplerMode.h"
+#include "Scene.h"
+#include "Texture.h"
 #include "ToneMapper.h"
 
 #include <gtest/gtest.h>
@@ -40,6 +42,8 @@ TEST(EnumTables, NamesAndValuesAreUniqueAndRoundTrip) {
     expectConsistent(samplerModeNames());
     expectConsistent(debugViewNames());
     expectConsistent(toneMapperNames());
+    expectConsistent(alphaModeNames());
+    expectConsistent(textureWrapNames());
     expectConsistent(backendNames());
     expectConsistent(lightKindNames());
 }
@@ -52,6 +56,9 @@ TEST(EnumTables, NamesAreTheOnesUsersType) {
     EXPECT_EQ(debugViewNames().names(), (Names{"radiance", "normals", "albedo", "depth"}));
     EXPECT_EQ(toneMapperNames().names(), (Names{"reinhard", "aces", "clamp"}));
     EXPECT_EQ(backendNames().names(), (Names{"fragment", "compute"}));
+    EXPECT_EQ(alphaModeNames().names(), (Names{"opaque", "mask", "blend"})); // glTF's, in lower case
+    EXPECT_EQ(textureWrapNames().names(), (Names{"repeat", "clamp", "mirror"}));
+    EXPECT_EQ(textureWrapNames().nameList(), "repeat, clamp, mirror"); // the loader's message lists them so
 }
 
 // Every shader file but the checked-in copies of generated includes: name -> text.
@@ -68,6 +75,16 @@ std::map<std::string, std::string> handWrittenShaders() {
         shaders[name] = content.str();
     }
     return shaders;
+}
+
+// The numbers the GPU records hold (GpuScene.cpp, GpuTextures.cpp cast the enums) are the ones
+// surface_alpha.glsl and textures.glsl compare with.
+TEST(GlslEnums, AlphaAndWrapModesAreNumberedAsTheGpuRecordsHoldThem) {
+    const std::string generated = glslEnumConstants();
+    for (const char* constant : {"const uint kAlphaModeOpaque = 0u;", "const uint kAlphaModeMask = 1u;",
+                                 "const uint kAlphaModeBlend = 2u;", "const uint kTextureWrapRepeat = 0u;",
+                                 "const uint kTextureWrapClampToEdge = 1u;", "const uint kTextureWrapMirroredRepeat = 2u;"})
+        EXPECT_NE(generated.find(constant), std::string::npos) << constant;
 }
 
 // No shader defines a generated constant or the frame block itself: a hand-written copy could
@@ -93,7 +110,8 @@ TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
     const std::string enums = glslEnumConstants();
     static const std::regex enumDefinition(R"(const uint k\w+ = \d+u;)");
     EXPECT_EQ(std::distance(std::sregex_iterator(enums.begin(), enums.end(), enumDefinition), std::sregex_iterator()),
-              4 + 4 + 4 + 3 + 8 + 9 + 6); // integrators, samplers, views, tone mappers, light kinds, materials, light paths
+              4 + 4 + 4 + 3 + 8 + 9 + 6 + 3 + 3); // integrators, samplers, views, tone mappers, light kinds, materials,
+                                              // light paths, alpha modes, wrap modes
     EXPECT_GT(constants, 60); // and the layouts' numbers
 }
 

@@ -8,7 +8,8 @@
 // from anyone and tinygltf trusts it. Errors are SceneError "FILE: /json/pointer: reason".
 
 #include "ReadScope.h"
-#include "SceneLoader.h"
+#include "Scene.h"
+#include "SceneError.h"
 
 #include <glm/glm.hpp>
 

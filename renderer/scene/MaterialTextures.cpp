@@ -1,6 +1,6 @@
 #include "MaterialTextures.h"
 
-#include "SceneLoader.h"
+#include "SceneError.h"
 #include "TextureLoader.h"
 
 #include <utility>

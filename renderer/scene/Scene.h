@@ -2,6 +2,7 @@
 // The scene model: what a scene file describes, validated and in world units (metres, Y up).
 // The UI edits this model and the renderer uploads it; neither knows about JSON.
 
+#include "EnumTable.h"
 #include "SceneRanges.h"
 #include "Texture.h"
 #include "TriangleMesh.h"
@@ -47,8 +48,19 @@ CameraFrame cameraFrame(const CameraDesc& camera);
 // The order is the GPU's: shaders/material.glsl numbers the types the same way.
 enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic, Principled };
 
-// Principled: how the base colour's alpha cuts the surface (glTF's alphaMode).
+// Principled: how the base colour's alpha cuts the surface (glTF's alphaMode, whose names are
+// these in capitals; shaders/surface_alpha.glsl reads the constants).
 enum class AlphaMode { Opaque, Mask, Blend };
+
+inline const EnumTable<AlphaMode>& alphaModeNames() {
+    static const EnumTable<AlphaMode> table = {
+        {AlphaMode::Opaque, "opaque", nullptr, "the surface is everywhere", "kAlphaModeOpaque"},
+        {AlphaMode::Mask, "mask", nullptr, "cut away where alpha is below the cutoff", "kAlphaModeMask"},
+        {AlphaMode::Blend, "blend", nullptr, "a ray passes with probability 1 - alpha (stochastic transparency)",
+         "kAlphaModeBlend"},
+    };
+    return table;
+}
 
 struct Material {
     std::string name;

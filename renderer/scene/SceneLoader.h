@@ -3,19 +3,12 @@
 
 #include "ReadScope.h"
 #include "Scene.h"
+#include "SceneError.h"
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 
 namespace ptview {
-
-// A scene file that cannot be used. what() reads "FILE: /json/pointer: reason" or, for
-// malformed JSON, "FILE:LINE:COLUMN: reason", on one line.
-class SceneError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // Throws SceneError naming the file and the place in it. Every file the scene names (meshes, their
 // MTL libraries and maps, textures, glTF files, the environment map) must be one `scope` allows.

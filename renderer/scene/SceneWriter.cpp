@@ -8,7 +8,7 @@
 
 #include "GltfLoader.h"
 #include "ImageIO.h"
-#include "MaterialSchema.h"
+#include "MaterialInputs.h"
 #include "SceneLoader.h"
 #include "SceneRanges.h"
 #include "LightSchema.h"
@@ -201,51 +201,41 @@ Json texturedJson(Json factor, const TextureSlot& slot, const Scene& scene, cons
     const SceneTexture& texture = scene.textures[static_cast<std::size_t>(slot.texture)];
     if (texture.file.empty())
         fail(pointer, "the texture " + texture.source + " is embedded in another file, which a scene file cannot name");
-    static const char* const wrapNames[] = {"repeat", "clamp", "mirror"};
     Json json;
     json["texture"] = relativePathText(texture.file, scene.path.parent_path());
     json["factor"] = std::move(factor);
     if (slot.scale != glm::vec2(1.0f)) json["scale"] = Json::array({slot.scale.x, slot.scale.y});
     if (slot.offset != glm::vec2(0.0f)) json["offset"] = Json::array({slot.offset.x, slot.offset.y});
     if (texture.wrapU != TextureWrap::Repeat || texture.wrapV != TextureWrap::Repeat) {
-        if (texture.wrapU == texture.wrapV) json["wrap"] = wrapNames[static_cast<int>(texture.wrapU)];
-        else json["wrap"] = Json::array({wrapNames[static_cast<int>(texture.wrapU)], wrapNames[static_cast<int>(texture.wrapV)]});
+        const EnumTable<TextureWrap>& wrapNames = textureWrapNames();
+        if (texture.wrapU == texture.wrapV) json["wrap"] = wrapNames.name(texture.wrapU);
+        else json["wrap"] = Json::array({wrapNames.name(texture.wrapU), wrapNames.name(texture.wrapV)});
     }
     if (!texture.bilinear) json["filter"] = "nearest";
     return json;
 }
 
+// An input's factor: its value where its range holds it, or its name.
+Json inputFactorJson(const MaterialInput& input, const Material& material, const std::string& pointer) {
+    switch (input.value) {
+    case InputValue::Vector: return vec3InRange(material.*input.vector, *input.range, pointer);
+    case InputValue::Number: return numberInRange(material.*input.number, *input.range, pointer);
+    case InputValue::AlphaMode: return alphaModeNames().name(material.alphaMode);
+    case InputValue::Strength: break;
+    }
+    fail(pointer, "no value is written for this key"); // emission_strength: the emission holds it
+}
+
 Json materialJson(const Material& material, const std::string& pointer, const Scene& scene) {
     const MaterialSchema& schema = materialSchema(material.type);
-    auto at = [&pointer](const char* key) { return pointer + "/" + key; };
     Json json;
     json["type"] = schema.name;
-    if (schema.radianceRequired)
-        json[schema.radianceKey] = vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey));
-    if (schema.colorKey)
-        json[schema.colorKey] = texturedJson(vec3InRange(material.color, ranges::kColor, at(schema.colorKey)),
-                                             material.baseColorTexture, scene, at(schema.colorKey));
-    if (schema.hasIor) json["ior"] = numberInRange(material.ior, ranges::kIor, at("ior"));
-    if (schema.hasRoughness)
-        json["roughness"] = texturedJson(numberInRange(material.roughness, ranges::kRoughness, at("roughness")),
-                                         material.roughnessTexture, scene, at("roughness"));
-    // Black is the default, and most surfaces do not glow.
-    if (!schema.radianceRequired && (material.radiance != glm::vec3(0.0f) || material.emissionTexture.used()))
-        json[schema.radianceKey] = texturedJson(vec3InRange(material.radiance, ranges::kRadiance, at(schema.radianceKey)),
-                                                material.emissionTexture, scene, at(schema.radianceKey));
-    if (material.type == MaterialType::Principled) {
-        json["metallic"] = texturedJson(numberInRange(material.metallic, ranges::kMetallic, at("metallic")),
-                                        material.metallicTexture, scene, at("metallic"));
-        if (material.transmission != 0.0f)
-            json["transmission"] = numberInRange(material.transmission, ranges::kTransmission, at("transmission"));
-        if (material.alpha != 1.0f) json["alpha"] = numberInRange(material.alpha, ranges::kAlpha, at("alpha"));
-        static const char* const modes[] = {"opaque", "mask", "blend"};
-        if (material.alphaMode != AlphaMode::Opaque) json["alpha_mode"] = modes[static_cast<int>(material.alphaMode)];
-        if (material.alphaCutoff != 0.5f)
-            json["alpha_cutoff"] = numberInRange(material.alphaCutoff, ranges::kAlphaCutoff, at("alpha_cutoff"));
-        if (material.normalTexture.used())
-            json["normal_map"] = texturedJson(numberInRange(material.normalScale, ranges::kNormalScale, at("normal_map")),
-                                              material.normalTexture, scene, at("normal_map"));
+    for (const MaterialInput& input : kMaterialInputs) {
+        if (!input.takenBy(schema) || !materialInputWritten(input, material)) continue;
+        const char* key = materialInputKey(input, schema);
+        const std::string at = pointer + "/" + key;
+        Json factor = inputFactorJson(input, material, at);
+        json[key] = input.slot ? texturedJson(std::move(factor), material.*input.slot, scene, at) : std::move(factor);
     }
     return json;
 }
@@ -270,32 +260,12 @@ Json overrideKeyJson(const std::string& key, const Material& material, const Mat
     const MaterialSchema& schema = materialSchema(material.type);
     const std::string at = pointer + "/" + key;
     if (key == "type") return schema.name;
-    if (key == schema.radianceKey) {
-        Json radiance = vec3InRange(material.radiance, ranges::kRadiance, at);
-        if (schema.radianceRequired) return radiance;
-        return overrideTexturedJson(std::move(radiance), material.emissionTexture, file.emissionTexture, scene, at);
-    }
-    if (schema.colorKey && key == schema.colorKey)
-        return overrideTexturedJson(vec3InRange(material.color, ranges::kColor, at), material.baseColorTexture,
-                                    file.baseColorTexture, scene, at);
-    if (key == "ior") return numberInRange(material.ior, ranges::kIor, at);
-    if (key == "roughness")
-        return overrideTexturedJson(numberInRange(material.roughness, ranges::kRoughness, at), material.roughnessTexture,
-                                    file.roughnessTexture, scene, at);
-    if (key == "metallic")
-        return overrideTexturedJson(numberInRange(material.metallic, ranges::kMetallic, at), material.metallicTexture,
-                                    file.metallicTexture, scene, at);
-    if (key == "transmission") return numberInRange(material.transmission, ranges::kTransmission, at);
-    if (key == "alpha") return numberInRange(material.alpha, ranges::kAlpha, at);
-    if (key == "alpha_mode") {
-        static const char* const modes[] = {"opaque", "mask", "blend"};
-        return modes[static_cast<int>(material.alphaMode)];
-    }
-    if (key == "alpha_cutoff") return numberInRange(material.alphaCutoff, ranges::kAlphaCutoff, at);
-    if (key == "normal_map") // a plain number: no normal map (the scale kept)
-        return overrideTexturedJson(numberInRange(material.normalScale, ranges::kNormalScale, at), material.normalTexture,
-                                    file.normalTexture, scene, at);
-    fail(at, "no override is written for this key"); // emission_strength: the emission holds it
+    const MaterialInput* input = findMaterialInput(schema, key);
+    if (!input || input->value == InputValue::Strength) fail(at, "no override is written for this key");
+    Json factor = inputFactorJson(*input, material, at);
+    // A plain number for the normal map: no normal map (the scale kept).
+    if (!input->slot) return factor;
+    return overrideTexturedJson(std::move(factor), material.*input->slot, file.*input->slot, scene, at);
 }
 
 // The keys of a material a glTF file made whose value differs from the file's, each as the

@@ -7,6 +7,8 @@
 // corner of the image as its file stores it (the first row), u grows to the right and v down.
 // OBJ counts v up from the bottom row, so the OBJ loader stores 1 - v.
 
+#include "EnumTable.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -24,6 +26,17 @@ enum class TextureColorSpace { Srgb, Linear };
 // Outside [0, 1], as glTF's sampler says (and OBJ's -clamp): repeat, clamp to the edge texel,
 // or repeat mirrored every other period.
 enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// The scene file's words (docs/scene-format.md); glTF numbers them (GL's enums), and the shaders'
+// textures.glsl reads the constants.
+inline const EnumTable<TextureWrap>& textureWrapNames() {
+    static const EnumTable<TextureWrap> table = {
+        {TextureWrap::Repeat, "repeat", nullptr, "", "kTextureWrapRepeat"},
+        {TextureWrap::ClampToEdge, "clamp", "clamp to edge", "", "kTextureWrapClampToEdge"},
+        {TextureWrap::MirroredRepeat, "mirror", "mirrored repeat", "", "kTextureWrapMirroredRepeat"},
+    };
+    return table;
+}
 
 // RGBA, 8 bits per channel, rows top first, as decoded from a PNG or JPEG (grey and grey-alpha
 // images are expanded: R = G = B).

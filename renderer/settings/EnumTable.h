@@ -56,6 +56,12 @@ public:
         for (const EnumEntry<E>& e : entries_) result.emplace_back(e.name);
         return result;
     }
+    // "repeat, clamp, mirror": the names, for a message listing what was expected.
+    std::string nameList() const {
+        std::string list;
+        for (const EnumEntry<E>& e : entries_) list += (list.empty() ? "" : ", ") + std::string(e.name);
+        return list;
+    }
     // For CLI11's CheckedTransformer.
     std::vector<std::pair<std::string, E>> namesAndValues() const {
         std::vector<std::pair<std::string, E>> result;

@@ -44,6 +44,17 @@ inline const NumberRange kImageSide{
 inline const NumberRange kTimeLimit{
     "time limit", 0.0, 1e7, false, false, "s", "seconds of rendering after which the render stops", 0.0f, 600.0f};
 
+// The viewer's own (the Render panel and the viewer script): what a frame renders and when the
+// accumulation stops. A script's "auto" and the panel's 0 stand for no limit per frame, outside the
+// range; 0 target samples is no target.
+inline const NumberRange kSamplesPerFrame{
+    "samples per frame", 1.0, 1024.0, false, false, "", "most samples per pixel per displayed frame", 1.0f, 64.0f, true};
+inline const NumberRange kTargetSamples{
+    "target samples per pixel", 0.0, double(INT32_MAX), false, false, "", "stop accumulating at this many samples per pixel",
+    0.0f, 65536.0f, true};
+inline const NumberRange kResolutionScale{
+    "resolution scale", 0.125, 2.0, false, false, "", "render resolution relative to the window", 0.125f, 2.0f};
+
 } // namespace settingRanges
 
 } // namespace ptview
