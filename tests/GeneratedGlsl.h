@@ -1,9 +1,10 @@
 #pragma once
-// Every include generated from C++ layouts and tables, by the name shaders #include it: the
+// Every include generated from C++ layouts, tables and a scene's features, by the name shaders #include it: the
 // checked-in copies in shaders/ must equal these texts (GeneratedGlslTest), and no other shader
 // may define a constant they define (EnumTableTest).
 #include "GlslEnums.h"
 #include "PathRecorder.h"
+#include "ShaderFeatures.h"
 #include "WarpProbe.h"
 
 #include <string>
@@ -23,6 +24,9 @@ inline std::vector<GeneratedInclude> generatedIncludes() {
         {"frame_uniforms.glsl", glslFrameBlock()},
         {"recorded_path.glsl", recordedPathGlsl()},
         {"warp_ids.glsl", warpIdsGlsl()},
+        // Generated per scene; the copies are what a program with every feature gets.
+        {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
+        {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},
     };
 }
 

@@ -107,27 +107,5 @@ TEST(ProductShaders, EveryEntryPointTargetsGlsl410Core) {
     EXPECT_EQ(assembler.assemble("pathtrace.comp").source.rfind("#version 430 core\n", 0), 0u);
 }
 
-// So that every include names a file a reader can open, shaders/ holds what the generators write
-// for every feature: bsdf.glsl and light_kinds.glsl (shape_loops.glsl and specialization.glsl
-// there are the run-time defaults of unspecialized programs). PTVIEW_REGENERATE_SHADERS=1 rewrites
-// them from the generators instead of comparing.
-TEST(GeneratedShaders, TheShaderFolderHoldsWhatTheGeneratorsWriteForEveryFeature) {
-    const std::pair<const char*, std::string> generated[] = {
-        {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
-        {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},
-    };
-    const bool regenerate = std::getenv("PTVIEW_REGENERATE_SHADERS") != nullptr;
-    for (const auto& [name, text] : generated) {
-        const fs::path path = fs::path(PTVIEW_SHADER_DIR) / name;
-        if (regenerate) std::ofstream(path, std::ios::binary) << text;
-        std::ifstream in(path, std::ios::binary);
-        std::stringstream onDisk;
-        onDisk << in.rdbuf();
-        EXPECT_EQ(onDisk.str(), text) << "shaders/" << name << " is not what renderer/gpu/ShaderFeatures.cpp generates "
-                                      << "for ShaderFeatures::all(); regenerate it with PTVIEW_REGENERATE_SHADERS=1 "
-                                      << "build/tests/shader_assembler_test --gtest_filter='GeneratedShaders.*'";
-    }
-}
-
 } // namespace
 } // namespace ptview
