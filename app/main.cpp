@@ -1,14 +1,14 @@
 // ptview: open the viewer, render headless with `ptview render`, draw a warp with `ptview warp`,
 // time scenes with `ptview bench`, or record the paths behind a pixel with `ptview paths`.
-#include "BenchCommand.h"
-#include "ConvergeCommand.h"
-#include "CommandLine.h"
-#include "ImageIO.h"
-#include "InfoCommand.h"
-#include "PathsCommand.h"
-#include "RenderCommand.h"
-#include "Viewer.h"
-#include "WarpCommand.h"
+#include <ptview/commands/BenchCommand.h>
+#include <ptview/commands/ConvergeCommand.h>
+#include <ptview/commands/CommandLine.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/commands/InfoCommand.h>
+#include <ptview/commands/PathsCommand.h>
+#include <ptview/commands/RenderCommand.h>
+#include <ptview/window/Viewer.h>
+#include <ptview/commands/WarpCommand.h>
 
 #include <exception>
 #include <iostream>

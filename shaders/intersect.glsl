@@ -37,7 +37,7 @@ struct Hit {
     int light;          // light index of the surface hit, or -1
     vec2 uv;            // texture coordinates (surface_textures.glsl); 0 in programs without textures
     ivec2 primitive;    // (kind, index among that kind): which shape the ray met, for the pixel
-                        // inspector (renderer/gpu/SurfaceHit.h maps it to the scene's shape)
+                        // inspector (renderer/gpudata/SurfaceHit.h maps it to the scene's shape)
 };
 
 // Distance along the ray, or kInfinity. Uses the reformulation of Haines et al. (Ray Tracing

@@ -11,5 +11,5 @@ bool hasLightKind(uint kind) {
 }
 
 // Whether any surface comes near enough a quad light's front to sample it by solid angle
-// (lights.glsl viewQuadLight; renderer/gpu/QuadLightReach.h).
+// (lights.glsl viewQuadLight; renderer/gpudata/QuadLightReach.h).
 const bool kQuadLightsUpClose = true;

@@ -12,7 +12,7 @@
 // lights radiate from their front side only. Densities are in solid angle at the shading point.
 //
 // uLights holds four texels per light: (kind, primitive, cumulative selection probability, -),
-// then three that depend on the kind; see GpuLight in renderer/gpu/GpuLayout.h.
+// then three that depend on the kind; see GpuLight in renderer/gpudata/GpuLayout.h.
 #include "constants.glsl"
 #include "intersect.glsl"
 #include "emission.glsl"

@@ -1,4 +1,4 @@
-// A surface's material as the shaders see it (mirrors GpuMaterial in renderer/gpu/GpuLayout.h).
+// A surface's material as the shaders see it (mirrors GpuMaterial in renderer/gpudata/GpuLayout.h).
 // Its type is one of the kMaterial* constants generated from ptview::MaterialType (enums.glsl);
 // what `color` means depends on it: diffuse: albedo; emitter: nothing (radiance only, reflects
 // nothing); diffuse_transmission: transmittance; mirror: reflectance; specular_transmission:

@@ -94,7 +94,7 @@ float enterNode(MeshRay ray, int node, float tMax) {
     return enter <= exit ? enter : kInfinity;
 }
 
-// Integers are stored as float values, exact below 2^24 (see renderer/gpu/GpuLayout.h).
+// Integers are stored as float values, exact below 2^24 (see renderer/gpudata/GpuLayout.h).
 int nodeFirstOrRight(int node) { return int(texelFetch(uMeshNodes, 2 * node).w); }
 int nodeCount(int node) { return int(texelFetch(uMeshNodes, 2 * node + 1).w); }
 

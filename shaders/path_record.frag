@@ -1,5 +1,5 @@
 #version 410 core
-// The path recorder's pass (renderer/PathRecorder.cpp): work item i = path * uVerticesPerPath +
+// The path recorder's pass (renderer/tracer/PathRecorder.cpp): work item i = path * uVerticesPerPath +
 // vertex traces sample uFirstSample + path of uPixel exactly as pathtrace_sample.glsl does, with
 // the integrator's hooks (path_recorder.glsl) keeping vertex `vertex` of it. The 12 fields of the
 // record do not fit the draw buffers GL 4.1 promises, so the pass runs three times, uOutputSet

@@ -1,4 +1,4 @@
-// The path recorder's hooks (renderer/PathRecorder.*, shaders/path_record.frag): the integrator
+// The path recorder's hooks (renderer/tracer/PathRecorder.*, shaders/path_record.frag): the integrator
 // calls them where it knows a quantity, and one fragment of the recording pass keeps what they
 // report for one vertex of one path (gRecordVertex): vertex 0 is the camera, vertex b + 1 what
 // the ray of bounce b found. Every fragment traces the whole path again, because GL 4.1 fragments
@@ -7,7 +7,7 @@
 // sum added are the render's. Only the recording program includes this file; path_recorder_none.glsl takes
 // its place in every other.
 //
-// The record of a vertex is 12 vec4 (kRecordFields), the layout renderer/PathRecorder.cpp reads:
+// The record of a vertex is 12 vec4 (kRecordFields), the layout renderer/tracer/PathRecorder.cpp reads:
 //   0  position (an escaped vertex: the direction it left in), flags (kVertex* bits)
 //   1  geometric normal, material index (-1: none)
 //   2  shading normal, light index of the surface hit (-1: none)
@@ -26,7 +26,7 @@
 //  10  emitted radiance found here, pdf of the BSDF sample that found it (0 for the camera ray)
 //  11  the path's radiance (what estimateRadiance returned), distance to the first surface the
 //      shadow ray's line meets (where a blocked one stops; -1: none)
-// kRecordFields and the kVertex* flags: generated from renderer/RecordedPath.h.
+// kRecordFields and the kVertex* flags: generated from renderer/tracer/RecordedPath.h.
 #include "recorded_path.glsl"
 
 int gRecordVertex;              // the vertex this fragment keeps

@@ -2,7 +2,7 @@
 // The pixel inspector's and click-to-focus's probe: what the pinhole ray through uFilmPos (pixels
 // from the image's bottom-left corner, as the camera counts them) meets first, found by the
 // scene's own intersection code, textures' alpha cut-outs included. One fragment writes four
-// RGBA32F texels (renderer/PathTracer.cpp, probeSurface, reads them back); a ray that leaves
+// RGBA32F texels (renderer/tracer/PathTracer.cpp, probeSurface, reads them back); a ray that leaves
 // the scene writes a negative distance. Specialized like the path-tracing program.
 #include "frame_uniforms.glsl"
 #include "camera.glsl"

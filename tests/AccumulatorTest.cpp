@@ -1,9 +1,9 @@
 // Long accumulations keep their mean: 1e5 frames through the real accumulate.glsl.
-#include "Accumulator.h"
-#include "GlProgram.h"
+#include <ptview/tracer/Accumulator.h>
+#include <ptview/gl/GlProgram.h>
 #include "GlTestContext.h"
-#include "GpuLayout.h"
-#include "ShaderAssembler.h"
+#include <ptview/gpudata/GpuLayout.h>
+#include <ptview/gl/ShaderAssembler.h>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Alpha MASK and BLEND on the GPU: a cut-away part lets camera rays and shadow rays through, for
 // analytic quads and for meshes (the BVH walks), and BLEND lets through 1 - alpha on average.
 #include "GlTestContext.h"
-#include "ImageIO.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
 
 #include <glm/gtc/constants.hpp>

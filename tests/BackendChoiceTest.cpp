@@ -1,8 +1,8 @@
 // `--backend auto`: the decision rule, the cache of decisions, and the path tracer using both.
-#include "BackendChoice.h"
+#include <ptview/tracer/BackendChoice.h>
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>

@@ -8,7 +8,7 @@
 //   - glass reflects with the exact Fresnel probability and refracts by Snell's law;
 //   - the reflection models are reciprocal;
 //   - no NaN or Inf anywhere, down to wo in the surface and roughness 0.
-#include "BsdfProbe.h"
+#include <ptview/probes/BsdfProbe.h>
 #include "ChiSquare.h"
 #include "GlTestContext.h"
 

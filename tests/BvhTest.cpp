@@ -1,7 +1,7 @@
 // The BVH builder's structural guarantees (the GPU relies on them), its queries against brute force,
 // watertightness on closed meshes, and its SAH quality against a median-split tree.
-#include "Bvh.h"
-#include "TriangleIntersect.h"
+#include <ptview/geometry/Bvh.h>
+#include <ptview/geometry/TriangleIntersect.h>
 
 #include <gtest/gtest.h>
 

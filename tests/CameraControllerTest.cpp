@@ -1,7 +1,7 @@
-// The viewer's camera motion (app/CameraController.h): orbit, pan, zoom and fly move the camera
+// The viewer's camera motion (app/model/CameraController.h): orbit, pan, zoom and fly move the camera
 // as documented, keep what they promise to keep, and stay finite at the poles and for a camera
 // whose eye sits on its target.
-#include "CameraController.h"
+#include <ptview/model/CameraController.h>
 
 #include <gtest/gtest.h>
 

@@ -5,13 +5,13 @@
 // Its images: an out-of-focus point images as a disk of the thin-lens circle of confusion, a
 // plane in focus stays as sharp as the pinhole image, and a closed lens renders the pinhole image.
 #include "GlTestContext.h"
-#include "GlslEnums.h"
-#include "GpuLayout.h"
-#include "PathTracer.h"
-#include "ProbePass.h"
-#include "SceneLoader.h"
-#include "ShaderAssembler.h"
-#include "ShaderFeatures.h"
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/gpudata/GpuLayout.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/probes/ProbePass.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/gl/ShaderAssembler.h>
+#include <ptview/gpu/ShaderFeatures.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // End-to-end tests of the real `ptview` binary: bad input is refused with exit code 2 and a one-line
 // message naming the file and place, and nothing is written; good input renders what it should.
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 #include "LimitedChild.h"
 #include "RunCommand.h"
 #include "TestFiles.h"

@@ -1,8 +1,8 @@
 // `ptview converge` on a tiny scene and budget: the CSV's MSE falls as 1/spp for an unbiased
 // configuration, errors against a reference of another seed are never zero, and a biased
 // configuration (one bounce against a deep reference) is reported as such, not hidden.
-#include "ErrorMetrics.h"
-#include "ImageIO.h"
+#include <ptview/metrics/ErrorMetrics.h>
+#include <ptview/io/ImageIO.h>
 #include "RunCommand.h"
 #include "TestFiles.h"
 

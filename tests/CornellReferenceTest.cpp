@@ -3,11 +3,11 @@
 // match the reference within 3 standard errors of our estimate (from the render's own per-pixel
 // variance) plus 1% of the reference.
 #include "GlTestContext.h"
-#include "ImageIO.h"
-#include "PathTracer.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/tracer/PathTracer.h>
 #include "PrintSettings.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // A CPU ray cast against a scene's analytic primitives (quads, boxes as their quads, spheres,
 // disks), written from the shapes' definitions (docs/scene-format.md), not from the GLSL: what
 // the tests check the GPU's intersections against. No meshes.
-#include "GpuScene.h"
-#include "Scene.h"
+#include <ptview/gpu/GpuScene.h>
+#include <ptview/scene/Scene.h>
 
 #include <glm/glm.hpp>
 

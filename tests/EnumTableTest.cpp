@@ -1,14 +1,14 @@
 // The enum tables: names round-trip, and the GLSL side gets its constants from them only.
-#include "Backend.h"
-#include "DebugView.h"
+#include <ptview/settings/Backend.h>
+#include <ptview/settings/DebugView.h>
 #include "GeneratedGlsl.h"
-#include "GlslEnums.h"
-#include "GpuScene.h"
-#include "Integrator.h"
-#include "SamplerMode.h"
-#include "Scene.h"
-#include "Texture.h"
-#include "ToneMapper.h"
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/gpu/GpuScene.h>
+#include <ptview/settings/Integrator.h>
+#include <ptview/settings/SamplerMode.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/Texture.h>
+#include <ptview/settings/ToneMapper.h>
 
 #include <gtest/gtest.h>
 

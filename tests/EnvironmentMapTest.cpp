@@ -4,17 +4,17 @@
 // (chi-square on the very bright small sun of rooitou_park and on synthetic maps), a density that
 // integrates to one and agrees with the sampler, and renders that give the closed-form answers.
 #include "ChiSquare.h"
-#include "EnvironmentMap.h"
+#include <ptview/scene/EnvironmentMap.h>
 #include "GlTestContext.h"
 #include "LimitedChild.h"
-#include "GpuEnvironmentMap.h"
-#include "PathTracer.h"
-#include "ProbePass.h"
+#include <ptview/gpu/GpuEnvironmentMap.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/probes/ProbePass.h>
 #include "RunCommand.h"
-#include "Scene.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
-#include "ShaderAssembler.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
+#include <ptview/gl/ShaderAssembler.h>
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -1,13 +1,13 @@
 // The live error estimate (renderer/metrics/ErrorEstimate.h): its formula on synthetic statistics, when it
 // declines to give a number, and on real renders that it tracks the true error against a
 // reference and orders two renders (the two sides of a split view) as the true error does.
-#include "ErrorEstimate.h"
-#include "ErrorMetrics.h"
+#include <ptview/metrics/ErrorEstimate.h>
+#include <ptview/metrics/ErrorMetrics.h>
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "SceneInput.h"
-#include "SceneLoader.h"
-#include "ViewerSession.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/model/SceneInput.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/session/ViewerSession.h>
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // OpenEXR files: what writeExr writes reads back through the library bit for bit (float) or to
 // half precision, an independent header reader (ExrHeaderParser.h) sees the channels, compression
 // and data window, the string attributes survive, and bad files are errors naming them.
-#include "ErrorMetrics.h"
+#include <ptview/metrics/ErrorMetrics.h>
 #include "ExrHeaderParser.h"
-#include "ExrIO.h"
-#include "ImageIO.h"
+#include <ptview/io/ExrIO.h>
+#include <ptview/io/ImageIO.h>
 
 #include <gtest/gtest.h>
 

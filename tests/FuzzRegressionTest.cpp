@@ -4,14 +4,14 @@
 // tinyobjloader, which only the fuzz build compiles with sanitizers (the test suite links
 // Debian's library), so here it shows as what it did to the numbers: they read as 0.
 
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 #include "LimitedChild.h"
-#include "ObjLoader.h"
+#include <ptview/scene/ObjLoader.h>
 #include "RunCommand.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
-#include "ViewerScript.h"
+#include <ptview/model/ViewerScript.h>
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // Every include generated from C++ layouts, tables and a scene's features, by the name shaders #include it: the
 // checked-in copies in shaders/ must equal these texts (GeneratedGlslTest), and no other shader
 // may define a constant they define (EnumTableTest).
-#include "GlslEnums.h"
-#include "PathRecorder.h"
-#include "ShaderFeatures.h"
-#include "WarpProbe.h"
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/tracer/PathRecorder.h>
+#include <ptview/gpu/ShaderFeatures.h>
+#include <ptview/probes/WarpProbe.h>
 
 #include <string>
 #include <vector>

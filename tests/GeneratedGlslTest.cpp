@@ -1,10 +1,10 @@
 // The GLSL generated from C++: the copies in shaders/ that readers open are what the generators
 // write now, and the driver places every field of FrameBlock where C++ writes it.
 #include "GeneratedGlsl.h"
-#include "GlProgram.h"
+#include <ptview/gl/GlProgram.h>
 #include "GlTestContext.h"
-#include "GpuLayout.h"
-#include "RecordedPath.h"
+#include <ptview/gpudata/GpuLayout.h>
+#include <ptview/tracer/RecordedPath.h>
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>

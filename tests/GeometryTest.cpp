@@ -1,8 +1,8 @@
 // Intersection, camera and emitter conventions on the real GLSL, against closed-form answers.
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // One headless OpenGL context per test process, created on first use.
-#include "HeadlessContext.h"
-#include "PathTracer.h"
+#include <ptview/gl/HeadlessContext.h>
+#include <ptview/tracer/PathTracer.h>
 
 #include <cstdint>
 

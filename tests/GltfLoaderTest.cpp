@@ -1,10 +1,10 @@
 // The glTF loader (renderer/scene/GltfLoader.*): small files written by each test (JSON with
 // base64 data URIs, or a .bin / .glb beside it), checked against values computed by hand here.
-#include "GltfLoader.h"
-#include "MaterialTextures.h"
-#include "Scene.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
+#include <ptview/scene/GltfLoader.h>
+#include <ptview/scene/MaterialTextures.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
 #include "TestFiles.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,6 +1,6 @@
 // Flattening the scene model into GPU primitives (CPU side, no GL needed).
-#include "GpuScene.h"
-#include "Scene.h"
+#include <ptview/gpu/GpuScene.h>
+#include <ptview/scene/Scene.h>
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The hard cases of docs/robustness.md, each rendered through the real GLSL: no NaN or Inf pixel,
 // no energy gain (a white furnace stays at or below 1), and the analytic value where there is one.
 // Fixed seeds; tolerances from each image's own variance (5 sigma) or from exact arithmetic.
-#include "ErrorEstimate.h"
+#include <ptview/metrics/ErrorEstimate.h>
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

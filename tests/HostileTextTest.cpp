@@ -2,8 +2,8 @@
 // terminal control sequences (a window title, colours, "\r" that overwrites the line, a raw C1
 // CSI byte) is described by `ptview info` with every one of them shown as an escape, and with the
 // scene JSON still one line per line; an error that quotes such a value escapes it too.
-#include "ImageIO.h"
-#include "PngText.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/io/PngText.h>
 #include "RunCommand.h"
 #include "TestFiles.h"
 

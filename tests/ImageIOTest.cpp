@@ -1,4 +1,4 @@
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 #include "LimitedChild.h"
 #include "TestFiles.h"
 

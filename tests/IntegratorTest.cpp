@@ -8,10 +8,10 @@
 // not independent), so their tolerances are conservative. Grid is biased by design; it appears
 // only where the answer does not depend on the sample positions at all.
 #include "GlTestContext.h"
-#include "PathTracer.h"
+#include <ptview/tracer/PathTracer.h>
 #include "PrintSettings.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // what is added changes), caustics need mirrors or glass, and a program that shows all the light
 // carries none of the explorer's code.
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -8,10 +8,10 @@
 // almost touching it) give finite values only.
 #include "ChiSquare.h"
 #include "GlTestContext.h"
-#include "GpuScene.h"
-#include "GlslEnums.h"
-#include "ProbePass.h"
-#include "ShaderAssembler.h"
+#include <ptview/gpu/GpuScene.h>
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/probes/ProbePass.h>
+#include <ptview/gl/ShaderAssembler.h>
 
 #include <gtest/gtest.h>
 

@@ -3,9 +3,9 @@
 // leave everything else (programs, camera, size, settings) as it was.
 
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // Meshes and transforms in scene files: how mesh shapes get their materials (the file's MTL, the
 // scene's names, overrides), what a bad mesh reference says, transforms baked into analytic
 // shapes, and the round trip through the writer.
-#include "Scene.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>

@@ -2,15 +2,15 @@
 // the two-level BVH traversal agrees with brute force over every world-space triangle for nearest
 // and any hits, rays from inside a closed mesh never escape, instances share their mesh's data,
 // and an emissive mesh lights a scene exactly as the quad light it replaces.
-#include "Bvh.h"
+#include <ptview/geometry/Bvh.h>
 #include "GlTestContext.h"
-#include "GpuScene.h"
-#include "PathTracer.h"
-#include "ProbePass.h"
-#include "SceneLoader.h"
-#include "GlslEnums.h"
-#include "ShaderAssembler.h"
-#include "TriangleIntersect.h"
+#include <ptview/gpu/GpuScene.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/probes/ProbePass.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/gl/ShaderAssembler.h>
+#include <ptview/geometry/TriangleIntersect.h>
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // the shading normal a constant map gives a quad (analytic and mesh) against the analytic tilt,
 // in the normal view and in the radiance a directional light gives.
 #include "GlTestContext.h"
-#include "MeshTangents.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
+#include <ptview/scene/MeshTangents.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
 
 #include <glm/gtc/constants.hpp>

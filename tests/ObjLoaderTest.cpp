@@ -2,10 +2,10 @@
 // what is skipped or dropped and the warning that says so, what is refused and the message that
 // names the file), and the project's meshes load with their known triangle counts.
 
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 #include "LimitedChild.h"
-#include "ObjLoader.h"
-#include "SceneLoader.h"
+#include <ptview/scene/ObjLoader.h>
+#include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>

@@ -3,9 +3,9 @@
 // into the same image bit for bit (from another working directory), `ptview info`, and the files
 // that carry no usable provenance refused with exit code 2 naming them.
 #include "ExrHeaderParser.h"
-#include "ExrIO.h"
-#include "ImageIO.h"
-#include "PngText.h"
+#include <ptview/io/ExrIO.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/io/PngText.h>
 #include "RunCommand.h"
 
 #include <stb_image.h>

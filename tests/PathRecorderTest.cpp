@@ -1,13 +1,13 @@
-// The paths behind a pixel (renderer/PathRecorder.*) on the real GLSL: the recorded paths are
+// The paths behind a pixel (renderer/tracer/PathRecorder.*) on the real GLSL: the recorded paths are
 // the render's samples (their contributions add up to the rendered pixel), their shadow rays
 // agree with a CPU ray cast, the two MIS strategies' weights of one light path sum to 1 with the
 // densities each side recorded, pixels are counted from the top, and only the recording program
 // carries the recorder.
 #include "CpuRayCast.h"
 #include "GlTestContext.h"
-#include "PathRecorder.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathRecorder.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Behaviour of the progressive renderer on the real GLSL, headless.
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

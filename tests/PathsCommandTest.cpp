@@ -1,7 +1,7 @@
 // `ptview paths` end to end on the real binary: the JSON it writes parses, holds the paths asked
 // for, and their mean is the pixel `ptview render` makes of the same samples; --image draws them;
 // a pixel outside the image or no paths is refused with exit code 2 and writes nothing.
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 #include "RunCommand.h"
 
 #include <nlohmann/json.hpp>

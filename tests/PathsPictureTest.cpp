@@ -1,11 +1,11 @@
-// The CPU projection that draws recorded paths (app/PathsPicture.*, app/PathsOverlay.*) is the
+// The CPU projection that draws recorded paths (app/commands/PathsPicture.*, app/window/PathsOverlay.*) is the
 // renderer's camera: a path's first vertex lands in the pixel it was traced for, and a click
 // there picks it; a segment that starts behind the camera is cut, not flipped.
 #include "GlTestContext.h"
-#include "PathRecorder.h"
-#include "PathsOverlay.h"
-#include "PathsPicture.h"
-#include "SceneLoader.h"
+#include <ptview/tracer/PathRecorder.h>
+#include <ptview/window/PathsOverlay.h>
+#include <ptview/commands/PathsPicture.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

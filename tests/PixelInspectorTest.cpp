@@ -2,10 +2,10 @@
 // same pinhole ray, the one-pixel read-backs equal the whole-image ones at that pixel, and the
 // split view and a resize treat the pinned pixel as documented (ViewerModel::pinnedPixel).
 #include "GlTestContext.h"
-#include "PathTracer.h"
-#include "SceneInput.h"
-#include "SceneLoader.h"
-#include "ViewerSession.h"
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/model/SceneInput.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/session/ViewerSession.h>
 
 #include <gtest/gtest.h>
 

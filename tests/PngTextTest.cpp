@@ -1,8 +1,8 @@
 // PNG text: the iTXt chunks insertPngText adds are where the PNG specification puts them, with
 // correct CRCs (checked by a chunk walker and a bitwise CRC written here, not the code under test),
 // the image still decodes to the same pixels, and readPngText reads the entries back.
-#include "ImageIO.h"
-#include "PngText.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/io/PngText.h>
 
 #include <stb_image.h>
 

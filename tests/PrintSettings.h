@@ -2,8 +2,8 @@
 // How GoogleTest prints the render settings' enums (a parameter, a tuple of them, a failed
 // check): by the names the CLI and the scripts use, where it would print the bytes of an int.
 
-#include "Integrator.h"
-#include "SamplerMode.h"
+#include <ptview/settings/Integrator.h>
+#include <ptview/settings/SamplerMode.h>
 
 #include <ostream>
 

@@ -2,7 +2,7 @@
 // on (C0 controls, DEL, C1 controls in UTF-8 and the raw bytes 0x80..0x9f that some terminals
 // take as C1) and every byte that is not part of valid UTF-8 becomes an escape; text people write,
 // in any script, passes unchanged.
-#include "PrintableText.h"
+#include <ptview/io/PrintableText.h>
 
 #include <gtest/gtest.h>
 

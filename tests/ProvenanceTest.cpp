@@ -1,9 +1,9 @@
 // Provenance without a GPU: the settings table writes every field and reads it back exactly, the
 // metadata names a format, and a scene with relative paths is found again from another working
 // directory; metadata that is missing, newer or broken is an error naming the file.
-#include "Provenance.h"
-#include "RenderRecipe.h"
-#include "SceneLoader.h"
+#include <ptview/provenance/Provenance.h>
+#include <ptview/provenance/RenderRecipe.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // get decorrelated sequences.
 #include "ChiSquare.h"
 #include "GlTestContext.h"
-#include "WarpProbe.h"
+#include <ptview/probes/WarpProbe.h>
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // Scene loading: the shipped Cornell box reads back as the reference describes it, and every kind
 // of bad input is rejected with a one-line message that names the file and the place in it.
 
-#include "LightSchema.h"
+#include <ptview/scene/LightSchema.h>
 #include "LimitedChild.h"
-#include "Scene.h"
-#include "SceneLoader.h"
-#include "ShapeSchema.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/ShapeSchema.h>
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // Hot reload: the three-way merge of the scene file with the user's edits, and the file watcher
 // that triggers it.
 
-#include "FileWatcher.h"
-#include "SceneLoader.h"
-#include "SceneMerge.h"
-#include "SceneWriter.h"
+#include <ptview/model/FileWatcher.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/model/SceneMerge.h>
+#include <ptview/scene/SceneWriter.h>
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // The table of ranges (renderer/scene/SceneRanges.h) is what the loader accepts: a scene at each bound
 // and just inside an open one loads with the value exact, one just outside is refused, at the
 // value's place, with the table's words. The writer and the script checker read the same table.
-#include "Scene.h"
-#include "SceneLoader.h"
-#include "SceneRanges.h"
-#include "SceneWriter.h"
-#include "ImageIO.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneRanges.h>
+#include <ptview/scene/SceneWriter.h>
+#include <ptview/io/ImageIO.h>
 
 #include <gtest/gtest.h>
 

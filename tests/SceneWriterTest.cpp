@@ -1,10 +1,10 @@
 // Scene writing: what sceneToJson writes loads back as the same model, float for float, and
 // saveScene replaces a file whole or not at all.
 
-#include "MaterialSchema.h"
-#include "Scene.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
+#include <ptview/scene/MaterialSchema.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>

@@ -1,14 +1,14 @@
 // The script executor's dispatch table against the parser's command table: a command that parses
 // always has a handler, and no handler waits for a command the parser would refuse.
 #include "GlTestContext.h"
-#include "ImageIO.h"
-#include "MaterialsPanel.h"
-#include "SceneInput.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
-#include "ScriptRunner.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/window/MaterialsPanel.h>
+#include <ptview/model/SceneInput.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
+#include <ptview/window/ScriptRunner.h>
 #include "TestFiles.h"
-#include "ViewerScript.h"
+#include <ptview/model/ViewerScript.h>
 
 #include <gtest/gtest.h>
 

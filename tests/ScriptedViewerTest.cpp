@@ -2,12 +2,12 @@
 // restart accumulation and change the image the way a headless render of the edited scene says,
 // the split view shows both integrators, a broken reload keeps the scene, F12 saves screenshots,
 // the Materials panel loads, refuses and removes a texture by mouse.
-#include "ExrIO.h"
-#include "ImageIO.h"
-#include "Provenance.h"
+#include <ptview/io/ExrIO.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/provenance/Provenance.h>
 #include "RunCommand.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 #include "ScriptStatus.h"
 #include "TestFiles.h"
 

@@ -1,5 +1,5 @@
-#include "ShaderAssembler.h"
-#include "ShaderFeatures.h"
+#include <ptview/gl/ShaderAssembler.h>
+#include <ptview/gpu/ShaderFeatures.h>
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // no other, specialized and uber programs render the same image, the fragment and compute
 // backends agree, and the program cache compiles each combination once.
 #include "GlTestContext.h"
-#include "PathTracer.h"
+#include <ptview/tracer/PathTracer.h>
 #include "RunCommand.h"
-#include "SceneLoader.h"
-#include "ShaderFeatures.h"
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/gpu/ShaderFeatures.h>
 
 #include <gtest/gtest.h>
 

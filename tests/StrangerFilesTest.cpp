@@ -2,8 +2,8 @@
 // binary: the scene a PNG carries reads only inside the image's folder (or where the user allowed),
 // sets no save target, and its settings are bounded as the command line bounds them; `render
 // --from` applies or refuses each other option, never ignores it.
-#include "ImageIO.h"
-#include "PngText.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/io/PngText.h>
 #include "RunCommand.h"
 #include "ScriptStatus.h"
 #include "TestFiles.h"

@@ -1,13 +1,13 @@
 // Textures: decoding (TextureLoader), and on the GPU the exact texel values a render returns.
 #include "ClaimingPng.h"
 #include "GlTestContext.h"
-#include "GpuTextures.h"
-#include "ImageIO.h"
-#include "PathTracer.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
+#include <ptview/gpu/GpuTextures.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
 #include "TestFiles.h"
-#include "TextureLoader.h"
+#include <ptview/scene/TextureLoader.h>
 
 #include <gtest/gtest.h>
 

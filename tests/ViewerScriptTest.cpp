@@ -1,4 +1,4 @@
-#include "ViewerScript.h"
+#include <ptview/model/ViewerScript.h>
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // The viewer's session headless: hot reload of the scene and the shaders keeps the last good
 // ones and the user's edits, the split view renders both sides, screenshots land where they say.
-#include "ExrIO.h"
+#include <ptview/io/ExrIO.h>
 #include "GlTestContext.h"
-#include "Provenance.h"
-#include "ImageIO.h"
-#include "SceneInput.h"
-#include "SceneLoader.h"
+#include <ptview/provenance/Provenance.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/model/SceneInput.h>
+#include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
-#include "UnsavedEditsPrompt.h"
-#include "ViewerSession.h"
+#include <ptview/session/UnsavedEditsPrompt.h>
+#include <ptview/session/ViewerSession.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 // undoes the warp, and every sample lands in the domain with a positive density.
 #include "ChiSquare.h"
 #include "GlTestContext.h"
-#include "WarpProbe.h"
+#include <ptview/probes/WarpProbe.h>
 
 #include <gtest/gtest.h>
 

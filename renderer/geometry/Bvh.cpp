@@ -1,6 +1,6 @@
-#include "Bvh.h"
+#include <ptview/geometry/Bvh.h>
 
-#include "TriangleIntersect.h"
+#include <ptview/geometry/TriangleIntersect.h>
 
 #include <algorithm>
 #include <cmath>

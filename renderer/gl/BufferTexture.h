@@ -2,7 +2,7 @@
 // A buffer texture: a GL buffer seen by shaders through a samplerBuffer. Buffer textures (not
 // SSBOs) carry the scene to the fragment shader within OpenGL 4.1.
 
-#include "GlObjects.h"
+#include <ptview/gl/GlObjects.h>
 
 #include <cstddef>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "GlProgram.h"
+#include <ptview/gl/GlProgram.h>
 
 #include <string>
 #include <vector>

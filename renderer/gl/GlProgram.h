@@ -1,8 +1,8 @@
 #pragma once
 // A linked vertex + fragment program built from assembled GLSL.
 
-#include "GlObjects.h"
-#include "ShaderAssembler.h"
+#include <ptview/gl/GlObjects.h>
+#include <ptview/gl/ShaderAssembler.h>
 
 #include <initializer_list>
 

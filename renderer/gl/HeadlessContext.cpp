@@ -1,4 +1,4 @@
-#include "HeadlessContext.h"
+#include <ptview/gl/HeadlessContext.h>
 
 #include <glad/egl.h>
 #include <glad/gl.h>

@@ -2,8 +2,8 @@
 // An 8-bit image as a 2D texture that ImGui::Image draws: the Pixel panel's magnifier, the
 // Materials panel's texture thumbnails.
 
-#include "GlObjects.h"
-#include "Image.h"
+#include <ptview/gl/GlObjects.h>
+#include <ptview/io/Image.h>
 
 namespace ptview {
 

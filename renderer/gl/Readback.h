@@ -1,8 +1,8 @@
 #pragma once
 // Reading 8-bit colour back from the GPU into a top-row-first image.
 
-#include "GlObjects.h"
-#include "Image.h"
+#include <ptview/gl/GlObjects.h>
+#include <ptview/io/Image.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,6 +1,6 @@
-#include "ShaderAssembler.h"
+#include <ptview/gl/ShaderAssembler.h>
 
-#include "InputFile.h"
+#include <ptview/io/InputFile.h>
 
 #include <fstream>
 #include <map>

@@ -12,7 +12,7 @@
 // WarpProbe.h: "warp_ids.glsl"). Each has a copy in shaders/ for readers; GeneratedGlslTest
 // keeps the copies current, and EnumTableTest fails when a shader defines a generated name itself.
 
-#include "ShaderAssembler.h"
+#include <ptview/gl/ShaderAssembler.h>
 
 #include <string>
 

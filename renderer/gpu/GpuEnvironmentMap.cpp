@@ -1,4 +1,4 @@
-#include "GpuEnvironmentMap.h"
+#include <ptview/gpu/GpuEnvironmentMap.h>
 
 #include <cmath>
 #include <string>

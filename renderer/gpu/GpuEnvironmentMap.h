@@ -2,9 +2,9 @@
 // An environment map on the GPU: the radiance and its two CDFs as 2D textures, and the uniforms
 // of shaders/environment_map.glsl that say whether there is a map and how it is scaled and turned.
 
-#include "EnvironmentMap.h"
-#include "GlObjects.h"
-#include "GlProgram.h"
+#include <ptview/scene/EnvironmentMap.h>
+#include <ptview/gl/GlObjects.h>
+#include <ptview/gl/GlProgram.h>
 
 #include <glm/glm.hpp>
 

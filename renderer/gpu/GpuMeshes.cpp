@@ -1,6 +1,6 @@
-#include "GpuMeshes.h"
+#include <ptview/gpu/GpuMeshes.h>
 
-#include "MeshTangents.h"
+#include <ptview/scene/MeshTangents.h>
 
 #include <algorithm>
 #include <chrono>

@@ -4,9 +4,10 @@
 // the mesh shapes' world bounds (the top level). Three buffer textures hold it all;
 // shaders/mesh_intersect.glsl traverses them.
 
-#include "BufferTexture.h"
-#include "Bvh.h"
-#include "Scene.h"
+#include <ptview/gl/BufferTexture.h>
+#include <ptview/geometry/Bvh.h>
+#include <ptview/gpudata/SceneRecords.h>
+#include <ptview/scene/Scene.h>
 
 #include <cstdint>
 #include <map>
@@ -14,48 +15,6 @@
 #include <vector>
 
 namespace ptview {
-
-// shaders/mesh_intersect.glsl: a BVH node as two RGBA32F texels, with its integers as float values
-// (GpuLayout.h says why).
-struct GpuBvhNode {
-    glm::vec3 boundsMin;
-    float firstOrRight; // leaf: first triangle (or instance); interior: right child
-    glm::vec3 boundsMax;
-    float count;        // primitives in a leaf; 0 for an interior node
-};
-static_assert(sizeof(GpuBvhNode) == 32, "two RGBA32F texels");
-
-// shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH
-// leaves (so a leaf's triangles are contiguous). Triangles of meshes that a normal-mapped material
-// covers have three more texels, after all triangles in the same buffer: the corners' tangents
-// (xyz unit, w the bitangent's sign: MeshTangents.h); other meshes carry none.
-struct GpuTriangle {
-    glm::vec3 p0;
-    float materialSlot; // into the instance's material table (an integer value: GpuLayout.h)
-    glm::vec3 p1;
-    float tangentTexel; // first of the triangle's three tangent texels in the buffer; -1: none
-    glm::vec3 p2;
-    float pad1;
-    glm::vec4 n0AndU0;  // per-corner shading normals (0: none, use the geometric normal) and
-    glm::vec4 n1AndV0;  // texture coordinates (0 when the mesh has none)
-    glm::vec4 n2AndU1;
-    glm::vec4 v1U2V2;   // (v1, u2, v2, -)
-};
-static_assert(sizeof(GpuTriangle) == 112, "seven RGBA32F texels");
-constexpr int kTriangleTexels = sizeof(GpuTriangle) / 16; // generated into gpu_layout.glsl
-
-// Texels per instance: world-to-object and object-to-world rows (three each), (bottom-level root,
-// first triangle, material table offset, first light or -1), and a spare texel (uploadInstances).
-constexpr int kInstanceTexels = 8;
-
-// An instance as the light table sees it: its triangles in world space come from these.
-struct MeshInstance {
-    int shape;                 // index in Scene::shapes
-    glm::mat4 objectToWorld;
-    const std::vector<GpuTriangle>* triangles; // in leaf order, object space
-    std::uint32_t triangleOffset;              // of triangles[0] in the GPU's triangle buffer
-    std::vector<int> slotMaterials;            // scene material per material slot
-};
 
 class GpuMeshes {
 public:

@@ -1,61 +1,23 @@
 #pragma once
-// The scene as GPU primitives: boxes become six quads, emitters and point/spot lights become a
-// light table, and everything goes into buffer textures that shaders/scene_data.glsl reads.
+// The scene on the GPU: its records (gpudata/SceneRecords.h, LightTable.h) in the buffer
+// textures that shaders/scene_data.glsl reads.
 
-#include "BufferTexture.h"
-#include "EnumTable.h"
-#include "GpuLayout.h"
-#include "GlProgram.h"
-#include "GpuMeshes.h"
-#include "SurfaceHit.h"
-#include "GpuTextures.h"
-#include "LightKind.h"
-#include "Scene.h"
+#include <ptview/gl/BufferTexture.h>
+#include <ptview/gpudata/GpuLayout.h>
+#include <ptview/gl/GlProgram.h>
+#include <ptview/gpu/GpuMeshes.h>
+#include <ptview/gpudata/SurfaceHit.h>
+#include <ptview/gpu/GpuTextures.h>
+#include <ptview/gpudata/LightTable.h>
+#include <ptview/gpudata/SceneRecords.h>
+#include <ptview/gpudata/LightKind.h>
+#include <ptview/scene/Scene.h>
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace ptview {
-
-struct ScenePrimitives {
-    std::vector<GpuSphere> spheres;
-    std::vector<std::int32_t> sphereMaterials;
-    std::vector<GpuQuad> quads;
-    std::vector<std::int32_t> quadMaterials;
-    std::vector<GpuDisk> disks;
-    std::vector<std::int32_t> diskMaterials;
-    std::vector<Light> lights; // point and spot
-    std::vector<GpuMaterial> materials;
-};
-
-// Every light the integrators can sample, chosen in proportion to its emitted power.
-struct LightTable {
-    std::vector<GpuLight> lights; // each with its cumulative selection probability; the last's is 1
-    std::vector<GpuPrimitiveIds> sphereIds, quadIds, diskIds;
-    std::vector<std::int32_t> meshInstanceLightBase; // per mesh instance: its first light, or -1
-    std::int32_t environmentLight = -1;
-};
-
-// Pure CPU steps, testable without a GL context.
-// The box around a primitive (around a disk, the box of its sphere).
-Aabb primitiveBounds(const GpuQuad& quad);
-Aabb primitiveBounds(const GpuSphere& sphere);
-Aabb primitiveBounds(const GpuDisk& disk);
-// Half the diagonal of the box around every primitive (1 for an empty scene).
-float sceneBoundingRadius(const ScenePrimitives& geometry, const Aabb& meshBounds = {});
-ScenePrimitives flattenScene(const Scene& scene);
-// The scene shape whose primitive the GPU intersected: index counts flattenScene's primitives of
-// that kind (a box gives six quads), or, for a mesh instance, meshInstances in GpuMeshes' order.
-// -1 when there is no such primitive.
-int shapeOfPrimitive(const Scene& scene, PrimitiveKind kind, int index, const std::vector<MeshInstance>& meshInstances);
-void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& out);
-// The environment's share is its power through a disk as large as the scene's bounding sphere.
-// An emitting mesh instance gets one light per triangle (in its leaf order), so that a hit's light
-// index is the instance's first plus the triangle's place.
-LightTable buildLightTable(const ScenePrimitives& geometry, const std::vector<Material>& materials,
-                           glm::vec3 environmentRadiance, const std::vector<MeshInstance>& meshInstances = {},
-                           const Aabb& meshBounds = {});
 
 class GpuScene {
 public:

@@ -1,4 +1,4 @@
-#include "GpuTextures.h"
+#include <ptview/gpu/GpuTextures.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -6,10 +6,10 @@
 // and wraps them itself, so wrap modes work inside the atlas, sRGB is decoded per texel before
 // filtering, and every GPU returns the same values.
 
-#include "GlObjects.h"
-#include "GlProgram.h"
-#include "GpuLayout.h"
-#include "Texture.h"
+#include <ptview/gl/GlObjects.h>
+#include <ptview/gl/GlProgram.h>
+#include <ptview/gpudata/GpuLayout.h>
+#include <ptview/scene/Texture.h>
 
 #include <cstddef>
 #include <stdexcept>

@@ -1,9 +1,9 @@
-#include "ShaderFeatures.h"
+#include <ptview/gpu/ShaderFeatures.h>
 
-#include "GlslEnums.h"
-#include "GpuScene.h"
-#include "MaterialSchema.h"
-#include "QuadLightReach.h"
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/gpu/GpuScene.h>
+#include <ptview/scene/MaterialSchema.h>
+#include <ptview/gpudata/QuadLightReach.h>
 
 #include <glm/glm.hpp>
 
@@ -36,13 +36,6 @@ const BsdfCode kBsdfCode[] = {
     {MaterialType::Plastic, "kMaterialPlastic", "bsdf_plastic.glsl", "plastic", false},
     {MaterialType::Principled, "kMaterialPrincipled", "bsdf_principled.glsl", "principled", false},
 };
-
-auto tied(const ShaderFeatures& f) {
-    ShapeCounts unrolled = f.unrolledShapes.value_or(ShapeCounts{-1, -1, -1});
-    return std::make_tuple(f.materialModels, f.lightKinds, f.quadLightsUpClose, f.environmentMap,
-                           f.meshes, f.textures, f.thinLens, f.normalMaps, f.alpha, unrolled.spheres, unrolled.quads,
-                           unrolled.disks);
-}
 
 // STEP(0) STEP(1) ... STEP(count - 1): a macro that runs STEP for every index, as a loop would.
 std::string unrolledLoop(const char* name, int count) {
@@ -112,108 +105,8 @@ std::string generateLightKinds(const ShaderFeatures& features) {
            "#include \"enums.glsl\"\n\n"
            "bool hasLightKind(uint kind) {\n    return " + (test.empty() ? std::string("false") : test) + ";\n}\n\n"
            "// Whether any surface comes near enough a quad light's front to sample it by solid angle\n"
-           "// (lights.glsl viewQuadLight; renderer/gpu/QuadLightReach.h).\n"
+           "// (lights.glsl viewQuadLight; renderer/gpudata/QuadLightReach.h).\n"
            "const bool kQuadLightsUpClose = " + (features.quadLightsUpClose ? "true" : "false") + ";\n";
-}
-
-bool ShapeCounts::operator==(const ShapeCounts& other) const {
-    return spheres == other.spheres && quads == other.quads && disks == other.disks;
-}
-
-ShapeCounts shapeCounts(const Scene& scene) {
-    ScenePrimitives primitives = flattenScene(scene); // the primitives the GPU holds: a box is six quads
-    return ShapeCounts{static_cast<int>(primitives.spheres.size()), static_cast<int>(primitives.quads.size()),
-                       static_cast<int>(primitives.disks.size())};
-}
-
-ShaderFeatures ShaderFeatures::all() {
-    ShaderFeatures features;
-    for (const BsdfCode& code : kBsdfCode) features.materialModels |= 1u << static_cast<int>(code.type);
-    for (const auto& entry : lightKindNames()) features.lightKinds |= 1u << static_cast<int>(entry.value);
-    features.quadLightsUpClose = features.environmentMap = features.meshes = features.textures = features.thinLens = true;
-    features.normalMaps = features.alpha = true;
-    return features;
-}
-
-bool ShaderFeatures::transmission() const {
-    return usesModel(MaterialType::DiffuseTransmission) || usesModel(MaterialType::SpecularTransmission) ||
-           usesModel(MaterialType::Glass) || usesModel(MaterialType::Principled);
-}
-
-bool ShaderFeatures::covers(const ShaderFeatures& other) const {
-    return (other.materialModels & ~materialModels) == 0 && (other.lightKinds & ~lightKinds) == 0 &&
-           (quadLightsUpClose || !other.quadLightsUpClose) &&
-           (environmentMap || !other.environmentMap) && (meshes || !other.meshes) &&
-           (textures || !other.textures) && (thinLens || !other.thinLens) &&
-           (normalMaps || !other.normalMaps) && (alpha || !other.alpha) &&
-           (!unrolledShapes || (other.unrolledShapes && *unrolledShapes == *other.unrolledShapes));
-}
-
-bool ShaderFeatures::operator==(const ShaderFeatures& other) const { return tied(*this) == tied(other); }
-bool ShaderFeatures::operator<(const ShaderFeatures& other) const { return tied(*this) < tied(other); }
-
-std::string ShaderFeatures::describe() const {
-    std::string materials;
-    for (const MaterialSchema& schema : kMaterialSchemas)
-        if (usesModel(schema.type)) materials += std::string(" ") + schema.name;
-    std::string lights;
-    for (const auto& entry : lightKindNames())
-        if (hasLightKind(entry.value)) lights += std::string(" ") + entry.name;
-    return "materials:" + (materials.empty() ? std::string(" none") : materials) + "\n" +
-           "lights:" + (lights.empty() ? std::string(" none") : lights) + "\n" +
-           (hasLightKind(LightKind::Quad)
-                ? std::string("quad lights sampled: ") + (quadLightsUpClose ? "by solid angle up close" : "by area") + "\n"
-                : std::string()) +
-           "environment: " + (environmentMap ? "map" : "constant") + "\n" +
-           "meshes: " + (meshes ? "yes (BVH)" : "no") + "\n" +
-           "transmission: " + (transmission() ? "yes" : "no") + "\n" + "textures: " + (textures ? "yes" : "no") + "\n" +
-           "camera: " + (thinLens ? "thin lens" : "pinhole") + "\n" +
-           "normal maps: " + (normalMaps ? "yes" : "no") + "\n" +
-           "alpha: " + (alpha ? "mask/blend" : "opaque") + "\n" +
-           "shape loops: " +
-           (unrolledShapes ? "unrolled for " + std::to_string(unrolledShapes->spheres) + " spheres, " +
-                                 std::to_string(unrolledShapes->quads) + " quads, " +
-                                 std::to_string(unrolledShapes->disks) + " disks"
-                           : std::string("over the counts set at run time")) +
-           "\n";
-}
-
-ShaderFeatures sceneFeatures(const Scene& scene) {
-    ShaderFeatures features;
-    auto addLightKind = [&](LightKind kind) { features.lightKinds |= 1u << static_cast<int>(kind); };
-    // An emitting surface is a light of its shape's kind (a superset of buildLightTable's test,
-    // which also leaves out textured emission).
-    auto useMaterial = [&](int index, LightKind kind) {
-        const Material& material = scene.materials[static_cast<std::size_t>(index)];
-        features.materialModels |= 1u << static_cast<int>(material.type);
-        if (material.radiance != glm::vec3(0.0f)) addLightKind(kind);
-        if (material.hasTextures()) features.textures = true;
-        if (material.normalTexture.used()) features.normalMaps = true;
-        if (material.alphaMode != AlphaMode::Opaque) features.alpha = features.textures = true;
-    };
-    for (const Shape& shape : scene.shapes) {
-        switch (shape.type) {
-        case ShapeType::Mesh:
-            features.meshes = true;
-            for (int material : shape.slotMaterials) useMaterial(material, LightKind::Triangle);
-            break;
-        case ShapeType::Sphere: useMaterial(shape.material, LightKind::Sphere); break;
-        case ShapeType::Quad:
-        case ShapeType::Box: useMaterial(shape.material, LightKind::Quad); break;
-        case ShapeType::Disk: useMaterial(shape.material, LightKind::Disk); break;
-        }
-    }
-    for (const Light& light : scene.lights)
-        addLightKind(light.type == LightType::Point ? LightKind::Point
-                     : light.type == LightType::Spot ? LightKind::Spot
-                                                     : LightKind::Directional);
-    features.environmentMap = !scene.environmentMap.empty();
-    if (features.environmentMap || scene.environment != glm::vec3(0.0f)) addLightKind(LightKind::Environment);
-    features.thinLens = scene.camera.apertureRadius > 0.0f;
-    features.quadLightsUpClose = features.hasLightKind(LightKind::Quad) && surfaceWithinQuadLightReach(scene);
-    ShapeCounts counts = shapeCounts(scene);
-    if (counts.total() <= ShaderFeatures::kMaxUnrolledShapes) features.unrolledShapes = counts;
-    return features;
 }
 
 namespace {
@@ -225,7 +118,7 @@ struct ProgramChoices {
     SamplerMode sampler;
     DebugView view;
     LightPaths lightPaths;
-    bool recordsPaths; // the path recorder's program (renderer/PathRecorder.cpp)
+    bool recordsPaths; // the path recorder's program (renderer/tracer/PathRecorder.cpp)
 };
 
 // An include that a program without its feature takes from a variant declaring the same functions

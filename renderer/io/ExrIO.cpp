@@ -1,7 +1,7 @@
-#include "ExrIO.h"
+#include <ptview/io/ExrIO.h>
 
-#include "ImageIO.h"
-#include "InputFile.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/io/InputFile.h>
 
 #include <ImfAttribute.h>
 #include <ImfChannelList.h>

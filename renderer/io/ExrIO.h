@@ -2,8 +2,8 @@
 // OpenEXR files (through the OpenEXR library): scan-line images of named float channels, ZIP
 // compressed, with string attributes in the header. Writes are atomic, as in ImageIO.h.
 
-#include "Image.h"
-#include "ImageMetadata.h"
+#include <ptview/io/Image.h>
+#include <ptview/io/ImageMetadata.h>
 
 #include <filesystem>
 #include <string>

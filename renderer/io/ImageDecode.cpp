@@ -1,4 +1,4 @@
-#include "ImageDecode.h"
+#include <ptview/io/ImageDecode.h>
 
 #include <stb_image.h>
 

@@ -2,7 +2,7 @@
 // Decoding 8-bit PNG and JPEG images (through stb_image) from bytes already in memory: the
 // texture loader reads files with readInputFile's checks, and glTF hands over its buffers.
 
-#include "Image.h"
+#include <ptview/io/Image.h>
 
 #include <stdexcept>
 #include <string>

@@ -1,8 +1,8 @@
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 
-#include "ExrIO.h"
-#include "InputFile.h"
-#include "PngText.h"
+#include <ptview/io/ExrIO.h>
+#include <ptview/io/InputFile.h>
+#include <ptview/io/PngText.h>
 
 #include <stb_image_write.h>
 

@@ -2,8 +2,8 @@
 // Image files. Writers never leave a partial file behind: they write a temporary file beside the
 // target and rename it over the target only once it is complete.
 
-#include "Image.h"
-#include "ImageMetadata.h"
+#include <ptview/io/Image.h>
+#include <ptview/io/ImageMetadata.h>
 
 #include <filesystem>
 #include <string>

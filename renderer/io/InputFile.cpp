@@ -1,4 +1,4 @@
-#include "InputFile.h"
+#include <ptview/io/InputFile.h>
 
 #include <cerrno>
 #include <cstring>

@@ -1,6 +1,6 @@
-#include "PngText.h"
+#include <ptview/io/PngText.h>
 
-#include "InputFile.h"
+#include <ptview/io/InputFile.h>
 
 #include <array>
 #include <stdexcept>

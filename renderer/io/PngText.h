@@ -2,7 +2,7 @@
 // Text in PNG files: iTXt chunks (PNG 1.2, section 4.2.3.3), one per metadata entry, uncompressed
 // UTF-8. stb writes the image; insertPngText adds the chunks before IEND with their CRCs.
 
-#include "ImageMetadata.h"
+#include <ptview/io/ImageMetadata.h>
 
 #include <cstdint>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "PrintableText.h"
+#include <ptview/io/PrintableText.h>
 
 #include <cstdio>
 #include <iostream>

@@ -1,6 +1,6 @@
-#include "ErrorEstimate.h"
+#include <ptview/metrics/ErrorEstimate.h>
 
-#include "NonFinitePixels.h"
+#include <ptview/metrics/NonFinitePixels.h>
 
 #include <iterator>
 #include <vector>

@@ -44,9 +44,9 @@
 // three of them stay well inside a factor of 2 in relative error); before that, and for the grid
 // sampler (the same deterministic pattern in every pixel: its changes are not noise), it is not.
 
-#include "PixelStatistics.h"
-#include "ErrorMetrics.h"
-#include "SamplerMode.h"
+#include <ptview/metrics/PixelStatistics.h>
+#include <ptview/metrics/ErrorMetrics.h>
+#include <ptview/settings/SamplerMode.h>
 
 #include <algorithm>
 #include <cmath>

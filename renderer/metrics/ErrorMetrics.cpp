@@ -1,7 +1,7 @@
-#include "ErrorMetrics.h"
+#include <ptview/metrics/ErrorMetrics.h>
 
-#include "ImageIO.h"
-#include "NonFinitePixels.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/metrics/NonFinitePixels.h>
 
 #include <cmath>
 #include <limits>

@@ -2,7 +2,7 @@
 // How far a render is from a reference image of the same scene: the measures `ptview converge`
 // records and the viewer shows when a reference is loaded.
 
-#include "Image.h"
+#include <ptview/io/Image.h>
 
 #include <glm/glm.hpp>
 

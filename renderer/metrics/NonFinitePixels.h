@@ -2,7 +2,7 @@
 // Pixels with a NaN or infinite channel: what every error measure leaves out, what a reference
 // image may not have, and what each render reports (one is a bug).
 
-#include "Image.h"
+#include <ptview/io/Image.h>
 
 #include <glm/glm.hpp>
 

@@ -2,7 +2,7 @@
 // What the accumulation knows about each pixel, read back as plain images: the error metrics and
 // the live error estimate work on these without OpenGL.
 
-#include "Image.h"
+#include <ptview/io/Image.h>
 
 #include <glm/glm.hpp>
 

@@ -1,8 +1,8 @@
-#include "BsdfProbe.h"
+#include <ptview/probes/BsdfProbe.h>
 
-#include "ShaderFeatures.h"
+#include <ptview/gpu/ShaderFeatures.h>
 
-#include "ProbePass.h"
+#include <ptview/probes/ProbePass.h>
 
 #include <stdexcept>
 

@@ -2,9 +2,9 @@
 // Runs the real GLSL BSDFs headless (shaders/bsdf_probe.frag) and reads back samples and values:
 // the harness of the BSDF tests. Needs a current context.
 
-#include "GlProgram.h"
-#include "SamplerMode.h"
-#include "Scene.h"
+#include <ptview/gl/GlProgram.h>
+#include <ptview/settings/SamplerMode.h>
+#include <ptview/scene/Scene.h>
 
 #include <glm/glm.hpp>
 

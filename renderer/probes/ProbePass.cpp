@@ -1,6 +1,6 @@
-#include "ProbePass.h"
+#include <ptview/probes/ProbePass.h>
 
-#include "GlObjects.h"
+#include <ptview/gl/GlObjects.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // GPU. Item i is texel (i % width, i / width); the program gets uWidth and uCount uniforms and
 // its inputs as RGBA32F textures on units 0, 1, ... laid out the same way.
 
-#include "GlProgram.h"
+#include <ptview/gl/GlProgram.h>
 
 #include <glm/glm.hpp>
 

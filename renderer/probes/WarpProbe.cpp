@@ -1,7 +1,7 @@
-#include "WarpProbe.h"
+#include <ptview/probes/WarpProbe.h>
 
-#include "GlslEnums.h"
-#include "ProbePass.h"
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/probes/ProbePass.h>
 
 namespace ptview {
 namespace {

@@ -2,10 +2,10 @@
 // Runs the real GLSL sampler and warps headless and reads back what they produce: the harness of
 // the statistical tests and the source of the warp visualizer's points. Needs a current context.
 
-#include "GlProgram.h"
-#include "ProbePass.h"
-#include "SamplerMode.h"
-#include "Warp.h"
+#include <ptview/gl/GlProgram.h>
+#include <ptview/probes/ProbePass.h>
+#include <ptview/settings/SamplerMode.h>
+#include <ptview/geometry/Warp.h>
 
 #include <glm/glm.hpp>
 

@@ -1,6 +1,6 @@
-#include "WarpView.h"
+#include <ptview/probes/WarpView.h>
 
-#include "Readback.h"
+#include <ptview/gl/Readback.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>

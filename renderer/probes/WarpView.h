@@ -3,11 +3,11 @@
 // `ptview warp` and the viewer's warp visualizer. Points are coloured by the u that produced them
 // (red along u.x, green along u.y), so one sees where each part of the square lands.
 
-#include "GlObjects.h"
-#include "GlProgram.h"
-#include "Image.h"
-#include "Warp.h"
-#include "WarpProbe.h"
+#include <ptview/gl/GlObjects.h>
+#include <ptview/gl/GlProgram.h>
+#include <ptview/io/Image.h>
+#include <ptview/geometry/Warp.h>
+#include <ptview/probes/WarpProbe.h>
 
 #include <glm/glm.hpp>
 

@@ -1,10 +1,10 @@
-#include "Provenance.h"
+#include <ptview/provenance/Provenance.h>
 
-#include "ExrIO.h"
-#include "PngText.h"
-#include "PtviewVersion.h"
-#include "SceneLoader.h"
-#include "SceneWriter.h"
+#include <ptview/io/ExrIO.h>
+#include <ptview/io/PngText.h>
+#include <ptview/provenance/PtviewVersion.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneWriter.h>
 
 #include <algorithm>
 #include <cctype>

@@ -9,10 +9,10 @@
 //                      relative paths are relative to ptview.scene_file's directory
 //   ptview.settings    the RenderRecipe as JSON (RenderRecipe.h)
 
-#include "ImageMetadata.h"
-#include "ReadScope.h"
-#include "RenderRecipe.h"
-#include "Scene.h"
+#include <ptview/io/ImageMetadata.h>
+#include <ptview/scene/ReadScope.h>
+#include <ptview/provenance/RenderRecipe.h>
+#include <ptview/scene/Scene.h>
 
 #include <filesystem>
 #include <stdexcept>

@@ -1,6 +1,6 @@
-#include "RenderRecipe.h"
+#include <ptview/provenance/RenderRecipe.h>
 
-#include "SettingRanges.h"
+#include <ptview/settings/SettingRanges.h>
 
 #include <nlohmann/json.hpp>
 

@@ -2,9 +2,9 @@
 // Everything besides the scene that decides a render's pixels, and its JSON form: one table of
 // fields (RenderRecipe.cpp), so that a new setting is one line there.
 
-#include "Backend.h"
-#include "RenderSettings.h"
-#include "ToneMapper.h"
+#include <ptview/settings/Backend.h>
+#include <ptview/settings/RenderSettings.h>
+#include <ptview/settings/ToneMapper.h>
 
 #include <glm/glm.hpp>
 

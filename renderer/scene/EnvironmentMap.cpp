@@ -1,7 +1,7 @@
-#include "EnvironmentMap.h"
+#include <ptview/scene/EnvironmentMap.h>
 
-#include "InputFile.h"
-#include "SceneRanges.h"
+#include <ptview/io/InputFile.h>
+#include <ptview/scene/SceneRanges.h>
 
 #include <glm/gtc/constants.hpp>
 

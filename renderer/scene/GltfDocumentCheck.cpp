@@ -1,4 +1,4 @@
-#include "GltfDocumentCheck.h"
+#include <ptview/scene/GltfDocumentCheck.h>
 
 #include <cctype>
 #include <optional>

@@ -5,9 +5,9 @@
 // (ReadScope.h), present and long enough, every accessor's count within its budget, every required
 // extension known. Also the limits and the URI rule that pass 3 applies again.
 
-#include "GltfErrors.h"
-#include "InputFile.h"
-#include "ReadScope.h"
+#include <ptview/scene/GltfErrors.h>
+#include <ptview/io/InputFile.h>
+#include <ptview/scene/ReadScope.h>
 
 #include <cstddef>
 #include <cstdint>

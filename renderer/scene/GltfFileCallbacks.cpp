@@ -1,7 +1,7 @@
-#include "GltfFileCallbacks.h"
+#include <ptview/scene/GltfFileCallbacks.h>
 
-#include "GltfDocumentCheck.h"
-#include "InputFile.h"
+#include <ptview/scene/GltfDocumentCheck.h>
+#include <ptview/io/InputFile.h>
 
 #include <tiny_gltf.h>
 

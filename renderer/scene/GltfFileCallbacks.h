@@ -3,7 +3,7 @@
 // through these callbacks, which read files through InputFile and only inside the model's read
 // scope, and keep images encoded (decoded only when a material uses them).
 
-#include "ReadScope.h"
+#include <ptview/scene/ReadScope.h>
 
 #include <string>
 #include <vector>

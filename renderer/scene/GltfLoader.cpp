@@ -7,15 +7,15 @@
 //     the file's vertex, index and texture budgets before it reads a mesh or decodes an image, and
 //     every value against the scene format's bounds (SceneRanges.h) as the float it stores.
 
-#include "GltfLoader.h"
+#include <ptview/scene/GltfLoader.h>
 
-#include "GltfDocumentCheck.h"
-#include "GltfErrors.h"
-#include "GltfFileCallbacks.h"
-#include "TextureLoader.h"
-#include "MaterialTextures.h"
-#include "InputFile.h"
-#include "SceneRanges.h"
+#include <ptview/scene/GltfDocumentCheck.h>
+#include <ptview/scene/GltfErrors.h>
+#include <ptview/scene/GltfFileCallbacks.h>
+#include <ptview/scene/TextureLoader.h>
+#include <ptview/scene/MaterialTextures.h>
+#include <ptview/io/InputFile.h>
+#include <ptview/scene/SceneRanges.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>

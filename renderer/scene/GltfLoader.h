@@ -7,9 +7,9 @@
 // here (every index, every accessor's bytes against its view and buffer), since a file is input
 // from anyone and tinygltf trusts it. Errors are SceneError "FILE: /json/pointer: reason".
 
-#include "ReadScope.h"
-#include "Scene.h"
-#include "SceneError.h"
+#include <ptview/scene/ReadScope.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneError.h>
 
 #include <glm/glm.hpp>
 

@@ -2,8 +2,8 @@
 // Which keys each light type takes in a scene file. The loader (its unknown-key errors and its
 // list of types) and the writer (the type names) read this one table, like ShapeSchema.h.
 
-#include "Scene.h"
-#include "SchemaKeys.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SchemaKeys.h>
 
 #include <iterator>
 #include <string_view>

@@ -4,8 +4,8 @@
 // over the rows), the writer, the glTF override writer, the input copier (copyMaterialInput) and
 // the Materials panel all read this one table; MaterialSchema.h says what each type has.
 
-#include "MaterialSchema.h"
-#include "SceneRanges.h"
+#include <ptview/scene/MaterialSchema.h>
+#include <ptview/scene/SceneRanges.h>
 
 #include <algorithm>
 #include <string_view>

@@ -1,8 +1,8 @@
-#include "MaterialReader.h"
+#include <ptview/scene/MaterialReader.h>
 
-#include "MaterialInputs.h"
-#include "MaterialTextures.h"
-#include "SceneFileReaders.h"
+#include <ptview/scene/MaterialInputs.h>
+#include <ptview/scene/MaterialTextures.h>
+#include <ptview/scene/SceneFileReaders.h>
 
 #include <algorithm>
 #include <iterator>

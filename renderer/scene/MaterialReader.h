@@ -2,7 +2,7 @@
 // A material of a scene file, by the table of its inputs (MaterialInputs.h): a loop over the
 // inputs its type takes, plus the rule of an override of a material a glTF file made.
 
-#include "SceneDraft.h"
+#include <ptview/scene/SceneDraft.h>
 
 #include <cstddef>
 #include <string>

@@ -3,8 +3,8 @@
 // which of the inputs of MaterialInputs.h it takes. The loader, the writer and the materials panel
 // all read this one table, so a type cannot gain a key in one of them and not the others.
 
-#include "Scene.h"
-#include "SchemaKeys.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SchemaKeys.h>
 
 #include <glm/glm.hpp>
 

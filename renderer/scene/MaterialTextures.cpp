@@ -1,7 +1,7 @@
-#include "MaterialTextures.h"
+#include <ptview/scene/MaterialTextures.h>
 
-#include "SceneError.h"
-#include "TextureLoader.h"
+#include <ptview/scene/SceneError.h>
+#include <ptview/scene/TextureLoader.h>
 
 #include <utility>
 

@@ -3,8 +3,8 @@
 // viewer's Materials panel and the script's `set-material NAME.INPUT-texture PATH|none` read and
 // change (one table for both). No OpenGL.
 
-#include "Scene.h"
-#include "Texture.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/Texture.h>
 
 #include <filesystem>
 

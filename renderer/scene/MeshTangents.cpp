@@ -1,4 +1,4 @@
-#include "MeshTangents.h"
+#include <ptview/scene/MeshTangents.h>
 
 #include <cmath>
 #include <cstdint>

@@ -14,7 +14,7 @@
 // differ (across UV seams, on strongly curved low-polygon surfaces). Files that store TANGENT are
 // rendered with exactly their frames.
 
-#include "TriangleMesh.h"
+#include <ptview/scene/TriangleMesh.h>
 
 #include <array>
 #include <vector>

@@ -1,7 +1,7 @@
-#include "ObjLoader.h"
+#include <ptview/scene/ObjLoader.h>
 
-#include "InputFile.h"
-#include "TextureLoader.h"
+#include <ptview/io/InputFile.h>
+#include <ptview/scene/TextureLoader.h>
 
 #include <tiny_obj_loader.h>
 

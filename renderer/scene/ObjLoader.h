@@ -15,9 +15,9 @@
 // finite or has zero length is dropped from the corners that use it, which then shade flat. A
 // material library that cannot be found is a warning too: the faces keep their slot names.
 
-#include "ReadScope.h"
-#include "TextureLoader.h"
-#include "TriangleMesh.h"
+#include <ptview/scene/ReadScope.h>
+#include <ptview/scene/TextureLoader.h>
+#include <ptview/scene/TriangleMesh.h>
 
 #include <filesystem>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "ReadScope.h"
+#include <ptview/scene/ReadScope.h>
 
 #include <system_error>
 

@@ -1,7 +1,7 @@
 // The scene model's own geometry: rotations, transforms and what a transform does to a shape.
 // Nothing here reads or writes a file; the loader checks a transform's terms before it bakes one.
 
-#include "Scene.h"
+#include <ptview/scene/Scene.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>

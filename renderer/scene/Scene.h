@@ -2,10 +2,10 @@
 // The scene model: what a scene file describes, validated and in world units (metres, Y up).
 // The UI edits this model and the renderer uploads it; neither knows about JSON.
 
-#include "EnumTable.h"
-#include "SceneRanges.h"
-#include "Texture.h"
-#include "TriangleMesh.h"
+#include <ptview/settings/EnumTable.h>
+#include <ptview/scene/SceneRanges.h>
+#include <ptview/scene/Texture.h>
+#include <ptview/scene/TriangleMesh.h>
 
 #include <glm/glm.hpp>
 

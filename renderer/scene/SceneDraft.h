@@ -3,8 +3,8 @@
 // requests that the resolvers (SceneFileResolve.h) still have to answer with meshes, textures and
 // glTF imports, each with the place in the document that made it, for errors.
 
-#include "Scene.h"
-#include "SceneJson.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneJson.h>
 
 #include <cstddef>
 #include <filesystem>

@@ -1,6 +1,6 @@
-#include "SceneFileReaders.h"
+#include <ptview/scene/SceneFileReaders.h>
 
-#include "Scene.h"
+#include <ptview/scene/Scene.h>
 
 #include <cmath>
 #include <cstdint>

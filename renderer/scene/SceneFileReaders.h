@@ -2,9 +2,9 @@
 // The readers of a scene file's values: each checks one value (its type, its range, the keys of an
 // object) and fails with its JSON pointer (SceneJson.h), so that every rejection names its place.
 
-#include "EnumTable.h"
-#include "SceneJson.h"
-#include "SceneRanges.h"
+#include <ptview/settings/EnumTable.h>
+#include <ptview/scene/SceneJson.h>
+#include <ptview/scene/SceneRanges.h>
 
 #include <glm/glm.hpp>
 

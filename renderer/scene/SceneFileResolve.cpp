@@ -1,12 +1,12 @@
-#include "SceneFileResolve.h"
+#include <ptview/scene/SceneFileResolve.h>
 
-#include "GltfLoader.h"
-#include "MaterialReader.h"
-#include "MaterialTextures.h"
-#include "ObjLoader.h"
-#include "ScenePartsReader.h"
-#include "SceneFileReaders.h"
-#include "TextureLoader.h"
+#include <ptview/scene/GltfLoader.h>
+#include <ptview/scene/MaterialReader.h>
+#include <ptview/scene/MaterialTextures.h>
+#include <ptview/scene/ObjLoader.h>
+#include <ptview/scene/ScenePartsReader.h>
+#include <ptview/scene/SceneFileReaders.h>
+#include <ptview/scene/TextureLoader.h>
 
 #include <algorithm>
 #include <memory>

@@ -3,8 +3,8 @@
 // their slots), its textures and its glTF imports with their overrides. Every file must be one the
 // ReadScope allows; an error names the place in the document that named the file.
 
-#include "ReadScope.h"
-#include "SceneDraft.h"
+#include <ptview/scene/ReadScope.h>
+#include <ptview/scene/SceneDraft.h>
 
 #include <filesystem>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "SceneJson.h"
+#include <ptview/scene/SceneJson.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -4,7 +4,7 @@
 // they are, and the two kinds of error that become a SceneError naming the file: a place in the
 // document (a JSON pointer) or, for text that is not JSON, a line and column.
 
-#include "SceneError.h"
+#include <ptview/scene/SceneError.h>
 
 #include <nlohmann/json.hpp>
 

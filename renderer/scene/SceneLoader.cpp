@@ -9,12 +9,12 @@
 // SceneJson (the document and its errors), SceneFileReaders (typed values), ScenePartsReader and
 // MaterialReader (the parts, into a SceneDraft), SceneFileResolve (the files the parts name).
 
-#include "SceneLoader.h"
+#include <ptview/scene/SceneLoader.h>
 
-#include "GltfLoader.h"
-#include "InputFile.h"
-#include "SceneFileResolve.h"
-#include "ScenePartsReader.h"
+#include <ptview/scene/GltfLoader.h>
+#include <ptview/io/InputFile.h>
+#include <ptview/scene/SceneFileResolve.h>
+#include <ptview/scene/ScenePartsReader.h>
 
 #include <new>
 #include <optional>

@@ -1,9 +1,9 @@
 #pragma once
 // Reads scene files (JSON, described in docs/scene-format.md) into the scene model of Scene.h.
 
-#include "ReadScope.h"
-#include "Scene.h"
-#include "SceneError.h"
+#include <ptview/scene/ReadScope.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneError.h>
 
 #include <filesystem>
 #include <string>

@@ -1,10 +1,10 @@
-#include "ScenePartsReader.h"
+#include <ptview/scene/ScenePartsReader.h>
 
-#include "GltfLoader.h"
-#include "LightSchema.h"
-#include "MaterialReader.h"
-#include "SceneFileReaders.h"
-#include "ShapeSchema.h"
+#include <ptview/scene/GltfLoader.h>
+#include <ptview/scene/LightSchema.h>
+#include <ptview/scene/MaterialReader.h>
+#include <ptview/scene/SceneFileReaders.h>
+#include <ptview/scene/ShapeSchema.h>
 
 #include <cmath>
 #include <cstdio>

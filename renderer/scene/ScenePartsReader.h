@@ -2,7 +2,7 @@
 // The parts of a scene file but its materials (MaterialReader.h): camera, environment, shapes with
 // their transforms, lights and the glTF files it places, read into a SceneDraft.
 
-#include "SceneDraft.h"
+#include <ptview/scene/SceneDraft.h>
 
 #include <cstddef>
 

@@ -6,8 +6,8 @@
 //
 // Numbers are checked as the float the model stores, after rounding from what was written.
 
-#include "NumberRange.h"
-#include "SettingRanges.h"
+#include <ptview/settings/NumberRange.h>
+#include <ptview/settings/SettingRanges.h>
 
 #include <limits>
 

@@ -4,15 +4,15 @@
 // form that the loader reads back as the same float (dump prints the double, 0.7300000190734863,
 // and a float edited in the viewer as 0.059999995 where 0.06 is the same float).
 
-#include "SceneWriter.h"
+#include <ptview/scene/SceneWriter.h>
 
-#include "GltfLoader.h"
-#include "ImageIO.h"
-#include "MaterialInputs.h"
-#include "SceneLoader.h"
-#include "SceneRanges.h"
-#include "LightSchema.h"
-#include "ShapeSchema.h"
+#include <ptview/scene/GltfLoader.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/scene/MaterialInputs.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneRanges.h>
+#include <ptview/scene/LightSchema.h>
+#include <ptview/scene/ShapeSchema.h>
 
 #include <nlohmann/json.hpp>
 

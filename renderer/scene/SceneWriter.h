@@ -2,7 +2,7 @@
 // Writes the scene model back as a scene file (docs/scene-format.md), the inverse of loadScene:
 // loading what sceneToJson writes gives back the same model, every float bit for bit.
 
-#include "Scene.h"
+#include <ptview/scene/Scene.h>
 
 #include <filesystem>
 #include <string>

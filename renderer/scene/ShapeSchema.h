@@ -3,8 +3,8 @@
 // list of types) and the writer (the type names) read this one table, so a shape cannot gain a
 // key or a type in one of them and not the other.
 
-#include "Scene.h"
-#include "SchemaKeys.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SchemaKeys.h>
 
 #include <iterator>
 #include <string_view>

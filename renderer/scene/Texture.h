@@ -7,7 +7,7 @@
 // corner of the image as its file stores it (the first row), u grows to the right and v down.
 // OBJ counts v up from the bottom row, so the OBJ loader stores 1 - v.
 
-#include "EnumTable.h"
+#include <ptview/settings/EnumTable.h>
 
 #include <glm/glm.hpp>
 

@@ -1,9 +1,9 @@
-#include "TextureLoader.h"
+#include <ptview/scene/TextureLoader.h>
 
-#include "ImageDecode.h"
-#include "InputFile.h"
-#include "ReadScope.h"
-#include "Scene.h"
+#include <ptview/io/ImageDecode.h>
+#include <ptview/io/InputFile.h>
+#include <ptview/scene/ReadScope.h>
+#include <ptview/scene/Scene.h>
 
 // ptview_scene does not link stb's include directory (only ptview_io decodes); its declarations
 // are all the header check needs, and libstb is linked through ptview_io.

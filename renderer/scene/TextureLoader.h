@@ -7,7 +7,7 @@
 // ImageDecode.h), and the decoded RGBA8 bytes of all textures of one scene load add up to at most
 // kMaxSceneTextureBytes (TextureBudget). docs/scene-format.md, "Limits", lists both.
 
-#include "Texture.h"
+#include <ptview/scene/Texture.h>
 
 #include <glm/glm.hpp>
 

@@ -3,7 +3,7 @@
 // share. Attributes are indexed per corner, as OBJ indexes them, so a vertex can have different
 // normals or texture coordinates in different faces (a crease, a UV seam).
 
-#include "Texture.h"
+#include <ptview/scene/Texture.h>
 
 #include <glm/glm.hpp>
 

@@ -3,7 +3,7 @@
 // everywhere), or a compute dispatch (OpenGL 4.3), which on data-centre GPUs uses every shader core
 // rather than the few that feed the graphics pipeline. Same includes, one entry point each.
 
-#include "EnumTable.h"
+#include <ptview/settings/EnumTable.h>
 
 #include <cstdint>
 

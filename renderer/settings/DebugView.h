@@ -3,7 +3,7 @@
 // the first hit's shading normal, albedo or distance from the camera (accumulated like samples, so
 // edges are antialiased). The EXR AOVs of `ptview render --aovs` are these views.
 
-#include "EnumTable.h"
+#include <ptview/settings/EnumTable.h>
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The integrators of shaders/integrator.glsl, and their names on the command line and in the UI.
 
-#include "EnumTable.h"
+#include <ptview/settings/EnumTable.h>
 
 #include <cstdint>
 

@@ -6,7 +6,7 @@
 // exactly-k images over k = 0..MAX_DEPTH sum to the full image, direct + indirect = all.
 // Only the views change what is added up; the paths traced are the same, sample for sample.
 
-#include "EnumTable.h"
+#include <ptview/settings/EnumTable.h>
 
 #include <cstdint>
 

@@ -3,10 +3,10 @@
 // rectangle of pixels a pass covers. No OpenGL here, so the viewer model, the scripts and the
 // metrics can hold them.
 
-#include "DebugView.h"
-#include "Integrator.h"
-#include "LightPaths.h"
-#include "SamplerMode.h"
+#include <ptview/settings/DebugView.h>
+#include <ptview/settings/Integrator.h>
+#include <ptview/settings/LightPaths.h>
+#include <ptview/settings/SamplerMode.h>
 
 #include <glm/glm.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The sample generators of shaders/sampler.glsl, and their names on the command line and in the UI.
 
-#include "EnumTable.h"
+#include <ptview/settings/EnumTable.h>
 
 #include <cstdint>
 #include <optional>

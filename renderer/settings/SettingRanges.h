@@ -4,7 +4,7 @@
 // the provenance reader (the settings an image carries, RenderRecipe.cpp) all read, so a file
 // cannot ask for what the command line refuses. docs/robustness.md lists them.
 
-#include "NumberRange.h"
+#include <ptview/settings/NumberRange.h>
 
 #include <cstdint>
 

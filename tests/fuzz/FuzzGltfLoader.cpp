@@ -10,10 +10,10 @@
 // or one that does not write back) is a finding.
 
 #include "FuzzScratch.h"
-#include "GltfLoader.h"
-#include "MeshTangents.h"
-#include "SceneRanges.h"
-#include "SceneWriter.h"
+#include <ptview/scene/GltfLoader.h>
+#include <ptview/scene/MeshTangents.h>
+#include <ptview/scene/SceneRanges.h>
+#include <ptview/scene/SceneWriter.h>
 
 #include <cmath>
 #include <cstddef>

@@ -9,7 +9,7 @@
 // exception, a map that breaks the promises of EnvironmentMap.h, a hang) is a finding.
 
 #include "FuzzScratch.h"
-#include "EnvironmentMap.h"
+#include <ptview/scene/EnvironmentMap.h>
 
 #include <cmath>
 #include <cstddef>

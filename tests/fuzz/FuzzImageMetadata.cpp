@@ -8,9 +8,9 @@
 // image whose channels disagree with its size) is a finding. The OpenEXR library itself is
 // Debian's build, not instrumented: a bad read inside it goes unseen here.
 
-#include "ExrIO.h"
-#include "PngText.h"
-#include "Provenance.h"
+#include <ptview/io/ExrIO.h>
+#include <ptview/io/PngText.h>
+#include <ptview/provenance/Provenance.h>
 
 #include <cstddef>
 #include <cstdint>

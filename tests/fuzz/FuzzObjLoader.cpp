@@ -9,7 +9,7 @@
 // mesh that breaks the promises of TriangleMesh.h) is a finding.
 
 #include "FuzzScratch.h"
-#include "ObjLoader.h"
+#include <ptview/scene/ObjLoader.h>
 
 #include <cmath>
 #include <cstddef>

@@ -11,9 +11,9 @@
 // size disagrees with its pixel count) is a finding. A header may claim 65536 x 65536 pixels
 // (48 GiB) in a file of a few bytes: such a file must be refused, not believed.
 
-#include "ErrorMetrics.h"
+#include <ptview/metrics/ErrorMetrics.h>
 #include "FuzzScratch.h"
-#include "ImageIO.h"
+#include <ptview/io/ImageIO.h>
 
 #include <cmath>
 #include <cstddef>

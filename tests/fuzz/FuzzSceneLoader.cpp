@@ -14,8 +14,8 @@
 // scene that breaks the promises of Scene.h) is a finding.
 
 #include "FuzzScratch.h"
-#include "Scene.h"
-#include "SceneLoader.h"
+#include <ptview/scene/Scene.h>
+#include <ptview/scene/SceneLoader.h>
 
 #include <cmath>
 #include <cstddef>

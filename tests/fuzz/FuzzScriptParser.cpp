@@ -16,13 +16,13 @@
 // command's, a value out of its documented range or not finite, an accessor that refuses a word
 // the parser accepted, a path that is not what the operating system will open) is a finding.
 
-#include "Integrator.h"
-#include "LightPaths.h"
-#include "MaterialSchema.h"
-#include "MaterialTextures.h"
-#include "SamplerMode.h"
-#include "ToneMapper.h"
-#include "ViewerScript.h"
+#include <ptview/settings/Integrator.h>
+#include <ptview/settings/LightPaths.h>
+#include <ptview/scene/MaterialSchema.h>
+#include <ptview/scene/MaterialTextures.h>
+#include <ptview/settings/SamplerMode.h>
+#include <ptview/settings/ToneMapper.h>
+#include <ptview/model/ViewerScript.h>
 
 #include <cctype>
 #include <cmath>

@@ -1,0 +1,75 @@
+#pragma once
+// What the viewer's user controls: the scene with their edits and every render and display
+// setting. The panels, the mouse and keyboard and `--script` commands edit this model;
+// ViewerSession pushes the changes to the renderer. Nothing here knows about ImGui or OpenGL.
+
+#include <ptview/settings/Backend.h>
+#include <ptview/scene/EnvironmentMap.h>
+#include <ptview/io/Image.h>
+#include <ptview/settings/RenderSettings.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/settings/ToneMapper.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace ptview {
+
+// The split view: the left half renders with ViewerModel::settings, the right with `right`.
+struct CompareSettings {
+    bool enabled = false;
+    RenderSettings right;
+    float dividerFraction = 0.5f; // where the divider is, as a fraction of the image width
+    // Equal time gives both sides the same GPU time per frame (the fair comparison: a cheaper
+    // integrator gets more samples); otherwise both get the same number of samples.
+    bool equalTime = true;
+};
+
+constexpr int kMaxTracedPaths = 1024; // the Pixel panel's and path-count's bound on ViewerModel::pathCount
+
+struct ViewerModel {
+    Scene scene;     // what is rendered, the user's edits included
+    Scene fileScene; // as last read from scene.path: the base a reload merges against
+    // The decoded map scene.environmentMap names (null for none), kept so that changing its
+    // intensity or rotation does not read the file again.
+    std::shared_ptr<const EnvironmentMap> environmentMap;
+
+    RenderSettings settings;
+    DisplaySettings display;
+    Backend backend = Backend::Fragment; // how both views run (compute needs OpenGL 4.3)
+    std::string backendChoice;           // how `auto` chose it at start ("" when the user named one)
+    float resolutionScale = 1.0f; // render size / image area size
+    int maxSamplesPerFrame = 0;   // 0: as many as fit the frame's time budget
+    bool paused = false;
+    int targetSamples = 0;        // stop accumulating at this many samples per pixel; 0: never
+    CompareSettings compare;
+    // The pixel inspector's pixel: one pixel of the full-size render, x from the left and y from
+    // the top, as in a saved PNG and every pixel coordinate the user sees (the Pixel panel,
+    // `pin-pixel X Y`). Unpinned (reset) whenever the render size changes, since the same numbers
+    // would then name another place of the picture. nullopt: none pinned.
+    std::optional<glm::ivec2> pinnedPixel;
+    // A reference image of the scene (a PFM, e.g. from `ptview render` with many samples): with it
+    // the Stats panel shows the true error, not only the estimate. Null for none.
+    std::shared_ptr<const ImageRgbF> reference;
+    std::filesystem::path referencePath;
+    // How many of the pinned pixel's paths "Trace paths" and `trace-paths` record (ViewerSession::tracePaths).
+    int pathCount = 16;
+
+    // What changed since the renderer last saw the model; the editor of a field sets its flag.
+    enum Change : unsigned {
+        kSceneChanged = 1u,     // geometry, lights or environment: everything is uploaded again
+        kMaterialsChanged = 2u, // material parameters only
+        kCameraChanged = 4u,
+        kRestart = 8u,          // nothing changed, but the user asked to start over
+    };
+    unsigned pendingChanges = 0;
+
+    // Shown in the UI until the next success of the same kind.
+    std::string sceneError;  // the last scene or environment map that could not be read
+    std::string shaderError; // the last shader reload that did not compile
+    std::string notice;      // the outcome of the last action (a saved screenshot, a reload)
+};
+
+} // namespace ptview

@@ -1,0 +1,33 @@
+#pragma once
+// What the pixel inspector knows about the pinned pixel (ViewerModel::pinnedPixel): its
+// accumulated value and the first surface its pinhole ray meets. The Pixel panel shows it and
+// `save-pixel` writes it as JSON; no ImGui or OpenGL here.
+
+#include <ptview/metrics/PixelStatistics.h>
+#include <ptview/scene/Scene.h>
+#include <ptview/gpudata/SurfaceHit.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace ptview {
+
+struct PixelInspection {
+    glm::ivec2 pixel{0};    // x from the left, y from the top of the render
+    glm::ivec2 imageSize{0};
+    bool rightSide = false; // split view: the pixel lies right of the divider (the right view's numbers)
+    bool comparing = false;
+    PixelReading reading;
+    std::optional<SurfaceHit> hit; // nullopt: the ray escapes to the environment
+};
+
+// "finite", "NaN" or "Inf" for the mean (any channel; NaN first).
+const char* finiteStatus(const glm::vec3& mean);
+
+// The numbers as JSON (docs/viewer-script.md, save-pixel, lists the fields); names from scene.
+std::string pixelInspectionJson(const PixelInspection& inspection, const Scene& scene);
+// Writes them atomically; throws std::runtime_error naming the file when it cannot.
+void savePixelInspection(const PixelInspection& inspection, const Scene& scene, const std::filesystem::path& path);
+
+} // namespace ptview

@@ -1,0 +1,679 @@
+#include <ptview/session/ViewerSession.h>
+
+#include <ptview/io/ExrIO.h>
+#include <ptview/gl/HeadlessContext.h>
+#include <ptview/io/ImageIO.h>
+#include <ptview/io/Image.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/model/SceneMerge.h>
+#include <ptview/scene/SceneWriter.h>
+#include <ptview/provenance/Provenance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kErrorEstimateIntervalSeconds = 1.0;
+constexpr double kResizeSettleSeconds = 0.3;
+constexpr size_t kErrorHistoryLength = 512;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::shared_ptr<const EnvironmentMap> shareMap(std::optional<EnvironmentMap>& map) {
+    return map ? std::make_shared<const EnvironmentMap>(std::move(*map)) : nullptr;
+}
+
+std::vector<std::filesystem::path> shaderFiles(const std::filesystem::path& directory) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+        std::string extension = entry.path().extension().string();
+        if (extension == ".glsl" || extension == ".frag" || extension == ".vert") files.push_back(entry.path());
+    }
+    return files;
+}
+
+// "cornell-20261123-071530": sorts by time and says what it shows.
+std::string screenshotStem(const Scene& scene) {
+    std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char time[32];
+    std::strftime(time, sizeof(time), "%Y%m%d-%H%M%S", &local);
+    std::string name = scene.path.empty() ? "scene" : scene.path.stem().string();
+    return name + "-" + time;
+}
+
+} // namespace
+
+ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, const DisplaySettings& display,
+                             std::filesystem::path shaderDir, PathTracerOptions program)
+    : shaderDir_(std::move(shaderDir)), programOptions_(program) {
+    model_.environmentMap = shareMap(input.environmentMap);
+    model_.scene = std::move(input.scene);
+    allowedDirectories_ = std::move(input.allowedDirectories);
+    if (!input.carriedBy.empty()) {
+        // The scene file an image names is the sender's word, not a file of the user's: it is
+        // neither written by Save nor watched for reload (docs/robustness.md).
+        model_.scene.path.clear();
+        model_.notice = "opened the scene carried by " + input.carriedBy.string() +
+                        "; it has no file of its own: type one in Materials > Save scene as to save it";
+    }
+    model_.fileScene = model_.scene;
+    model_.settings = settings;
+    model_.display = display;
+    model_.compare.right = settings;
+    left_.tracer =
+        std::make_unique<PathTracer>(makePathTracer(model_.scene, model_.environmentMap.get(), programOptions_, settings, shaderDir_));
+    left_.tracer->setPreviewEnabled(true);
+    if (program.backend) {
+        model_.backend = *program.backend;
+    } else {
+        BackendChoice choice = left_.tracer->chooseBackend();
+        model_.backend = choice.backend;
+        model_.backendChoice = choice.describe();
+    }
+    saveTarget_ = model_.fileScene.path.string();
+    watchFiles();
+}
+
+ViewerSession::~ViewerSession() = default;
+
+// ---- actions ---------------------------------------------------------------------------------
+
+void ViewerSession::applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map) {
+    model_.scene = std::move(scene);
+    model_.environmentMap = std::move(map);
+    model_.pendingChanges |= ViewerModel::kSceneChanged | ViewerModel::kCameraChanged;
+    model_.sceneError.clear();
+    watchFiles();
+}
+
+bool ViewerSession::openScene(const std::filesystem::path& path) {
+    ++reloadCount_;
+    try {
+        Scene scene = loadScene(path, ReadScope::anywhere(allowedDirectories_));
+        std::optional<EnvironmentMap> map;
+        if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
+        model_.fileScene = scene;
+        saveTarget_ = path.string(); // Save must not write the new scene over the last one's file
+        model_.notice = "opened " + path.string();
+        for (const std::string& warning : scene.warnings) model_.notice += "\nwarning: " + warning;
+        applyScene(std::move(scene), shareMap(map));
+        return true;
+    } catch (const std::exception& e) { // SceneError, EnvironmentMapError: both name the file
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+bool ViewerSession::reloadScene() {
+    ++reloadCount_;
+    try {
+        Scene reloaded = loadScene(model_.fileScene.path, ReadScope::anywhere(allowedDirectories_));
+        std::shared_ptr<const EnvironmentMap> map = model_.environmentMap;
+        SceneMergeResult merged = mergeReloadedScene(model_.fileScene, model_.scene, reloaded);
+        if (merged.scene.environmentMap != model_.scene.environmentMap || !map) {
+            std::optional<EnvironmentMap> loaded;
+            if (!merged.scene.environmentMap.empty()) loaded = loadEnvironmentMap(merged.scene.environmentMap);
+            map = shareMap(loaded);
+        }
+        model_.fileScene = std::move(reloaded);
+        applyScene(std::move(merged.scene), std::move(map));
+        model_.notice = "reloaded " + model_.fileScene.path.string();
+        for (const std::string& item : merged.overridden) model_.notice += "; the file replaced your edit of " + item;
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+bool ViewerSession::setEnvironmentMap(const std::filesystem::path& path) {
+    try {
+        std::shared_ptr<const EnvironmentMap> map;
+        if (!path.empty()) map = std::make_shared<const EnvironmentMap>(loadEnvironmentMap(path));
+        model_.scene.environmentMap = path;
+        model_.environmentMap = std::move(map);
+        model_.pendingChanges |= ViewerModel::kSceneChanged;
+        model_.sceneError.clear();
+        watchFiles();
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+bool ViewerSession::setReference(const std::filesystem::path& path) {
+    try {
+        model_.reference = path.empty() ? nullptr : std::make_shared<const ImageRgbF>(readReferenceImage(path));
+        model_.referencePath = path;
+        left_.trueErrorHistory.clear();
+        if (right_) right_->trueErrorHistory.clear();
+        // Judged at once, so that a finished render (no more frames of work) gets its true error too.
+        for (View* view : {&left_, right_.get()}) {
+            if (!view) continue;
+            view->trueError.reset();
+            view->estimatedSamples = 0;
+            view->lastEstimate = {};
+            updateErrorEstimate(*view);
+        }
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+void ViewerSession::resetCamera() {
+    model_.scene.camera = model_.fileScene.camera;
+    model_.pendingChanges |= ViewerModel::kCameraChanged;
+}
+
+std::optional<float> ViewerSession::focusAt(glm::vec2 imageFraction) {
+    update(); // the tracer looks with the camera the user sees
+    PathTracer& tracer = *left_.tracer;
+    glm::vec2 size(tracer.imageSize());
+    glm::vec2 filmPos(imageFraction.x * size.x, (1.0f - imageFraction.y) * size.y); // the film counts from the bottom
+    std::optional<float> distance = tracer.focusDistanceAt(filmPos);
+    if (!distance) return std::nullopt;
+    const SceneRange& range = ranges::kFocusDistance;
+    float focus = std::clamp(*distance, std::nextafter(static_cast<float>(range.lo), 1.0f), static_cast<float>(range.hi));
+    model_.scene.camera.focusDistance = focus;
+    model_.pendingChanges |= ViewerModel::kCameraChanged;
+    return focus;
+}
+
+std::optional<glm::ivec2> ViewerSession::pixelAt(glm::vec2 imageFraction) const {
+    if (renderSize_.x <= 0 || renderSize_.y <= 0) return std::nullopt;
+    glm::ivec2 pixel(glm::floor(imageFraction * glm::vec2(renderSize_)));
+    return glm::clamp(pixel, glm::ivec2(0), renderSize_ - 1); // the far edge (fraction 1) is the last pixel
+}
+
+void ViewerSession::togglePinnedPixel(glm::ivec2 pixel) {
+    if (model_.pinnedPixel == pixel) model_.pinnedPixel.reset();
+    else model_.pinnedPixel = pixel;
+}
+
+ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
+    if (!comparing() || renderSize_.x <= 0) return Side::Left;
+    PixelRect area = displayArea();
+    float centre = static_cast<float>(area.origin.x) +
+                   (static_cast<float>(pixel.x) + 0.5f) / static_cast<float>(renderSize_.x) * static_cast<float>(area.size.x);
+    return centre < static_cast<float>(dividerX()) ? Side::Left : Side::Right;
+}
+
+std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
+    if (!model_.pinnedPixel) return std::nullopt;
+    glm::ivec2 pixel = *model_.pinnedPixel;
+    Side side = sideOf(pixel);
+    PathTracer& tracer = *view(side).tracer;
+    glm::ivec2 size = tracer.imageSize();
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y) return std::nullopt;
+    PixelInspection inspection;
+    inspection.pixel = pixel;
+    inspection.imageSize = size;
+    inspection.comparing = comparing();
+    inspection.rightSide = side == Side::Right;
+    inspection.reading = tracer.readPixel(pixel, model_.display);
+    if (pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount != tracer.restartCount()) {
+        // The pinhole ray through the pixel's centre; the film counts rows from the bottom.
+        glm::vec2 filmPos(static_cast<float>(pixel.x) + 0.5f, static_cast<float>(size.y - pixel.y) - 0.5f);
+        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), tracer.probeSurface(filmPos)};
+    }
+    inspection.hit = pixelProbe_.hit;
+    return inspection;
+}
+
+// Compared as the file would hold them, so that an edit counts exactly when saving would change
+// the file, and a field the file does not keep (one the material's type does not use) does not.
+// Materials a glTF file made are in it too, as overrides in the file's reference.
+bool ViewerSession::hasUnsavedEdits() const {
+    try {
+        return sceneToJson(model_.scene) != sceneToJson(model_.fileScene);
+    } catch (const std::exception&) { // a model no file can hold is certainly not the file's
+        return true;
+    }
+}
+
+std::vector<std::string> ViewerSession::unsavedEdits() const {
+    const Scene& file = model_.fileScene;
+    const Scene& edited = model_.scene;
+    std::vector<std::string> kinds;
+    try {
+        const std::string fileJson = sceneToJson(file);
+        if (sceneToJson(edited) == fileJson) return kinds;
+        // Each kind alone on the file's scene: does it change what the file would hold?
+        auto differs = [&](const char* kind, auto copyPart) {
+            Scene partial = file;
+            copyPart(partial);
+            if (sceneToJson(partial) != fileJson) kinds.push_back(kind);
+        };
+        differs("materials", [&](Scene& s) { s.materials = edited.materials; });
+        differs("lights", [&](Scene& s) { s.lights = edited.lights; });
+        differs("camera", [&](Scene& s) { s.camera = edited.camera; });
+        differs("environment", [&](Scene& s) {
+            s.environment = edited.environment;
+            s.environmentMap = edited.environmentMap;
+            s.environmentIntensity = edited.environmentIntensity;
+            s.environmentRotationDeg = edited.environmentRotationDeg;
+        });
+        if (kinds.empty()) kinds.push_back("scene"); // nothing the UI edits, yet not the file
+    } catch (const std::exception&) { // a model no file can hold
+        if (kinds.empty()) kinds.push_back("scene");
+    }
+    return kinds;
+}
+
+void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
+    saveScene(model_.scene, path);
+    model_.scene.path = path;
+    model_.fileScene = model_.scene;
+    saveTarget_ = path.string();
+    watchFiles();
+}
+
+bool ViewerSession::saveReplacesAnotherFile(const std::filesystem::path& path) const {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) return false;
+    const std::filesystem::path& own = model_.fileScene.path;
+    return own.empty() || !std::filesystem::equivalent(path, own, error);
+}
+
+void ViewerSession::writeImage(Side side, const std::filesystem::path& path) const {
+    const PathTracer& tracer = *view(side).tracer;
+    if (tracer.sampleCount() == 0) throw std::runtime_error("nothing rendered yet: wait for a sample");
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension == ".pfm") {
+        writePfm(path, tracer.readMean());
+    } else if (extension == ".exr") {
+        ExrImage exr;
+        const ImageRgbF mean = tracer.readMean();
+        exr.width = mean.width;
+        exr.height = mean.height;
+        exr.addRgb(mean);
+        exr.metadata = provenance(side);
+        writeExr(path, exr, ExrPixelType::Float);
+    } else {
+        writePng(path, tracer.readToneMapped(model_.display), provenance(side));
+    }
+}
+
+ImageMetadata ViewerSession::provenance(Side side) const {
+    const PathTracer& tracer = *view(side).tracer;
+    const RenderRecipe recipe{tracer.settings(), model_.display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
+                              programOptions_.allFeatures};
+    return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
+}
+
+std::vector<std::filesystem::path> ViewerSession::saveScreenshots(const std::filesystem::path& directory) {
+    std::filesystem::create_directories(directory);
+    std::string stem = screenshotStem(model_.scene);
+    // Two saves within a second get distinct names.
+    for (int n = 2; std::filesystem::exists(directory / (stem + ".png")) ||
+                    std::filesystem::exists(directory / (stem + "-left.png"));
+         ++n)
+        stem = screenshotStem(model_.scene) + "-" + std::to_string(n);
+    std::vector<std::filesystem::path> written;
+    auto save = [&](Side side, const std::string& name) {
+        for (const char* extension : {".png", ".pfm", ".exr"}) {
+            std::filesystem::path path = directory / (name + extension);
+            writeImage(side, path);
+            written.push_back(path);
+        }
+    };
+    if (comparing()) {
+        save(Side::Left, stem + "-left");
+        save(Side::Right, stem + "-right");
+    } else {
+        save(Side::Left, stem);
+    }
+    return written;
+}
+
+// ---- per frame -------------------------------------------------------------------------------
+
+void ViewerSession::watchFiles() {
+    std::vector<std::filesystem::path> files = shaderFiles(shaderDir_);
+    if (!model_.fileScene.path.empty()) files.push_back(model_.fileScene.path);
+    if (!model_.scene.environmentMap.empty()) files.push_back(model_.scene.environmentMap);
+    watcher_.watch(files);
+}
+
+void ViewerSession::pollFiles() {
+    std::vector<std::filesystem::path> changed = watcher_.poll();
+    if (changed.empty()) return;
+    bool sceneChanged = false, mapChanged = false, shaderChanged = false;
+    for (const std::filesystem::path& file : changed) {
+        if (file == model_.fileScene.path)
+            sceneChanged = true;
+        else if (file == model_.scene.environmentMap)
+            mapChanged = true;
+        else
+            shaderChanged = true;
+    }
+    if (sceneChanged)
+        reloadScene();
+    else if (mapChanged && setEnvironmentMap(model_.scene.environmentMap))
+        ++reloadCount_;
+    if (shaderChanged) reloadShaders();
+}
+
+void ViewerSession::reloadShaders() {
+    ++reloadCount_;
+    try {
+        left_.tracer->reloadShaders();
+        if (right_) right_->tracer->reloadShaders();
+        model_.shaderError.clear();
+        model_.notice = "shaders reloaded from " + shaderDir_.string();
+    } catch (const ShaderError& e) {
+        model_.shaderError = e.what();
+    }
+}
+
+void ViewerSession::setImageArea(PixelRect area) {
+    imageArea_ = area;
+}
+
+RenderSettings ViewerSession::effectiveSettings(const RenderSettings& settings) const {
+    RenderSettings effective = settings;
+    effective.seed = model_.settings.seed; // both sides of a comparison see the same random numbers
+    effective.debugView = model_.settings.debugView;
+    if (model_.targetSamples > 0) effective.sampleBudget = static_cast<std::uint32_t>(model_.targetSamples);
+    return effective;
+}
+
+void ViewerSession::syncView(View& view, const RenderSettings& settings, unsigned changes) {
+    PathTracer& tracer = *view.tracer;
+    if (changes & ViewerModel::kSceneChanged) {
+        tracer.setScene(model_.scene, model_.environmentMap.get());
+        view.cost.forget();
+        view.previewCost.forget();
+    } else if (changes & ViewerModel::kMaterialsChanged) {
+        tracer.setMaterials(model_.scene.materials);
+    }
+    if (changes & ViewerModel::kCameraChanged) tracer.setCamera(model_.scene.camera);
+    if (changes & ViewerModel::kRestart) tracer.restart();
+    if (tracer.imageSize() != renderSize_) {
+        tracer.setImageSize(renderSize_);
+        view.cost.forget();
+        view.previewCost.forget();
+    }
+    if (tracer.settings() != settings || tracer.backend() != model_.backend) { // costs differ
+        view.cost.forget();
+        view.previewCost.forget();
+    }
+    tracer.setSettings(settings);
+    tracer.setBackend(model_.backend);
+    trackRestart(view);
+}
+
+glm::ivec2 ViewerSession::wantedRenderSize() const {
+    glm::vec2 scaled = glm::vec2(imageArea_.size) * model_.resolutionScale;
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    return glm::clamp(glm::ivec2(glm::round(scaled)), glm::ivec2(1), glm::ivec2(maxSize));
+}
+
+// The render follows the image area's size only when that loses nothing: while no view has a
+// complete sample (once the size has stopped changing for kResizeSettleSeconds, so a window being
+// dragged restarts once, not every frame), or when the accumulation starts over anyway (an edit,
+// a camera move, a setting, a new resolution scale, R). Otherwise an image survives Tab and
+// resizes, displayed scaled in its own aspect ratio (displayArea) until the user asks.
+void ViewerSession::followImageArea(unsigned changes) {
+    glm::ivec2 wanted = wantedRenderSize();
+    if (wanted != wantedSize_) wantedSize_ = wanted, wantedSince_ = Clock::now();
+    if (wanted == renderSize_) return;
+    auto settingsChange = [&](const View& view, const RenderSettings& settings) {
+        return view.tracer->settings() != effectiveSettings(settings) || view.tracer->backend() != model_.backend;
+    };
+    bool restarting = (changes & (ViewerModel::kSceneChanged | ViewerModel::kMaterialsChanged |
+                                  ViewerModel::kCameraChanged | ViewerModel::kRestart)) != 0 ||
+                      model_.resolutionScale != followedScale_ || settingsChange(left_, model_.settings) ||
+                      (right_ && settingsChange(*right_, model_.compare.right)) || (model_.compare.enabled && !right_);
+    bool nothingRendered = left_.tracer->sampleCount() == 0 && (!right_ || right_->tracer->sampleCount() == 0);
+    bool settled = secondsSince(wantedSince_) >= kResizeSettleSeconds;
+    if (renderSize_.x == 0 || restarting || (nothingRendered && settled)) {
+        model_.pinnedPixel.reset(); // its numbers would name another place of the picture
+        renderSize_ = wanted;
+        followedScale_ = model_.resolutionScale;
+    }
+}
+
+PixelRect ViewerSession::displayArea() const {
+    if (renderSize_.x <= 0 || renderSize_.y <= 0 || imageArea_.size.x <= 0 || imageArea_.size.y <= 0) return imageArea_;
+    // The render's aspect ratio, as large as fits, centred: bars where the shapes differ.
+    glm::vec2 area(imageArea_.size);
+    float scale = std::min(area.x / static_cast<float>(renderSize_.x), area.y / static_cast<float>(renderSize_.y));
+    glm::ivec2 size = glm::clamp(glm::ivec2(glm::round(glm::vec2(renderSize_) * scale)), glm::ivec2(1), imageArea_.size);
+    return PixelRect{imageArea_.origin + (imageArea_.size - size) / 2, size};
+}
+
+void ViewerSession::update() {
+    setPatternTarget();
+    unsigned changes = model_.pendingChanges | restartOnCompare();
+    model_.pendingChanges = 0;
+    followImageArea(changes);
+    if (model_.compare.enabled && !right_) {
+        // A first comparison shows something worth comparing: MIS against what the left side has.
+        CompareSettings& compare = model_.compare;
+        if (compare.right == model_.settings)
+            compare.right.integrator = model_.settings.integrator == Integrator::Mis ? Integrator::Naive : Integrator::Mis;
+        right_ = std::make_unique<View>();
+        right_->tracer = std::make_unique<PathTracer>(makePathTracer(model_.scene, model_.environmentMap.get(),
+                                                                     PathTracerOptions{programOptions_.allFeatures, model_.backend},
+                                                                     RenderSettings{}, shaderDir_));
+        right_->tracer->setPreviewEnabled(true);
+    }
+    try {
+        syncView(left_, effectiveSettings(model_.settings), changes);
+        if (right_) syncView(*right_, effectiveSettings(model_.compare.right), changes);
+    } catch (const EnvironmentMapError& e) { // a map larger than this GPU's textures
+        setEnvironmentMap({}); // the constant colour instead, and say why
+        model_.sceneError = e.what();
+    }
+}
+
+// Grid and stratified chosen without a target would run on past no end, showing a partial pattern
+// (SamplerMode.h); the target stops them where the pattern is complete. Also for a sampler given
+// on the command line, which is the user's choice too. A target the user set, or cleared after
+// this, stays theirs.
+void ViewerSession::setPatternTarget() {
+    SamplerMode samplers[2] = {model_.settings.sampler, model_.compare.right.sampler};
+    bool chosen = false;
+    for (int side = 0; side < 2; ++side) {
+        bool used = side == 0 || model_.compare.enabled;
+        if (used && samplers[side] != seenSampler_[side] && needsPatternTarget(samplers[side])) chosen = true;
+        if (used) seenSampler_[side] = samplers[side];
+    }
+    if (!chosen || model_.targetSamples != 0) return;
+    model_.targetSamples = kPatternTargetSamples;
+    model_.notice = "target set to " + std::to_string(kPatternTargetSamples) +
+                    " spp: grid and stratified patterns are complete only at the target";
+}
+
+// Equal time must mean equal time from the first frame: turning the split view on starts both
+// sides afresh, not the left one with a head start.
+unsigned ViewerSession::restartOnCompare() {
+    bool turnedOn = model_.compare.enabled && !seenCompare_;
+    seenCompare_ = model_.compare.enabled;
+    return turnedOn ? ViewerModel::kRestart : 0u;
+}
+
+void ViewerSession::trackRestart(View& view) {
+    if (view.tracer->restartCount() == view.seenRestartCount) return;
+    view.seenRestartCount = view.tracer->restartCount();
+    view.renderSeconds = 0.0;
+    view.error = ErrorEstimate{};
+    view.estimatedSamples = 0;
+    view.errorHistory.clear();
+    view.earlierMeans.clear();
+    view.trueError.reset();
+    view.trueErrorHistory.clear();
+}
+
+bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
+    if (model_.paused) return false;
+    if (model_.targetSamples > 0 && view.tracer->sampleCount() >= model_.targetSamples) return false;
+    return model_.maxSamplesPerFrame <= 0 || passesThisFrame < model_.maxSamplesPerFrame;
+}
+
+bool ViewerSession::accumulating() const {
+    bool left = wantsSamples(left_, 0);
+    return comparing() ? left || wantsSamples(*right_, 0) : left;
+}
+
+double ViewerSession::renderFrame(double budgetSeconds) {
+    View* views[2] = {&left_, comparing() ? right_.get() : nullptr};
+    int passes[2] = {0, 0};
+    Clock::time_point frameStart = Clock::now();
+    bool worked = false;
+    for (;;) {
+        // The view that is behind goes next: in GPU time, or in samples (with the pass in
+        // progress counted as a fraction).
+        int next = -1;
+        double behind = 0.0;
+        for (int i = 0; i < 2; ++i) {
+            if (!views[i] || !wantsSamples(*views[i], passes[i])) continue;
+            const PathTracer& tracer = *views[i]->tracer;
+            double progress = model_.compare.equalTime
+                                  ? views[i]->renderSeconds
+                                  : tracer.sampleCount() + double(tracer.nextRow()) / tracer.imageSize().y;
+            if (next < 0 || progress < behind) next = i, behind = progress;
+        }
+        if (next < 0) break;
+        double remaining = budgetSeconds - secondsSince(frameStart);
+        View& chosen = *views[next];
+        PathTracer& tracer = *chosen.tracer;
+        // Until the full size has a sample, the preview's passes first: an image within a frame
+        // or two however large the window (PathTracer::setPreviewEnabled).
+        bool preview = tracer.previewWanted();
+        TileCost& cost = preview ? chosen.previewCost : chosen.cost;
+        if (worked && (remaining <= 0.0 || cost.rowOverruns(remaining))) break;
+        int rowsLeft = preview ? tracer.previewLevelSize().y - tracer.previewNextRow() : tracer.imageSize().y - tracer.nextRow();
+        // The coarsest level's first pass (a thousand pixels or so) goes in one piece, whatever
+        // the budget: a loaded machine that gets a row per frame would otherwise take a frame per
+        // row before anything shows.
+        int rows = preview && !tracer.previewStarted() ? rowsLeft : cost.rowsFitting(remaining, rowsLeft);
+        Clock::time_point tileStart = Clock::now();
+        bool passDone = preview ? tracer.renderPreviewRows(rows) : tracer.renderRows(rows);
+        glFinish(); // the time of this tile's GPU work, not of its submission
+        double seconds = secondsSince(tileStart);
+        cost.record(rows, seconds);
+        chosen.renderSeconds += seconds;
+        worked = true;
+        if (passDone && !preview) ++passes[next];
+    }
+    double seconds = secondsSince(frameStart);
+    for (View* v : views)
+        if (v) updateErrorEstimate(*v);
+    return seconds;
+}
+
+void ViewerSession::updateErrorEstimate(View& view) {
+    int samples = view.tracer->sampleCount();
+    if (samples < 2 || samples == view.estimatedSamples) return;
+    if (secondsSince(view.lastEstimate) < kErrorEstimateIntervalSeconds) return;
+    view.lastEstimate = Clock::now();
+    view.estimatedSamples = samples;
+    PixelStatistics statistics = view.tracer->readStatistics();
+    recordErrorEstimate(view, statistics);
+    const ImageRgbF* reference = model_.reference.get();
+    if (reference && reference->width == statistics.mean.width && reference->height == statistics.mean.height) {
+        view.trueError = compareToReference(statistics.mean, *reference);
+        if (view.trueErrorHistory.size() == kErrorHistoryLength) view.trueErrorHistory.erase(view.trueErrorHistory.begin());
+        view.trueErrorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.trueError->relativeMse));
+    } else {
+        view.trueError.reset();
+    }
+}
+
+void ViewerSession::recordErrorEstimate(View& view, const PixelStatistics& statistics) {
+    // The latest earlier mean at half the samples or fewer; those before it are never needed again.
+    std::vector<std::pair<int, ImageRgbF>>& earlier = view.earlierMeans;
+    auto usable = std::find_if(earlier.rbegin(), earlier.rend(),
+                               [&](const auto& entry) { return 2 * entry.first <= statistics.sampleCount; });
+    if (usable != earlier.rend()) {
+        earlier.erase(earlier.begin(), usable.base() - 1);
+        view.error = estimateError(statistics, earlier.front().second, earlier.front().first,
+                                   view.tracer->settings().sampler);
+    } else {
+        view.error = estimateError(statistics, ImageRgbF(), 0, view.tracer->settings().sampler);
+    }
+    // Kept at counts that at least double, so a handful of images cover any run.
+    if (earlier.empty() || statistics.sampleCount >= 2 * earlier.back().first)
+        earlier.emplace_back(statistics.sampleCount, statistics.mean);
+    if (!view.error.reliable) return;
+    if (view.errorHistory.size() == kErrorHistoryLength) view.errorHistory.erase(view.errorHistory.begin());
+    view.errorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.error.relativeMse));
+}
+
+int ViewerSession::dividerX() const {
+    float fraction = std::clamp(model_.compare.dividerFraction, 0.0f, 1.0f);
+    PixelRect area = displayArea();
+    return area.origin.x + static_cast<int>(std::round(fraction * static_cast<float>(area.size.x)));
+}
+
+void ViewerSession::display() const {
+    PixelRect area = displayArea();
+    if (!comparing()) {
+        left_.tracer->display(area, model_.display);
+        return;
+    }
+    int divider = dividerX();
+    PixelRect leftClip{area.origin, {divider - area.origin.x, area.size.y}};
+    PixelRect rightClip{{divider, area.origin.y}, {area.origin.x + area.size.x - divider, area.size.y}};
+    if (leftClip.size.x > 0) left_.tracer->display(area, model_.display, leftClip);
+    if (rightClip.size.x > 0) right_->tracer->display(area, model_.display, rightClip);
+    // The divider: two pixels of white, drawn by clearing a scissored column.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(divider - 1, area.origin.y, 2, area.size.y);
+    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+ViewerSession::ViewStats ViewerSession::stats(Side side) const {
+    const View& v = view(side);
+    ViewStats stats;
+    stats.samples = v.tracer->sampleCount();
+    stats.renderSeconds = v.renderSeconds;
+    glm::ivec2 size = v.tracer->imageSize();
+    if (v.renderSeconds > 0.0)
+        stats.samplesPerSecond = double(size.x) * size.y * (stats.samples + double(v.tracer->nextRow()) / size.y) / v.renderSeconds;
+    stats.error = v.error;
+    stats.errorHistory = v.errorHistory;
+    stats.trueError = v.trueError;
+    stats.trueErrorHistory = v.trueErrorHistory;
+    return stats;
+}
+
+const RenderSettings& ViewerSession::settings(Side side) const {
+    return view(side).tracer->settings();
+}
+
+const ViewerSession::TracedPaths& ViewerSession::tracePaths(glm::ivec2 pixel, int count) {
+    update(); // the tracer renders what the user sees
+    if (!pathRecorder_) pathRecorder_ = std::make_unique<PathRecorder>();
+    PathTracer& tracer = *left_.tracer;
+    TracedPaths traced;
+    traced.paths = pathRecorder_->record(tracer, pixel, count);
+    traced.pixel = pixel;
+    traced.imageSize = tracer.imageSize();
+    traced.settings = tracer.settings();
+    traced.camera = model_.scene.camera;
+    tracedPaths_ = std::move(traced);
+    return *tracedPaths_;
+}
+
+} // namespace ptview

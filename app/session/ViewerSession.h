@@ -1,0 +1,218 @@
+#pragma once
+// The viewer without its window: the model the user edits, the path tracer(s) that render it,
+// and the actions the panels, keys and scripts share (open, reload, screenshots). Each frame the
+// window calls pollFiles, update, renderFrame and display. It needs a current OpenGL context but
+// knows nothing about GLFW or ImGui, so tests can drive it headless.
+
+#include <ptview/metrics/ErrorEstimate.h>
+#include <ptview/metrics/ErrorMetrics.h>
+#include <ptview/model/FileWatcher.h>
+#include <ptview/io/ImageMetadata.h>
+#include <ptview/tracer/PathRecorder.h>
+#include <ptview/tracer/PathTracer.h>
+#include <ptview/session/PixelInspection.h>
+#include <ptview/model/SceneInput.h>
+#include <ptview/session/TileCost.h>
+#include <ptview/model/ViewerModel.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ptview {
+
+class ViewerSession {
+public:
+    // Path tracing per displayed frame when the caller does not say: the viewer passes what is
+    // left of its ~33 ms frame after the display pass and the UI.
+    static constexpr double kDefaultTracingSeconds = 0.030;
+
+    enum class Side { Left, Right }; // Left is the only view outside compare mode
+
+    // What the Stats panel shows for one view.
+    struct ViewStats {
+        int samples = 0;
+        double renderSeconds = 0.0; // GPU time spent on the current accumulation
+        double samplesPerSecond = 0.0;
+        ErrorEstimate error;
+        // (render seconds, estimated relative MSE) once a second or so while the estimate is
+        // reliable, for the error-vs-time plot.
+        std::vector<std::pair<float, float>> errorHistory;
+        // Against the reference image, when one of the render's size is loaded.
+        std::optional<ErrorMetrics> trueError;
+        std::vector<std::pair<float, float>> trueErrorHistory; // (seconds, relative MSE)
+    };
+
+    // Compiles the programs from shaderDir (throws ShaderError). Without a backend in `program`,
+    // the tracer measures which is faster on this device (PathTracer::chooseBackend).
+    ViewerSession(SceneInput input, const RenderSettings& settings, const DisplaySettings& display,
+                  std::filesystem::path shaderDir, PathTracerOptions program = {});
+    ~ViewerSession();
+
+    ViewerModel& model() { return model_; }
+    const ViewerModel& model() const { return model_; }
+
+    // Actions. A file that cannot be read sets model().sceneError and changes nothing else.
+    bool openScene(const std::filesystem::path& path);
+    bool reloadScene(); // merges the file's changes with the user's edits (SceneMerge.h)
+    bool setEnvironmentMap(const std::filesystem::path& path); // empty: none (the constant colour)
+    // Loads a reference image (.pfm or .exr) for the true error; empty: none. A file that cannot be read
+    // sets model().sceneError.
+    bool setReference(const std::filesystem::path& path);
+    void resetCamera();                                          // to the scene file's camera
+    // Click-to-focus: sets the camera's focus distance to the distance along the view direction of
+    // the surface seen at `imageFraction` of the image (x right, y down from its top-left corner,
+    // each in [0, 1]), found by a one-pixel GPU pass (PathTracer::focusDistanceAt). Returns that
+    // distance, or nullopt (the camera unchanged) when nothing is there.
+    std::optional<float> focusAt(glm::vec2 imageFraction);
+    // The pixel inspector (ViewerModel::pinnedPixel). The render pixel (x from the left, y from
+    // the top) at imageFraction of the image, as focusAt takes it; nullopt before there is a render.
+    std::optional<glm::ivec2> pixelAt(glm::vec2 imageFraction) const;
+    // Alt+click: pins the pixel, or unpins it when it is the one pinned.
+    void togglePinnedPixel(glm::ivec2 pixel);
+    // Split view: the view whose numbers a pixel shows, by the side of the divider its centre is on.
+    Side sideOf(glm::ivec2 pixel) const;
+    // The pinned pixel's numbers now: one pixel read back from that side's accumulation, and the
+    // first hit, probed again only when the pixel, the side or the tracer's accumulation (camera,
+    // scene) changed. nullopt when none is pinned or it is outside the render.
+    std::optional<PixelInspection> inspectPinnedPixel();
+    // Whether the scene in memory differs from its file in anything the file holds, the camera
+    // included (a view the user set up is work): what quitting or opening another scene would
+    // throw away.
+    bool hasUnsavedEdits() const;
+    // The kinds of those edits, in this order: "materials" (those a glTF file made too),
+    // "lights", "camera", "environment", and "scene" for anything else; empty when there are none.
+    std::vector<std::string> unsavedEdits() const;
+    // Writes the scene with the user's edits (atomically) and makes that file the scene's file,
+    // the one hot reload watches, and the save target. Throws SceneError naming the file when it
+    // cannot be written. Edits to materials a glTF file made are saved as overrides in the scene
+    // file's reference to it (docs/scene-format.md, `gltf`).
+    void saveSceneAs(const std::filesystem::path& path);
+    // What Save writes to (the Materials panel's "Save scene as" field): the open scene's own
+    // file, or what the user typed since it was opened. Opening a scene, or saving as another
+    // file, makes that file the target.
+    const std::string& saveTarget() const { return saveTarget_; }
+    void setSaveTarget(std::string path) { saveTarget_ = std::move(path); }
+    // Whether saving to path would replace a file other than the open scene's own, which the
+    // viewer asks about first.
+    bool saveReplacesAnotherFile(const std::filesystem::path& path) const;
+    // Tone-mapped PNG, linear PFM and linear EXR of each view into directory, named after the scene and the
+    // time; returns the files written. Throws std::runtime_error when nothing is rendered yet or
+    // a file cannot be written.
+    std::vector<std::filesystem::path> saveScreenshots(const std::filesystem::path& directory);
+    // One image of a view: .png tone mapped as displayed, or .pfm or .exr (float) linear; the PNG and
+    // EXR carry the view's provenance (Provenance.h: the scene with its edits and the settings).
+    // Throws as above.
+    void writeImage(Side side, const std::filesystem::path& path) const;
+    // What a PNG or EXR of a view carries to be rendered again (Provenance.h); the window's
+    // screenshots carry the left view's.
+    ImageMetadata provenance(Side side) const;
+
+    // Per frame, in this order.
+    void pollFiles();                   // hot reload of the scene, its environment map and the shaders
+    void setImageArea(PixelRect area);  // where the image goes in the window's framebuffer
+    void update();                      // pushes model changes to the renderer(s)
+    // Path traces for up to budgetSeconds (at least one tile of one row, so a frame always
+    // progresses), measured with glFinish after each tile; returns the seconds spent.
+    double renderFrame(double budgetSeconds = kDefaultTracingSeconds);
+    void display() const;               // draws the view(s) into the image area
+
+    bool comparing() const { return model_.compare.enabled && right_ != nullptr; }
+    const PathTracer& tracer(Side side) const { return *view(side).tracer; }
+    ViewStats stats(Side side) const;
+    const RenderSettings& settings(Side side) const;
+    glm::ivec2 renderSize() const { return renderSize_; }
+    // The size the image area asks for (its size times the resolution scale). The render keeps
+    // its own size through a resize or Tab while it holds work worth keeping (see update); until
+    // then it is displayed scaled, and R (kRestart) renders at this size.
+    glm::ivec2 wantedRenderSize() const;
+    PixelRect imageArea() const { return imageArea_; }
+    // Where the image is drawn: the largest rectangle of the render's aspect ratio in the image
+    // area, centred (the whole area when the render has the area's shape).
+    PixelRect displayArea() const;
+    int dividerX() const; // framebuffer column of the split view's divider
+    // Reload attempts so far (scene, environment map or shaders, successful or not).
+    int reloadCount() const { return reloadCount_; }
+    // Whether the views still accumulate (not paused, target not reached).
+    bool accumulating() const;
+
+    // The paths behind a pixel (x from the left, y from the top of the render), traced on the GPU
+    // by the main view's tracer as it renders now (renderer/tracer/PathRecorder.*): its samples 0 ..
+    // count - 1. Throws std::invalid_argument for a pixel outside the render or count < 1.
+    struct TracedPaths {
+        glm::ivec2 pixel{0, 0};
+        glm::ivec2 imageSize{0, 0};
+        RenderSettings settings;
+        CameraDesc camera; // the view they were traced from
+        std::vector<RecordedPath> paths;
+    };
+    const TracedPaths& tracePaths(glm::ivec2 pixel, int count);
+    const std::optional<TracedPaths>& tracedPaths() const { return tracedPaths_; }
+
+private:
+    struct View {
+        std::unique_ptr<PathTracer> tracer;
+        TileCost cost;
+        TileCost previewCost; // of the preview's rows (PathTracer::renderPreviewRows)
+        double renderSeconds = 0.0;
+        int seenRestartCount = -1; // the tracer's restartCount() when renderSeconds was zeroed
+        int estimatedSamples = 0;  // the sample count `error` was estimated at
+        ErrorEstimate error;
+        std::vector<std::pair<float, float>> errorHistory;
+        std::optional<ErrorMetrics> trueError;
+        std::vector<std::pair<float, float>> trueErrorHistory;
+        std::chrono::steady_clock::time_point lastEstimate{};
+        // Means read back earlier in this accumulation, at sample counts at least doubling, for
+        // the error estimate (which compares the mean with one at half the samples or fewer).
+        std::vector<std::pair<int, ImageRgbF>> earlierMeans;
+    };
+
+    View& view(Side side) { return side == Side::Left ? left_ : *right_; }
+    const View& view(Side side) const { return side == Side::Left ? left_ : *right_; }
+    RenderSettings effectiveSettings(const RenderSettings& settings) const;
+    bool wantsSamples(const View& view, int passesThisFrame) const;
+    void syncView(View& view, const RenderSettings& settings, unsigned changes);
+    void trackRestart(View& view);
+    void updateErrorEstimate(View& view);
+    void followImageArea(unsigned changes);
+    void recordErrorEstimate(View& view, const PixelStatistics& statistics);
+    void watchFiles();
+    void reloadShaders();
+    void applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map);
+    void setPatternTarget();
+    unsigned restartOnCompare();
+
+    ViewerModel model_;
+    std::filesystem::path shaderDir_;
+    PathTracerOptions programOptions_;
+    View left_;
+    std::unique_ptr<View> right_; // created the first time compare mode is turned on
+    PixelRect imageArea_;
+    glm::ivec2 renderSize_{0, 0};
+    glm::ivec2 wantedSize_{0, 0};                 // wantedRenderSize() as last seen
+    std::chrono::steady_clock::time_point wantedSince_{}; // when it last changed
+    float followedScale_ = 1.0f;                  // the resolution scale renderSize_ was set with
+    FileWatcher watcher_;
+    int reloadCount_ = 0;
+    // What update() last saw, to act on a change: a grid or stratified sampler newly chosen gets a
+    // target (setPatternTarget), and the split view newly turned on restarts both sides.
+    SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
+    bool seenCompare_ = false;
+    std::string saveTarget_;
+    std::vector<std::filesystem::path> allowedDirectories_; // --allow-dir and the prompt's answers (ReadScope.h)
+    // The pixel inspector's last probe, and what it was probed for.
+    struct PixelProbe {
+        glm::ivec2 pixel{-1};
+        Side side = Side::Left;
+        int restartCount = -1;
+        std::optional<SurfaceHit> hit;
+    };
+    PixelProbe pixelProbe_;
+    std::unique_ptr<PathRecorder> pathRecorder_; // built on the first tracePaths
+    std::optional<TracedPaths> tracedPaths_;
+};
+
+} // namespace ptview

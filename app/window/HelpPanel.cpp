@@ -1,0 +1,53 @@
+#include <ptview/window/PanelWidgets.h>
+#include <ptview/window/Panels.h>
+
+#include <imgui.h>
+
+namespace ptview {
+namespace {
+
+struct Shortcut {
+    const char* keys;
+    const char* action;
+};
+
+constexpr Shortcut kShortcuts[] = {
+    {"Left drag", "orbit"},
+    {"Right or middle drag", "pan"},
+    {"Shift+left drag", "pan"},
+    {"Wheel", "zoom"},
+    {"Alt+click", "pin the pixel under the cursor in the Pixel panel (again: unpin)"},
+    {"Ctrl+click", "focus the lens on the surface under the cursor (Camera panel's aperture)"},
+    {"W A S D", "fly (Shift: faster)"},
+    {"Q E", "down / up (Shift: faster)"},
+    {"F", "reset camera"},
+    {"Space", "pause / resume"},
+    {"R", "restart accumulation"},
+    {"C", "toggle the compare split view; drag the white divider to move it"},
+    {"F12", "screenshot (PNG + PFM + EXR into screenshots/)"},
+    {"Tab", "hide / show the sidebar"},
+    {"F1", "this help"},
+    {"Esc", "quit (asks first when the scene has unsaved edits)"},
+};
+
+} // namespace
+
+void drawHelpPanel() {
+    if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+        for (const Shortcut& shortcut : kShortcuts) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(shortcut.keys);
+            ImGui::TableNextColumn();
+            ImGui::PushTextWrapPos(0.0f); // wraps at the column's edge
+            ImGui::TextUnformatted(shortcut.action);
+            ImGui::PopTextWrapPos();
+        }
+        ImGui::EndTable();
+    }
+    noteText("Edit the scene JSON or a shader on disk: the viewer reloads it; errors show in Scene / Render.");
+}
+
+} // namespace ptview

@@ -1,0 +1,107 @@
+#pragma once
+// Small widgets the sidebar's panels share: hover help, message text, a file picker for an
+// assets folder and a typed path with its button. Header only: each is a few lines of ImGui.
+
+#include <ptview/settings/EnumTable.h>
+#include <ptview/io/PrintableText.h>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace ptview {
+
+// The texts these widgets show may quote names, paths and errors from a file someone sent: each
+// shows its text through printableLines (PrintableText.h), so a control character reads as an
+// escape and a line break stays one.
+// Escaped only when shown (hovered): the panels call this for every widget every frame.
+inline void itemTooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", printableLines(text).c_str());
+}
+
+// A combo over an enum's table: each entry's label, with its description (where it has one) on
+// hover, in the list and on the closed combo. Returns whether an entry was picked.
+template <typename E>
+bool enumCombo(const char* label, const EnumTable<E>& table, E& value) {
+    bool picked = false;
+    if (ImGui::BeginCombo(label, table.entry(value).displayLabel())) {
+        for (const EnumEntry<E>& entry : table) {
+            if (ImGui::Selectable(entry.displayLabel(), entry.value == value)) {
+                value = entry.value;
+                picked = true;
+            }
+            if (*entry.description) itemTooltip(entry.description);
+        }
+        ImGui::EndCombo();
+    }
+    if (*table.entry(value).description) itemTooltip(table.entry(value).description);
+    return picked;
+}
+
+// Messages carry whole file paths, so they wrap at the panel's edge instead of widening it.
+inline void errorText(const std::string& text) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", printableLines(text).c_str());
+    ImGui::PopTextWrapPos();
+}
+
+inline void noteText(const std::string& text) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", printableLines(text).c_str());
+    ImGui::PopTextWrapPos();
+}
+
+// The files in directory with this extension (".json"), sorted; none when it cannot be read,
+// since a missing assets folder only means an empty list.
+inline std::vector<std::filesystem::path> filesWithExtension(const std::filesystem::path& directory,
+                                                             const std::string& extension) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (std::filesystem::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+        std::error_code typeError;
+        if (it->is_regular_file(typeError) && it->path().extension() == extension) files.push_back(it->path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// A combo of the files with `extension` in `directory`. The folder is read only while the combo
+// is open (a handful of files), so files added while the viewer runs show up. Returns the file
+// picked this frame.
+inline std::optional<std::filesystem::path> fileCombo(const char* label, const std::filesystem::path& directory,
+                                                      const std::string& extension,
+                                                      const std::filesystem::path& current) {
+    std::string preview = current.empty() ? "choose..." : printableText(current.filename().string());
+    if (!ImGui::BeginCombo(label, preview.c_str())) return std::nullopt;
+    std::optional<std::filesystem::path> picked;
+    std::vector<std::filesystem::path> files = filesWithExtension(directory, extension);
+    if (files.empty()) ImGui::TextDisabled("no %s files in %s", extension.c_str(), printableText(directory.string()).c_str());
+    for (const std::filesystem::path& file : files) {
+        std::error_code error; // `current` may name the same file by another path, or none
+        bool isCurrent = !current.empty() && std::filesystem::equivalent(file, current, error);
+        if (ImGui::Selectable(printableText(file.filename().string()).c_str(), isCurrent)) picked = file;
+        if (isCurrent) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+    return picked;
+}
+
+// A path field with a button on the same line; Enter in the field counts as a click. Returns
+// whether the user asked for a non-empty path.
+inline bool pathField(const char* buttonLabel, std::string& path) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float buttonWidth = ImGui::CalcTextSize(buttonLabel).x + 2.0f * style.FramePadding.x;
+    ImGui::SetNextItemWidth(-(buttonWidth + style.ItemSpacing.x));
+    bool submitted = ImGui::InputTextWithHint("##path", "or type a path", &path, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    submitted |= ImGui::Button(buttonLabel);
+    return submitted && !path.empty();
+}
+
+} // namespace ptview

@@ -1,0 +1,68 @@
+#pragma once
+// The sections of the viewer's sidebar. Each draws its controls (inside the sidebar window,
+// under its own collapsing header drawn by the caller) and edits the session's model or calls
+// its actions; the session pushes the changes to the renderer. One file per panel.
+
+#include <ptview/gl/GlObjects.h>
+#include <ptview/window/PathsOverlay.h>
+#include <ptview/session/UnsavedEditsPrompt.h>
+#include <ptview/session/ViewerSession.h>
+
+#include <string>
+#include <vector>
+
+namespace ptview {
+
+// Text the user is typing and choices that live between frames, one per viewer window.
+struct PanelState {
+    std::string scenePathInput;       // Scene panel: a path typed by the user
+    // Quit, open and Reload waiting for "save your edits?" (drawUnsavedEditsDialog asks).
+    UnsavedEditsPrompt unsavedEdits;
+    std::string environmentPathInput; // Environment panel: likewise, for an .hdr
+    std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
+    std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
+    bool screenshotFailed = false;
+    // Pixel panel: the material its "open in Materials" button asked for (-1: none); the window
+    // hands it to the Materials panel and opens that panel.
+    int materialToOpen = -1;
+    GlTexture pixelMagnifier; // Pixel panel: the magnified neighbourhood, uploaded each time it is drawn
+    PathPick selectedPath; // Pixel panel: the traced path and vertex the table shows (clicking a vertex on the image picks it)
+    // Panels to open on the next frame ("all" for every one), asked for by a script.
+    std::vector<std::string> panelsToOpen;
+};
+
+// Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,
+// tone mapper, compare mode, screenshot button.
+void drawRenderPanel(ViewerSession& session, PanelState& state);
+// Open a scene from assets/scenes/ or a typed path; reload; load errors.
+void drawScenePanel(ViewerSession& session, PanelState& state);
+// Environment map from assets/ or a typed path, intensity, rotation, constant colour.
+void drawEnvironmentPanel(ViewerSession& session, PanelState& state);
+// Point and spot lights: intensity, colour, position, direction and cone; area lights listed
+// with their emission (edited in Materials).
+void drawLightsPanel(ViewerSession& session);
+// Field of view, eye, orbit target, aperture and focus distance (Ctrl+click sets it), reset.
+void drawCameraPanel(ViewerSession& session);
+// Samples per pixel, ms per frame, samples per second, elapsed time, error estimate and its plot,
+// for each view of a comparison; and, with a reference image loaded, the true error and its plot.
+void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSeconds);
+// The pixel inspector: the pinned pixel's radiance (linear and displayed), spp, standard error,
+// NaN/Inf status, its first hit (position, shape, material with a button to open it, normals,
+// distance), the split view's side, and a magnifier; read again each time it is drawn.
+void drawPixelPanel(ViewerSession& session, PanelState& state);
+// Mouse and keyboard shortcuts.
+void drawHelpPanel();
+// In the Pixel panel: how many paths to trace for `pixel`, "Trace paths", and the traced paths'
+// vertex table (PathsPanel.cpp).
+void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel);
+// The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,
+// Discard, Cancel. Drawn outside the sidebar, so it shows with the sidebar hidden too.
+void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state);
+
+// Saves the screenshots (button and F12) and records the outcome in state.
+void saveScreenshots(ViewerSession& session, PanelState& state);
+
+// Where the viewer finds the scenes and maps it offers in its lists.
+inline const char* assetsDirectory() { return PTVIEW_ASSETS_DIR; }
+
+} // namespace ptview

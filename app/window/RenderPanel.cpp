@@ -1,0 +1,150 @@
+// The Render panel: how the image is computed and shown, the split view, and screenshots.
+#include <ptview/window/Panels.h>
+
+#include <ptview/window/PanelWidgets.h>
+#include <ptview/io/PrintableText.h>
+#include <ptview/settings/SettingRanges.h>
+
+#include <imgui.h>
+
+#include <exception>
+#include <optional>
+
+namespace ptview {
+namespace {
+
+// Grid and stratified are meant to stop at a complete pattern; say where this one stops.
+void patternNote(const ViewerModel& model) {
+    bool anyPattern = needsPatternTarget(model.settings.sampler) ||
+                      (model.compare.enabled && needsPatternTarget(model.compare.right.sampler));
+    if (!anyPattern) return;
+    if (model.targetSamples > 0)
+        noteText("the pattern is complete at the target, " + std::to_string(model.targetSamples) + " spp");
+    else
+        noteText("no target spp: the pattern is incomplete (patchy) until " +
+                 std::to_string(model.settings.sampleBudget) + " spp");
+}
+
+// An integer setting's slider over the span its range gives the panels (SettingRanges.h); a typed
+// value (Ctrl+click) stays in that span.
+void settingSlider(const char* label, int& value, const NumberRange& range) {
+    ImGui::SliderInt(label, &value, static_cast<int>(range.panelLo), static_cast<int>(range.panelHi), "%d",
+                     ImGuiSliderFlags_AlwaysClamp);
+}
+
+// Firefly control: off (unbiased) or a largest component per path vertex's contribution.
+void clampControls(RenderSettings& settings) {
+    constexpr float kFirstClamp = 10.0f; // what turning it on starts from: a few times a lit white wall
+    bool clamped = settings.radianceClamp.has_value();
+    if (ImGui::Checkbox("clamp", &clamped)) settings.radianceClamp = clamped ? std::optional<float>(kFirstClamp) : std::nullopt;
+    itemTooltip("firefly control, BIASED: each contribution of a path vertex (throughput x emission or x a light\n"
+                "sample) is scaled down to this largest component; the light cut off is lost, so the image\n"
+                "converges to a darker one than the true image");
+    if (!settings.radianceClamp) return;
+    ImGui::SameLine();
+    float value = *settings.radianceClamp;
+    if (ImGui::SliderFloat("##clamp value", &value, settingRanges::kRadianceClamp.panelLo, settingRanges::kRadianceClamp.panelHi, "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+        settings.radianceClamp = value;
+}
+
+} // namespace
+
+void saveScreenshots(ViewerSession& session, PanelState& state) {
+    try {
+        std::vector<std::filesystem::path> files = session.saveScreenshots("screenshots");
+        // Made printable here (PrintableText.h), line by line, since the panel and a script's
+        // stdout both show it: the files are named after the scene, which may be a stranger's.
+        state.screenshotMessage = "saved";
+        for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + printableText(file.string());
+        state.screenshotFailed = false;
+    } catch (const std::exception& e) {
+        state.screenshotMessage = printableText(std::string("screenshot not saved: ") + e.what());
+        state.screenshotFailed = true;
+    }
+}
+
+void drawRenderPanel(ViewerSession& session, PanelState& state) {
+    ViewerModel& model = session.model();
+    RenderSettings& settings = model.settings;
+    // Short labels, so the combos have room for whole entries; in compare mode these are the
+    // left side's, and the right side's follow a "right side" line below.
+    enumCombo("integrator", integratorNames(), settings.integrator);
+    settingSlider("MAX_DEPTH", settings.maxDepth, settingRanges::kMaxDepth);
+    itemTooltip("bounces after the camera ray; 0 shows only what the camera sees directly");
+    clampControls(settings);
+    enumCombo("sampler", samplerModeNames(), settings.sampler);
+    patternNote(model);
+
+    int perFrame = model.maxSamplesPerFrame;
+    // 0 is "auto", below the range (as the script's word is).
+    if (ImGui::SliderInt("samples/frame", &perFrame, 0, static_cast<int>(settingRanges::kSamplesPerFrame.panelHi),
+                         perFrame == 0 ? "auto" : "%d"))
+        model.maxSamplesPerFrame = perFrame;
+    itemTooltip("most samples per pixel per displayed frame; auto: as many as fit in 30 ms of GPU time.\n"
+            "A slow GPU renders a sample in tiles over several frames, so the window stays responsive.");
+    ImGui::SliderInt("target spp", &model.targetSamples, static_cast<int>(settingRanges::kTargetSamples.panelLo),
+                     static_cast<int>(settingRanges::kTargetSamples.panelHi), model.targetSamples == 0 ? "none" : "%d",
+                     ImGuiSliderFlags_Logarithmic);
+    itemTooltip("stop accumulating at this many samples per pixel (grid and stratified samplers are fully\n"
+            "stratified there); 0: never stop");
+    if (ImGui::Button(model.paused ? "Resume" : "Pause")) model.paused = !model.paused;
+    ImGui::SameLine();
+    if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;
+    // The backend, where there is a choice; the program is specialized to the scene either way.
+    ImGui::BeginDisabled(!PathTracer::computeSupported());
+    enumCombo("backend", backendNames(), model.backend);
+    ImGui::EndDisabled();
+    itemTooltip("fragment: a full-screen triangle (OpenGL 4.1); compute: a dispatch (OpenGL 4.3), which uses all of a\n"
+                "data-centre GPU's cores. At start the viewer took the one measured faster on this scene and device\n"
+                "(compute only where clearly faster), remembered per device and program.");
+    if (!model.backendChoice.empty()) noteText("auto: " + model.backendChoice);
+    const PathTracer& tracer = session.tracer(ViewerSession::Side::Left);
+    ImGui::TextDisabled("%d programs compiled (hover: this scene's features)", tracer.programsCompiled());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tracer.features().describe().c_str());
+    ImGui::SliderFloat("resolution", &model.resolutionScale, settingRanges::kResolutionScale.panelLo,
+                       settingRanges::kResolutionScale.panelHi, "%.3f x");
+    itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
+
+    enumCombo("view", debugViewNames(), settings.debugView);
+    itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
+    ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
+    // The light-path explorer: the same paths, only a part of what they carry added up.
+    enumCombo("light paths", lightPathsNames(), settings.lightPaths);
+    if (lightPathsUseBounces(settings.lightPaths)) settingSlider("bounces k", settings.lightPathBounces, settingRanges::kLightPathBounces);
+
+    ImGui::Separator();
+    ImGui::SliderFloat("exposure", &model.display.exposureStops, settingRanges::kExposure.panelLo, settingRanges::kExposure.panelHi,
+                       "%+.1f stops", ImGuiSliderFlags_AlwaysClamp);
+    enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper);
+
+    ImGui::Separator();
+    ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
+    itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
+    if (model.compare.enabled) {
+        ImGui::TextDisabled("right side (above: the left side):");
+        enumCombo("integrator##right", integratorNames(), model.compare.right.integrator);
+        enumCombo("sampler##right", samplerModeNames(), model.compare.right.sampler);
+        settingSlider("MAX_DEPTH##right", model.compare.right.maxDepth, settingRanges::kMaxDepth);
+        ImGui::Checkbox("equal time", &model.compare.equalTime);
+        itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
+                "off: both get the same number of samples per pixel");
+    }
+
+    ImGui::Separator();
+    if (ImGui::Button("Screenshot (F12)")) saveScreenshots(session, state);
+    itemTooltip("tone-mapped PNG, linear PFM and EXR of the image (each side in compare mode) into screenshots/");
+    if (!state.screenshotMessage.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(state.screenshotFailed ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f),
+                           "%s", state.screenshotMessage.c_str());
+        ImGui::PopTextWrapPos();
+    }
+    if (!model.shaderError.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "Shader reload failed (the last good shaders still run):\n%s",
+                           model.shaderError.c_str());
+        ImGui::PopTextWrapPos();
+    }
+}
+
+} // namespace ptview

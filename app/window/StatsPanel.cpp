@@ -1,0 +1,120 @@
+#include <ptview/settings/Integrator.h>
+#include <ptview/window/PanelWidgets.h>
+#include <ptview/window/Panels.h>
+#include <ptview/io/PrintableText.h>
+#include <ptview/settings/SamplerMode.h>
+
+#include <imgui.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace ptview {
+namespace {
+
+constexpr float kPlotHeight = 60.0f;
+
+void drawErrorPlot(const ViewerSession::ViewStats& stats) {
+    // Log scale: the error falls as 1/sqrt(time), so a straight line shows healthy convergence.
+    std::vector<float> logErrors;
+    logErrors.reserve(stats.errorHistory.size());
+    for (const auto& [seconds, relativeMse] : stats.errorHistory)
+        if (relativeMse > 0.0f && std::isfinite(relativeMse)) logErrors.push_back(std::log10(float(relativeError(relativeMse))));
+    if (logErrors.size() < 2) return;
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "%.3g %% (log scale)", 100.0 * relativeError(stats.errorHistory.back().second));
+    // An explicit width: PlotLines in ImGui 1.86 does not take -1 to mean "to the right edge".
+    ImGui::PlotLines("##error", logErrors.data(), static_cast<int>(logErrors.size()), 0, overlay, FLT_MAX, FLT_MAX,
+                     ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
+    itemTooltip("log10 of the estimated relative error, about once a second of rendering while the estimate is reliable");
+}
+
+void drawViewStats(const ViewerSession& session, ViewerSession::Side side, double frameSeconds) {
+    const ViewerModel& model = session.model();
+    const RenderSettings& settings = session.settings(side);
+    ViewerSession::ViewStats stats = session.stats(side);
+    ImGui::Text("%s: %s, %s", side == ViewerSession::Side::Left ? "left" : "right", integratorName(settings.integrator),
+                samplerModeName(settings.sampler));
+    if (model.targetSamples > 0) {
+        ImGui::Text("%d / %d spp%s", stats.samples, model.targetSamples,
+                    stats.samples >= model.targetSamples ? "  (target reached)" : "");
+    } else {
+        ImGui::Text("%d spp", stats.samples);
+    }
+    glm::ivec2 size = session.renderSize();
+    ImGui::Text("%d x %d pixels, %.1f ms/frame", size.x, size.y, frameSeconds * 1e3);
+    ImGui::Text("%.2f M samples/s, %.1f s rendering", stats.samplesPerSecond * 1e-6, stats.renderSeconds);
+    // The estimate and the true error are the same quantity (relative MSE as ErrorMetrics.h defines
+    // it), shown the same way, so with a reference loaded the two lines can be compared directly.
+    if (stats.error.reliable)
+        ImGui::Text("relative error ~%.3g %% (relMSE %.3g)", 100.0 * relativeError(stats.error.relativeMse),
+                    stats.error.relativeMse);
+    else
+        ImGui::TextUnformatted("relative error -  (not yet reliable)"); // ImGui's default font has no em dash
+    if (stats.error.reliable)
+        itemTooltip("estimated from the render itself: sqrt of the relative MSE against the image it converges to,\n"
+                    "mean of (x - converged)^2 / (converged^2 + 0.01); each pixel's change since an earlier read-back,\n"
+                    "over the brightness of the smallest neighbourhood that knows it (docs/viewer.md). Measures noise, not bias");
+    else
+        itemTooltip((std::string("no estimate yet: ") + stats.error.unreliableReason).c_str());
+    if (stats.trueError) {
+        const ErrorMetrics& e = *stats.trueError;
+        ImGui::Text("vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g", 100.0 * relativeError(e.relativeMse),
+                    e.relativeMse, e.rmse);
+        itemTooltip("the true error against the loaded reference image: sqrt of the relative MSE,\n"
+                    "mean of (x - ref)^2 / (ref^2 + 0.01); includes the reference's own noise");
+        ImGui::Text("bias %+.2g %+.2g %+.2g", e.meanBias.r, e.meanBias.g, e.meanBias.b);
+        itemTooltip("mean of the image minus mean of the reference, per channel: what more samples cannot remove");
+        std::vector<float> logs;
+        for (const auto& [seconds, relMse] : stats.trueErrorHistory)
+            if (relMse > 0.0f) logs.push_back(std::log10(float(relativeError(relMse))));
+        if (logs.size() >= 2) {
+            char overlay[48];
+            std::snprintf(overlay, sizeof overlay, "true %.3g %% (log scale)", 100.0 * relativeError(stats.trueErrorHistory.back().second));
+            ImGui::PlotLines("##trueError", logs.data(), static_cast<int>(logs.size()), 0, overlay, FLT_MAX, FLT_MAX,
+                             ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
+        }
+    } else if (model.reference) {
+        ImGui::TextDisabled("reference is %dx%d, the render %dx%d: no true error", model.reference->width,
+                            model.reference->height, session.renderSize().x, session.renderSize().y);
+    }
+    if (stats.error.nonFinitePixels > 0)
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%lld NaN/Inf pixels", stats.error.nonFinitePixels);
+    drawErrorPlot(stats);
+}
+
+} // namespace
+
+void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSeconds) {
+    const ViewerModel& model = session.model();
+    ImGui::PushID("reference");
+    if (pathField("Load reference", state.referencePathInput)) session.setReference(state.referencePathInput);
+    itemTooltip("a .pfm or .exr of this scene at the render's size (e.g. ptview render SCENE --spp 4096 --size WxH --out ref.pfm):\n"
+                "the panel then shows the true error against it");
+    if (model.reference) {
+        ImGui::TextDisabled("reference: %s", printableText(model.referencePath.filename().string()).c_str());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("none")) session.setReference({});
+    }
+    ImGui::PopID();
+    if (model.paused)
+        ImGui::TextUnformatted("paused (Space resumes)");
+    else if (!session.accumulating())
+        ImGui::TextUnformatted("target reached");
+    else
+        ImGui::TextUnformatted("rendering");
+    // Frame time is the whole frame's, the same for both views; the rest is each view's own.
+    ImGui::PushID("left");
+    drawViewStats(session, ViewerSession::Side::Left, frameSeconds);
+    ImGui::PopID();
+    if (!session.comparing()) return;
+    ImGui::Separator();
+    ImGui::PushID("right");
+    drawViewStats(session, ViewerSession::Side::Right, frameSeconds);
+    ImGui::PopID();
+}
+
+} // namespace ptview

@@ -1,0 +1,241 @@
+#pragma once
+// C++ mirrors of GPU data layouts. Each must match its GLSL declaration byte for byte.
+//
+// Integers inside float texels (kinds, indices) are stored as float VALUES, not bit patterns: the
+// bits of a small integer read as a float are a denormal, which a GPU may flush to zero on the
+// way through an RGBA32F texture. A float holds every integer up to 2^24 exactly, which bounds
+// what such a field may count (16.7 million triangles, nodes, lights).
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace ptview {
+
+// The per-frame values of every pass: the std140 uniform block FrameBlock, whose GLSL
+// (frame_uniforms.glsl) is generated from kFrameBlockFields below, so C++ writes each field at
+// the offset GLSL reads it from. alignas(16): std140 rounds a block up to a whole vec4.
+struct alignas(16) FrameUniforms {
+    glm::vec3 cameraEye;
+    float tanHalfFovY;
+    glm::vec3 cameraRight;
+    float aspect;
+    glm::vec3 cameraUp;
+    std::uint32_t frameIndex;
+    glm::vec3 cameraForward;
+    std::uint32_t seed;
+    glm::vec3 environmentRadiance;
+    std::int32_t maxDepth;
+    glm::ivec2 imageSize;
+    std::uint32_t samplerMode; // SamplerMode
+    std::uint32_t sampleBudget;
+    float sceneRadius;
+    float apertureRadius;
+    float focusDistance;
+    float radianceClamp;
+    std::int32_t lightPathBounces;
+    std::uint32_t samplesPerPass;
+};
+static_assert(sizeof(FrameUniforms) == 128, "eight vec4 slots");
+
+// One member of a std140 uniform block: its GLSL declaration and where C++ keeps it.
+struct UniformField {
+    std::string_view glslType; // float, int, uint, ivec2 or vec3
+    const char* name;
+    std::size_t offset;
+    std::size_t size;
+    const char* comment; // for the generated GLSL; "" for none
+};
+
+// FrameBlock, in declaration order; what each value means is said here once, for both sides.
+inline constexpr UniformField kFrameBlockFields[] = {
+    {"vec3", "uCameraEye", offsetof(FrameUniforms, cameraEye), sizeof(FrameUniforms::cameraEye), ""},
+    {"float", "uTanHalfFovY", offsetof(FrameUniforms, tanHalfFovY), sizeof(FrameUniforms::tanHalfFovY), ""},
+    {"vec3", "uCameraRight", offsetof(FrameUniforms, cameraRight), sizeof(FrameUniforms::cameraRight), ""},
+    {"float", "uAspect", offsetof(FrameUniforms, aspect), sizeof(FrameUniforms::aspect), "width / height"},
+    {"vec3", "uCameraUp", offsetof(FrameUniforms, cameraUp), sizeof(FrameUniforms::cameraUp), ""},
+    {"uint", "uFrameIndex", offsetof(FrameUniforms, frameIndex), sizeof(FrameUniforms::frameIndex),
+     "samples already accumulated"},
+    {"vec3", "uCameraForward", offsetof(FrameUniforms, cameraForward), sizeof(FrameUniforms::cameraForward), ""},
+    {"uint", "uSeed", offsetof(FrameUniforms, seed), sizeof(FrameUniforms::seed), ""},
+    {"vec3", "uEnvironmentRadiance", offsetof(FrameUniforms, environmentRadiance),
+     sizeof(FrameUniforms::environmentRadiance), ""},
+    {"int", "uMaxDepth", offsetof(FrameUniforms, maxDepth), sizeof(FrameUniforms::maxDepth),
+     "bounces; 0 shows emitters only"},
+    {"ivec2", "uImageSize", offsetof(FrameUniforms, imageSize), sizeof(FrameUniforms::imageSize), ""},
+    {"uint", "uSamplerMode", offsetof(FrameUniforms, samplerMode), sizeof(FrameUniforms::samplerMode),
+     "SamplerMode; see sampler.glsl"},
+    {"uint", "uSampleBudget", offsetof(FrameUniforms, sampleBudget), sizeof(FrameUniforms::sampleBudget),
+     "samples per pixel the grid and stratified patterns are sized for"},
+    {"float", "uSceneRadius", offsetof(FrameUniforms, sceneRadius), sizeof(FrameUniforms::sceneRadius),
+     "of the scene's bounding sphere: sets ray offsets (intersect.glsl)"},
+    {"float", "uApertureRadius", offsetof(FrameUniforms, apertureRadius), sizeof(FrameUniforms::apertureRadius),
+     "thin lens (camera_thin_lens.glsl), metres; 0: a pinhole"},
+    {"float", "uFocusDistance", offsetof(FrameUniforms, focusDistance), sizeof(FrameUniforms::focusDistance),
+     "metres along the view direction"},
+    {"float", "uRadianceClamp", offsetof(FrameUniforms, radianceClamp), sizeof(FrameUniforms::radianceClamp),
+     "largest component of one path vertex's contribution; 0: no clamp"},
+    {"int", "uLightPathBounces", offsetof(FrameUniforms, lightPathBounces), sizeof(FrameUniforms::lightPathBounces),
+     "k of the light-path views exactly / at most k (light_paths.glsl)"},
+    {"uint", "uSamplesPerPass", offsetof(FrameUniforms, samplesPerPass), sizeof(FrameUniforms::samplesPerPass),
+     "samples each pixel adds in this pass (pathtrace_sample.glsl)"},
+};
+
+namespace std140 {
+
+constexpr std::size_t sizeOf(std::string_view glslType) {
+    return glslType == "vec3" ? 12 : glslType == "ivec2" ? 8 : 4;
+}
+constexpr std::size_t alignmentOf(std::string_view glslType) {
+    return glslType == "vec3" ? 16 : glslType == "ivec2" ? 8 : 4;
+}
+constexpr std::size_t roundUp(std::size_t n, std::size_t alignment) { return (n + alignment - 1) / alignment * alignment; }
+
+// Whether GLSL, placing `fields` one after another by the std140 rules, puts each where C++ has
+// it, and the block's size is `blockSize`: then no field of the C++ struct is left out either.
+template <std::size_t N>
+constexpr bool matches(const UniformField (&fields)[N], std::size_t blockSize) {
+    std::size_t end = 0;
+    for (const UniformField& field : fields) {
+        if (field.size != sizeOf(field.glslType) || field.offset != roundUp(end, alignmentOf(field.glslType)))
+            return false;
+        end = field.offset + field.size;
+    }
+    return blockSize == roundUp(end, 16);
+}
+
+} // namespace std140
+
+static_assert(std140::matches(kFrameBlockFields, sizeof(FrameUniforms)),
+              "kFrameBlockFields must list FrameUniforms' members in order, at their std140 offsets");
+
+// shaders/scene_data.glsl: one texel (RGBA32F) of a buffer texture.
+struct GpuSphere {
+    glm::vec3 center;
+    float radius;
+};
+static_assert(sizeof(GpuSphere) == 16, "one RGBA32F texel");
+
+// The parallelogram center +- u +- v, and what its ray test needs precomputed (scene_data.glsl
+// fetchQuad, intersect.glsl intersectQuad): with dual = normal / |normal|^2, the reciprocal basis
+// reciprocalU = cross(v, dual), reciprocalV = cross(dual, u) turns a hit's offset from the center
+// into its coordinates along u and v; the w's are magnitudes for the test's rounding bound.
+struct GpuQuad {
+    glm::vec4 center;      // w: max |component| of center
+    glm::vec4 normal;      // cross(u, v), the front side; w unused
+    glm::vec4 reciprocalU; // w: |x| + |y| + |z|
+    glm::vec4 reciprocalV; // w: |x| + |y| + |z|
+    glm::vec4 u;           // w unused
+    glm::vec4 v;           // w unused
+};
+static_assert(sizeof(GpuQuad) == 96, "six RGBA32F texels");
+
+// Texels per record: record i of a buffer starts at texel kQuadTexels * i. These sizes are
+// generated into the GLSL (gpu_layout.glsl), which never spells them.
+constexpr int kQuadTexels = sizeof(GpuQuad) / 16;
+
+struct GpuDisk {
+    glm::vec3 center;
+    float radius;
+    glm::vec3 normal; // unit, the front side
+    float pad;
+};
+static_assert(sizeof(GpuDisk) == 32, "two RGBA32F texels");
+
+// Per primitive (RG32I): its material and, when it emits, its light index (else -1). The
+// spheres', quads' and disks' ids share one buffer, in that order.
+struct GpuPrimitiveIds {
+    std::int32_t material;
+    std::int32_t light;
+};
+static_assert(sizeof(GpuPrimitiveIds) == 8, "one RG32I texel");
+
+// shaders/lights.glsl: four RGBA32F texels per light. The first holds the kind, the primitive and
+// the light's cumulative selection probability (the table is searched by it); the other three
+// depend on the kind:
+//   point, spot: (position, cosInner), (unit direction, cosOuter), (intensity W sr^-1, -)
+//   triangle:    (v0, -), (v1, -), (v2, -) in world space; front side along cross(v1 - v0, v2 - v0)
+//   quad, sphere, disk, environment: unused (the primitive's own data is read instead)
+struct GpuLight {
+    float kind;      // LightKind
+    float primitive; // quad, sphere or disk: its index; triangle: its material
+    float cdf;       // selection probability of this light and all before it
+    float pad;
+    glm::vec4 texels[3];
+};
+static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
+constexpr int kLightTexels = sizeof(GpuLight) / 16;
+
+// shaders/scene_data.glsl: ten RGBA32F texels per material. Texture indices are into
+// Scene::textures, -1 for none; slots (scale.xy, offset.xy) in the order base colour, roughness,
+// metallic, normal, emission. The texture fields are read only by programs with textures.
+struct GpuMaterial {
+    glm::vec3 color;
+    float ior;
+    glm::vec3 radiance;
+    float roughness;
+    float type; // MaterialType
+    float metallic;
+    float transmission;
+    float alpha;
+    float alphaMode; // AlphaMode
+    float alphaCutoff;
+    float normalScale;
+    float emissionTexture;
+    glm::vec4 textures; // base colour, roughness, metallic, normal
+    glm::vec4 slots[5];
+};
+static_assert(sizeof(GpuMaterial) == 160, "ten RGBA32F texels");
+constexpr int kMaterialTexels = sizeof(GpuMaterial) / 16;
+
+// shaders/textures.glsl: two RGBA32F texels per texture, after the materials in their buffer.
+// Where the texture lies in the atlas (layer, texel origin, size) and how it is read.
+struct GpuTextureRecord {
+    float layer;
+    float originX;
+    float originY;
+    float width;
+    float height;
+    float wrapU; // TextureWrap
+    float wrapV;
+    float flags; // 1: sRGB, 2: bilinear
+};
+static_assert(sizeof(GpuTextureRecord) == 32, "two RGBA32F texels");
+constexpr int kTextureRecordTexels = sizeof(GpuTextureRecord) / 16;
+
+// shaders/mesh_intersect.glsl: a BVH node as two RGBA32F texels, with its integers as float values
+// (GpuLayout.h says why).
+struct GpuBvhNode {
+    glm::vec3 boundsMin;
+    float firstOrRight; // leaf: first triangle (or instance); interior: right child
+    glm::vec3 boundsMax;
+    float count;        // primitives in a leaf; 0 for an interior node
+};
+static_assert(sizeof(GpuBvhNode) == 32, "two RGBA32F texels");
+
+// shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH
+// leaves (so a leaf's triangles are contiguous). Triangles of meshes that a normal-mapped material
+// covers have three more texels, after all triangles in the same buffer: the corners' tangents
+// (xyz unit, w the bitangent's sign: MeshTangents.h); other meshes carry none.
+struct GpuTriangle {
+    glm::vec3 p0;
+    float materialSlot; // into the instance's material table (an integer value: GpuLayout.h)
+    glm::vec3 p1;
+    float tangentTexel; // first of the triangle's three tangent texels in the buffer; -1: none
+    glm::vec3 p2;
+    float pad1;
+    glm::vec4 n0AndU0;  // per-corner shading normals (0: none, use the geometric normal) and
+    glm::vec4 n1AndV0;  // texture coordinates (0 when the mesh has none)
+    glm::vec4 n2AndU1;
+    glm::vec4 v1U2V2;   // (v1, u2, v2, -)
+};
+static_assert(sizeof(GpuTriangle) == 112, "seven RGBA32F texels");
+constexpr int kTriangleTexels = sizeof(GpuTriangle) / 16; // generated into gpu_layout.glsl
+
+// Texels per instance: world-to-object and object-to-world rows (three each), (bottom-level root,
+// first triangle, material table offset, first light or -1), and a spare texel (uploadInstances).
+constexpr int kInstanceTexels = 8;
+
+} // namespace ptview

@@ -1,0 +1,526 @@
+#include <ptview/tracer/PathTracer.h>
+
+#include <ptview/gpu/GlslEnums.h>
+#include <ptview/gpudata/GpuLayout.h>
+#include <ptview/probes/ProbePass.h>
+#include <ptview/gl/Readback.h>
+
+#include <algorithm>
+#include <chrono>
+#include <tuple>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+constexpr GLuint kFrameBlockBinding = 0;
+constexpr int kAccumulationUnit = 0;                             // units 0..2
+constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // units 3..12
+constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // units 13..15
+static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
+static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
+
+// Our passes own all of this state; ImGui or a caller may have changed it.
+void resetPassState() {
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_FRAMEBUFFER_SRGB); // the display pass encodes gamma itself
+}
+
+} // namespace
+
+bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
+    if (features != other.features) return features < other.features;
+    return std::tie(integrator, sampler, debugView, lightPaths, backend) <
+           std::tie(other.integrator, other.sampler, other.debugView, other.lightPaths, other.backend);
+}
+
+PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
+    ShaderAssembler assembler(shaderDir_);
+    addGlslEnums(assembler); // the tone mappers
+    DisplayProgram display;
+    display.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("display.frag"));
+    const GlProgram& show = *display.program;
+    show.bindSamplerUnit("uSum", 0);
+    show.bindSamplerUnit("uCompensation", 1);
+    display.invSampleCount = show.uniformLocation("uInvSampleCount");
+    display.exposureScale = show.uniformLocation("uExposureScale");
+    display.toneMapper = show.uniformLocation("uToneMapper");
+    display.highlightNonFinite = show.uniformLocation("uHighlightNonFinite");
+    display.outputOrigin = show.uniformLocation("uOutputOrigin");
+    display.outputSize = show.uniformLocation("uOutputSize");
+    return display;
+}
+
+PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) const {
+    ShaderAssembler assembler(shaderDir_);
+    specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView, key.lightPaths);
+    TraceProgram trace;
+    if (key.backend == Backend::Compute) {
+        trace.source = assembler.assemble("pathtrace.comp");
+        trace.program = std::make_unique<GlProgram>(trace.source);
+        Accumulator::bindImages(*trace.program, 0);
+        trace.tileOrigin = trace.program->uniformLocation("uTileOrigin");
+        trace.tileEnd = trace.program->uniformLocation("uTileEnd");
+    } else {
+        trace.source = assembler.assemble("pathtrace.frag");
+        trace.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), trace.source);
+    }
+    trace.program->bindUniformBlock("FrameBlock", kFrameBlockBinding);
+    Accumulator::bindSamplers(*trace.program, kAccumulationUnit);
+    return trace;
+}
+
+PathTracer::TraceProgram& PathTracer::useTraceProgram() {
+    auto found = tracePrograms_.find(programKey_);
+    if (found == tracePrograms_.end()) {
+        found = tracePrograms_.emplace(programKey_, buildTraceProgram(programKey_)).first;
+        ++programsCompiled_;
+    }
+    TraceProgram& trace = found->second;
+    if (attached_ != &trace) { // uniform locations differ between programs
+        attachScene(*trace.program);
+        attached_ = &trace;
+    }
+    return trace;
+}
+
+void PathTracer::attachScene(const GlProgram& program) {
+    gpuScene_.attach(program, kSceneUnit);
+    environmentMap_.attach(program, kEnvironmentUnit);
+}
+
+void PathTracer::bindScene(const GlProgram& program, const Accumulator& target, int samplesPerPass) {
+    updateFrameUniforms(target, samplesPerPass);
+    resetPassState();
+    glUseProgram(program.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
+    gpuScene_.bind();
+    environmentMap_.bind();
+}
+
+void PathTracer::updateProgramKey() {
+    programKey_.features = options_.allFeatures ? ShaderFeatures::all() : sceneFeatures(scene_);
+    programKey_.integrator = settings_.integrator;
+    programKey_.sampler = settings_.sampler;
+    programKey_.debugView = settings_.debugView;
+    programKey_.lightPaths = settings_.lightPaths;
+    programKey_.backend = backend_;
+}
+
+const AssembledShader& PathTracer::pathTraceSource() {
+    return useTraceProgram().source;
+}
+
+bool PathTracer::computeSupported() {
+    return GLAD_GL_VERSION_4_3 != 0;
+}
+
+void PathTracer::setBackend(Backend backend) {
+    if (backend == Backend::Compute && !computeSupported())
+        throw std::runtime_error("the compute backend needs OpenGL 4.3; this context has " +
+                                 std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))));
+    if (backend == backend_) return;
+    backend_ = backend;
+    updateProgramKey();
+    restart();
+}
+
+BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
+    if (!computeSupported()) {
+        setBackend(Backend::Fragment);
+        return BackendChoice{Backend::Fragment, 0.0, false};
+    }
+    const std::string device = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", " +
+                               reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    const std::string program = programKey_.features.describe() + integratorName(programKey_.integrator) + " " +
+                                samplerModeName(programKey_.sampler) + " " + debugViewName(programKey_.debugView) + " " +
+                                lightPathsName(programKey_.lightPaths);
+    const std::string key = backendCacheKey(device, program);
+    std::optional<BackendChoice> choice = cache.find(key);
+    if (!choice) {
+        choice = decideBackend(timeBackends());
+        cache.store(key, *choice);
+    }
+    setBackend(choice->backend);
+    restart();
+    return *choice;
+}
+
+// Alternating rounds (fragment first, then compute first, ...) of the same passes at 128x128, a
+// warm-up pass of each first so that compiling and first use stay out of the timings.
+std::vector<BackendTiming> PathTracer::timeBackends() {
+    constexpr int kRounds = 5;
+    constexpr int kPassesPerRound = 2;
+    const glm::ivec2 size = accumulator_.size();
+    const Backend previous = backend_;
+    auto timePasses = [this](Backend candidate) {
+        setBackend(candidate);
+        setImageSize({128, 128});
+        glFinish();
+        auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < kPassesPerRound; ++i) renderSample();
+        glFinish();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    timePasses(Backend::Fragment);
+    timePasses(Backend::Compute);
+    std::vector<BackendTiming> rounds(kRounds);
+    for (int round = 0; round < kRounds; ++round) {
+        if (round % 2 == 0) {
+            rounds[round].fragmentSeconds = timePasses(Backend::Fragment);
+            rounds[round].computeSeconds = timePasses(Backend::Compute);
+        } else {
+            rounds[round].computeSeconds = timePasses(Backend::Compute);
+            rounds[round].fragmentSeconds = timePasses(Backend::Fragment);
+        }
+    }
+    setBackend(previous);
+    if (size.x > 0) setImageSize(size);
+    return rounds;
+}
+
+PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions options)
+    : shaderDir_(shaderDir), options_(options) {
+    display_ = buildDisplayProgram();
+    if (options_.backend) setBackend(*options_.backend);
+    emptyVertexArray_ = createVertexArray();
+    frameUniformBuffer_ = createBuffer();
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
+    glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameUniforms), nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    updateProgramKey();
+}
+
+void PathTracer::reloadShaders() {
+    // Everything is built before anything is replaced: a failure leaves the old programs running.
+    DisplayProgram display = buildDisplayProgram();
+    TraceProgram trace = buildTraceProgram(programKey_);
+    display_ = std::move(display);
+    tracePrograms_.clear();
+    surfaceProbe_.reset(); // built again from the new files when next asked
+    attached_ = nullptr;
+    tracePrograms_.emplace(programKey_, std::move(trace));
+    ++programsCompiled_;
+    restart();
+}
+
+void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentMap) {
+    std::optional<EnvironmentMap> loaded;
+    if (!environmentMap && !scene.environmentMap.empty()) environmentMap = &loaded.emplace(loadEnvironmentMap(scene.environmentMap));
+    environmentMap_.upload(scene.environmentMap.empty() ? nullptr : environmentMap, scene.environmentIntensity,
+                           scene.environmentRotationDeg);
+    gpuScene_.upload(scene, environmentMap_.hasMap() ? std::optional<glm::vec3>(environmentMap_.meanRadiance()) : std::nullopt);
+    scene_ = scene;
+    updateProgramKey();
+    camera_ = scene.camera;
+    environmentRadiance_ = scene.environment;
+    restart();
+}
+
+void PathTracer::setMaterials(const std::vector<Material>& materials) {
+    scene_.materials = materials;
+    gpuScene_.uploadMeshTangentsIfChanged(scene_); // a normal map added to or taken from a mesh
+    gpuScene_.uploadMaterials(materials);
+    updateProgramKey(); // a model the scene did not use before needs a program that has it
+    restart();
+}
+
+void PathTracer::setCamera(const CameraDesc& camera) {
+    glm::ivec2 resolution = camera_.resolution;
+    camera_ = camera;
+    camera_.resolution = resolution;
+    scene_.camera = camera_;
+    updateProgramKey(); // opening the lens from 0 (or closing it) needs the program with (or without) it
+    restart();
+}
+
+void PathTracer::restart() {
+    accumulator_.restart();
+    for (Accumulator& level : previews_) level.restart();
+    nextRow_ = 0;
+    previewLevel_ = 0;
+    previewNextRow_ = 0;
+    ++restartCount_;
+}
+
+void PathTracer::setSettings(const RenderSettings& settings) {
+    if (settings == settings_) return;
+    settings_ = settings;
+    updateProgramKey();
+    restart();
+}
+
+void PathTracer::setImageSize(glm::ivec2 size) {
+    if (size == accumulator_.size()) return;
+    accumulator_.resize(size);
+    nextRow_ = 0;
+    resizePreview();
+    ++restartCount_;
+}
+
+void PathTracer::setPreviewEnabled(bool enabled) {
+    previewEnabled_ = enabled;
+    resizePreview();
+}
+
+void PathTracer::resizePreview() {
+    glm::ivec2 size = accumulator_.size();
+    std::vector<glm::ivec2> sizes; // coarsest first
+    if (previewEnabled_ && double(size.x) * size.y > kPreviewedPixels) {
+        // Whole factors (8, 32, 128, ...), so each preview pixel covers the same block of
+        // full-size pixels.
+        for (int factor = 8; double(size.x) * size.y / (double(factor) * factor) >= kCoarsestPreviewPixels / 4.0; factor *= 4)
+            sizes.insert(sizes.begin(), glm::max(glm::ivec2(1), (size + factor - 1) / factor));
+        while (sizes.size() > 1 && double(sizes[1].x) * sizes[1].y <= kCoarsestPreviewPixels) sizes.erase(sizes.begin());
+    }
+    std::vector<Accumulator> levels(sizes.size());
+    for (size_t i = 0; i < sizes.size(); ++i) levels[i].resize(sizes[i]);
+    previews_ = std::move(levels);
+    previewLevel_ = 0;
+    previewNextRow_ = 0;
+}
+
+bool PathTracer::previewWanted() const {
+    return accumulator_.sampleCount() == 0 && previewLevel_ < previews_.size();
+}
+
+glm::ivec2 PathTracer::previewLevelSize() const {
+    return previewLevel_ < previews_.size() ? previews_[previewLevel_].size() : glm::ivec2(0);
+}
+
+bool PathTracer::previewStarted() const {
+    return !previews_.empty() && previews_[0].sampleCount() > 0;
+}
+
+const Accumulator* PathTracer::shownPreview() const {
+    if (previews_.empty() || accumulator_.sampleCount() > 0) return nullptr;
+    // The finest level done since the last restart (a finer one at fewer samples would look
+    // noisier), or begun; else the full size's sums from before the restart (the viewer keeps
+    // showing the old image rather than black); else the finest old level.
+    for (size_t i = previews_.size(); i-- > 0;)
+        if (previews_[i].sampleCount() >= kPreviewSamples) return &previews_[i];
+    for (size_t i = previews_.size(); i-- > 0;)
+        if (previews_[i].sampleCount() > 0) return &previews_[i];
+    if (accumulator_.displayedSampleCount() > 0) return nullptr;
+    for (size_t i = previews_.size(); i-- > 0;)
+        if (previews_[i].displayedSampleCount() > 0) return &previews_[i];
+    return nullptr;
+}
+
+glm::ivec2 PathTracer::shownPreviewSize() const {
+    const Accumulator* shown = shownPreview();
+    return shown ? shown->size() : glm::ivec2(0);
+}
+
+void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPass) {
+    glm::ivec2 size = target.size();
+    const CameraFrame camera = cameraFrame(camera_);
+    FrameUniforms frame{};
+    frame.cameraEye = camera_.eye;
+    frame.tanHalfFovY = std::tan(glm::radians(camera_.vfovDeg) * 0.5f);
+    frame.cameraRight = camera.right;
+    frame.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    frame.cameraUp = camera.up;
+    frame.frameIndex = static_cast<std::uint32_t>(target.sampleCount());
+    frame.cameraForward = camera.forward;
+    frame.seed = settings_.seed;
+    frame.environmentRadiance = environmentRadiance_;
+    frame.maxDepth = settings_.maxDepth;
+    frame.lightPathBounces = settings_.lightPathBounces;
+    frame.samplesPerPass = static_cast<std::uint32_t>(samplesPerPass);
+    frame.imageSize = size;
+    frame.samplerMode = static_cast<std::uint32_t>(settings_.sampler);
+    frame.sampleBudget = settings_.sampleBudget;
+    frame.sceneRadius = gpuScene_.sceneRadius();
+    frame.apertureRadius = camera_.apertureRadius;
+    frame.focusDistance = camera_.focusDistance;
+    frame.radianceClamp = settings_.radianceClamp.value_or(0.0f);
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniformBuffer_.id());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameUniforms), &frame);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
+    glm::ivec2 size = accumulator_.size();
+    if (size.x <= 0 || size.y <= 0) return std::nullopt; // no film to place the position on
+    if (!surfaceProbe_ || surfaceProbe_->features != programKey_.features) {
+        ShaderAssembler assembler(shaderDir_);
+        specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler);
+        SurfaceProbe probe;
+        probe.features = programKey_.features;
+        probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("surface_probe.frag"));
+        probe.filmPos = probe.program->uniformLocation("uFilmPos");
+        surfaceProbe_ = std::move(probe);
+    }
+    const GlProgram& program = *surfaceProbe_->program;
+    useSceneIn(program);
+    glUniform2f(surfaceProbe_->filmPos, filmPos.x, filmPos.y);
+    std::vector<ProbeData> texels = runProbePass(program, 1, {}, 4);
+    glm::vec4 distances = texels[0][0], position = texels[1][0], normalGeom = texels[2][0], normalShading = texels[3][0];
+    if (!(distances.x > 0.0f) || !std::isfinite(distances.x)) return std::nullopt;
+    SurfaceHit hit;
+    hit.distance = distances.x;
+    hit.viewDistance = distances.y;
+    hit.uv = glm::vec2(distances.z, distances.w);
+    hit.position = glm::vec3(position);
+    hit.material = static_cast<int>(position.w);
+    hit.normalGeom = glm::vec3(normalGeom);
+    hit.primitiveKind = static_cast<PrimitiveKind>(static_cast<int>(normalGeom.w));
+    hit.normalShading = glm::vec3(normalShading);
+    hit.primitive = static_cast<int>(normalShading.w);
+    hit.shape = shapeOfPrimitive(scene_, hit.primitiveKind, hit.primitive, gpuScene_.meshes().instances());
+    return hit;
+}
+
+std::optional<float> PathTracer::focusDistanceAt(glm::vec2 filmPos) {
+    std::optional<SurfaceHit> hit = probeSurface(filmPos);
+    if (!hit || !(hit->viewDistance > 0.0f)) return std::nullopt;
+    return hit->viewDistance;
+}
+
+PixelReading PathTracer::readPixel(glm::ivec2 pixel, const DisplaySettings& settings) const {
+    glm::ivec2 size = accumulator_.size();
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y)
+        throw std::out_of_range("pixel " + std::to_string(pixel.x) + " " + std::to_string(pixel.y) + " is outside the " +
+                                std::to_string(size.x) + "x" + std::to_string(size.y) + " image");
+    glm::ivec2 glPixel(pixel.x, size.y - 1 - pixel.y); // GL rows run bottom-up
+    PixelReading reading = accumulator_.readPixel(glPixel);
+    ImageRgba8 shown = readDisplayed(pixel, glm::ivec2(1), settings);
+    reading.displayed = glm::u8vec3(shown.rgba[0], shown.rgba[1], shown.rgba[2]);
+    return reading;
+}
+
+ImageRgba8 PathTracer::readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const DisplaySettings& settings) const {
+    glm::ivec2 imageSize = accumulator_.size();
+    // The whole image drawn with the region's bottom-left pixel on the target's: each texel's
+    // centre falls on its pixel's centre, so the colours are the display's own, tone mapping and all.
+    glm::ivec2 glOrigin(topLeft.x, imageSize.y - (topLeft.y + size.y));
+    return renderOffscreenRgba8(size, [&](glm::ivec2) {
+        drawMean(accumulator_, PixelRect{-glOrigin, imageSize}, settings, PixelRect{{0, 0}, size});
+    });
+}
+
+void PathTracer::useSceneIn(const GlProgram& program) {
+    program.bindUniformBlock("FrameBlock", kFrameBlockBinding);
+    attachScene(program);
+    attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
+    bindScene(program, accumulator_, 1);
+}
+
+void PathTracer::renderSample() {
+    renderRows(accumulator_.size().y);
+}
+
+void PathTracer::warmUp() {
+    renderSample();
+    glFinish();
+    restart();
+}
+
+void PathTracer::renderSamples(int count) {
+    const int target = accumulator_.sampleCount() + count;
+    if (nextRow_ > 0) renderRows(accumulator_.size().y); // a pass begun by renderRows ends first
+    while (accumulator_.sampleCount() < target)
+        renderRowsInto(accumulator_, nextRow_, accumulator_.size().y, std::min(samplesPerPass(), target - accumulator_.sampleCount()));
+}
+
+int PathTracer::samplesPerPass() const {
+    glm::ivec2 size = accumulator_.size();
+    return std::clamp(kPixelSamplesPerPass / std::max(1, size.x * size.y), 1, kMaxSamplesPerPass);
+}
+
+bool PathTracer::renderRows(int rowCount) {
+    return renderRowsInto(accumulator_, nextRow_, rowCount, 1);
+}
+
+bool PathTracer::renderPreviewRows(int rowCount) {
+    if (previewLevel_ >= previews_.size()) return false;
+    Accumulator& level = previews_[previewLevel_];
+    bool done = renderRowsInto(level, previewNextRow_, rowCount, 1);
+    if (done && level.sampleCount() >= kPreviewSamples) ++previewLevel_; // then the next, finer one
+    return done;
+}
+
+bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass) {
+    glm::ivec2 size = target.size();
+    int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
+    const TraceProgram& trace = useTraceProgram();
+    bindScene(*trace.program, target, samplesPerPass);
+    if (backend_ == Backend::Compute) {
+        target.beginComputePass(kAccumulationUnit, 0);
+        glUniform2i(trace.tileOrigin, 0, nextRow);
+        glUniform2i(trace.tileEnd, size.x, endRow);
+        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((endRow - nextRow + 7) / 8), 1);
+        // Later passes read these texels as textures, the display and read-backs as attachments.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    } else {
+        target.beginPass(kAccumulationUnit);
+        if (nextRow > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, nextRow, size.x, endRow - nextRow);
+        }
+        glBindVertexArray(emptyVertexArray_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    if (endRow < size.y) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        nextRow = endRow;
+        return false;
+    }
+    target.endPass(samplesPerPass);
+    nextRow = 0;
+    return true;
+}
+
+void PathTracer::display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const {
+    const Accumulator* preview = shownPreview();
+    drawMean(preview ? *preview : accumulator_, target, settings, clip);
+}
+
+void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const {
+    resetPassState();
+    glViewport(target.origin.x, target.origin.y, target.size.x, target.size.y);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
+    glUseProgram(display_.program->id());
+    int samples = shown.displayedSampleCount();
+    glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
+    glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
+    glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
+    glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
+    glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
+    glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
+    shown.bindLatest(0, 1); // the preview is upscaled by the texture lookup
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+ImageRgbF PathTracer::readMean() const {
+    return accumulator_.readStatistics().mean;
+}
+
+ImageRgba8 PathTracer::readToneMapped(const DisplaySettings& settings) const {
+    // Never the preview: a saved image is the render itself.
+    return renderOffscreenRgba8(accumulator_.size(), [&](glm::ivec2 size) {
+        drawMean(accumulator_, PixelRect{{0, 0}, size}, settings, PixelRect{{0, 0}, size});
+    });
+}
+
+PathTracer makePathTracer(const Scene& scene, const EnvironmentMap* environmentMap, PathTracerOptions options,
+                          const RenderSettings& settings, const std::filesystem::path& shaderDir) {
+    PathTracer tracer(shaderDir, options);
+    tracer.setScene(scene, environmentMap);
+    tracer.setSettings(settings);
+    return tracer;
+}
+
+} // namespace ptview
