@@ -2,8 +2,10 @@
 //
 // - Directions point away from the surface: wo toward the viewer (the previous path vertex), wi
 //   toward the light (the next vertex), both unit length.
-// - Suffix Local = in the shading frame of the surface's geometric normal, which is NOT turned
-//   toward wo: z > 0 is the front side (outward for spheres and boxes, cross(u, v) for quads).
+// - Suffix Local = in the shading frame of the surface's shading normal (hit.normalShading: a
+//   mesh's interpolated normal, then the normal map where there is one, else the geometric
+//   normal), which is NOT turned toward wo: z > 0 is the front side (outward for spheres and
+//   boxes, cross(u, v) for quads).
 //   wo may lie on either side; two-sided models mirror themselves to wo's side, and dielectrics
 //   use ior when wo is outside (z > 0) and 1/ior when it is inside.
 // - f(wo, wi) is the BSDF alone; it does NOT include |cos(theta_i)|. f and pdf cover only the

@@ -2,9 +2,11 @@
 // renderer/gpudata/GpuLayout.h, SurfaceHit.h and renderer/geometry/Bvh.h.
 // Texels (RGBA32F) per record: record i of its buffer starts at texel kQuadTexels * i.
 const int kQuadTexels = 6; // GpuQuad
+const int kDiskTexels = 2; // GpuDisk
 const int kMaterialTexels = 10; // GpuMaterial
 const int kTextureRecordTexels = 2; // GpuTextureRecord, after the materials
 const int kLightTexels = 4; // GpuLight
+const int kBvhNodeTexels = 2; // GpuBvhNode
 const int kTriangleTexels = 7; // GpuTriangle
 const int kInstanceTexels = 8; // a mesh instance (GpuMeshes.h)
 const int kBvhStackSize = 64; // kMaxBvhDepth: the stack never overflows

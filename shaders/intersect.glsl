@@ -133,8 +133,8 @@ float intersectPresentQuad(Ray ray, int i, float tMax) {
 }
 
 float intersectPresentDisk(Ray ray, int i, float tMax) {
-    vec4 centerAndRadius = texelFetch(uDisks, 2 * i);
-    float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, 2 * i + 1).xyz, centerAndRadius.w);
+    vec4 centerAndRadius = texelFetch(uDisks, kDiskTexels * i);
+    float t = intersectDisk(ray, centerAndRadius.xyz, texelFetch(uDisks, kDiskTexels * i + 1).xyz, centerAndRadius.w);
     if (!(t < tMax)) return kInfinity;
     return surfacePresent(diskIds(i).x, vec2(0.0), ray.origin + t * ray.direction) ? t : kInfinity;
 }
@@ -187,7 +187,7 @@ bool intersectScene(Ray ray, out Hit hit) {
         ids = quadIds(quadHit);
         hit.primitive = ivec2(kPrimitiveQuad, quadHit);
     } else {
-        hit.normalGeom = texelFetch(uDisks, 2 * diskHit + 1).xyz;
+        hit.normalGeom = texelFetch(uDisks, kDiskTexels * diskHit + 1).xyz;
         ids = diskIds(diskHit);
         hit.primitive = ivec2(kPrimitiveDisk, diskHit);
     }

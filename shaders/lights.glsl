@@ -21,7 +21,7 @@
 #include "shading_frame.glsl"
 #include "environment.glsl"
 #include "light_kinds.glsl"
-// kLightQuad, ...: generated from the table of LightKind (renderer/gpu/GpuScene.h, GlslEnums.cpp).
+// kLightQuad, ...: generated from the table of LightKind (renderer/gpudata/LightKind.h, gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
 struct LightSample {
@@ -156,8 +156,8 @@ float diskLightArea(float radius) {
 }
 
 LightSample sampleDiskLight(int primitive, vec3 posWorld, vec2 u) {
-    vec4 centerAndRadius = texelFetch(uDisks, 2 * primitive);
-    vec3 normal = texelFetch(uDisks, 2 * primitive + 1).xyz;
+    vec4 centerAndRadius = texelFetch(uDisks, kDiskTexels * primitive);
+    vec3 normal = texelFetch(uDisks, kDiskTexels * primitive + 1).xyz;
     ShadingFrame frame = makeShadingFrame(normal);
     vec2 onDisk = centerAndRadius.w * sampleUniformDiskConcentric(u);
     vec3 point = centerAndRadius.xyz + onDisk.x * frame.tangent + onDisk.y * frame.bitangent;
@@ -166,7 +166,7 @@ LightSample sampleDiskLight(int primitive, vec3 posWorld, vec2 u) {
 }
 
 float diskLightPdf(int primitive, float distance2, float cosLight) {
-    return areaToSolidAnglePdf(distance2, cosLight, diskLightArea(texelFetch(uDisks, 2 * primitive).w));
+    return areaToSolidAnglePdf(distance2, cosLight, diskLightArea(texelFetch(uDisks, kDiskTexels * primitive).w));
 }
 
 // ---- Mesh triangle: uniform by area; the light table holds its world-space corners -----------

@@ -83,8 +83,8 @@ bool intersectTriangle(MeshRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, out f
 // pushed out by 1 + 2 gamma(3) (Ize, "Robust BVH Ray Traversal", JCGT 2013) so that rounding
 // never drops a box the ray grazes.
 float enterNode(MeshRay ray, int node, float tMax) {
-    vec3 boundsMin = texelFetch(uMeshNodes, 2 * node).xyz;
-    vec3 boundsMax = texelFetch(uMeshNodes, 2 * node + 1).xyz;
+    vec3 boundsMin = texelFetch(uMeshNodes, kBvhNodeTexels * node).xyz;
+    vec3 boundsMax = texelFetch(uMeshNodes, kBvhNodeTexels * node + 1).xyz;
     vec3 t0 = (boundsMin - ray.origin) * ray.invDirection;
     vec3 t1 = (boundsMax - ray.origin) * ray.invDirection;
     vec3 tNear = min(t0, t1);
@@ -95,8 +95,8 @@ float enterNode(MeshRay ray, int node, float tMax) {
 }
 
 // Integers are stored as float values, exact below 2^24 (see renderer/gpudata/GpuLayout.h).
-int nodeFirstOrRight(int node) { return int(texelFetch(uMeshNodes, 2 * node).w); }
-int nodeCount(int node) { return int(texelFetch(uMeshNodes, 2 * node + 1).w); }
+int nodeFirstOrRight(int node) { return int(texelFetch(uMeshNodes, kBvhNodeTexels * node).w); }
+int nodeCount(int node) { return int(texelFetch(uMeshNodes, kBvhNodeTexels * node + 1).w); }
 
 vec4 instanceTexel(int instance, int texel) { return texelFetch(uMeshInstances, kInstanceTexels * instance + texel); }
 

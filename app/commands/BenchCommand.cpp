@@ -60,7 +60,7 @@ BenchResult bench(const std::string& scenePath, const BenchOptions& options, con
     }
 
     PathTracer tracer = makePathTracer(input->scene, input->environmentMapOrNull(),
-                                       PathTracerOptions{program.allFeatures, program.backend}, options.settings);
+                                       program, options.settings);
     const GpuMeshes& meshes = tracer.gpuScene().meshes();
     result.buildSeconds = meshes.lastBuildSeconds();
     result.tangentSeconds = meshes.lastTangentSeconds();

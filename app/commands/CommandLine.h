@@ -20,10 +20,8 @@ constexpr int kExitRuntimeError = 1;
 constexpr int kExitBadInput = 2;
 
 // How the path-tracing program is built: shared by the viewer, `render`, `bench` and `converge`.
-struct ProgramOptions {
-    bool allFeatures = false;       // --all-features: the uber-shader
-    std::optional<Backend> backend; // --backend; nullopt ("auto"): measured per device
-};
+// --all-features (the uber-shader) and --backend (nullopt for "auto": measured per device).
+using ProgramOptions = PathTracerOptions;
 
 // The layers `render --aovs` adds to an EXR, each a debug view (DebugView.h) or the accumulator's variance.
 enum class Aov { Albedo, Normal, Depth, Variance };

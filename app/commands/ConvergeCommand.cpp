@@ -310,7 +310,7 @@ int runConvergeCommand(const ConvergeOptions& options) {
     try {
         HeadlessContext context;
         PathTracer tracer = makePathTracer(input->scene, input->environmentMapOrNull(),
-                                           PathTracerOptions{options.program.allFeatures, options.program.backend});
+                                           options.program);
         tracer.setImageSize(size);
 
         ImageRgbF reference;

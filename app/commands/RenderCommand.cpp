@@ -149,7 +149,7 @@ int runRenderCommand(const RenderOptions& requested) {
         RenderSettings settings = options.settings;
         if (!from) settings.sampleBudget = static_cast<std::uint32_t>(maxSamples); // fully stratified at the end
         PathTracer tracer = makePathTracer(scene, input->environmentMapOrNull(),
-                                           PathTracerOptions{options.program.allFeatures, options.program.backend}, settings);
+                                           options.program, settings);
         if (options.printFeatures) std::printf("%s", tracer.features().describe().c_str());
         if (!options.dumpShaderPath.empty()) {
             writeFileAtomically(options.dumpShaderPath, tracer.pathTraceSource().source);

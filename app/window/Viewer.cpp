@@ -809,7 +809,7 @@ int runViewer(const ViewerOptions& requested) {
     // Loop, until the user or the script quits.
     try {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
-                              PathTracerOptions{options.program.allFeatures, options.program.backend});
+                              options.program);
         if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
             printMessage(session.model().sceneError);
             return kExitBadInput;

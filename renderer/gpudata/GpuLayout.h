@@ -49,39 +49,38 @@ struct UniformField {
     const char* comment; // for the generated GLSL; "" for none
 };
 
+// One field: its GLSL type and name, the FrameUniforms member that holds it, and what it means.
+#define PTVIEW_FRAME_FIELD(glslType, glslName, member, comment) \
+    UniformField{glslType, glslName, offsetof(FrameUniforms, member), sizeof(FrameUniforms::member), comment}
 // FrameBlock, in declaration order; what each value means is said here once, for both sides.
 inline constexpr UniformField kFrameBlockFields[] = {
-    {"vec3", "uCameraEye", offsetof(FrameUniforms, cameraEye), sizeof(FrameUniforms::cameraEye), ""},
-    {"float", "uTanHalfFovY", offsetof(FrameUniforms, tanHalfFovY), sizeof(FrameUniforms::tanHalfFovY), ""},
-    {"vec3", "uCameraRight", offsetof(FrameUniforms, cameraRight), sizeof(FrameUniforms::cameraRight), ""},
-    {"float", "uAspect", offsetof(FrameUniforms, aspect), sizeof(FrameUniforms::aspect), "width / height"},
-    {"vec3", "uCameraUp", offsetof(FrameUniforms, cameraUp), sizeof(FrameUniforms::cameraUp), ""},
-    {"uint", "uFrameIndex", offsetof(FrameUniforms, frameIndex), sizeof(FrameUniforms::frameIndex),
-     "samples already accumulated"},
-    {"vec3", "uCameraForward", offsetof(FrameUniforms, cameraForward), sizeof(FrameUniforms::cameraForward), ""},
-    {"uint", "uSeed", offsetof(FrameUniforms, seed), sizeof(FrameUniforms::seed), ""},
-    {"vec3", "uEnvironmentRadiance", offsetof(FrameUniforms, environmentRadiance),
-     sizeof(FrameUniforms::environmentRadiance), ""},
-    {"int", "uMaxDepth", offsetof(FrameUniforms, maxDepth), sizeof(FrameUniforms::maxDepth),
-     "bounces; 0 shows emitters only"},
-    {"ivec2", "uImageSize", offsetof(FrameUniforms, imageSize), sizeof(FrameUniforms::imageSize), ""},
-    {"uint", "uSamplerMode", offsetof(FrameUniforms, samplerMode), sizeof(FrameUniforms::samplerMode),
-     "SamplerMode; see sampler.glsl"},
-    {"uint", "uSampleBudget", offsetof(FrameUniforms, sampleBudget), sizeof(FrameUniforms::sampleBudget),
-     "samples per pixel the grid and stratified patterns are sized for"},
-    {"float", "uSceneRadius", offsetof(FrameUniforms, sceneRadius), sizeof(FrameUniforms::sceneRadius),
-     "of the scene's bounding sphere: sets ray offsets (intersect.glsl)"},
-    {"float", "uApertureRadius", offsetof(FrameUniforms, apertureRadius), sizeof(FrameUniforms::apertureRadius),
-     "thin lens (camera_thin_lens.glsl), metres; 0: a pinhole"},
-    {"float", "uFocusDistance", offsetof(FrameUniforms, focusDistance), sizeof(FrameUniforms::focusDistance),
-     "metres along the view direction"},
-    {"float", "uRadianceClamp", offsetof(FrameUniforms, radianceClamp), sizeof(FrameUniforms::radianceClamp),
-     "largest component of one path vertex's contribution; 0: no clamp"},
-    {"int", "uLightPathBounces", offsetof(FrameUniforms, lightPathBounces), sizeof(FrameUniforms::lightPathBounces),
-     "k of the light-path views exactly / at most k (light_paths.glsl)"},
-    {"uint", "uSamplesPerPass", offsetof(FrameUniforms, samplesPerPass), sizeof(FrameUniforms::samplesPerPass),
-     "samples each pixel adds in this pass (pathtrace_sample.glsl)"},
+    PTVIEW_FRAME_FIELD("vec3", "uCameraEye", cameraEye, ""),
+    PTVIEW_FRAME_FIELD("float", "uTanHalfFovY", tanHalfFovY, ""),
+    PTVIEW_FRAME_FIELD("vec3", "uCameraRight", cameraRight, ""),
+    PTVIEW_FRAME_FIELD("float", "uAspect", aspect, "width / height"),
+    PTVIEW_FRAME_FIELD("vec3", "uCameraUp", cameraUp, ""),
+    PTVIEW_FRAME_FIELD("uint", "uFrameIndex", frameIndex, "samples already accumulated"),
+    PTVIEW_FRAME_FIELD("vec3", "uCameraForward", cameraForward, ""),
+    PTVIEW_FRAME_FIELD("uint", "uSeed", seed, ""),
+    PTVIEW_FRAME_FIELD("vec3", "uEnvironmentRadiance", environmentRadiance, ""),
+    PTVIEW_FRAME_FIELD("int", "uMaxDepth", maxDepth, "bounces; 0 shows emitters only"),
+    PTVIEW_FRAME_FIELD("ivec2", "uImageSize", imageSize, ""),
+    PTVIEW_FRAME_FIELD("uint", "uSamplerMode", samplerMode, "SamplerMode; see sampler.glsl"),
+    PTVIEW_FRAME_FIELD("uint", "uSampleBudget", sampleBudget,
+                       "samples per pixel the grid and stratified patterns are sized for"),
+    PTVIEW_FRAME_FIELD("float", "uSceneRadius", sceneRadius,
+                       "of the scene's bounding sphere: sets ray offsets (intersect.glsl)"),
+    PTVIEW_FRAME_FIELD("float", "uApertureRadius", apertureRadius,
+                       "thin lens (camera_thin_lens.glsl), metres; 0: a pinhole"),
+    PTVIEW_FRAME_FIELD("float", "uFocusDistance", focusDistance, "metres along the view direction"),
+    PTVIEW_FRAME_FIELD("float", "uRadianceClamp", radianceClamp,
+                       "largest component of one path vertex's contribution; 0: no clamp"),
+    PTVIEW_FRAME_FIELD("int", "uLightPathBounces", lightPathBounces,
+                       "k of the light-path views exactly / at most k (light_paths.glsl)"),
+    PTVIEW_FRAME_FIELD("uint", "uSamplesPerPass", samplesPerPass,
+                       "samples each pixel adds in this pass (pathtrace_sample.glsl)"),
 };
+#undef PTVIEW_FRAME_FIELD
 
 namespace std140 {
 
@@ -143,6 +142,7 @@ struct GpuDisk {
     float pad;
 };
 static_assert(sizeof(GpuDisk) == 32, "two RGBA32F texels");
+constexpr int kDiskTexels = sizeof(GpuDisk) / 16;
 
 // Per primitive (RG32I): its material and, when it emits, its light index (else -1). The
 // spheres', quads' and disks' ids share one buffer, in that order.
@@ -214,6 +214,7 @@ struct GpuBvhNode {
     float count;        // primitives in a leaf; 0 for an interior node
 };
 static_assert(sizeof(GpuBvhNode) == 32, "two RGBA32F texels");
+constexpr int kBvhNodeTexels = sizeof(GpuBvhNode) / 16;
 
 // shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH
 // leaves (so a leaf's triangles are contiguous). Triangles of meshes that a normal-mapped material

@@ -137,20 +137,30 @@ void checkTransformedShape(const Shape& shape, const Pointer& at) {
     }
 }
 
+// What a shape and a light begin with: an object whose "type" names a schema of `schemas`, keys
+// only of that type (the first problem reported as before), and a name (TYPE INDEX when none).
+template <typename Schema, std::size_t N>
+const Schema* readTypeAndName(const Json& value, const Pointer& at, std::size_t index, const Schema (&schemas)[N],
+                              const char* noun, const std::vector<const char*>& anyTypeKeys,
+                              std::vector<const char*> (*keysOf)(const Schema&), std::string& name) {
+    requireObject(value, at);
+    requireType(value, at, anyTypeKeys);
+    std::string type = readString(value.at("type"), at / "type");
+    const Schema* schema = findSchemaNamed(schemas, type);
+    if (!schema)
+        fail(at / "type", std::string("unknown ") + noun + " type \"" + type + "\" (expected " + schemaNameList(schemas) + ")");
+    checkKeys(value, at, keysOf(*schema));
+    const Json* given = optionalKey(value, "name");
+    name = given ? readString(*given, at / "name") : type + " " + std::to_string(index);
+    return schema;
+}
+
 Shape readShape(const Json& value, const Pointer& at, std::size_t index,
                 const std::vector<Material>& materials, const std::map<std::string, int>& meshes,
                 std::vector<MeshMaterialRequest>& meshRequests) {
-    requireObject(value, at);
     Shape shape;
-    requireType(value, at, anyShapeKeys());
-    std::string type = readString(value.at("type"), at / "type");
-    const ShapeSchema* schema = findShapeSchema(type);
-    if (!schema) fail(at / "type", "unknown shape type \"" + type + "\" (expected " + schemaNameList(kShapeSchemas) + ")");
+    const ShapeSchema* schema = readTypeAndName(value, at, index, kShapeSchemas, "shape", anyShapeKeys(), shapeKeys, shape.name);
     shape.type = schema->type;
-    checkKeys(value, at, shapeKeys(*schema));
-
-    const Json* name = optionalKey(value, "name");
-    shape.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
     const Json* transform = optionalKey(value, "transform");
     if (transform) shape.transform = readTransform(*transform, at / "transform");
 
@@ -228,17 +238,9 @@ std::string defaultText(float value) {
 } // namespace
 
 Light readLight(const Json& value, const Pointer& at, std::size_t index) {
-    requireObject(value, at);
     Light light;
-    requireType(value, at, anyLightKeys());
-    std::string type = readString(value.at("type"), at / "type");
-    const LightSchema* schema = findLightSchema(type);
-    if (!schema) fail(at / "type", "unknown light type \"" + type + "\" (expected " + schemaNameList(kLightSchemas) + ")");
+    const LightSchema* schema = readTypeAndName(value, at, index, kLightSchemas, "light", anyLightKeys(), lightKeys, light.name);
     light.type = schema->type;
-    checkKeys(value, at, lightKeys(*schema));
-
-    const Json* name = optionalKey(value, "name");
-    light.name = name ? readString(*name, at / "name") : type + " " + std::to_string(index);
     if (light.type != LightType::Directional)
         light.position = readPosition(requireKey(value, at, "position"), at / "position");
     // A directional light's "intensity" is the irradiance it gives a surface facing it (Scene.h).
