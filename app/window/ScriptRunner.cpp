@@ -13,6 +13,9 @@
 #include <ptview/scene/SceneRanges.h>
 
 #include <algorithm>
+#include <iterator>
+#include <string_view>
+#include <utility>
 #include <cstdio>
 #include <utility>
 
@@ -208,24 +211,21 @@ void setMaterial(Step& s) {
                               [&](const Material& m) { return m.name == command.target; });
     if (found == s.scene.materials.end()) return s.fail("the scene has no material \"" + command.target + "\"");
     Material& material = *found;
+    // The script's names of Material's vector and number fields (the parser checked the values).
+    static const std::pair<std::string_view, glm::vec3 Material::*> kVectorFields[] = {
+        {"color", &Material::color}, {"emission", &Material::radiance}};
+    static const std::pair<std::string_view, float Material::*> kNumberFields[] = {
+        {"ior", &Material::ior},           {"roughness", &Material::roughness}, {"metallic", &Material::metallic},
+        {"transmission", &Material::transmission}, {"alpha", &Material::alpha}, {"normal-scale", &Material::normalScale}};
+    auto named = [&](const auto& fields) {
+        return std::find_if(std::begin(fields), std::end(fields), [&](const auto& field) { return field.first == command.field; });
+    };
     if (command.field == "type")
         material = retypedMaterial(material, findMaterialSchema(s.word)->type);
-    else if (command.field == "color")
-        material.color = command.vec3(0);
-    else if (command.field == "emission")
-        material.radiance = command.vec3(0);
-    else if (command.field == "ior")
-        material.ior = command.number(0);
-    else if (command.field == "roughness")
-        material.roughness = command.number(0);
-    else if (command.field == "metallic")
-        material.metallic = command.number(0);
-    else if (command.field == "transmission")
-        material.transmission = command.number(0);
-    else if (command.field == "alpha")
-        material.alpha = command.number(0);
-    else if (command.field == "normal-scale")
-        material.normalScale = command.number(0);
+    else if (auto vector = named(kVectorFields); vector != std::end(kVectorFields))
+        material.*(vector->second) = command.vec3(0);
+    else if (auto number = named(kNumberFields); number != std::end(kNumberFields))
+        material.*(number->second) = command.number(0);
     else
         return setMaterialTextureField(s, material);
     s.model.pendingChanges |= ViewerModel::kMaterialsChanged;

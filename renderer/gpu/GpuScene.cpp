@@ -8,6 +8,10 @@
 #include <limits>
 
 namespace ptview {
+const char* const GpuScene::kIntUniformNames[kIntUniformCount] = {
+    GpuTextures::kRecordStartName, "uSphereCount", "uQuadCount", "uDiskCount", "uLightCount", "uEnvironmentLight",
+    "uMeshInstanceCount", "uTopLevelRoot"};
+
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
     "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights",
     GpuMeshes::kSamplerNames[0], GpuMeshes::kSamplerNames[1], GpuMeshes::kSamplerNames[2], GpuTextures::kSamplerName};
@@ -54,28 +58,16 @@ void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
 void GpuScene::attach(const GlProgram& program, int firstUnit) {
     firstUnit_ = firstUnit;
     for (int i = 0; i < kTextureCount; ++i) program.bindSamplerUnit(kSamplerNames[i], firstUnit + i);
-    sphereCountLocation_ = program.uniformLocation("uSphereCount");
-    quadCountLocation_ = program.uniformLocation("uQuadCount");
-    diskCountLocation_ = program.uniformLocation("uDiskCount");
-    lightCountLocation_ = program.uniformLocation("uLightCount");
-    environmentLightLocation_ = program.uniformLocation("uEnvironmentLight");
-    meshInstanceCountLocation_ = program.uniformLocation("uMeshInstanceCount");
-    topLevelRootLocation_ = program.uniformLocation("uTopLevelRoot");
-    textureRecordStartLocation_ = program.uniformLocation(GpuTextures::kRecordStartName);
+    for (int i = 0; i < kIntUniformCount; ++i) intUniformLocations_[i] = program.uniformLocation(kIntUniformNames[i]);
 }
 
 void GpuScene::bind() const {
     for (int i = 0; i < kOwnTextureCount; ++i) textures_[i].bind(firstUnit_ + i);
     meshes_.bind(firstUnit_ + kOwnTextureCount);
     atlas_.bind(firstUnit_ + kOwnTextureCount + GpuMeshes::kTextureCount);
-    glUniform1i(textureRecordStartLocation_, textureRecordStart_);
-    glUniform1i(sphereCountLocation_, sphereCount());
-    glUniform1i(quadCountLocation_, quadCount());
-    glUniform1i(diskCountLocation_, diskCount());
-    glUniform1i(lightCountLocation_, lightCount());
-    glUniform1i(environmentLightLocation_, environmentLight());
-    glUniform1i(meshInstanceCountLocation_, meshes_.instanceCount());
-    glUniform1i(topLevelRootLocation_, meshes_.topLevelRoot());
+    const int values[kIntUniformCount] = {textureRecordStart_, sphereCount(), quadCount(), diskCount(), lightCount(),
+                                          environmentLight(), meshes_.instanceCount(), meshes_.topLevelRoot()};
+    for (int i = 0; i < kIntUniformCount; ++i) glUniform1i(intUniformLocations_[i], values[i]);
 }
 
 } // namespace ptview

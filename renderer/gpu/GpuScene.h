@@ -57,16 +57,13 @@ private:
     GpuMeshes meshes_;
     GpuTextures atlas_;
     int textureRecordStart_ = 0;
-    GLint textureRecordStartLocation_ = -1;
     float sceneRadius_ = 1.0f;
     int firstUnit_ = 0;
-    GLint sphereCountLocation_ = -1;
-    GLint quadCountLocation_ = -1;
-    GLint diskCountLocation_ = -1;
-    GLint lightCountLocation_ = -1;
-    GLint environmentLightLocation_ = -1;
-    GLint meshInstanceCountLocation_ = -1;
-    GLint topLevelRootLocation_ = -1;
+    // The int uniforms bind() sets, in the order of the values it sets them to: the texture
+    // records' start, the shape and light counts, the environment's light, the meshes' top level.
+    static constexpr int kIntUniformCount = 8;
+    static const char* const kIntUniformNames[kIntUniformCount];
+    GLint intUniformLocations_[kIntUniformCount] = {-1, -1, -1, -1, -1, -1, -1, -1};
     ScenePrimitives geometry_; // kept to rebuild the light table on material edits
     glm::vec3 environmentRadiance_{0.0f};
     LightTable lights_;
