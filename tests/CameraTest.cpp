@@ -35,7 +35,7 @@ struct CameraRays {
 CameraRays probeCamera(const CameraDesc& camera, glm::ivec2 size, int samplesPerPixel, SamplerMode sampler) {
     testing::glContext();
     ShaderAssembler assembler(PTVIEW_SHADER_DIR);
-    addGlslEnums(assembler);
+    addGeneratedGlsl(assembler);
     GlProgram program(assembler.assemble("fullscreen.vert"), assembler.assemble(PTVIEW_TEST_SHADER_DIR "/camera_probe.frag"));
     program.bindUniformBlock("FrameBlock", 0);
 

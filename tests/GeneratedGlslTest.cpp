@@ -63,7 +63,7 @@ TEST(FrameBlock, TheDriverPlacesEveryFieldWhereCppWritesIt) {
     std::ofstream(entry) << "#version 410 core\n#include \"frame_uniforms.glsl\"\nout vec4 color;\n"
                             "void main() { color = vec4(" << use << "); }\n";
     ShaderAssembler assembler(PTVIEW_SHADER_DIR);
-    addGlslEnums(assembler);
+    addGeneratedGlsl(assembler);
     GlProgram program(assembler.assemble("fullscreen.vert"), assembler.assemble(entry));
     std::filesystem::remove(entry);
 

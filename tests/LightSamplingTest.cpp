@@ -62,7 +62,7 @@ public:
     LightProbe() {
         testing::glContext();
         ShaderAssembler assembler(PTVIEW_SHADER_DIR);
-        addGlslEnums(assembler);
+        addGeneratedGlsl(assembler);
         program_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"),
                                                assembler.assemble(PTVIEW_TEST_SHADER_DIR "/light_probe.frag"));
         program_->bindSamplerUnit("uInput0", 0);

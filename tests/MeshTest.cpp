@@ -110,7 +110,7 @@ public:
     SceneProbe() {
         testing::glContext();
         ShaderAssembler assembler(PTVIEW_SHADER_DIR);
-        addGlslEnums(assembler); // material.glsl's type constants
+        addGeneratedGlsl(assembler); // material.glsl's type constants
         program_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"),
                                                assembler.assemble(PTVIEW_TEST_SHADER_DIR "/scene_probe.frag"));
         program_->bindSamplerUnit("uOrigins", 0);

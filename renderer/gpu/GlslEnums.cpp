@@ -86,7 +86,7 @@ std::string glslFrameBlock() {
     return text + "};\n";
 }
 
-void addGlslEnums(ShaderAssembler& assembler) {
+void addGeneratedGlsl(ShaderAssembler& assembler) {
     assembler.replaceWithText("enums.glsl", glslEnumConstants());
     assembler.replaceWithText("gpu_layout.glsl", glslLayoutConstants());
     assembler.replaceWithText("frame_uniforms.glsl", glslFrameBlock());

@@ -27,7 +27,7 @@ std::string glslFrameBlock();
 
 // Makes `assembler` serve the three includes above; every program that includes a file naming
 // their constants needs it (specializeShaders and specializeBsdfs call it).
-void addGlslEnums(ShaderAssembler& assembler);
+void addGeneratedGlsl(ShaderAssembler& assembler);
 
 // "const int kName = 7; // comment\n": one line of a generated include.
 std::string glslIntConstant(const std::string& name, long long value, const std::string& comment = "");

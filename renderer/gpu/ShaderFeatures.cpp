@@ -169,7 +169,7 @@ std::vector<IncludeVariantFiles> includeVariantFiles() {
 }
 
 void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features) {
-    addGlslEnums(assembler);
+    addGeneratedGlsl(assembler);
     assembler.replaceWithText("bsdf.glsl", generateBsdfDispatch(features));
 }
 

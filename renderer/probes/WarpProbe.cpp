@@ -36,7 +36,7 @@ std::string warpIdsGlsl() {
 
 WarpProbe::WarpProbe(const std::filesystem::path& shaderDir) {
     ShaderAssembler assembler(shaderDir);
-    addGlslEnums(assembler); // the sample generators
+    addGeneratedGlsl(assembler); // the sample generators
     assembler.replaceWithText("warp_ids.glsl", warpIdsGlsl());
     program_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("warp_probe.frag"));
     program_->bindSamplerUnit("uPoints", 0);

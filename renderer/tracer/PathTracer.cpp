@@ -41,7 +41,7 @@ bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
 
 PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
     ShaderAssembler assembler(shaderDir_);
-    addGlslEnums(assembler); // the tone mappers
+    addGeneratedGlsl(assembler); // the tone mappers
     DisplayProgram display;
     display.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("display.frag"));
     const GlProgram& show = *display.program;
