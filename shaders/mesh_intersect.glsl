@@ -1,16 +1,20 @@
 // Rays against the scene's triangle meshes: a two-level BVH (renderer/gpu/GpuMeshes.h) read from
 // buffer textures. The top level holds the instances by their world bounds; at an instance the ray
 // moves into the mesh's object space (its direction is not renormalized, so t stays the world t)
-// and descends that mesh's own tree. Both traversals are ordered (nearer child first) with a
-// short explicit stack; shadow rays stop at the first hit. A triangle whose material cuts it away
-// there (alpha, surface_alpha.glsl) is no hit: both walks go on past it.
+// and descends that mesh's own tree. Both trees are four wide (renderer/geometry/WideBvh.h): a
+// node holds its children's boxes, which one visit tests together; the children the ray enters
+// are taken nearest first, the others wait on a short explicit stack with their entry distances,
+// so that a hit found meanwhile drops them without reading them again. Shadow rays stop at the
+// first hit. A triangle whose material cuts it away there (alpha, surface_alpha.glsl) is no hit:
+// both walks go on past it.
 #include "constants.glsl"
 #include "gpu_layout.glsl"
 #include "ray.glsl"
 #include "surface_alpha.glsl"
 
-uniform samplerBuffer uMeshNodes;     // per node: (boundsMin, firstOrRight), (boundsMax, primitive count)
-uniform samplerBuffer uMeshTriangles; // per triangle: kTriangleTexels texels, see GpuTriangle
+uniform samplerBuffer uMeshNodes;     // per node: kBvhNodeTexels texels, see GpuBvhNode
+uniform samplerBuffer uMeshTriangles; // kTrianglePositionTexels per triangle, then from
+uniform int uMeshAttributeStart;      // here kTriangleAttributeTexels per triangle: see GpuTriangle
 uniform samplerBuffer uMeshInstances; // per instance: kInstanceTexels texels, then the material tables
 uniform int uMeshInstanceCount;
 uniform int uTopLevelRoot;            // -1: no meshes
@@ -79,25 +83,7 @@ bool intersectTriangle(MeshRay ray, vec3 p0, vec3 p1, vec3 p2, float tMax, out f
     return true;
 }
 
-// Entry distance into node's box, or kInfinity when the ray misses it before tMax. The exit is
-// pushed out by 1 + 2 gamma(3) (Ize, "Robust BVH Ray Traversal", JCGT 2013) so that rounding
-// never drops a box the ray grazes.
-float enterNode(MeshRay ray, int node, float tMax) {
-    vec3 boundsMin = texelFetch(uMeshNodes, kBvhNodeTexels * node).xyz;
-    vec3 boundsMax = texelFetch(uMeshNodes, kBvhNodeTexels * node + 1).xyz;
-    vec3 t0 = (boundsMin - ray.origin) * ray.invDirection;
-    vec3 t1 = (boundsMax - ray.origin) * ray.invDirection;
-    vec3 tNear = min(t0, t1);
-    vec3 tFar = max(t0, t1);
-    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    float exit = min(min(tFar.x, tFar.y), min(tFar.z, tMax)) * 1.0000004;
-    return enter <= exit ? enter : kInfinity;
-}
-
 // Integers are stored as float values, exact below 2^24 (see renderer/gpudata/GpuLayout.h).
-int nodeFirstOrRight(int node) { return int(texelFetch(uMeshNodes, kBvhNodeTexels * node).w); }
-int nodeCount(int node) { return int(texelFetch(uMeshNodes, kBvhNodeTexels * node + 1).w); }
-
 vec4 instanceTexel(int instance, int texel) { return texelFetch(uMeshInstances, kInstanceTexels * instance + texel); }
 
 // (bottom-level root, first triangle, material table offset, first light or -1)
@@ -118,50 +104,91 @@ int triangleLight(int instance, int triangle) {
 }
 
 int triangleMaterial(int instance, int triangle) {
-    int slot = int(texelFetch(uMeshTriangles, kTriangleTexels * triangle).w);
+    int slot = int(texelFetch(uMeshTriangles, kTrianglePositionTexels * triangle).w);
     return int(texelFetch(uMeshInstances, kInstanceTexels * uMeshInstanceCount + instanceIds(instance).z + slot).x);
 }
 
+int triangleAttributes(int triangle) { return uMeshAttributeStart + kTriangleAttributeTexels * triangle; }
+
 // Texture coordinates at barycentric on a triangle, interpolated from its corners (GpuTriangle:
-// u0 in texel 3's w, v0 in 4's, u1 in 5's, then (v1, u2, v2) in texel 6).
+// u0 in attribute texel 0's w, v0 in 1's, u1 in 2's, then (v1, u2, v2) in texel 3).
 vec2 triangleUv(int triangle, vec3 barycentric) {
-    int base = kTriangleTexels * triangle;
-    float u0 = texelFetch(uMeshTriangles, base + 3).w;
-    float v0 = texelFetch(uMeshTriangles, base + 4).w;
-    float u1 = texelFetch(uMeshTriangles, base + 5).w;
-    vec3 v1U2V2 = texelFetch(uMeshTriangles, base + 6).xyz;
+    int base = triangleAttributes(triangle);
+    float u0 = texelFetch(uMeshTriangles, base).w;
+    float v0 = texelFetch(uMeshTriangles, base + 1).w;
+    float u1 = texelFetch(uMeshTriangles, base + 2).w;
+    vec3 v1U2V2 = texelFetch(uMeshTriangles, base + 3).xyz;
     return barycentric.x * vec2(u0, v0) + barycentric.y * vec2(u1, v1U2V2.x) + barycentric.z * v1U2V2.yz;
 }
 
-// The nodes both walks have still to visit, on one stack: an instance's walk pushes above the
-// entries of the top level's walk and pops back down to where it began. One global array rather
-// than one passed to nextBvhNode, because GLSL copies array parameters in and out: passing it
-// made meshes render 4x slower on llvmpipe.
-int bvhStack[2 * kBvhStackSize];
+// What both walks have still to visit, on one stack: per entry a child reference (see
+// childReference, its bits in x) and the distance at which the ray enters its box (y). An
+// instance's walk pushes above the entries of the top level's walk and pops back down to where it
+// began. One global array rather than one passed to the functions, because GLSL copies array
+// parameters in and out: passing it made meshes render 4x slower on llvmpipe.
+vec2 bvhStack[2 * kBvhStackSize];
 
-// One step of a front-to-back BVH walk (both levels take it): after visiting `node`, which holds
-// `count` items (0: an inner node), the next node to visit. From an inner node, its nearer child
-// that the ray enters within tBest (the farther one waits on the stack); else the top of the
-// walk's part of the stack (above stackBottom), skipping nodes that a hit found meanwhile has put
-// out of reach. False when none is left.
-bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int stackSize, int stackBottom) {
-    if (count == 0) {
-        int left = node + 1;
-        int right = nodeFirstOrRight(node);
-        float tLeft = enterNode(ray, left, tBest);
-        float tRight = enterNode(ray, right, tBest);
-        if (tLeft != kInfinity && tRight != kInfinity) {
-            bool leftFirst = tLeft <= tRight;
-            bvhStack[stackSize++] = leftFirst ? right : left;
-            node = leftFirst ? left : right;
+// A child as one integer: an inner node's index (>= 0), or a leaf as -(first * 16 + count), its
+// count being 1..kMaxBvhLeafSize.
+int childReference(float index, float count) {
+    return count == 0.0 ? int(index) : -(int(index) * 16 + int(count));
+}
+int leafFirst(int reference) { return (-reference) >> 4; }
+int leafCount(int reference) { return (-reference) & 15; }
+
+// Puts the nearer of two children first.
+void orderByDistance(inout float tA, inout int a, inout float tB, inout int b) {
+    if (tB < tA) {
+        float t = tA; tA = tB; tB = t;
+        int r = a; a = b; b = r;
+    }
+}
+
+// A visit of inner node `node`: the ray's slabs against its four children's boxes at once. The
+// exits are pushed out by 1 + 2 gamma(3) (Ize, "Robust BVH Ray Traversal", JCGT 2013) so that
+// rounding never drops a box the ray grazes. The nearest child entered within tBest becomes
+// `reference`, the others go on the stack farthest first; false when it enters none.
+bool visitNode(MeshRay ray, float tBest, int node, out int reference, inout int stackSize) {
+    int base = kBvhNodeTexels * node;
+    vec4 t0x = (texelFetch(uMeshNodes, base) - ray.origin.x) * ray.invDirection.x;
+    vec4 t1x = (texelFetch(uMeshNodes, base + 1) - ray.origin.x) * ray.invDirection.x;
+    vec4 t0y = (texelFetch(uMeshNodes, base + 2) - ray.origin.y) * ray.invDirection.y;
+    vec4 t1y = (texelFetch(uMeshNodes, base + 3) - ray.origin.y) * ray.invDirection.y;
+    vec4 t0z = (texelFetch(uMeshNodes, base + 4) - ray.origin.z) * ray.invDirection.z;
+    vec4 t1z = (texelFetch(uMeshNodes, base + 5) - ray.origin.z) * ray.invDirection.z;
+    vec4 enter = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), vec4(0.0)));
+    vec4 exit = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), vec4(tBest))) * 1.0000004;
+    vec4 index = texelFetch(uMeshNodes, base + 6);
+    vec4 count = texelFetch(uMeshNodes, base + 7);
+    // An empty slot (count -1) is never entered, whatever its box.
+    vec4 entered = vec4(lessThanEqual(enter, exit)) * vec4(greaterThanEqual(count, vec4(0.0)));
+    vec4 t = mix(vec4(kInfinity), enter, greaterThan(entered, vec4(0.0)));
+    float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;
+    int c0 = childReference(index.x, count.x), c1 = childReference(index.y, count.y);
+    int c2 = childReference(index.z, count.z), c3 = childReference(index.w, count.w);
+    // A sorting network for four.
+    orderByDistance(t0, c0, t1, c1);
+    orderByDistance(t2, c2, t3, c3);
+    orderByDistance(t0, c0, t2, c2);
+    orderByDistance(t1, c1, t3, c3);
+    orderByDistance(t1, c1, t2, c2);
+    reference = c0;
+    if (t0 == kInfinity) return false;
+    if (t3 != kInfinity) bvhStack[stackSize++] = vec2(intBitsToFloat(c3), t3);
+    if (t2 != kInfinity) bvhStack[stackSize++] = vec2(intBitsToFloat(c2), t2);
+    if (t1 != kInfinity) bvhStack[stackSize++] = vec2(intBitsToFloat(c1), t1);
+    return true;
+}
+
+// The top of the walk's part of the stack (above stackBottom), skipping what a hit found since it
+// was pushed has put out of reach (widened as visitNode's exits are). False when none is left.
+bool popReachable(float tBest, out int reference, inout int stackSize, int stackBottom) {
+    while (stackSize > stackBottom) {
+        vec2 entry = bvhStack[--stackSize];
+        if (entry.y <= tBest * 1.0000004) {
+            reference = floatBitsToInt(entry.x);
             return true;
         }
-        if (tLeft != kInfinity) { node = left; return true; }
-        if (tRight != kInfinity) { node = right; return true; }
-    }
-    while (stackSize > stackBottom) {
-        int candidate = bvhStack[--stackSize];
-        if (enterNode(ray, candidate, tBest) != kInfinity) { node = candidate; return true; }
     }
     return false;
 }
@@ -172,20 +199,19 @@ bool nextBvhNode(MeshRay ray, float tBest, int count, inout int node, inout int 
 bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight, int stackBottom) {
     MeshRay ray = makeMeshRay(instanceToObject(instance, vec4(worldRay.origin, 1.0)), instanceToObject(instance, vec4(worldRay.direction, 0.0)));
     int stackSize = stackBottom;
-    int node = instanceIds(instance).x;
+    int reference = instanceIds(instance).x;
     bool found = false;
-    if (enterNode(ray, node, tBest) == kInfinity) return false;
-    int count;
-    do {
-        count = nodeCount(node);
-        if (count > 0) {
-            int first = nodeFirstOrRight(node);
-            for (int i = first; i < first + count; ++i) {
+    for (;;) {
+        if (reference >= 0) {
+            if (visitNode(ray, tBest, reference, reference, stackSize)) continue;
+        } else {
+            int first = leafFirst(reference);
+            for (int i = first; i < first + leafCount(reference); ++i) {
                 float t;
                 vec3 barycentric;
-                vec3 p0 = texelFetch(uMeshTriangles, kTriangleTexels * i).xyz;
-                vec3 p1 = texelFetch(uMeshTriangles, kTriangleTexels * i + 1).xyz;
-                vec3 p2 = texelFetch(uMeshTriangles, kTriangleTexels * i + 2).xyz;
+                vec3 p0 = texelFetch(uMeshTriangles, kTrianglePositionTexels * i).xyz;
+                vec3 p1 = texelFetch(uMeshTriangles, kTrianglePositionTexels * i + 1).xyz;
+                vec3 p2 = texelFetch(uMeshTriangles, kTrianglePositionTexels * i + 2).xyz;
                 if (!intersectTriangle(ray, p0, p1, p2, tBest, t, barycentric)) continue;
                 if (!surfacePresent(triangleMaterial(instance, i), triangleUv(i, barycentric), worldRay.origin + t * worldRay.direction))
                     continue;
@@ -199,48 +225,50 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 found = true;
             }
         }
-    } while (nextBvhNode(ray, tBest, count, node, stackSize, stackBottom));
-    return found;
+        if (!popReachable(tBest, reference, stackSize, stackBottom)) return found;
+    }
 }
 
-// The top level: instances in the order their boxes are entered.
+// The top level: instances in the order their boxes are entered. With one instance the top level
+// is its box alone, which the instance's root visit tests as well: the walk starts there.
 bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
     if (uTopLevelRoot < 0) return false;
+    if (uMeshInstanceCount == 1) return traverseInstance(0, worldRay, tBest, best, anyHit, excludedLight, 0);
     MeshRay ray = makeMeshRay(worldRay.origin, worldRay.direction);
     int stackSize = 0;
-    int node = uTopLevelRoot;
+    int reference = uTopLevelRoot;
     bool found = false;
-    if (enterNode(ray, node, tBest) == kInfinity) return false;
-    int count;
-    do {
-        count = nodeCount(node);
-        if (count > 0) {
-            int first = nodeFirstOrRight(node);
-            for (int instance = first; instance < first + count; ++instance) {
+    for (;;) {
+        if (reference >= 0) {
+            if (visitNode(ray, tBest, reference, reference, stackSize)) continue;
+        } else {
+            int first = leafFirst(reference);
+            for (int instance = first; instance < first + leafCount(reference); ++instance) {
                 if (traverseInstance(instance, worldRay, tBest, best, anyHit, excludedLight, stackSize)) {
                     if (anyHit) return true;
                     found = true;
                 }
             }
         }
-    } while (nextBvhNode(ray, tBest, count, node, stackSize, 0));
-    return found;
+        if (!popReachable(tBest, reference, stackSize, 0)) return found;
+    }
 }
 
 // A mesh hit's surface in world space: the geometric normal from the world-space edges (its side
 // is the triangle's winding: the emitting side), the shading normal interpolated from the
 // vertex normals and turned to the geometric normal's side, or the geometric one without them.
 void meshSurface(MeshHit hit, out vec3 normalGeom, out vec3 normalShading, out int material, out int light) {
-    int base = kTriangleTexels * hit.triangle;
+    int base = kTrianglePositionTexels * hit.triangle;
     vec3 p0 = texelFetch(uMeshTriangles, base).xyz;
     vec3 p1 = texelFetch(uMeshTriangles, base + 1).xyz;
     vec3 p2 = texelFetch(uMeshTriangles, base + 2).xyz;
     vec3 edge1 = instanceToWorld(hit.instance, vec4(p1 - p0, 0.0));
     vec3 edge2 = instanceToWorld(hit.instance, vec4(p2 - p0, 0.0));
     normalGeom = normalize(cross(edge1, edge2));
-    vec3 n0 = texelFetch(uMeshTriangles, base + 3).xyz;
-    vec3 n1 = texelFetch(uMeshTriangles, base + 4).xyz;
-    vec3 n2 = texelFetch(uMeshTriangles, base + 5).xyz;
+    int attributes = triangleAttributes(hit.triangle);
+    vec3 n0 = texelFetch(uMeshTriangles, attributes).xyz;
+    vec3 n1 = texelFetch(uMeshTriangles, attributes + 1).xyz;
+    vec3 n2 = texelFetch(uMeshTriangles, attributes + 2).xyz;
     vec3 interpolated = hit.barycentric.x * n0 + hit.barycentric.y * n1 + hit.barycentric.z * n2;
     normalShading = normalGeom;
     if (dot(interpolated, interpolated) > 0.0) {
@@ -269,13 +297,14 @@ vec2 meshUv(MeshHit hit) {
 void meshSurfaceTangents(MeshHit hit, out vec3 tangent, out vec3 bitangent) {
     tangent = vec3(0.0);
     bitangent = vec3(0.0);
-    int base = kTriangleTexels * hit.triangle;
+    int base = kTrianglePositionTexels * hit.triangle;
     int first = int(texelFetch(uMeshTriangles, base + 1).w);
     if (first < 0) return;
+    int attributes = triangleAttributes(hit.triangle);
     vec4 t = hit.barycentric.x * texelFetch(uMeshTriangles, first) + hit.barycentric.y * texelFetch(uMeshTriangles, first + 1) +
              hit.barycentric.z * texelFetch(uMeshTriangles, first + 2);
-    vec3 n = hit.barycentric.x * texelFetch(uMeshTriangles, base + 3).xyz + hit.barycentric.y * texelFetch(uMeshTriangles, base + 4).xyz +
-             hit.barycentric.z * texelFetch(uMeshTriangles, base + 5).xyz;
+    vec3 n = hit.barycentric.x * texelFetch(uMeshTriangles, attributes).xyz + hit.barycentric.y * texelFetch(uMeshTriangles, attributes + 1).xyz +
+             hit.barycentric.z * texelFetch(uMeshTriangles, attributes + 2).xyz;
     if (dot(n, n) == 0.0) { // flat shading: the face's normal
         vec3 p0 = texelFetch(uMeshTriangles, base).xyz;
         n = cross(texelFetch(uMeshTriangles, base + 1).xyz - p0, texelFetch(uMeshTriangles, base + 2).xyz - p0);

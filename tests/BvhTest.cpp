@@ -1,7 +1,8 @@
-// The BVH builder's structural guarantees (the GPU relies on them), its queries against brute force,
+// The BVH builder's structural guarantees and those of its four-wide collapse (the GPU relies on them), its queries against brute force,
 // watertightness on closed meshes, and its SAH quality against a median-split tree.
 #include <ptview/geometry/Bvh.h>
 #include <ptview/geometry/TriangleIntersect.h>
+#include <ptview/geometry/WideBvh.h>
 
 #include <gtest/gtest.h>
 
@@ -412,6 +413,106 @@ TEST(Bvh, DepthStaysWithinTheGpuStackOnSkewedInput) {
     expectValidStructure(bvh, input.bounds, 1);
     EXPECT_LE(bvhDepth(bvh), kMaxBvhDepth);
     EXPECT_GT(bvhDepth(bvh), 10) << "the SAH should still have peeled where depth allowed";
+}
+
+// Checks every guarantee WideBvh.h gives the GPU for the collapse of `binary`.
+void expectValidWideStructure(const WideBvh& wide, const Bvh& binary, const std::vector<Aabb>& primitiveBounds) {
+    EXPECT_EQ(wide.primitiveOrder, binary.primitiveOrder);
+    if (binary.nodes.empty()) {
+        EXPECT_TRUE(wide.nodes.empty());
+        return;
+    }
+    ASSERT_FALSE(wide.nodes.empty());
+    std::vector<int> visits(wide.nodes.size(), 0);
+    std::uint32_t nextLeafFirst = 0;
+    // Returns the union of the primitives' bounds below `index`.
+    std::function<Aabb(std::uint32_t, int)> visit = [&](std::uint32_t index, int depth) {
+        Aabb below;
+        EXPECT_LE(depth, kMaxBvhDepth - 1);
+        if (index >= wide.nodes.size() || depth > kMaxBvhDepth) {
+            ADD_FAILURE() << "node " << index << " out of range or too deep";
+            return below;
+        }
+        ++visits[index];
+        const WideBvhNode& node = wide.nodes[index];
+        bool allLeaves = true;
+        int used = 0;
+        for (const WideBvhChild& child : node.children) {
+            if (child.kind == WideBvhChild::Kind::Empty) continue;
+            EXPECT_EQ(used, &child - node.children.data()) << "empty slots come last";
+            ++used;
+            Aabb covered;
+            if (child.kind == WideBvhChild::Kind::Leaf) {
+                EXPECT_GE(child.count, 1u);
+                EXPECT_LE(child.count, std::uint32_t(kMaxBvhLeafSize));
+                EXPECT_EQ(child.index, nextLeafFirst) << "leaves cover the order in node order";
+                for (std::uint32_t i = 0; i < child.count && child.index + i < primitiveBounds.size(); ++i)
+                    covered.extend(primitiveBounds[wide.primitiveOrder[child.index + i]]);
+                nextLeafFirst = child.index + child.count;
+            } else {
+                allLeaves = false;
+                EXPECT_GT(child.index, index) << "children follow their parent";
+                covered = visit(child.index, depth + 1);
+            }
+            EXPECT_TRUE(child.bounds.contains(covered)) << "node " << index << " child " << used - 1;
+            below.extend(covered);
+        }
+        EXPECT_GE(used, 1);
+        // Collapsing stops short of four children only where nothing is left to open.
+        if (used < kWideBvhWidth) EXPECT_TRUE(allLeaves) << "node " << index << " has " << used << " children";
+        return below;
+    };
+    visit(0, 1);
+    EXPECT_EQ(nextLeafFirst, binary.primitiveOrder.size());
+    EXPECT_TRUE(std::all_of(visits.begin(), visits.end(), [](int c) { return c == 1; }))
+        << "every node must have exactly one parent";
+    EXPECT_LE(wideBvhDepth(wide), std::max(1, bvhDepth(binary) - 1));
+}
+
+TEST(WideBvh, CollapseKeepsEveryGuaranteeTheGpuReliesOn) {
+    std::mt19937 rng(11);
+    const std::vector<std::pair<const char*, Mesh>> meshes = {
+        {"empty", Mesh{}},
+        {"one triangle", randomSoup(rng, 1, 0.1f)},
+        {"soup", randomSoup(rng, 5000, 0.05f)},
+        {"icosphere", icosphere(3)},
+        {"cube grid", cubeGrid(8)},
+    };
+    for (const auto& [name, mesh] : meshes) {
+        const BuildInput input = buildInputOf(mesh);
+        for (int leafSize : {1, 4, 8}) {
+            SCOPED_TRACE(std::string(name) + " leaf " + std::to_string(leafSize));
+            BvhBuildOptions options;
+            options.maxLeafSize = leafSize;
+            const Bvh binary = buildBvh(input.bounds, input.centroids, options);
+            const WideBvh wide = collapseToWideBvh(binary);
+            expectValidWideStructure(wide, binary, input.bounds);
+            if (mesh.triangles.size() > 100) {
+                // A wide node stands for up to three binary inner nodes; for about two where leaves
+                // come at different depths: collapsing must remove a good part of them.
+                const auto inner = std::count_if(binary.nodes.begin(), binary.nodes.end(),
+                                                 [](const BvhNode& node) { return !node.isLeaf(); });
+                EXPECT_LT(wide.nodes.size() * 10, std::size_t(inner) * 6);
+                EXPECT_LT(wideBvhDepth(wide), bvhDepth(binary));
+            }
+        }
+    }
+}
+
+TEST(WideBvh, DepthStaysWithinTheGpuStackOnSkewedInput) {
+    BuildInput input;
+    for (int i = 0; i < 120; ++i) {
+        const glm::vec3 p(std::ldexp(1.0f, -i), 0.0f, 0.0f);
+        input.bounds.push_back(Aabb{p, p});
+        input.centroids.push_back(p);
+    }
+    BvhBuildOptions options;
+    options.binCount = 2;
+    options.maxLeafSize = 1;
+    const Bvh binary = buildBvh(input.bounds, input.centroids, options);
+    const WideBvh wide = collapseToWideBvh(binary);
+    expectValidWideStructure(wide, binary, input.bounds);
+    EXPECT_LE(wideBvhDepth(wide) * (kWideBvhWidth - 1), kWideBvhStackSize);
 }
 
 TEST(Bvh, QueriesMatchBruteForce) {

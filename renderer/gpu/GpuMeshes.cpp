@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -20,9 +19,23 @@ float exactFloat(std::size_t value) {
 }
 
 // A node as it goes into the shared node buffer: children and primitive ranges made absolute.
-GpuBvhNode placed(const BvhNode& node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
-    std::uint32_t firstOrRight = node.firstOrRight + (node.isLeaf() ? primitiveOffset : nodeOffset);
-    return GpuBvhNode{node.boundsMin, exactFloat(firstOrRight), node.boundsMax, static_cast<float>(node.primitiveCount)};
+GpuBvhNode placed(const WideBvhNode& node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
+    GpuBvhNode gpu{};
+    for (int c = 0; c < kWideBvhWidth; ++c) {
+        const WideBvhChild& child = node.children[static_cast<std::size_t>(c)];
+        gpu.childCount[c] = -1.0f;
+        if (child.kind == WideBvhChild::Kind::Empty) continue;
+        gpu.childMinX[c] = child.bounds.min.x;
+        gpu.childMaxX[c] = child.bounds.max.x;
+        gpu.childMinY[c] = child.bounds.min.y;
+        gpu.childMaxY[c] = child.bounds.max.y;
+        gpu.childMinZ[c] = child.bounds.min.z;
+        gpu.childMaxZ[c] = child.bounds.max.z;
+        const bool leaf = child.kind == WideBvhChild::Kind::Leaf;
+        gpu.childIndex[c] = exactFloat(child.index + (leaf ? primitiveOffset : nodeOffset));
+        gpu.childCount[c] = leaf ? static_cast<float>(child.count) : 0.0f;
+    }
+    return gpu;
 }
 
 // Rows of the upper 3x4 of a matrix: row r holds (m[0][r], m[1][r], m[2][r], m[3][r]), so that
@@ -58,7 +71,7 @@ GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh, bool withTan
         centroids[i] = bounds[i].centroid();
     }
     BuiltMesh built;
-    built.bvh = buildBvh(bounds, centroids);
+    built.bvh = collapseToWideBvh(buildBvh(bounds, centroids));
     built.triangles.reserve(mesh.triangles.size());
     std::vector<std::array<glm::vec4, 3>> tangents;
     if (withTangents) {
@@ -130,9 +143,9 @@ void GpuMeshes::upload(const Scene& scene) {
         auto nodeOffset = static_cast<std::uint32_t>(nodes.size());
         auto triangleOffset = static_cast<std::uint32_t>(triangles.size());
         placement[built.get()] = {nodeOffset, triangleOffset};
-        for (const BvhNode& node : built->bvh.nodes) nodes.push_back(placed(node, nodeOffset, triangleOffset));
+        for (const WideBvhNode& node : built->bvh.nodes) nodes.push_back(placed(node, nodeOffset, triangleOffset));
         // Tangent texels follow all triangles' texels: the index becomes absolute in the buffer.
-        std::size_t tangentBase = totalTriangles * kTriangleTexels + tangents.size();
+        std::size_t tangentBase = totalTriangles * (kTrianglePositionTexels + kTriangleAttributeTexels) + tangents.size();
         for (GpuTriangle triangle : built->triangles) {
             if (triangle.tangentTexel >= 0.0f)
                 triangle.tangentTexel = exactFloat(tangentBase + static_cast<std::size_t>(triangle.tangentTexel));
@@ -168,10 +181,10 @@ void GpuMeshes::upload(const Scene& scene) {
         centroids.push_back(candidate.worldBounds.centroid());
         worldBounds_.extend(candidate.worldBounds);
     }
-    Bvh topLevel = buildBvh(bounds, centroids, BvhBuildOptions{1});
+    WideBvh topLevel = collapseToWideBvh(buildBvh(bounds, centroids, BvhBuildOptions{1}));
     topLevelRoot_ = topLevel.nodes.empty() ? -1 : static_cast<int>(nodes.size());
     // Instances go in the top level's leaf order, so a leaf's range indexes them directly.
-    for (const BvhNode& node : topLevel.nodes) nodes.push_back(placed(node, static_cast<std::uint32_t>(topLevelRoot_), 0));
+    for (const WideBvhNode& node : topLevel.nodes) nodes.push_back(placed(node, static_cast<std::uint32_t>(topLevelRoot_), 0));
     instances_.clear();
     instanceRoots_.clear();
     for (std::uint32_t original : topLevel.primitiveOrder) {
@@ -182,8 +195,15 @@ void GpuMeshes::upload(const Scene& scene) {
     lastBuildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     textures_[0].fill(GL_RGBA32F, 16, nodes);
-    std::vector<glm::vec4> triangleTexels(triangles.size() * kTriangleTexels);
-    if (!triangles.empty()) std::memcpy(triangleTexels.data(), triangles.data(), triangles.size() * sizeof(GpuTriangle));
+    // Each triangle's first kTrianglePositionTexels texels, then its other texels (GpuTriangle).
+    std::vector<glm::vec4> triangleTexels(triangles.size() * (kTrianglePositionTexels + kTriangleAttributeTexels));
+    attributeStart_ = static_cast<int>(exactFloat(triangles.size() * kTrianglePositionTexels));
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        const auto* texels = reinterpret_cast<const glm::vec4*>(&triangles[i]);
+        std::copy(texels, texels + kTrianglePositionTexels, &triangleTexels[i * kTrianglePositionTexels]);
+        std::copy(texels + kTrianglePositionTexels, texels + kTrianglePositionTexels + kTriangleAttributeTexels,
+                  &triangleTexels[static_cast<std::size_t>(attributeStart_) + i * kTriangleAttributeTexels]);
+    }
     triangleTexels.insert(triangleTexels.end(), tangents.begin(), tangents.end());
     textures_[1].fill(GL_RGBA32F, 16, triangleTexels);
     gpuBytes_ = textures_[0].bytes() + textures_[1].bytes();

@@ -5,7 +5,7 @@
 // shaders/mesh_intersect.glsl traverses them.
 
 #include <ptview/gl/BufferTexture.h>
-#include <ptview/geometry/Bvh.h>
+#include <ptview/geometry/WideBvh.h>
 #include <ptview/gpudata/SceneRecords.h>
 #include <ptview/scene/Scene.h>
 
@@ -32,6 +32,8 @@ public:
 
     int instanceCount() const { return static_cast<int>(instances_.size()); }
     int topLevelRoot() const { return topLevelRoot_; } // -1: no meshes
+    // The texel of the triangles' buffer where their attributes begin (GpuTriangle).
+    int attributeStart() const { return attributeStart_; }
     std::size_t triangleCount() const { return triangleCount_; }
     const std::vector<MeshInstance>& instances() const { return instances_; }
     Aabb worldBounds() const { return worldBounds_; }
@@ -47,7 +49,7 @@ public:
 
 private:
     struct BuiltMesh {
-        Bvh bvh;
+        WideBvh bvh;
         std::vector<GpuTriangle> triangles; // leaf order
         std::vector<glm::vec4> tangents;    // three per triangle, leaf order; empty without
         Aabb bounds;                        // object space
@@ -65,6 +67,7 @@ private:
     std::vector<MeshInstance> instances_;        // in top-level leaf order
     std::vector<std::uint32_t> instanceRoots_;   // bottom-level root node of each instance
     int topLevelRoot_ = -1;
+    int attributeStart_ = 0;
     std::size_t triangleCount_ = 0;
     Aabb worldBounds_;
     double lastBuildSeconds_ = 0.0;

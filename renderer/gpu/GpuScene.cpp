@@ -10,7 +10,7 @@
 namespace ptview {
 const char* const GpuScene::kIntUniformNames[kIntUniformCount] = {
     GpuTextures::kRecordStartName, "uSphereCount", "uQuadCount", "uDiskCount", "uLightCount", "uEnvironmentLight",
-    "uMeshInstanceCount", "uTopLevelRoot"};
+    "uMeshInstanceCount", "uTopLevelRoot", "uMeshAttributeStart"};
 
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
     "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights",
@@ -66,7 +66,8 @@ void GpuScene::bind() const {
     meshes_.bind(firstUnit_ + kOwnTextureCount);
     atlas_.bind(firstUnit_ + kOwnTextureCount + GpuMeshes::kTextureCount);
     const int values[kIntUniformCount] = {textureRecordStart_, sphereCount(), quadCount(), diskCount(), lightCount(),
-                                          environmentLight(), meshes_.instanceCount(), meshes_.topLevelRoot()};
+                                          environmentLight(), meshes_.instanceCount(), meshes_.topLevelRoot(),
+                                          meshes_.attributeStart()};
     for (int i = 0; i < kIntUniformCount; ++i) glUniform1i(intUniformLocations_[i], values[i]);
 }
 

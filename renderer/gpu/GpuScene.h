@@ -61,9 +61,9 @@ private:
     int firstUnit_ = 0;
     // The int uniforms bind() sets, in the order of the values it sets them to: the texture
     // records' start, the shape and light counts, the environment's light, the meshes' top level.
-    static constexpr int kIntUniformCount = 8;
+    static constexpr int kIntUniformCount = 9;
     static const char* const kIntUniformNames[kIntUniformCount];
-    GLint intUniformLocations_[kIntUniformCount] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    GLint intUniformLocations_[kIntUniformCount] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
     ScenePrimitives geometry_; // kept to rebuild the light table on material edits
     glm::vec3 environmentRadiance_{0.0f};
     LightTable lights_;

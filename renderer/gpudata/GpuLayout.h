@@ -205,21 +205,27 @@ struct GpuTextureRecord {
 static_assert(sizeof(GpuTextureRecord) == 32, "two RGBA32F texels");
 constexpr int kTextureRecordTexels = sizeof(GpuTextureRecord) / 16;
 
-// shaders/mesh_intersect.glsl: a BVH node as two RGBA32F texels, with its integers as float values
-// (GpuLayout.h says why).
+// shaders/mesh_intersect.glsl: a node of a mesh's four-wide BVH (renderer/geometry/WideBvh.h) as
+// eight RGBA32F texels: its children's boxes axis by axis, so that one vec4 operation tests all
+// four children's slabs on an axis, then their references, integers as float values (GpuLayout.h
+// says why).
 struct GpuBvhNode {
-    glm::vec3 boundsMin;
-    float firstOrRight; // leaf: first triangle (or instance); interior: right child
-    glm::vec3 boundsMax;
-    float count;        // primitives in a leaf; 0 for an interior node
+    glm::vec4 childMinX, childMaxX;
+    glm::vec4 childMinY, childMaxY;
+    glm::vec4 childMinZ, childMaxZ;
+    glm::vec4 childIndex; // an inner child: its node; a leaf: its first triangle (or instance)
+    glm::vec4 childCount; // 0: an inner child; 1..kMaxBvhLeafSize: a leaf's primitives; -1: no child
 };
-static_assert(sizeof(GpuBvhNode) == 32, "two RGBA32F texels");
+static_assert(sizeof(GpuBvhNode) == 128, "eight RGBA32F texels");
 constexpr int kBvhNodeTexels = sizeof(GpuBvhNode) / 16;
 
 // shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH
-// leaves (so a leaf's triangles are contiguous). Triangles of meshes that a normal-mapped material
-// covers have three more texels, after all triangles in the same buffer: the corners' tangents
-// (xyz unit, w the bitangent's sign: MeshTangents.h); other meshes carry none.
+// leaves (so a leaf's triangles are contiguous), uploaded as two arrays: the first three texels of
+// every triangle (what the intersection loop reads: corners, material slot), then from
+// kTrianglePositionTexels * triangles on the last four of every triangle (what only the closest
+// hit reads), so that a leaf's corners lie together in memory. Triangles of meshes that a
+// normal-mapped material covers have three more texels, after all triangles in the same buffer:
+// the corners' tangents (xyz unit, w the bitangent's sign: MeshTangents.h); other meshes carry none.
 struct GpuTriangle {
     glm::vec3 p0;
     float materialSlot; // into the instance's material table (an integer value: GpuLayout.h)
@@ -233,7 +239,9 @@ struct GpuTriangle {
     glm::vec4 v1U2V2;   // (v1, u2, v2, -)
 };
 static_assert(sizeof(GpuTriangle) == 112, "seven RGBA32F texels");
-constexpr int kTriangleTexels = sizeof(GpuTriangle) / 16; // generated into gpu_layout.glsl
+// Generated into gpu_layout.glsl.
+constexpr int kTrianglePositionTexels = offsetof(GpuTriangle, n0AndU0) / 16;
+constexpr int kTriangleAttributeTexels = (sizeof(GpuTriangle) - offsetof(GpuTriangle, n0AndU0)) / 16;
 
 // Texels per instance: world-to-object and object-to-world rows (three each), (bottom-level root,
 // first triangle, material table offset, first light or -1), and a spare texel (uploadInstances).
