@@ -201,10 +201,15 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
     int stackSize = stackBottom;
     int reference = instanceIds(instance).x;
     bool found = false;
+    // One iteration visits a node and then tests the leaf that the visit (or the stack, when the
+    // visit entered no child) hands on. llvmpipe runs every branch of the loop's body for a SIMD
+    // group in each iteration, whichever its rays take, so a leaf that waited for an iteration of
+    // its own would cost a node visit besides.
     for (;;) {
-        if (reference >= 0) {
-            if (visitNode(ray, tBest, reference, reference, stackSize)) continue;
-        } else {
+        bool haveWork = true;
+        if (reference >= 0) haveWork = visitNode(ray, tBest, reference, reference, stackSize);
+        if (!haveWork && !popReachable(tBest, reference, stackSize, stackBottom)) return found;
+        if (reference < 0) {
             int first = leafFirst(reference);
             for (int i = first; i < first + leafCount(reference); ++i) {
                 float t;
@@ -224,13 +229,14 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 best = MeshHit(instance, i, barycentric);
                 found = true;
             }
+            if (!popReachable(tBest, reference, stackSize, stackBottom)) return found;
         }
-        if (!popReachable(tBest, reference, stackSize, stackBottom)) return found;
     }
 }
 
-// The top level: instances in the order their boxes are entered. With one instance the top level
-// is its box alone, which the instance's root visit tests as well: the walk starts there.
+// The top level: instances in the order their boxes are entered. With one instance the walk
+// starts at that instance's root: testing its world box first would save nothing on llvmpipe,
+// which runs the instance's walk for a SIMD group unless every ray of it misses the box.
 bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
     if (uTopLevelRoot < 0) return false;
     if (uMeshInstanceCount == 1) return traverseInstance(0, worldRay, tBest, best, anyHit, excludedLight, 0);
