@@ -6,10 +6,12 @@ const int kDiskTexels = 2; // GpuDisk
 const int kMaterialTexels = 10; // GpuMaterial
 const int kTextureRecordTexels = 2; // GpuTextureRecord, after the materials
 const int kLightTexels = 4; // GpuLight
-const int kBvhNodeTexels = 8; // GpuBvhNode
+const int kBvhNodeTexels = 4; // GpuBvhNode
 const int kTrianglePositionTexels = 3; // GpuTriangle's corners, material slot and tangent texel
 const int kTriangleAttributeTexels = 4; // GpuTriangle's normals and uvs, from uMeshAttributeStart
 const int kInstanceTexels = 8; // a mesh instance (GpuMeshes.h)
+const uint kBvhNoChild = 4294967295u; // GpuBvhNode::child: no child
+const uint kBvhLeafBit = 2147483648u; // GpuBvhNode::child: a leaf
 const int kBvhStackSize = 189; // kWideBvhStackSize: one walk's stack never overflows
 // Hit::primitive.x: PrimitiveKind.
 const int kPrimitiveSphere = 0;

@@ -9,10 +9,11 @@
 // both walks go on past it.
 #include "constants.glsl"
 #include "gpu_layout.glsl"
+#include "mesh_instances.glsl"
 #include "ray.glsl"
 #include "surface_alpha.glsl"
 
-uniform samplerBuffer uMeshNodes;     // per node: kBvhNodeTexels texels, see GpuBvhNode
+uniform usamplerBuffer uMeshNodes;    // per node: kBvhNodeTexels texels, see GpuBvhNode
 uniform samplerBuffer uMeshTriangles; // kTrianglePositionTexels per triangle, then from
 uniform int uMeshAttributeStart;      // here kTriangleAttributeTexels per triangle: see GpuTriangle
 uniform samplerBuffer uMeshInstances; // per instance: kInstanceTexels texels, then the material tables
@@ -128,13 +129,17 @@ vec2 triangleUv(int triangle, vec3 barycentric) {
 // parameters in and out: passing it made meshes render 4x slower on llvmpipe.
 vec2 bvhStack[2 * kBvhStackSize];
 
-// A child as one integer: an inner node's index (>= 0), or a leaf as -(first * 16 + count), its
-// count being 1..kMaxBvhLeafSize.
-int childReference(float index, float count) {
-    return count == 0.0 ? int(index) : -(int(index) * 16 + int(count));
+// A child as one integer: an inner node's index (>= 0), or a leaf as the complement of its
+// GpuBvhNode::child bits below kBvhLeafBit (first << 3 | count - 1), which is negative.
+int childReference(uint bits) { return bits < kBvhLeafBit ? int(bits) : ~int(bits & ~kBvhLeafBit); }
+int leafFirst(int reference) { return (~reference) >> 3; }
+int leafCount(int reference) { return ((~reference) & 7) + 1; }
+
+// The four children's planes on one axis from their bytes (GpuBvhNode, BvhNodePacking.h): the
+// product is exact, so this is the box C++ checked.
+vec4 childPlanes(float origin, float step, uint bytes) {
+    return origin + vec4(uvec4(bytes, bytes >> 8u, bytes >> 16u, bytes >> 24u) & 255u) * step;
 }
-int leafFirst(int reference) { return (-reference) >> 4; }
-int leafCount(int reference) { return (-reference) & 15; }
 
 // Puts the nearer of two children first.
 void orderByDistance(inout float tA, inout int a, inout float tB, inout int b) {
@@ -150,22 +155,26 @@ void orderByDistance(inout float tA, inout int a, inout float tB, inout int b) {
 // `reference`, the others go on the stack farthest first; false when it enters none.
 bool visitNode(MeshRay ray, float tBest, int node, out int reference, inout int stackSize) {
     int base = kBvhNodeTexels * node;
-    vec4 t0x = (texelFetch(uMeshNodes, base) - ray.origin.x) * ray.invDirection.x;
-    vec4 t1x = (texelFetch(uMeshNodes, base + 1) - ray.origin.x) * ray.invDirection.x;
-    vec4 t0y = (texelFetch(uMeshNodes, base + 2) - ray.origin.y) * ray.invDirection.y;
-    vec4 t1y = (texelFetch(uMeshNodes, base + 3) - ray.origin.y) * ray.invDirection.y;
-    vec4 t0z = (texelFetch(uMeshNodes, base + 4) - ray.origin.z) * ray.invDirection.z;
-    vec4 t1z = (texelFetch(uMeshNodes, base + 5) - ray.origin.z) * ray.invDirection.z;
+    uvec4 header = texelFetch(uMeshNodes, base);
+    uvec4 planesXY = texelFetch(uMeshNodes, base + 1);
+    uvec4 planesZ = texelFetch(uMeshNodes, base + 2);
+    uvec4 children = texelFetch(uMeshNodes, base + 3);
+    vec3 origin = uintBitsToFloat(header.xyz);
+    vec3 step = uintBitsToFloat((uvec3(header.w, header.w >> 8u, header.w >> 16u) & 255u) << 23u); // 2^(e - 127)
+    vec4 t0x = (childPlanes(origin.x, step.x, planesXY.x) - ray.origin.x) * ray.invDirection.x;
+    vec4 t1x = (childPlanes(origin.x, step.x, planesXY.y) - ray.origin.x) * ray.invDirection.x;
+    vec4 t0y = (childPlanes(origin.y, step.y, planesXY.z) - ray.origin.y) * ray.invDirection.y;
+    vec4 t1y = (childPlanes(origin.y, step.y, planesXY.w) - ray.origin.y) * ray.invDirection.y;
+    vec4 t0z = (childPlanes(origin.z, step.z, planesZ.x) - ray.origin.z) * ray.invDirection.z;
+    vec4 t1z = (childPlanes(origin.z, step.z, planesZ.y) - ray.origin.z) * ray.invDirection.z;
     vec4 enter = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), vec4(0.0)));
     vec4 exit = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), vec4(tBest))) * 1.0000004;
-    vec4 index = texelFetch(uMeshNodes, base + 6);
-    vec4 count = texelFetch(uMeshNodes, base + 7);
-    // An empty slot (count -1) is never entered, whatever its box.
-    vec4 entered = vec4(lessThanEqual(enter, exit)) * vec4(greaterThanEqual(count, vec4(0.0)));
+    // An empty slot is never entered, whatever its planes.
+    vec4 entered = vec4(lessThanEqual(enter, exit)) * vec4(notEqual(children, uvec4(kBvhNoChild)));
     vec4 t = mix(vec4(kInfinity), enter, greaterThan(entered, vec4(0.0)));
     float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;
-    int c0 = childReference(index.x, count.x), c1 = childReference(index.y, count.y);
-    int c2 = childReference(index.z, count.z), c3 = childReference(index.w, count.w);
+    int c0 = childReference(children.x), c1 = childReference(children.y);
+    int c2 = childReference(children.z), c3 = childReference(children.w);
     // A sorting network for four.
     orderByDistance(t0, c0, t1, c1);
     orderByDistance(t2, c2, t3, c3);
@@ -234,12 +243,13 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
     }
 }
 
-// The top level: instances in the order their boxes are entered. With one instance the walk
-// starts at that instance's root: testing its world box first would save nothing on llvmpipe,
-// which runs the instance's walk for a SIMD group unless every ray of it misses the box.
+// The top level: instances in the order their boxes are entered. A program for one instance
+// (kOneMeshInstance) starts at that instance's root; testing its world box first would save
+// nothing on llvmpipe, which runs the instance's walk for a SIMD group unless every ray of it
+// misses the box.
 bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool anyHit, int excludedLight) {
     if (uTopLevelRoot < 0) return false;
-    if (uMeshInstanceCount == 1) return traverseInstance(0, worldRay, tBest, best, anyHit, excludedLight, 0);
+    if (kOneMeshInstance) return traverseInstance(0, worldRay, tBest, best, anyHit, excludedLight, 0);
     MeshRay ray = makeMeshRay(worldRay.origin, worldRay.direction);
     int stackSize = 0;
     int reference = uTopLevelRoot;

@@ -183,7 +183,7 @@ TEST(Converge, AllFeaturesCompilesEveryFeature) {
         << specialized;
     EXPECT_NE(specialized.find("; meshes: no;"), std::string::npos) << specialized;
     const std::string uber = summaryOf("uber", " --all-features");
-    EXPECT_NE(uber.find("; meshes: yes (BVH);"), std::string::npos) << uber;
+    EXPECT_NE(uber.find("; meshes: yes (two-level BVH);"), std::string::npos) << uber;
     EXPECT_NE(uber.find("; environment: map;"), std::string::npos) << uber;
 }
 

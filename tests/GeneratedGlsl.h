@@ -27,6 +27,7 @@ inline std::vector<GeneratedInclude> generatedIncludes() {
         // Generated per scene; the copies are what a program with every feature gets.
         {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
         {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},
+        {"mesh_instances.glsl", generateMeshInstances(ShaderFeatures::all())},
     };
 }
 

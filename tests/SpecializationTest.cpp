@@ -136,6 +136,21 @@ TEST(Specialization, EachFeatureBringsItsCode) {
     EXPECT_TRUE(contains(meshes, kBvhCode));
     EXPECT_TRUE(contains(meshes, kEnvironmentMapCode));
 
+    // One mesh shape: its walk alone, without the top level's (mesh_instances.glsl); a program
+    // for one instance covers no scene of several, a program for several covers one.
+    Scene bunny = shippedScene("cornell_bunny");
+    EXPECT_TRUE(sceneFeatures(bunny).oneMeshInstance);
+    EXPECT_FALSE(sceneFeatures(shippedScene("meshes")).oneMeshInstance);
+    EXPECT_TRUE(contains(programSource(bunny), "const bool kOneMeshInstance = true;"));
+    EXPECT_TRUE(contains(meshes, "const bool kOneMeshInstance = false;"));
+    const ShaderFeatures one = sceneFeatures(bunny);
+    ShaderFeatures several = one, none = one;
+    several.oneMeshInstance = false;
+    none.meshes = none.oneMeshInstance = false;
+    EXPECT_TRUE(several.covers(one));
+    EXPECT_FALSE(one.covers(several));
+    EXPECT_TRUE(one.covers(none));
+
     // Mirror alone does not pull in the dielectrics it once shared a file with.
     Scene mirrorOnly = shippedScene("cornell");
     mirrorOnly.materials[0].type = MaterialType::Mirror;

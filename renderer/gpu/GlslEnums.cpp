@@ -65,6 +65,8 @@ std::string glslLayoutConstants() {
            glslIntConstant("kTrianglePositionTexels", kTrianglePositionTexels, "GpuTriangle's corners, material slot and tangent texel") +
            glslIntConstant("kTriangleAttributeTexels", kTriangleAttributeTexels, "GpuTriangle's normals and uvs, from uMeshAttributeStart") +
            glslIntConstant("kInstanceTexels", kInstanceTexels, "a mesh instance (GpuMeshes.h)") +
+           "const uint kBvhNoChild = " + std::to_string(kBvhNoChild) + "u; // GpuBvhNode::child: no child\n"
+           "const uint kBvhLeafBit = " + std::to_string(kBvhLeafBit) + "u; // GpuBvhNode::child: a leaf\n" +
            glslIntConstant("kBvhStackSize", kWideBvhStackSize, "kWideBvhStackSize: one walk's stack never overflows") +
            "// Hit::primitive.x: PrimitiveKind.\n" +
            glslIntConstant("kPrimitiveSphere", static_cast<int>(PrimitiveKind::Sphere)) +

@@ -1,5 +1,6 @@
 #include <ptview/gpu/GpuMeshes.h>
 
+#include <ptview/gpudata/BvhNodePacking.h>
 #include <ptview/scene/MeshTangents.h>
 
 #include <algorithm>
@@ -16,26 +17,6 @@ float exactFloat(std::size_t value) {
         throw std::runtime_error("the meshes need index " + std::to_string(value) +
                                  ", beyond the 2^24 a float stores exactly (too many triangles)");
     return static_cast<float>(value);
-}
-
-// A node as it goes into the shared node buffer: children and primitive ranges made absolute.
-GpuBvhNode placed(const WideBvhNode& node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
-    GpuBvhNode gpu{};
-    for (int c = 0; c < kWideBvhWidth; ++c) {
-        const WideBvhChild& child = node.children[static_cast<std::size_t>(c)];
-        gpu.childCount[c] = -1.0f;
-        if (child.kind == WideBvhChild::Kind::Empty) continue;
-        gpu.childMinX[c] = child.bounds.min.x;
-        gpu.childMaxX[c] = child.bounds.max.x;
-        gpu.childMinY[c] = child.bounds.min.y;
-        gpu.childMaxY[c] = child.bounds.max.y;
-        gpu.childMinZ[c] = child.bounds.min.z;
-        gpu.childMaxZ[c] = child.bounds.max.z;
-        const bool leaf = child.kind == WideBvhChild::Kind::Leaf;
-        gpu.childIndex[c] = exactFloat(child.index + (leaf ? primitiveOffset : nodeOffset));
-        gpu.childCount[c] = leaf ? static_cast<float>(child.count) : 0.0f;
-    }
-    return gpu;
 }
 
 // Rows of the upper 3x4 of a matrix: row r holds (m[0][r], m[1][r], m[2][r], m[3][r]), so that
@@ -143,7 +124,7 @@ void GpuMeshes::upload(const Scene& scene) {
         auto nodeOffset = static_cast<std::uint32_t>(nodes.size());
         auto triangleOffset = static_cast<std::uint32_t>(triangles.size());
         placement[built.get()] = {nodeOffset, triangleOffset};
-        for (const WideBvhNode& node : built->bvh.nodes) nodes.push_back(placed(node, nodeOffset, triangleOffset));
+        for (const WideBvhNode& node : built->bvh.nodes) nodes.push_back(packBvhNode(node, nodeOffset, triangleOffset));
         // Tangent texels follow all triangles' texels: the index becomes absolute in the buffer.
         std::size_t tangentBase = totalTriangles * (kTrianglePositionTexels + kTriangleAttributeTexels) + tangents.size();
         for (GpuTriangle triangle : built->triangles) {
@@ -184,7 +165,7 @@ void GpuMeshes::upload(const Scene& scene) {
     WideBvh topLevel = collapseToWideBvh(buildBvh(bounds, centroids, BvhBuildOptions{1}));
     topLevelRoot_ = topLevel.nodes.empty() ? -1 : static_cast<int>(nodes.size());
     // Instances go in the top level's leaf order, so a leaf's range indexes them directly.
-    for (const WideBvhNode& node : topLevel.nodes) nodes.push_back(placed(node, static_cast<std::uint32_t>(topLevelRoot_), 0));
+    for (const WideBvhNode& node : topLevel.nodes) nodes.push_back(packBvhNode(node, static_cast<std::uint32_t>(topLevelRoot_), 0));
     instances_.clear();
     instanceRoots_.clear();
     for (std::uint32_t original : topLevel.primitiveOrder) {
@@ -194,7 +175,7 @@ void GpuMeshes::upload(const Scene& scene) {
     triangleCount_ = triangles.size();
     lastBuildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    textures_[0].fill(GL_RGBA32F, 16, nodes);
+    textures_[0].fill(GL_RGBA32UI, 16, nodes);
     // Each triangle's first kTrianglePositionTexels texels, then its other texels (GpuTriangle).
     std::vector<glm::vec4> triangleTexels(triangles.size() * (kTrianglePositionTexels + kTriangleAttributeTexels));
     attributeStart_ = static_cast<int>(exactFloat(triangles.size() * kTrianglePositionTexels));

@@ -88,6 +88,15 @@ std::string generateBsdfDispatch(const ShaderFeatures& features) {
            sample + "    default: return failedBsdfSample(); // emitters reflect nothing\n    }\n}\n";
 }
 
+std::string generateMeshInstances(const ShaderFeatures& features) {
+    return "// How mesh_intersect.glsl walks the scene's mesh instances. Generated for each program by\n"
+           "// generateMeshInstances (renderer/gpu/ShaderFeatures.cpp): a program for a scene of one mesh shape\n"
+           "// walks that instance's tree alone. llvmpipe runs both sides of a branch for a SIMD group, even\n"
+           "// on a uniform, so the top level's walk would cost every ray an iteration though none took it.\n"
+           "// shaders/mesh_instances.glsl is the output for any number of instances.\n"
+           "const bool kOneMeshInstance = " + std::string(features.oneMeshInstance ? "true" : "false") + ";\n";
+}
+
 std::string generateLightKinds(const ShaderFeatures& features) {
     std::string names, test;
     for (const auto& entry : lightKindNames()) {
@@ -155,6 +164,7 @@ void specialize(ShaderAssembler& assembler, const ProgramChoices& program) {
     for (const IncludeVariant& variant : kIncludeVariants)
         if (!variant.wanted(program)) assembler.replaceWithFile(variant.include, variant.emptyVariant);
     assembler.replaceWithText("light_kinds.glsl", generateLightKinds(program.features));
+    assembler.replaceWithText("mesh_instances.glsl", generateMeshInstances(program.features));
     if (program.features.unrolledShapes)
         assembler.replaceWithText("shape_loops.glsl", generateShapeLoops(*program.features.unrolledShapes));
     assembler.replaceWithText("specialization.glsl", generateSpecialization(program));

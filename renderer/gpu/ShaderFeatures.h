@@ -43,5 +43,6 @@ struct IncludeVariantFiles {
 std::vector<IncludeVariantFiles> includeVariantFiles();
 std::string generateBsdfDispatch(const ShaderFeatures& features);
 std::string generateLightKinds(const ShaderFeatures& features);
+std::string generateMeshInstances(const ShaderFeatures& features);
 
 } // namespace ptview

@@ -205,18 +205,25 @@ struct GpuTextureRecord {
 static_assert(sizeof(GpuTextureRecord) == 32, "two RGBA32F texels");
 constexpr int kTextureRecordTexels = sizeof(GpuTextureRecord) / 16;
 
-// shaders/mesh_intersect.glsl: a node of a mesh's four-wide BVH (renderer/geometry/WideBvh.h) as
-// eight RGBA32F texels: its children's boxes axis by axis, so that one vec4 operation tests all
-// four children's slabs on an axis, then their references, integers as float values (GpuLayout.h
-// says why).
+// shaders/mesh_intersect.glsl: a node of a four-wide BVH (renderer/geometry/WideBvh.h) as four
+// RGBA32UI texels, its children's boxes quantized to a byte per plane (BvhNodePacking.h): a
+// visit reads four texels for four boxes. Unlike the float buffers above, this one is integer,
+// so its floats travel as their bits and its integers need no float values.
 struct GpuBvhNode {
-    glm::vec4 childMinX, childMaxX;
-    glm::vec4 childMinY, childMaxY;
-    glm::vec4 childMinZ, childMaxZ;
-    glm::vec4 childIndex; // an inner child: its node; a leaf: its first triangle (or instance)
-    glm::vec4 childCount; // 0: an inner child; 1..kMaxBvhLeafSize: a leaf's primitives; -1: no child
+    glm::vec3 origin;        // the children's boxes' smallest corner (float bits)
+    std::uint32_t exponents; // per axis, byte 0 x, 1 y, 2 z: a plane's step is 2^(e - 127)
+    std::uint32_t childMinX; // child c's byte in bits 8c..8c+7: its min x is origin.x + q * step.x
+    std::uint32_t childMaxX;
+    std::uint32_t childMinY;
+    std::uint32_t childMaxY;
+    std::uint32_t childMinZ;
+    std::uint32_t childMaxZ;
+    std::uint32_t pad[2];
+    std::uint32_t child[4];  // kBvhNoChild, kBvhLeafBit | first << 3 | (count - 1), or a node's index
 };
-static_assert(sizeof(GpuBvhNode) == 128, "eight RGBA32F texels");
+static_assert(sizeof(GpuBvhNode) == 64, "four RGBA32UI texels");
+constexpr std::uint32_t kBvhNoChild = 0xffffffffu;
+constexpr std::uint32_t kBvhLeafBit = 0x80000000u;
 constexpr int kBvhNodeTexels = sizeof(GpuBvhNode) / 16;
 
 // shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH

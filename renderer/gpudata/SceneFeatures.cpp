@@ -14,7 +14,7 @@ namespace {
 auto tied(const ShaderFeatures& f) {
     ShapeCounts unrolled = f.unrolledShapes.value_or(ShapeCounts{-1, -1, -1});
     return std::make_tuple(f.materialModels, f.lightKinds, f.quadLightsUpClose, f.environmentMap,
-                           f.meshes, f.textures, f.thinLens, f.normalMaps, f.alpha, unrolled.spheres, unrolled.quads,
+                           f.meshes, f.oneMeshInstance, f.textures, f.thinLens, f.normalMaps, f.alpha, unrolled.spheres, unrolled.quads,
                            unrolled.disks);
 }
 
@@ -48,6 +48,7 @@ bool ShaderFeatures::covers(const ShaderFeatures& other) const {
     return (other.materialModels & ~materialModels) == 0 && (other.lightKinds & ~lightKinds) == 0 &&
            (quadLightsUpClose || !other.quadLightsUpClose) &&
            (environmentMap || !other.environmentMap) && (meshes || !other.meshes) &&
+           (!oneMeshInstance || other.oneMeshInstance || !other.meshes) &&
            (textures || !other.textures) && (thinLens || !other.thinLens) &&
            (normalMaps || !other.normalMaps) && (alpha || !other.alpha) &&
            (!unrolledShapes || (other.unrolledShapes && *unrolledShapes == *other.unrolledShapes));
@@ -69,7 +70,7 @@ std::string ShaderFeatures::describe() const {
                 ? std::string("quad lights sampled: ") + (quadLightsUpClose ? "by solid angle up close" : "by area") + "\n"
                 : std::string()) +
            "environment: " + (environmentMap ? "map" : "constant") + "\n" +
-           "meshes: " + (meshes ? "yes (BVH)" : "no") + "\n" +
+           "meshes: " + (meshes ? (oneMeshInstance ? "one instance (BVH)" : "yes (two-level BVH)") : "no") + "\n" +
            "transmission: " + (transmission() ? "yes" : "no") + "\n" + "textures: " + (textures ? "yes" : "no") + "\n" +
            "camera: " + (thinLens ? "thin lens" : "pinhole") + "\n" +
            "normal maps: " + (normalMaps ? "yes" : "no") + "\n" +
@@ -95,10 +96,12 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
         if (material.normalTexture.used()) features.normalMaps = true;
         if (material.alphaMode != AlphaMode::Opaque) features.alpha = features.textures = true;
     };
+    int meshShapes = 0;
     for (const Shape& shape : scene.shapes) {
         switch (shape.type) {
         case ShapeType::Mesh:
             features.meshes = true;
+            ++meshShapes;
             for (int material : shape.slotMaterials) useMaterial(material, LightKind::Triangle);
             break;
         case ShapeType::Sphere: useMaterial(shape.material, LightKind::Sphere); break;
@@ -111,6 +114,7 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
         addLightKind(light.type == LightType::Point ? LightKind::Point
                      : light.type == LightType::Spot ? LightKind::Spot
                                                      : LightKind::Directional);
+    features.oneMeshInstance = meshShapes == 1;
     features.environmentMap = !scene.environmentMap.empty();
     if (features.environmentMap || scene.environment != glm::vec3(0.0f)) addLightKind(LightKind::Environment);
     features.thinLens = scene.camera.apertureRadius > 0.0f;
