@@ -1,7 +1,8 @@
-# Builds one scene of a neutral scene description (../shared/refs/scenes.json) in Blender and
-# renders it with Cycles on the CPU, as the reference images were made: box filter 1 px wide,
-# linear output, no denoising, no adaptive sampling, no clamping, caustics on, 64 bounces of every
-# kind. Writes the linear image as PFM and prints the time of the whole render call on one line.
+# Builds one scene of a neutral scene description (../shared/refs/scenes.json or bench/cycles/*.json)
+# in Blender and renders it with Cycles on the CPU, as the reference images were made: box filter
+# 1 px wide, linear output, no denoising, no adaptive sampling, no clamping, caustics on, 64 bounces
+# of every kind. Writes the linear image as PFM and prints the time of the whole render call on one
+# line.
 #
 #   blender -b --factory-startup --python-exit-code 2 -P build_scene.py -- \
 #       SCENES_JSON SCENE SPP THREADS SEED OUT.pfm
@@ -20,7 +21,15 @@ from mathutils import Matrix, Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
 scenes_path, scene_name, spp, threads, seed, out_path = args[0], args[1], int(args[2]), int(args[3]), int(args[4]), args[5]
-description = json.load(open(scenes_path))["scenes"][scene_name]
+document = json.load(open(scenes_path))
+description = document["scenes"][scene_name]
+# Where the description's file paths (mesh 'file', 'albedo_texture') are relative to: the refs'
+# format says the parent of refs/ (its conventions have a 'files' entry); bench/cycles/*.json say
+# this file's own folder.
+conventions = document.get("conventions")
+files_base = os.path.dirname(os.path.abspath(scenes_path))
+if isinstance(conventions, dict) and "files" in conventions:
+    files_base = os.path.dirname(files_base)
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
@@ -42,16 +51,16 @@ def rgba(rgb):
 
 def make_material(name, spec):
     kind = spec["type"]
-    if kind == "diffuse":
+    if kind in ("diffuse", "textured_diffuse"):  # textured_diffuse: the refs' name, albedo 1 x texture
         def build(nodes, links):
             bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-            bsdf.inputs["Color"].default_value = rgba(spec["albedo"])
+            bsdf.inputs["Color"].default_value = rgba(spec.get("albedo", [1, 1, 1]))
             bsdf.inputs["Roughness"].default_value = 0.0  # Lambertian, not Oren-Nayar
             if "albedo_texture" in spec:
                 # albedo x texture: an 8-bit sRGB image, decoded to linear, bilinear, repeating,
                 # read at the mesh's UV map (OBJ vt: v = 0 at the image's bottom row, as in Blender).
                 texture = nodes.new("ShaderNodeTexImage")
-                path = os.path.join(os.path.dirname(os.path.abspath(scenes_path)), spec["albedo_texture"])
+                path = os.path.join(files_base, spec["albedo_texture"])
                 texture.image = bpy.data.images.load(path)
                 texture.image.colorspace_settings.name = "sRGB"
                 texture.interpolation = "Linear"
@@ -59,7 +68,7 @@ def make_material(name, spec):
                 product = nodes.new("ShaderNodeMixRGB")
                 product.blend_type = "MULTIPLY"
                 product.inputs["Fac"].default_value = 1.0
-                product.inputs["Color1"].default_value = rgba(spec["albedo"])
+                product.inputs["Color1"].default_value = rgba(spec.get("albedo", [1, 1, 1]))
                 links.new(texture.outputs["Color"], product.inputs["Color2"])
                 links.new(product.outputs["Color"], bsdf.inputs["Color"])
             return bsdf.outputs[0]
@@ -138,13 +147,16 @@ def read_obj(path):
 
 
 def mesh_transform(spec):
-    """translate x rotate x scale, as ptview's shape transforms compose them."""
+    """translate x rotate x scale, as ptview's shape transforms compose them. The rotation is
+    {axis, degrees} (bench/cycles/*.json) or rotate_y_deg (the refs' format)."""
     transform = spec.get("transform", {})
     scale = transform.get("scale", 1.0)
     scale = Matrix.Diagonal(Vector(scale if isinstance(scale, list) else [scale] * 3)).to_4x4()
     rotation = Matrix.Identity(4)
     if "rotation" in transform:
         rotation = Matrix.Rotation(math.radians(transform["rotation"]["degrees"]), 4, Vector(transform["rotation"]["axis"]))
+    elif "rotate_y_deg" in transform:
+        rotation = Matrix.Rotation(math.radians(transform["rotate_y_deg"]), 4, "Y")
     return Matrix.Translation(Vector(transform.get("translate", [0, 0, 0]))) @ rotation @ scale
 
 
@@ -178,7 +190,7 @@ for shape in description["shapes"]:
         obj.data.materials.append(materials[material])
     elif kind == "mesh":
         # Flat shaded (the OBJ's own normals, if any, are not read), with its UV map.
-        positions, faces, face_uvs = read_obj(os.path.join(os.path.dirname(os.path.abspath(scenes_path)), shape["file"]))
+        positions, faces, face_uvs = read_obj(os.path.join(files_base, shape["file"]))
         obj = add_mesh(name, positions, faces, material)
         uv_layer = obj.data.uv_layers.new(name="UVMap")
         for polygon, uvs in zip(obj.data.polygons, face_uvs):
