@@ -183,9 +183,14 @@ bool visitNode(MeshRay ray, float tBest, int node, out int reference, inout int 
     orderByDistance(t1, c1, t2, c2);
     reference = c0;
     if (t0 == kInfinity) return false;
-    if (t3 != kInfinity) bvhStack[stackSize++] = vec2(intBitsToFloat(c3), t3);
-    if (t2 != kInfinity) bvhStack[stackSize++] = vec2(intBitsToFloat(c2), t2);
-    if (t1 != kInfinity) bvhStack[stackSize++] = vec2(intBitsToFloat(c1), t1);
+    // Every slot is written and only the entered ones kept: cheaper on llvmpipe than a masked
+    // store each. The stack has room, since at most three go on per level.
+    bvhStack[stackSize] = vec2(intBitsToFloat(c3), t3);
+    stackSize += t3 != kInfinity ? 1 : 0;
+    bvhStack[stackSize] = vec2(intBitsToFloat(c2), t2);
+    stackSize += t2 != kInfinity ? 1 : 0;
+    bvhStack[stackSize] = vec2(intBitsToFloat(c1), t1);
+    stackSize += t1 != kInfinity ? 1 : 0;
     return true;
 }
 
@@ -210,15 +215,16 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
     int stackSize = stackBottom;
     int reference = instanceIds(instance).x;
     bool found = false;
-    // One iteration visits a node and then tests the leaf that the visit (or the stack, when the
-    // visit entered no child) hands on. llvmpipe runs every branch of the loop's body for a SIMD
-    // group in each iteration, whichever its rays take, so a leaf that waited for an iteration of
-    // its own would cost a node visit besides.
+    // One iteration visits a node, tests the leaf that the visit hands on, and pops once when it
+    // has nothing left in hand. llvmpipe runs every branch of the loop's body for a SIMD group in
+    // each iteration, whichever its rays take (docs/performance.md, issue 35), so a leaf that
+    // waited for an iteration of its own would cost a node visit besides, and a second pop
+    // would cost every iteration its loop.
     for (;;) {
-        bool haveWork = true;
-        if (reference >= 0) haveWork = visitNode(ray, tBest, reference, reference, stackSize);
-        if (!haveWork && !popReachable(tBest, reference, stackSize, stackBottom)) return found;
-        if (reference < 0) {
+        bool needPop = false;
+        if (reference >= 0) needPop = !visitNode(ray, tBest, reference, reference, stackSize);
+        if (reference < 0 && !needPop) {
+            needPop = true;
             int first = leafFirst(reference);
             for (int i = first; i < first + leafCount(reference); ++i) {
                 float t;
@@ -238,8 +244,8 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 best = MeshHit(instance, i, barycentric);
                 found = true;
             }
-            if (!popReachable(tBest, reference, stackSize, stackBottom)) return found;
         }
+        if (needPop && !popReachable(tBest, reference, stackSize, stackBottom)) return found;
     }
 }
 
