@@ -15,24 +15,29 @@ public:
     std::uint32_t emit(std::uint32_t inner) {
         // Binary nodes that become this node's children: start from the two, then open the
         // largest inner one until there are four or only leaves.
-        std::vector<std::uint32_t> open = {inner + 1, binary_.nodes[inner].firstOrRight};
-        while (open.size() < static_cast<std::size_t>(kWideBvhWidth)) {
-            auto largest = open.end();
+        std::array<std::uint32_t, kWideBvhWidth> open{inner + 1, binary_.nodes[inner].firstOrRight};
+        std::size_t openCount = 2;
+        while (openCount < open.size()) {
+            std::size_t largest = openCount;
             float largestArea = -1.0f;
-            for (auto it = open.begin(); it != open.end(); ++it) {
-                const BvhNode& node = binary_.nodes[*it];
+            for (std::size_t c = 0; c < openCount; ++c) {
+                const BvhNode& node = binary_.nodes[open[c]];
                 if (node.isLeaf()) continue;
                 float area = boundsOf(node).surfaceArea();
-                if (area > largestArea) { largestArea = area; largest = it; }
+                if (area > largestArea) { largestArea = area; largest = c; }
             }
-            if (largest == open.end()) break;
-            std::uint32_t opened = *largest;
-            *largest = opened + 1;
-            open.insert(largest + 1, binary_.nodes[opened].firstOrRight);
+            if (largest == openCount) break;
+            // Its left child takes its place and its right child the next, so the children stay
+            // in the binary tree's depth-first order (and leaves cover primitiveOrder in order).
+            const std::uint32_t opened = open[largest];
+            for (std::size_t c = openCount; c > largest + 1; --c) open[c] = open[c - 1];
+            open[largest] = opened + 1;
+            open[largest + 1] = binary_.nodes[opened].firstOrRight;
+            ++openCount;
         }
         auto index = static_cast<std::uint32_t>(wide_.nodes.size());
         wide_.nodes.emplace_back();
-        for (std::size_t c = 0; c < open.size(); ++c) {
+        for (std::size_t c = 0; c < openCount; ++c) {
             const BvhNode& node = binary_.nodes[open[c]];
             WideBvhChild child;
             child.bounds = boundsOf(node);
