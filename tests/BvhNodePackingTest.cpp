@@ -44,7 +44,7 @@ TEST(BvhNodePacking, DecodedBoxesHoldTheChildrenAndAreAtMostAStepLarger) {
         const glm::vec3 center(uniform(rng, -1e4f, 1e4f) * float(rng() % 2), uniform(rng, -10.0f, 10.0f), 0.0f);
         const int children = 1 + int(rng() % kWideBvhWidth);
         const WideBvhNode node = randomNode(rng, children, center, size);
-        const GpuBvhNode gpu = packBvhNode(node, 0, 0);
+        const GpuBvhNode gpu = packBvhNode(node);
         for (int c = 0; c < children; ++c) {
             const Aabb exact = node.children[static_cast<std::size_t>(c)].bounds;
             const Aabb decoded = decodedChildBounds(gpu, c);
@@ -76,7 +76,7 @@ TEST(BvhNodePacking, DecodedBoxesHoldTheChildrenAndAreAtMostAStepLarger) {
 TEST(BvhNodePacking, ReferencesSayWhatEachChildIs) {
     std::mt19937 rng(5);
     const WideBvhNode node = randomNode(rng, 3, glm::vec3(0.0f), 1.0f);
-    const GpuBvhNode gpu = packBvhNode(node, 100, 1000);
+    const GpuBvhNode gpu = placedBvhNode(packBvhNode(node), 100, 1000);
     EXPECT_EQ(gpu.child[0], 100u + 1u);                                    // an inner node, made absolute
     EXPECT_EQ(gpu.child[1], kBvhLeafBit | (1000u + 11u) << 3 | (2u - 1u)); // a leaf of two from triangle 1011
     EXPECT_EQ(gpu.child[2], 100u + 21u);
@@ -87,9 +87,9 @@ TEST(BvhNodePacking, ReferencesSayWhatEachChildIs) {
 TEST(BvhNodePacking, RefusesIndicesBeyondWhatAReferenceHolds) {
     std::mt19937 rng(9);
     const WideBvhNode node = randomNode(rng, 2, glm::vec3(0.0f), 1.0f);
-    EXPECT_THROW(packBvhNode(node, 0, (1u << 28) - 5), std::runtime_error); // the leaf's first triangle
-    EXPECT_THROW(packBvhNode(node, kBvhLeafBit - 1, 0), std::runtime_error); // the inner child's index
-    EXPECT_NO_THROW(packBvhNode(node, 0, (1u << 28) - 12));
+    EXPECT_THROW(placedBvhNode(packBvhNode(node), 0, (1u << 28) - 5), std::runtime_error); // the leaf's first triangle
+    EXPECT_THROW(placedBvhNode(packBvhNode(node), kBvhLeafBit - 1, 0), std::runtime_error); // the inner child's index
+    EXPECT_NO_THROW(placedBvhNode(packBvhNode(node), 0, (1u << 28) - 12));
 }
 
 } // namespace

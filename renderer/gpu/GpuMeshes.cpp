@@ -1,5 +1,6 @@
 #include <ptview/gpu/GpuMeshes.h>
 
+#include <ptview/geometry/WideBvh.h>
 #include <ptview/gpudata/BvhNodePacking.h>
 #include <ptview/scene/MeshTangents.h>
 
@@ -52,7 +53,9 @@ GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh, bool withTan
         centroids[i] = bounds[i].centroid();
     }
     BuiltMesh built;
-    built.bvh = collapseToWideBvh(buildBvh(bounds, centroids));
+    const WideBvh bvh = collapseToWideBvh(buildBvh(bounds, centroids));
+    built.nodes.reserve(bvh.nodes.size());
+    for (const WideBvhNode& node : bvh.nodes) built.nodes.push_back(packBvhNode(node));
     built.triangles.reserve(mesh.triangles.size());
     std::vector<std::array<glm::vec4, 3>> tangents;
     if (withTangents) {
@@ -60,7 +63,7 @@ GpuMeshes::BuiltMesh GpuMeshes::buildMesh(const TriangleMesh& mesh, bool withTan
         tangents = meshCornerTangents(mesh);
         tangentSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    for (std::uint32_t original : built.bvh.primitiveOrder) {
+    for (std::uint32_t original : bvh.primitiveOrder) {
         const MeshTriangle& source = mesh.triangles[original];
         GpuTriangle triangle{};
         triangle.p0 = mesh.positions[source.position[0]];
@@ -124,9 +127,9 @@ void GpuMeshes::upload(const Scene& scene) {
         auto nodeOffset = static_cast<std::uint32_t>(nodes.size());
         auto triangleOffset = static_cast<std::uint32_t>(triangles.size());
         placement[built.get()] = {nodeOffset, triangleOffset};
-        for (const WideBvhNode& node : built->bvh.nodes) nodes.push_back(packBvhNode(node, nodeOffset, triangleOffset));
+        for (const GpuBvhNode& node : built->nodes) nodes.push_back(placedBvhNode(node, nodeOffset, triangleOffset));
         // Tangent texels follow all triangles' texels: the index becomes absolute in the buffer.
-        std::size_t tangentBase = totalTriangles * (kTrianglePositionTexels + kTriangleAttributeTexels) + tangents.size();
+        std::size_t tangentBase = totalTriangles * kTriangleTexels + tangents.size();
         for (GpuTriangle triangle : built->triangles) {
             if (triangle.tangentTexel >= 0.0f)
                 triangle.tangentTexel = exactFloat(tangentBase + static_cast<std::size_t>(triangle.tangentTexel));
@@ -146,7 +149,7 @@ void GpuMeshes::upload(const Scene& scene) {
         if (shape.type != ShapeType::Mesh) continue;
         const TriangleMesh* data = scene.meshes[static_cast<std::size_t>(shape.mesh)].data.get();
         const BuiltMesh& built = *built_.at(MeshKey{data, std::binary_search(withTangents_.begin(), withTangents_.end(), data)});
-        if (built.bvh.nodes.empty()) continue; // nothing to hit
+        if (built.nodes.empty()) continue; // nothing to hit
         glm::mat4 objectToWorld = shape.transform.objectToWorld();
         auto [root, firstTriangle] = placement.at(&built);
         candidates.push_back(Candidate{MeshInstance{static_cast<int>(s), objectToWorld, &built.triangles, firstTriangle,
@@ -165,7 +168,8 @@ void GpuMeshes::upload(const Scene& scene) {
     WideBvh topLevel = collapseToWideBvh(buildBvh(bounds, centroids, BvhBuildOptions{1}));
     topLevelRoot_ = topLevel.nodes.empty() ? -1 : static_cast<int>(nodes.size());
     // Instances go in the top level's leaf order, so a leaf's range indexes them directly.
-    for (const WideBvhNode& node : topLevel.nodes) nodes.push_back(packBvhNode(node, static_cast<std::uint32_t>(topLevelRoot_), 0));
+    for (const WideBvhNode& node : topLevel.nodes)
+        nodes.push_back(placedBvhNode(packBvhNode(node), static_cast<std::uint32_t>(topLevelRoot_), 0));
     instances_.clear();
     instanceRoots_.clear();
     for (std::uint32_t original : topLevel.primitiveOrder) {
@@ -177,8 +181,8 @@ void GpuMeshes::upload(const Scene& scene) {
 
     textures_[0].fill(GL_RGBA32UI, 16, nodes);
     // Each triangle's first kTrianglePositionTexels texels, then its other texels (GpuTriangle).
-    std::vector<glm::vec4> triangleTexels(triangles.size() * (kTrianglePositionTexels + kTriangleAttributeTexels));
-    attributeStart_ = static_cast<int>(exactFloat(triangles.size() * kTrianglePositionTexels));
+    std::vector<glm::vec4> triangleTexels(triangles.size() * kTriangleTexels);
+    attributeStart_ = static_cast<int>(triangles.size() * kTrianglePositionTexels);
     for (std::size_t i = 0; i < triangles.size(); ++i) {
         const auto* texels = reinterpret_cast<const glm::vec4*>(&triangles[i]);
         std::copy(texels, texels + kTrianglePositionTexels, &triangleTexels[i * kTrianglePositionTexels]);

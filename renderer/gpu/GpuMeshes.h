@@ -5,7 +5,8 @@
 // shaders/mesh_intersect.glsl traverses them.
 
 #include <ptview/gl/BufferTexture.h>
-#include <ptview/geometry/WideBvh.h>
+#include <ptview/geometry/Bvh.h>
+#include <ptview/gpudata/GpuLayout.h>
 #include <ptview/gpudata/SceneRecords.h>
 #include <ptview/scene/Scene.h>
 
@@ -49,7 +50,7 @@ public:
 
 private:
     struct BuiltMesh {
-        WideBvh bvh;
+        std::vector<GpuBvhNode> nodes;      // packed once, references relative to this mesh
         std::vector<GpuTriangle> triangles; // leaf order
         std::vector<glm::vec4> tangents;    // three per triangle, leaf order; empty without
         Aabb bounds;                        // object space

@@ -70,9 +70,15 @@ std::uint32_t checkedBelow(std::uint64_t value, std::uint64_t limit, const char*
     return static_cast<std::uint32_t>(value);
 }
 
+// A child's reference: the leaf's first primitive and count, or the inner node's index.
+std::uint32_t childBits(bool leaf, std::uint64_t index, std::uint32_t count) {
+    if (leaf) return kBvhLeafBit | checkedBelow(index, 1u << 28, "triangle") << 3 | (count - 1);
+    return checkedBelow(index, kBvhLeafBit, "node");
+}
+
 } // namespace
 
-GpuBvhNode packBvhNode(const WideBvhNode& node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
+GpuBvhNode packBvhNode(const WideBvhNode& node) {
     GpuBvhNode gpu{};
     int children = 0;
     Aabb all;
@@ -99,14 +105,19 @@ GpuBvhNode packBvhNode(const WideBvhNode& node, std::uint32_t nodeOffset, std::u
     }
     for (int c = 0; c < children; ++c) {
         const WideBvhChild& child = node.children[static_cast<std::size_t>(c)];
-        if (child.kind == WideBvhChild::Kind::Leaf) {
-            std::uint32_t first = checkedBelow(std::uint64_t(child.index) + primitiveOffset, 1u << 28, "triangle");
-            gpu.child[c] = kBvhLeafBit | first << 3 | (child.count - 1);
-        } else {
-            gpu.child[c] = checkedBelow(std::uint64_t(child.index) + nodeOffset, kBvhLeafBit, "node");
-        }
+        gpu.child[c] = childBits(child.kind == WideBvhChild::Kind::Leaf, child.index, child.count);
     }
     return gpu;
+}
+
+GpuBvhNode placedBvhNode(GpuBvhNode node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset) {
+    for (std::uint32_t& bits : node.child) {
+        if (bits == kBvhNoChild) continue;
+        const bool leaf = (bits & kBvhLeafBit) != 0;
+        const std::uint32_t index = leaf ? (bits & ~kBvhLeafBit) >> 3 : bits;
+        bits = childBits(leaf, std::uint64_t(index) + (leaf ? primitiveOffset : nodeOffset), (bits & 7u) + 1);
+    }
+    return node;
 }
 
 Aabb decodedChildBounds(const GpuBvhNode& node, int child) {

@@ -11,10 +11,15 @@
 
 namespace ptview {
 
-// Child indices made absolute: an inner child's by nodeOffset, a leaf's first primitive by
-// primitiveOffset. Throws std::runtime_error when a leaf's first primitive reaches 2^28 or a node
-// index 2^31 (what the packed references hold).
-GpuBvhNode packBvhNode(const WideBvhNode& node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset);
+// The node with references relative to its own tree: an inner child by its index in the tree's
+// nodes, a leaf by its first primitive. A mesh's nodes are packed once, when its tree is built.
+GpuBvhNode packBvhNode(const WideBvhNode& node);
+
+// The packed node with its references made absolute in a buffer of several trees: an inner
+// child's by nodeOffset, a leaf's first primitive by primitiveOffset. Both this and packBvhNode
+// throw std::runtime_error when a leaf's first primitive reaches 2^28 or a node index 2^31 (what
+// the references hold).
+GpuBvhNode placedBvhNode(GpuBvhNode node, std::uint32_t nodeOffset, std::uint32_t primitiveOffset);
 
 // Child c's box as the GPU decodes it; empty for a slot without a child.
 Aabb decodedChildBounds(const GpuBvhNode& node, int child);

@@ -246,9 +246,10 @@ struct GpuTriangle {
     glm::vec4 v1U2V2;   // (v1, u2, v2, -)
 };
 static_assert(sizeof(GpuTriangle) == 112, "seven RGBA32F texels");
+constexpr int kTriangleTexels = sizeof(GpuTriangle) / 16;
 // Generated into gpu_layout.glsl.
 constexpr int kTrianglePositionTexels = offsetof(GpuTriangle, n0AndU0) / 16;
-constexpr int kTriangleAttributeTexels = (sizeof(GpuTriangle) - offsetof(GpuTriangle, n0AndU0)) / 16;
+constexpr int kTriangleAttributeTexels = kTriangleTexels - kTrianglePositionTexels;
 
 // Texels per instance: world-to-object and object-to-world rows (three each), (bottom-level root,
 // first triangle, material table offset, first light or -1), and a spare texel (uploadInstances).

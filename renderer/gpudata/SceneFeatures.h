@@ -34,7 +34,7 @@ struct ShaderFeatures {
                                       //   it by solid angle (QuadLightReach.h); else only by area
     bool environmentMap = false;      // else the constant colour
     bool meshes = false;
-    bool oneMeshInstance = false;     // at most one mesh shape: its walk needs no top level
+    bool oneMeshInstance = false;     // exactly one mesh shape: its walk needs no top level
                                       //   (mesh_instances.glsl); the program then covers no scene
                                       //   of more
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
