@@ -4,6 +4,7 @@
 
 #include <ptview/gl/GlObjects.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -17,24 +18,42 @@ public:
     // texelBytes its size. Throws std::runtime_error when the GPU cannot address that many texels.
     template <typename T>
     void fill(GLenum format, std::size_t texelBytes, const std::vector<T>& data) {
+        fillWith<T>(format, texelBytes, data.size(), [&data](T* destination) { std::copy(data.begin(), data.end(), destination); });
+    }
+
+    // The same for `count` elements that write(T* destination) puts straight into the buffer's
+    // memory: a scene of a million triangles is laid out once, not built on the side and copied.
+    template <typename T, typename Writer>
+    void fillWith(GLenum format, std::size_t texelBytes, std::size_t count, Writer write) {
         if (buffer_.id() == 0) {
             buffer_ = createBuffer();
             texture_ = createTexture();
         }
         // An empty buffer texture is not portable, so upload one zero element; counts stay 0.
-        static const T zero{};
-        const void* bytes = data.empty() ? static_cast<const void*>(&zero) : static_cast<const void*>(data.data());
-        std::size_t size = data.empty() ? sizeof(T) : data.size() * sizeof(T);
+        const std::size_t size = std::max<std::size_t>(count, 1) * sizeof(T);
         GLint maxTexels = 0;
         glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
         if (size / texelBytes > static_cast<std::size_t>(maxTexels))
             throw std::runtime_error("scene data of " + std::to_string(size / texelBytes) +
                                      " texels exceeds this GPU's buffer texture limit of " + std::to_string(maxTexels));
         glBindBuffer(GL_TEXTURE_BUFFER, buffer_.id());
-        glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(size), bytes, GL_STATIC_DRAW);
+        glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(size), nullptr, GL_STATIC_DRAW);
+        void* mapped = glMapBufferRange(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(size),
+                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+        if (mapped == nullptr) {
+            glBindBuffer(GL_TEXTURE_BUFFER, 0);
+            throw std::runtime_error("could not map a scene buffer of " + std::to_string(size) + " bytes");
+        }
+        if (count == 0)
+            *static_cast<T*>(mapped) = T{};
+        else
+            write(static_cast<T*>(mapped));
+        const bool intact = glUnmapBuffer(GL_TEXTURE_BUFFER) == GL_TRUE;
         glBindTexture(GL_TEXTURE_BUFFER, texture_.id());
         glTexBuffer(GL_TEXTURE_BUFFER, format, buffer_.id());
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        // GL may lose a mapped buffer's contents (a display mode change); then they are undefined.
+        if (!intact) throw std::runtime_error("a scene buffer's contents were lost while it was written");
         bytes_ = size;
     }
 
