@@ -115,6 +115,34 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
         ->transform(kDecimalInteger)->check(inRange(settingRanges::kLightPathBounces))->capture_default_str();
 }
 
+// --denoise and its settings (docs/denoising.md): the viewer starts with the denoiser on, `render`
+// writes the denoised image.
+void addDenoiseOptions(CLI::App& app, DenoiseSettings& denoise) {
+    app.add_flag("--denoise", denoise.enabled,
+                 "denoise the image (a-trous wavelet filter guided by albedo, normal, depth and the variance; biased, docs/denoising.md)");
+    app.add_option("--denoise-iterations", denoise.iterations, settingRanges::kDenoiseIterations.description)
+        ->transform(kDecimalInteger)->check(inRange(settingRanges::kDenoiseIterations))->capture_default_str();
+    app.add_option("--denoise-strength", denoise.strength, settingRanges::kDenoiseStrength.description)
+        ->check(kFiniteNumber)->check(inRange(settingRanges::kDenoiseStrength))->capture_default_str();
+}
+
+// The denoise options that only mean something with --denoise, and --denoise with a view that
+// has no radiance to denoise: an error naming the option (exit 2) rather than ignored.
+std::optional<int> checkDenoiseOptions(const CLI::App& command, const DenoiseSettings& denoise, const RenderSettings& settings) {
+    for (const char* name : {"--denoise-iterations", "--denoise-strength"}) {
+        if (command.get_option(name)->count() > 0 && !denoise.enabled) {
+            std::cerr << "ptview: " << name << " needs --denoise\n";
+            return kExitBadInput;
+        }
+    }
+    if (denoise.enabled && settings.debugView != DebugView::Radiance) {
+        std::cerr << "ptview: --denoise needs the radiance view: --view " << debugViewName(settings.debugView)
+                  << " shows features, not light, and has no noise the denoiser could take out\n";
+        return kExitBadInput;
+    }
+    return std::nullopt;
+}
+
 void addProgramOptions(CLI::App& app, ProgramOptions& program) {
     app.add_flag("--all-features", program.allFeatures,
                  "compile every material model, the environment map and mesh code, whatever the scene uses");
@@ -187,6 +215,7 @@ void addViewerOptions(CLI::App& app, ViewerOptions& viewer) {
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
     app.add_option("scene", viewer.scenePath, "scene JSON to open, or a .png/.exr ptview wrote (its scene and settings)")->capture_default_str();
     addRenderSettings(app, viewer.settings, viewer.display);
+    addDenoiseOptions(app, viewer.denoise);
     addProgramOptions(app, viewer.program);
     app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
         ->transform(kDecimalInteger)->check(CLI::Range(1, 1000000));
@@ -249,6 +278,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
         ->each([&render](const std::string&) { render.samplesPerPixelGiven = true; });
     addSizeOption(*command, render.size, "image size WxH (default: the scene's resolution)");
     addRenderSettings(*command, render.settings, render.display);
+    addDenoiseOptions(*command, render.denoise);
     addProgramOptions(*command, render.program);
     command->add_option("--dump-shader", render.dumpShaderPath, "write the exact GLSL of the path-tracing program to FILE");
     command->add_flag("--print-features", render.printFeatures, "print the scene's feature set (what the program is built for)");
@@ -297,6 +327,7 @@ std::optional<int> finishRenderOptions(const CLI::App& command, const RenderOpti
         std::cerr << "ptview: render: --aovs needs an .exr --out (the layers go into its channels)\n";
         return kExitBadInput;
     }
+    if (std::optional<int> exit = checkDenoiseOptions(command, render.denoise, render.settings)) return exit;
     if (render.outPath.empty() && render.dumpShaderPath.empty() && !render.printFeatures) {
         std::cerr << "ptview: render: --out is required (see ptview render --help)\n";
         return kExitBadInput;

@@ -37,6 +37,7 @@ struct RenderOptions {
     std::optional<glm::ivec2> size; // default: the scene camera's resolution
     RenderSettings settings;
     DisplaySettings display;
+    DenoiseSettings denoise;        // --denoise: the image written is the denoised mean
     ProgramOptions program;
     std::string dumpShaderPath; // --dump-shader: the exact GLSL compiled
     bool printFeatures = false; // --print-features
@@ -50,6 +51,7 @@ struct ViewerOptions {
     std::string scenePath;
     RenderSettings settings;
     DisplaySettings display;
+    DenoiseSettings denoise;     // --denoise: the viewer starts with the denoiser on
     ProgramOptions program;
     int frames = 0;              // > 0: render this many frames, save the screenshot, exit
     std::string screenshotPath;

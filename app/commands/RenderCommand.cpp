@@ -87,11 +87,14 @@ ImageRgbF renderDebugView(PathTracer& tracer, RenderSettings settings, DebugView
 }
 
 // The EXR of the mean and the --aovs layers (docs/output.md lists the channels).
-ExrImage exrWithAovs(PathTracer& tracer, const ImageRgbF& mean, const RenderOptions& options, const RenderSettings& settings) {
+// With --denoise, RGB is the denoised image and the raw mean follows as the layer "raw.".
+ExrImage exrWithAovs(PathTracer& tracer, const ImageRgbF& image, const ImageRgbF* raw, const RenderOptions& options,
+                     const RenderSettings& settings) {
     ExrImage exr;
-    exr.width = mean.width;
-    exr.height = mean.height;
-    exr.addRgb(mean);
+    exr.width = image.width;
+    exr.height = image.height;
+    exr.addRgb(image);
+    if (raw) exr.addRgb(*raw, "raw.");
     // The variance first: the debug-view passes below restart the accumulation it comes from.
     if (std::find(options.aovs.begin(), options.aovs.end(), Aov::Variance) != options.aovs.end())
         exr.addRgb(tracer.readStatistics().varianceOfMean, "variance.");
@@ -199,15 +202,29 @@ int runRenderCommand(const RenderOptions& requested) {
         }
 
         ImageRgbF mean = tracer.readMean();
-        const RenderRecipe recipe{settings, options.display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures};
+        // The denoised image replaces the mean in every format; the EXR keeps the raw one beside it.
+        std::optional<ImageRgbF> raw;
+        DisplaySettings display = options.display;
+        double denoiseSeconds = 0.0;
+        if (options.denoise.enabled) {
+            Clock::time_point denoiseStart = Clock::now();
+            tracer.setDenoise(options.denoise);
+            tracer.updateDenoised();
+            raw = std::move(mean);
+            mean = tracer.readDenoised();
+            denoiseSeconds = secondsSince(denoiseStart);
+            display.denoised = true;
+        }
+        const RenderRecipe recipe{settings, display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures,
+                                  options.denoise};
         if (from && from->device != context.description())
             printMessage("warning: " + options.fromPath + " was rendered on " + from->device + ", this is " +
                              context.description() + ": the pixels may differ");
         if (format == OutputFormat::Png) {
-            writePng(options.outPath, tracer.readToneMapped(options.display),
+            writePng(options.outPath, tracer.readToneMapped(display),
                      provenanceMetadata(scene, recipe, context.description()));
         } else if (format == OutputFormat::Exr) {
-            ExrImage exr = exrWithAovs(tracer, mean, options, settings);
+            ExrImage exr = exrWithAovs(tracer, mean, raw ? &*raw : nullptr, options, settings);
             exr.metadata = provenanceMetadata(scene, recipe, context.description());
             writeExr(options.outPath, exr, options.exrType);
         } else {
@@ -222,6 +239,11 @@ int runRenderCommand(const RenderOptions& requested) {
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
                      seconds, samples / seconds * 1e-6, backendName(tracer.backend()), nonFinite,
                      context.description().c_str());
+        if (options.denoise.enabled)
+            std::fprintf(stderr, "ptview: denoised (biased: docs/denoising.md) in %.3f s: %d iterations, strength %g, features of %d spp%s\n",
+                         denoiseSeconds, options.denoise.iterations, static_cast<double>(options.denoise.strength),
+                         std::min(samplesPerPixel, Denoiser::kMaxFeatureSamples),
+                         format == OutputFormat::Exr ? "; the raw mean is the EXR's raw. layer" : "");
         const std::string textures = tracer.gpuScene().textures().describe();
         if (!textures.empty()) printMessage("textures: " + textures);
     } catch (const EnvironmentMapError& e) { // too large for this GPU

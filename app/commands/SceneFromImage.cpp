@@ -40,6 +40,7 @@ void applyRecipe(const RenderRecipe& recipe, RenderOptions& options) {
     options.size = recipe.size;
     options.program.backend = recipe.backend;
     options.program.allFeatures = recipe.allFeatures;
+    options.denoise = recipe.denoise;
 }
 
 void applyRecipe(const RenderRecipe& recipe, ViewerOptions& options) {
@@ -47,6 +48,7 @@ void applyRecipe(const RenderRecipe& recipe, ViewerOptions& options) {
     options.display = recipe.display;
     options.program.backend = recipe.backend;
     options.program.allFeatures = recipe.allFeatures;
+    options.denoise = recipe.denoise;
 }
 
 } // namespace ptview

@@ -312,7 +312,7 @@ void ViewerSession::writeImage(Side side, const std::filesystem::path& path) con
 ImageMetadata ViewerSession::provenance(Side side) const {
     const PathTracer& tracer = *view(side).tracer;
     const RenderRecipe recipe{tracer.settings(), model_.display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                              programOptions_.allFeatures};
+                              programOptions_.allFeatures, DenoiseSettings{}};
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
 

@@ -105,6 +105,9 @@ const std::vector<RecipeField>& recipeFields() {
         numberField("exposure_stops", settingRanges::kExposure, [](RenderRecipe& r) -> auto& { return r.display.exposureStops; }),
         enumField("tone_mapper", toneMapperNames, [](RenderRecipe& r) -> auto& { return r.display.toneMapper; }),
         boolField("highlight_non_finite", [](RenderRecipe& r) -> auto& { return r.display.highlightNonFinite; }),
+        boolField("denoise", [](RenderRecipe& r) -> auto& { return r.denoise.enabled; }),
+        numberField("denoise_iterations", settingRanges::kDenoiseIterations, [](RenderRecipe& r) -> auto& { return r.denoise.iterations; }),
+        numberField("denoise_strength", settingRanges::kDenoiseStrength, [](RenderRecipe& r) -> auto& { return r.denoise.strength; }),
     };
     return fields;
 }

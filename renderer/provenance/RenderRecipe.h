@@ -3,6 +3,7 @@
 // fields (RenderRecipe.cpp), so that a new setting is one line there.
 
 #include <ptview/settings/Backend.h>
+#include <ptview/settings/DenoiseSettings.h>
 #include <ptview/settings/RenderSettings.h>
 #include <ptview/settings/ToneMapper.h>
 
@@ -20,6 +21,7 @@ struct RenderRecipe {
     glm::ivec2 size{0, 0};        // of the image
     Backend backend = Backend::Fragment; // the program that ran (auto already decided)
     bool allFeatures = false;     // the uber-shader instead of the specialized program
+    DenoiseSettings denoise;      // enabled: the image is the denoised mean (the raw one beside it in an EXR)
 };
 
 class RecipeError : public std::runtime_error {

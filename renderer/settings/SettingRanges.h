@@ -43,6 +43,12 @@ inline const NumberRange kImageSide{
     "image side", 1.0, double(kMaxResolution), false, false, "px", "width or height of the image", 1.0f, 4096.0f, true};
 inline const NumberRange kTimeLimit{
     "time limit", 0.0, 1e7, false, false, "s", "seconds of rendering after which the render stops", 0.0f, 600.0f};
+inline const NumberRange kDenoiseIterations{
+    "denoise iterations", 1.0, 8.0, false, false, "", "a-trous iterations of the denoiser (each doubles its reach)",
+    1.0f, 8.0f, true};
+inline const NumberRange kDenoiseStrength{
+    "denoise strength", 0.25, 64.0, false, false, "", "how many standard deviations of noise the denoiser smooths over",
+    0.25f, 16.0f};
 
 // The viewer's own (the Render panel and the viewer script): what a frame renders and when the
 // accumulation stops. A script's "auto" and the panel's 0 stand for no limit per frame, outside the

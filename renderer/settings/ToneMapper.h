@@ -15,6 +15,7 @@ struct DisplaySettings {
     float exposureStops = 0.0f;
     ToneMapper toneMapper = ToneMapper::Reinhard;
     bool highlightNonFinite = false; // show pixels whose mean is NaN or infinite in magenta
+    bool denoised = false;           // show the denoised image where there is one (PathTracer::hasDenoised)
 };
 
 inline const EnumTable<ToneMapper>& toneMapperNames() {

@@ -108,6 +108,13 @@ void Accumulator::bindLatest(int sumUnit, int compensationUnit) const {
     glActiveTexture(GL_TEXTURE0);
 }
 
+void Accumulator::bindLatest(int sumUnit, int compensationUnit, int sumSquaresUnit) const {
+    bindLatest(sumUnit, compensationUnit);
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + sumSquaresUnit));
+    glBindTexture(GL_TEXTURE_2D, latest().textures[2].id());
+    glActiveTexture(GL_TEXTURE0);
+}
+
 void Accumulator::readAttachment(int attachment, std::vector<float>& rgba) const {
     rgba.resize(static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, latest().framebuffer.id());

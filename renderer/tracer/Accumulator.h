@@ -42,6 +42,8 @@ public:
 
     // Binds the latest sum and compensation for display.
     void bindLatest(int sumUnit, int compensationUnit) const;
+    // And the sum of squares (the denoiser's variance).
+    void bindLatest(int sumUnit, int compensationUnit, int sumSquaresUnit) const;
 
     PixelStatistics readStatistics() const;
     // One pixel of readStatistics (glPixel counts rows from the bottom, as GL does), read back

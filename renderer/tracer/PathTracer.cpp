@@ -318,7 +318,10 @@ glm::ivec2 PathTracer::shownPreviewSize() const {
 }
 
 void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPass) {
-    glm::ivec2 size = target.size();
+    updateFrameUniforms(target.size(), target.sampleCount(), samplesPerPass);
+}
+
+void PathTracer::updateFrameUniforms(glm::ivec2 size, int firstSample, int samplesPerPass) {
     const CameraFrame camera = cameraFrame(camera_);
     FrameUniforms frame{};
     frame.cameraEye = camera_.eye;
@@ -326,7 +329,7 @@ void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPa
     frame.cameraRight = camera.right;
     frame.aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     frame.cameraUp = camera.up;
-    frame.frameIndex = static_cast<std::uint32_t>(target.sampleCount());
+    frame.frameIndex = static_cast<std::uint32_t>(firstSample);
     frame.cameraForward = camera.forward;
     frame.seed = settings_.seed;
     frame.environmentRadiance = environmentRadiance_;
@@ -406,10 +409,42 @@ ImageRgba8 PathTracer::readDisplayed(glm::ivec2 topLeft, glm::ivec2 size, const 
 }
 
 void PathTracer::useSceneIn(const GlProgram& program) {
+    useSceneIn(program, accumulator_.sampleCount(), 1);
+}
+
+void PathTracer::useSceneIn(const GlProgram& program, int firstSample, int samplesPerPass) {
     program.bindUniformBlock("FrameBlock", kFrameBlockBinding);
     attachScene(program);
     attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
-    bindScene(program, accumulator_, 1);
+    bindScene(program, accumulator_, samplesPerPass);
+    updateFrameUniforms(accumulator_.size(), firstSample, samplesPerPass);
+}
+
+void PathTracer::bindLatestSums(int sumUnit, int compensationUnit, int sumSquaresUnit) const {
+    accumulator_.bindLatest(sumUnit, compensationUnit, sumSquaresUnit);
+}
+
+void PathTracer::setDenoise(const DenoiseSettings& settings) {
+    denoiseSettings_ = settings;
+}
+
+void PathTracer::updateDenoised() {
+    if (!denoiseSettings_.enabled || accumulator_.sampleCount() == 0) return;
+    if (!denoiser_) denoiser_ = std::make_unique<Denoiser>(shaderDir_);
+    if (hasDenoised() && denoiser_->sampleCount() == accumulator_.sampleCount() && denoisedWith_ == denoiseSettings_) return;
+    denoiser_->denoise(*this, denoiseSettings_);
+    denoisedRestartCount_ = restartCount_;
+    denoisedWith_ = denoiseSettings_;
+}
+
+bool PathTracer::hasDenoised() const {
+    return denoiser_ && denoisedRestartCount_ == restartCount_ && denoiser_->size() == accumulator_.size() &&
+           denoiser_->sampleCount() > 0;
+}
+
+ImageRgbF PathTracer::readDenoised() const {
+    if (!hasDenoised()) throw std::logic_error("PathTracer::readDenoised without a denoised image");
+    return denoiser_->readResult();
 }
 
 void PathTracer::renderSample() {
@@ -490,14 +525,19 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     glEnable(GL_SCISSOR_TEST);
     glScissor(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
     glUseProgram(display_.program->id());
-    int samples = shown.displayedSampleCount();
+    // The denoised image is a mean already, without a compensation term.
+    const bool denoised = settings.denoised && &shown == &accumulator_ && hasDenoised();
+    int samples = denoised ? 1 : shown.displayedSampleCount();
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
     glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
-    shown.bindLatest(0, 1); // the preview is upscaled by the texture lookup
+    if (denoised)
+        denoiser_->bindResult(0, 1);
+    else
+        shown.bindLatest(0, 1); // the preview is upscaled by the texture lookup
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

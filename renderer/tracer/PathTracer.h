@@ -6,6 +6,8 @@
 
 #include <ptview/tracer/Accumulator.h>
 #include <ptview/tracer/BackendChoice.h>
+#include <ptview/tracer/Denoiser.h>
+#include <ptview/settings/DenoiseSettings.h>
 #include <ptview/settings/Backend.h>
 #include <ptview/gl/GlObjects.h>
 #include <ptview/scene/EnvironmentMap.h>
@@ -131,6 +133,25 @@ public:
     // renderer/tracer/PathRecorder.*, and probeSurface's): makes it current with the frame uniforms of the next full-size
     // sample, and the scene and the environment map attached and bound.
     void useSceneIn(const GlProgram& program);
+    // The same with the frame uniforms of samples firstSample .. firstSample + samplesPerPass - 1:
+    // a program tracing the same camera rays as the passes did (the denoiser's features).
+    void useSceneIn(const GlProgram& program, int firstSample, int samplesPerPass);
+    // Binds the latest sums (Accumulator) for a pass that reads the accumulation.
+    void bindLatestSums(int sumUnit, int compensationUnit, int sumSquaresUnit) const;
+
+    // The denoiser (Denoiser.h, docs/denoising.md). Changing its settings restarts nothing: it
+    // filters a copy of the running mean. updateDenoised() filters the accumulation as it is now
+    // (when enabled, and only if the samples or settings changed since the last time); where
+    // DisplaySettings::denoised asks for it, display and the tone-mapped read-backs then show that
+    // image. readMean() and readStatistics() are always the raw accumulation.
+    void setDenoise(const DenoiseSettings& settings);
+    const DenoiseSettings& denoiseSettings() const { return denoiseSettings_; }
+    void updateDenoised();
+    // Whether a denoised image of the current accumulation is at hand (possibly of fewer samples
+    // than sampleCount(), when updateDenoised() was not called since).
+    bool hasDenoised() const;
+    int denoisedSampleCount() const { return hasDenoised() ? denoiser_->sampleCount() : 0; }
+    ImageRgbF readDenoised() const; // the denoised mean, rows top first; throws std::logic_error without one
 
     // Draws the tone-mapped mean stretched over `target` of the bound draw framebuffer, touching
     // only the pixels inside `clip` (the split view shows two renders side by side).
@@ -202,6 +223,7 @@ private:
     bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass);
     void resizePreview();
     void drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const;
+    void updateFrameUniforms(glm::ivec2 size, int firstSample, int samplesPerPass);
 
     std::filesystem::path shaderDir_;
     PathTracerOptions options_;
@@ -230,6 +252,10 @@ private:
     RenderSettings settings_;
     int nextRow_ = 0;
     int restartCount_ = 0;
+    DenoiseSettings denoiseSettings_;
+    std::unique_ptr<Denoiser> denoiser_; // made when first enabled
+    int denoisedRestartCount_ = -1;      // the restart the denoised image belongs to
+    DenoiseSettings denoisedWith_;       // and the settings it was filtered with
 };
 
 // A tracer as every command and the viewer begin: compiled as options ask, with the scene (and the

@@ -1,0 +1,210 @@
+#include <ptview/tracer/Denoiser.h>
+
+#include <ptview/gl/ShaderAssembler.h>
+#include <ptview/tracer/PathTracer.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace ptview {
+namespace {
+
+// Units of the filter passes: the accumulation's three sums, then the features. The feature pass
+// traces the scene, whose textures take units 3 and up, so its previous sums take 0 and 1.
+constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4;
+constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2;
+
+GlTexture createFloatTexture(glm::ivec2 size) {
+    GlTexture texture = createTexture();
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+// A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...
+GlFramebuffer createFramebufferOf(std::initializer_list<GLuint> textures) {
+    GlFramebuffer framebuffer = createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    GLenum drawBuffers[4];
+    GLsizei count = 0;
+    for (GLuint texture : textures) {
+        drawBuffers[count] = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + count);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, drawBuffers[count], GL_TEXTURE_2D, texture, 0);
+        ++count;
+    }
+    glDrawBuffers(count, drawBuffers);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("the GPU cannot render to the denoiser's RGBA32F targets");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return framebuffer;
+}
+
+void bindTexture(int unit, GLuint texture) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, texture);
+}
+
+std::unique_ptr<GlProgram> buildFilterProgram(const std::filesystem::path& shaderDir, const char* fragment) {
+    ShaderAssembler assembler(shaderDir);
+    return std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble(fragment));
+}
+
+} // namespace
+
+Denoiser::Denoiser(const std::filesystem::path& shaderDir)
+    : shaderDir_(shaderDir), emptyVertexArray_(createVertexArray()) {
+    prepare_ = buildFilterProgram(shaderDir_, "denoise_prepare.frag");
+    prepare_->bindSamplerUnit("uSum", kSumUnit);
+    prepare_->bindSamplerUnit("uCompensation", kCompensationUnit);
+    prepare_->bindSamplerUnit("uSumSquares", kSumSquaresUnit);
+    prepare_->bindSamplerUnit("uFeatureAlbedoDepth", kFeatureAlbedoDepthUnit);
+    prepare_->bindSamplerUnit("uFeatureNormal", kFeatureNormalUnit);
+    atrous_ = buildFilterProgram(shaderDir_, "denoise_atrous.frag");
+    atrous_->bindSamplerUnit("uIllumination", kIlluminationUnit);
+    atrous_->bindSamplerUnit("uGuide", kGuideUnit);
+    compose_ = buildFilterProgram(shaderDir_, "denoise_compose.frag");
+    compose_->bindSamplerUnit("uIllumination", kIlluminationUnit);
+    compose_->bindSamplerUnit("uAlbedo", kAlbedoUnit);
+    black_ = createTexture();
+    glBindTexture(GL_TEXTURE_2D, black_.id());
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, zero);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+void Denoiser::resize(glm::ivec2 size) {
+    if (size == size_) return;
+    for (FeatureTarget& target : features_) {
+        target.albedoDepth = createFloatTexture(size);
+        target.normal = createFloatTexture(size);
+        target.framebuffer = createFramebufferOf({target.albedoDepth.id(), target.normal.id()});
+    }
+    for (int i = 0; i < 2; ++i) illumination_[i] = createFloatTexture(size);
+    guide_ = createFloatTexture(size);
+    albedo_ = createFloatTexture(size);
+    result_ = createFloatTexture(size);
+    prepareFramebuffer_ = createFramebufferOf({illumination_[0].id(), guide_.id(), albedo_.id()});
+    for (int i = 0; i < 2; ++i) illuminationFramebuffer_[i] = createFramebufferOf({illumination_[i].id()});
+    resultFramebuffer_ = createFramebufferOf({result_.id()});
+    size_ = size;
+    featureSamples_ = 0;
+    resultSamples_ = 0;
+}
+
+void Denoiser::drawFullScreen() const {
+    glViewport(0, 0, size_.x, size_.y);
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+}
+
+void Denoiser::updateFeatures(PathTracer& tracer) {
+    if (tracer.restartCount() != featureRestartCount_) {
+        featureSamples_ = 0;
+        featureRestartCount_ = tracer.restartCount();
+    }
+    // The feature program traces the scene as the path-tracing program does: the same includes,
+    // specialized the same way, and the same sampler, so sample i is the same camera ray.
+    const SamplerMode sampler = tracer.settings().sampler;
+    if (!featureProgram_ || featureProgramFeatures_ != tracer.features() || featureProgramSampler_ != sampler) {
+        ShaderAssembler assembler(shaderDir_);
+        specializeShaders(assembler, tracer.features(), tracer.settings().integrator, sampler);
+        featureProgram_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("denoise_features.frag"));
+        featureProgramFeatures_ = tracer.features();
+        featureProgramSampler_ = sampler;
+        featureSamples_ = 0;
+    }
+    const int wanted = std::min(tracer.sampleCount(), kMaxFeatureSamples);
+    while (featureSamples_ < wanted) {
+        const int count = std::min(tracer.samplesPerPass(), wanted - featureSamples_);
+        tracer.useSceneIn(*featureProgram_, featureSamples_, count);
+        featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", 0);
+        featureProgram_->bindSamplerUnit("uPrevNormal", 1);
+        const FeatureTarget& previous = features_[1 - featureWrite_];
+        bindTexture(0, previous.albedoDepth.id());
+        bindTexture(1, previous.normal.id());
+        glActiveTexture(GL_TEXTURE0);
+        glBindFramebuffer(GL_FRAMEBUFFER, features_[featureWrite_].framebuffer.id());
+        drawFullScreen();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        featureWrite_ = 1 - featureWrite_;
+        featureSamples_ += count;
+    }
+}
+
+void Denoiser::denoise(PathTracer& tracer, const DenoiseSettings& settings) {
+    resize(tracer.imageSize());
+    updateFeatures(tracer);
+    filter(tracer, settings);
+}
+
+void Denoiser::filter(PathTracer& tracer, const DenoiseSettings& settings) {
+    const int samples = tracer.sampleCount();
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+
+    glUseProgram(prepare_->id());
+    tracer.bindLatestSums(kSumUnit, kCompensationUnit, kSumSquaresUnit);
+    const FeatureTarget& features = features_[1 - featureWrite_];
+    bindTexture(kFeatureAlbedoDepthUnit, features.albedoDepth.id());
+    bindTexture(kFeatureNormalUnit, features.normal.id());
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1f(prepare_->uniformLocation("uSampleCount"), static_cast<float>(std::max(samples, 1)));
+    glUniform1f(prepare_->uniformLocation("uInvFeatureCount"), featureSamples_ > 0 ? 1.0f / static_cast<float>(featureSamples_) : 0.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, prepareFramebuffer_.id());
+    drawFullScreen();
+
+    glUseProgram(atrous_->id());
+    glUniform1f(atrous_->uniformLocation("uSigmaLuminance"), settings.strength);
+    glUniform1f(atrous_->uniformLocation("uSigmaNormal"), 128.0f);
+    glUniform1f(atrous_->uniformLocation("uSigmaDepth"), 1.0f);
+    bindTexture(kGuideUnit, guide_.id());
+    int read = 0;
+    for (int i = 0; i < settings.iterations; ++i) {
+        glUniform1i(atrous_->uniformLocation("uStepPixels"), 1 << i);
+        bindTexture(kIlluminationUnit, illumination_[read].id());
+        glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[1 - read].id());
+        drawFullScreen();
+        read = 1 - read;
+    }
+
+    glUseProgram(compose_->id());
+    bindTexture(kIlluminationUnit, illumination_[read].id());
+    bindTexture(kAlbedoUnit, albedo_.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, resultFramebuffer_.id());
+    drawFullScreen();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    resultSamples_ = samples;
+}
+
+void Denoiser::bindResult(int sumUnit, int compensationUnit) const {
+    bindTexture(sumUnit, result_.id());
+    bindTexture(compensationUnit, black_.id());
+    glActiveTexture(GL_TEXTURE0);
+}
+
+ImageRgbF Denoiser::readResult() const {
+    ImageRgbF image(size_.x, size_.y);
+    if (size_.x == 0) return image;
+    std::vector<float> rgba(static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resultFramebuffer_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    for (int y = 0; y < size_.y; ++y)
+        for (int x = 0; x < size_.x; ++x) {
+            size_t i = (static_cast<size_t>(y) * static_cast<size_t>(size_.x) + static_cast<size_t>(x)) * 4;
+            image.set(x, size_.y - 1 - y, glm::vec3(rgba[i], rgba[i + 1], rgba[i + 2])); // GL rows run bottom-up
+        }
+    return image;
+}
+
+} // namespace ptview

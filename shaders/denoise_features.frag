@@ -1,0 +1,85 @@
+#version 410 core
+// The denoiser's features (docs/denoising.md): for each of a pass's uSamplesPerPass camera rays
+// (the same rays, sample for sample, as the path-tracing passes: generatePixelRay), the first
+// surface that is not a pure mirror or smooth glass, reached by following the delta bounces the
+// way the path would (Open Image Denoise asks for exactly this: a reflection's features are those
+// of what it reflects, so the filter keeps the reflected edges). Its albedo (the material's
+// colour, textures included, times the tint of the delta bounces before it), shading normal, and
+// distance along the chain. Added to the previous sums (uPrev*, frame 0 starts afresh), as the
+// radiance is. Specialized like the path-tracing program of the scene.
+#include "frame_uniforms.glsl"
+#include "camera.glsl"
+#include "intersect.glsl"
+#include "bsdf.glsl"
+#include "shading_frame.glsl"
+#include "microfacet.glsl"
+
+uniform sampler2D uPrevAlbedoDepth;
+uniform sampler2D uPrevNormal;
+
+layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m)
+layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that hit a surface
+
+// Delta bounces followed before a surface counts as the first one whatever it is: a path that
+// long between mirrors is rare, and features that stop there are still features.
+const int kMaxDeltaBounces = 4;
+
+// Whether every direction a material scatters to is a delta lobe: the filter looks through it.
+bool isPurelySpecular(Material material) {
+    if (material.type == kMaterialMirror || material.type == kMaterialSpecularTransmission || material.type == kMaterialGlass)
+        return true;
+    bool isSmooth = ggxIsEffectivelySmooth(ggxAlpha(material.roughness));
+    if (material.type == kMaterialMetal) return isSmooth;
+    if (material.type == kMaterialPrincipled) return isSmooth && (material.metallic >= 1.0 || material.transmission >= 1.0);
+    return false;
+}
+
+// Albedo, normal (0 where the ray leaves the scene) and distance of one camera ray.
+void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance) {
+    vec3 tint = vec3(1.0);
+    distance = 0.0;
+    for (int bounce = 0; bounce <= kMaxDeltaBounces; ++bounce) {
+        Hit hit;
+        if (!intersectScene(ray, hit)) {
+            // The environment: nothing to demodulate (albedo 1), no surface to compare normals with.
+            albedo = tint;
+            normal = vec3(0.0);
+            distance = -1.0;
+            return;
+        }
+        distance += hit.t;
+        Material material = fetchSurfaceMaterial(hit.material, hit.uv);
+        normal = hit.normalShading;
+        // An emitter's radiance is what the pixel shows: it is left as it is (albedo 1).
+        albedo = material.type == kMaterialEmitter ? tint : tint * material.color;
+        if (bounce == kMaxDeltaBounces || !isPurelySpecular(material)) return;
+        ShadingFrame frame = makeShadingFrame(hit.normalShading);
+        vec3 woLocal = toLocal(frame, -ray.direction);
+        BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
+                                   samplerGet2D(sampler, bsdfDimension(bounce)));
+        if (bs.pdfSolidAngle == 0.0) return; // the surface itself, then
+        tint *= bs.weight;
+        ray = spawnRay(hit.posWorld, hit.normalGeom, toWorld(frame, bs.wiLocal));
+    }
+}
+
+void main() {
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    vec4 albedoDepth = vec4(0.0);
+    vec4 normalSum = vec4(0.0);
+    if (uFrameIndex > 0u) {
+        albedoDepth = texelFetch(uPrevAlbedoDepth, ivec2(pixel), 0);
+        normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
+    }
+    for (uint i = 0u; i < uSamplesPerPass; ++i) {
+        Sampler sampler;
+        Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
+        vec3 albedo, normal;
+        float distance;
+        sampleFeatures(ray, sampler, albedo, normal, distance);
+        albedoDepth += vec4(albedo, max(distance, 0.0));
+        normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
+    }
+    outAlbedoDepth = albedoDepth;
+    outNormal = normalSum;
+}

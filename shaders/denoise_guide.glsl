@@ -1,0 +1,43 @@
+// What the denoiser's passes share (docs/denoising.md): the guide image's encoding and the
+// edge-stopping weights of the edge-avoiding à-trous filter (Dammertz et al. 2010, with the
+// variance-driven luminance weight of Schied et al. 2017, SVGF).
+#include "bsdf_common.glsl"
+
+// Unit normals as two numbers (octahedral map, Cigolle et al. 2014), so a pixel's normal and
+// depth fit one texel; (0, 0, 0) is not a direction and never stored (sky pixels have no normal).
+vec2 signNotZero(vec2 v) { return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
+
+vec2 encodeOctahedral(vec3 n) {
+    vec2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
+    return n.z >= 0.0 ? p : (1.0 - abs(p.yx)) * signNotZero(p);
+}
+
+vec3 decodeOctahedral(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * signNotZero(n.xy);
+    return normalize(n);
+}
+
+// A guide texel: (octahedral normal, distance to the first non-delta surface, that distance's
+// change per pixel). A negative distance: the pixel sees the environment.
+bool seesEnvironment(vec4 guide) { return guide.z < 0.0; }
+
+// How much pixel q may count toward pixel p, from their geometry: 0 across a silhouette or a
+// crease, 1 on one smooth surface. offsetPixels: q - p.
+float geometryWeight(vec4 guideP, vec4 guideQ, float offsetPixels, float sigmaNormal, float sigmaDepth) {
+    bool environmentP = seesEnvironment(guideP);
+    if (environmentP || seesEnvironment(guideQ)) return environmentP == seesEnvironment(guideQ) ? 1.0 : 0.0;
+    float normalWeight = pow(max(0.0, dot(decodeOctahedral(guideP.xy), decodeOctahedral(guideQ.xy))), sigmaNormal);
+    // The depth the surface through p would have at q, within sigmaDepth of its change per pixel
+    // (plus a thousandth of the depth, so that a surface seen head-on still has a tolerance).
+    float tolerance = sigmaDepth * guideP.w * offsetPixels + 1e-3 * guideP.z + 1e-6;
+    float depthWeight = exp(-abs(guideP.z - guideQ.z) / tolerance);
+    return normalWeight * depthWeight;
+}
+
+// How much q may count toward p from their (demodulated) brightness: within a few standard
+// deviations of p's noise. With no noise left (variance 0), only equal neighbours count, so the
+// filter changes nothing a converged image shows.
+float luminanceWeight(float luminanceP, float luminanceQ, float varianceP, float sigmaLuminance) {
+    return exp(-abs(luminanceP - luminanceQ) / (sigmaLuminance * sqrt(max(varianceP, 0.0)) + 1e-10));
+}

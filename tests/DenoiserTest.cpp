@@ -1,0 +1,253 @@
+// The denoiser on the real GLSL (docs/denoising.md): what it must keep (textures, shadow edges,
+// what a mirror reflects, an image with no noise), what it must take out (noise, more of it the
+// fewer the samples), and that nothing it does makes a NaN.
+#include "GlTestContext.h"
+#include "TestFiles.h"
+#include <ptview/io/ImageIO.h>
+#include <ptview/metrics/ErrorMetrics.h>
+#include <ptview/scene/SceneLoader.h>
+#include <ptview/tracer/PathTracer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace ptview {
+namespace {
+
+struct Renders {
+    ImageRgbF raw;
+    ImageRgbF denoised;
+};
+
+Renders renderAndDenoise(const Scene& scene, const RenderSettings& settings, int samplesPerPixel,
+                         DenoiseSettings denoise = DenoiseSettings{true}) {
+    testing::glContext();
+    PathTracer tracer(PTVIEW_SHADER_DIR);
+    tracer.setScene(scene);
+    tracer.setImageSize(scene.camera.resolution);
+    tracer.setSettings(settings);
+    tracer.renderSamples(samplesPerPixel);
+    if (!denoise.enabled) return Renders{tracer.readMean(), tracer.readMean()};
+    tracer.setDenoise(denoise);
+    tracer.updateDenoised();
+    return Renders{tracer.readMean(), tracer.readDenoised()};
+}
+
+RenderSettings settingsOf(Integrator integrator, int maxDepth, std::uint32_t seed) {
+    RenderSettings settings;
+    settings.integrator = integrator;
+    settings.maxDepth = maxDepth;
+    settings.seed = seed;
+    settings.sampler = SamplerMode::Random;
+    return settings;
+}
+
+// An 8x8 checker of two greys, nearest-filtered: sharp texel edges everywhere.
+std::filesystem::path writeChecker(const testing::ScratchFiles& files) {
+    ImageRgba8 checker{8, 8, std::vector<std::uint8_t>(8 * 8 * 4, 255)};
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) checker.rgba[static_cast<size_t>((y * 8 + x) * 4 + c)] = ((x + y) % 2) ? 230 : 60;
+    const std::filesystem::path path = files.directory() / "checker.png";
+    writePng(path, checker);
+    return path;
+}
+
+TEST(Denoiser, ATextureUnderUniformLightStaysAsSharpAsTheRawImage) {
+    // A checkered quad under a white sky, one diffuse bounce, BSDF sampling only: every sample is
+    // its texel's albedo exactly, so the raw image has no noise but the texture's own edges. The
+    // filter sees the illumination (raw over albedo), which is 1 everywhere, and multiplies the
+    // albedo back: the texture must come out as it went in, to 1%.
+    testing::ScratchFiles files("denoiser");
+    const std::filesystem::path checker = writeChecker(files);
+    Scene scene = parseScene(R"({
+  "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [64, 64]},
+  "environment": {"color": [1, 1, 1]},
+  "materials": {"checker": {"type": "diffuse", "albedo": {"texture": ")" + checker.string() + R"(", "filter": "nearest"}}},
+  "shapes": [{"type": "quad", "material": "checker", "center": [0, 0, -2], "u": [1, 0, 0], "v": [0, 1, 0]}]
+})", files.directory() / "checker.json");
+    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 1, 5), 4);
+    int blurredApart = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const glm::vec3 raw = renders.raw.at(x, y), denoised = renders.denoised.at(x, y);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(denoised[c], raw[c], 0.01f * raw[c] + 1e-6f) << x << " " << y;
+            // The check has teeth: a 3x3 blur, what a filter of the radiance itself would do at
+            // the least, moves texel edges by far more than 1%.
+            if (x == 0 || y == 0 || x == 63 || y == 63) continue;
+            glm::vec3 blurred(0.0f);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) blurred += renders.raw.at(x + dx, y + dy) / 9.0f;
+            if (std::abs(blurred.g - raw.g) > 0.01f * raw.g) ++blurredApart;
+        }
+    EXPECT_GT(blurredApart, 200);
+}
+
+// Mean over rows [rowBegin, rowEnd) of each column's luminance.
+std::vector<double> columnProfile(const ImageRgbF& image, int rowBegin, int rowEnd) {
+    std::vector<double> profile(static_cast<size_t>(image.width), 0.0);
+    for (int y = rowBegin; y < rowEnd; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            glm::vec3 v = image.at(x, y);
+            profile[static_cast<size_t>(x)] += (0.2126 * v.r + 0.7152 * v.g + 0.0722 * v.b) / (rowEnd - rowBegin);
+        }
+    return profile;
+}
+
+// Pixels an edge takes to rise from 10% to 90% of the way between the levels on its two sides
+// (the means of the profile's first and last quarters), each row on its own, averaged over rows.
+double edgeWidth(const ImageRgbF& image, int rowBegin, int rowEnd) {
+    double total = 0.0;
+    for (int y = rowBegin; y < rowEnd; ++y) {
+        std::vector<double> row = columnProfile(image, y, y + 1);
+        const size_t quarter = row.size() / 4;
+        double dark = 0.0, bright = 0.0;
+        for (size_t i = 0; i < quarter; ++i) dark += row[i] / quarter, bright += row[row.size() - 1 - i] / quarter;
+        // The last column below 10% and the first above 90%, scanning from the edge outward.
+        const double low = dark + 0.1 * (bright - dark), high = dark + 0.9 * (bright - dark);
+        int lastLow = 0, firstHigh = static_cast<int>(row.size()) - 1;
+        for (int x = 0; x < static_cast<int>(row.size()); ++x)
+            if (row[static_cast<size_t>(x)] < low) lastLow = x;
+        for (int x = static_cast<int>(row.size()) - 1; x >= 0; --x)
+            if (row[static_cast<size_t>(x)] > high) firstHigh = x;
+        total += std::max(0, firstHigh - lastLow - 1);
+    }
+    return total / (rowEnd - rowBegin);
+}
+
+ImageRgbF blurred(const ImageRgbF& image, int radius) {
+    ImageRgbF out(image.width, image.height);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            glm::vec3 sum(0.0f);
+            int n = 0;
+            for (int dx = -radius; dx <= radius; ++dx) {
+                int xx = std::clamp(x + dx, 0, image.width - 1);
+                sum += image.at(xx, y), ++n;
+            }
+            out.set(x, y, sum / static_cast<float>(n));
+        }
+    return out;
+}
+
+TEST(Denoiser, AShadowEdgeAndItsReflectionInAMirrorStaySharp) {
+    // A point light above a half-plane blocker (in the plane x = 0 with the light): the floor is in
+    // shadow for x < 0 and lit for x > 0, an edge that nothing but its brightness marks (one
+    // floor, one normal, one albedo). The lower rows see it on the floor, the upper ones in a
+    // mirror tilted 45 degrees that shows the floor below it, whose features are the floor's. At 16 spp, denoised, each edge may be at most a
+    // pixel wider than in a 1024-spp render.
+    const std::string text = R"({
+  "camera": {"eye": [0, 1.2, 0.8], "target": [0, 1.2, -1], "up": [0, 1, 0], "vfov_deg": 50, "resolution": [64, 64]},
+  "environment": {"color": [0, 0, 0]},
+  "materials": {"white": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]},
+                "mirror": {"type": "mirror", "reflectance": [0.9, 0.9, 0.9]}},
+  "shapes": [
+    {"type": "quad", "material": "white", "center": [0, 0, -1], "u": [3, 0, 0], "v": [0, 0, -8]},
+    {"type": "quad", "material": "white", "center": [-3, 2.2, -1], "u": [3, 0, 0], "v": [0, 0, -8]},
+    {"type": "quad", "material": "mirror", "center": [0, 1.5, -1], "u": [2, 0, 0], "v": [0, 0.5, 0.5]}],
+  "lights": [{"type": "point", "position": [0, 4.4, 4], "intensity": [20, 20, 20]}]
+})";
+    Scene scene = parseScene(text, "edges.json");
+    const RenderSettings settings = settingsOf(Integrator::Full, 4, 21);
+    Renders renders = renderAndDenoise(scene, settings, 16);
+    Renders reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 22), 1024, DenoiseSettings{false});
+    struct Band {
+        const char* name;
+        int begin, end;
+    };
+    for (Band band : {Band{"reflected in the mirror", 8, 24}, Band{"on the floor", 50, 62}}) {
+        const double referenceWidth = edgeWidth(reference.raw, band.begin, band.end);
+        const double denoisedWidth = edgeWidth(renders.denoised, band.begin, band.end);
+        EXPECT_LE(denoisedWidth, referenceWidth + 1.0) << band.name;
+        // Teeth: blurring the reference by two pixels each way widens the edge past the bound.
+        EXPECT_GT(edgeWidth(blurred(reference.raw, 2), band.begin, band.end), referenceWidth + 1.0) << band.name;
+        // And the denoiser did something: the band is closer to the reference than the raw one.
+        double rawError = 0.0, denoisedError = 0.0;
+        for (int y = band.begin; y < band.end; ++y)
+            for (int x = 0; x < 64; ++x) {
+                rawError += std::pow(renders.raw.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
+                denoisedError += std::pow(renders.denoised.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
+            }
+        EXPECT_LT(denoisedError, 0.5 * rawError) << band.name;
+    }
+}
+
+TEST(Denoiser, AnImageWithoutNoiseIsLeftAsItIs) {
+    // A constant sky, and an emitter filling the view: every sample of every pixel is the same,
+    // so the variance is 0, only equal neighbours count, and each pixel keeps its value (to the
+    // float rounding of dividing by the albedo and multiplying back).
+    const std::string camera = R"("camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [48, 48]},
+  "environment": {"color": [0.3, 0.5, 0.7]},
+  "materials": {"glow": {"type": "emitter", "radiance": [4, 2, 1]}},)";
+    for (const std::string& shapes : {std::string(R"("shapes": [])"),
+                                     std::string(R"("shapes": [{"type": "quad", "material": "glow", "center": [0, 0, -2], "u": [5, 0, 0], "v": [0, 5, 0]}])")}) {
+        Scene scene = parseScene("{" + camera + shapes + "}", "constant.json");
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 3), 8);
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x)
+                for (int c = 0; c < 3; ++c)
+                    ASSERT_NEAR(renders.denoised.at(x, y)[c], renders.raw.at(x, y)[c], 1e-5f * (1.0f + renders.raw.at(x, y)[c]))
+                        << shapes << " at " << x << " " << y;
+    }
+}
+
+TEST(Denoiser, ItsErrorAndItsBiasFallAsSamplesGrow) {
+    // The Cornell box at 4, 16, 64 and 256 spp against 4096 spp: the denoised image's error falls
+    // with the samples, stays below the raw image's, and the difference between denoised and raw
+    // (the bias the filter adds, and the noise it takes out) shrinks as the noise does.
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    scene.camera.resolution = glm::ivec2(64, 64);
+    const ImageRgbF reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 100), 4096, DenoiseSettings{false}).raw;
+    double previousError = 1e30, previousChange = 1e30;
+    for (int spp : {4, 16, 64, 256}) {
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 7), spp);
+        const double raw = compareToReference(renders.raw, reference).relativeMse;
+        const double denoised = compareToReference(renders.denoised, reference).relativeMse;
+        const double change = compareToReference(renders.denoised, renders.raw).relativeMse;
+        std::printf("%d spp: relMSE raw %.6f denoised %.6f, between them %.6f\n", spp, raw, denoised, change);
+        // Where noise dominates, the filter must take most of it out; at 256 spp on a 64x64 image
+        // (its kernel spans a large share of the box) its bias is comparable to the noise left.
+        if (spp <= 64) {
+            EXPECT_LT(denoised, 0.5 * raw) << spp << " spp";
+        }
+        EXPECT_LT(denoised, previousError) << spp << " spp";
+        EXPECT_LT(change, 0.5 * previousChange) << spp << " spp";
+        previousError = denoised;
+        previousChange = change;
+    }
+}
+
+TEST(Denoiser, BlackSurfacesAndHugeSamplesGiveFiniteImages) {
+    // Albedo 0 (demodulation divides by it), pixels that stay black, and a tiny light of enormous
+    // radiance that BSDF sampling alone finds in a few samples: fireflies of 1e5.
+    Scene scene = parseScene(R"({
+  "camera": {"eye": [0, 1, 3], "target": [0, 0.5, 0], "vfov_deg": 50, "resolution": [48, 48]},
+  "environment": {"color": [0, 0, 0]},
+  "materials": {"black": {"type": "diffuse", "albedo": [0, 0, 0]},
+                "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]},
+                "hot": {"type": "emitter", "radiance": [1e6, 1e6, 1e6]}},
+  "shapes": [
+    {"type": "quad", "material": "white", "center": [0, 0, 0], "u": [2, 0, 0], "v": [0, 0, -2]},
+    {"type": "sphere", "material": "black", "center": [-0.6, 0.4, 0], "radius": 0.4},
+    {"type": "sphere", "material": "hot", "center": [0.5, 1.5, 0], "radius": 0.02}]
+})", "hard.json");
+    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 4, 9), 8);
+    int bright = 0, brightRaw = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x) {
+            const glm::vec3 value = renders.denoised.at(x, y);
+            for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(value[c])) << x << " " << y;
+            bright += value.g > 1e3f;
+            brightRaw += renders.raw.at(x, y).g > 1e3f;
+        }
+    // Fireflies were there, and the filter did not spread them into blotches.
+    EXPECT_GT(brightRaw, 0);
+    EXPECT_LE(bright, brightRaw);
+}
+
+} // namespace
+} // namespace ptview
