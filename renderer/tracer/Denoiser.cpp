@@ -84,7 +84,12 @@ void Denoiser::resize(glm::ivec2 size) {
         target.normal = createFloatTexture(size);
         target.framebuffer = createFramebufferOf({target.albedoDepth.id(), target.normal.id()});
     }
-    for (int i = 0; i < 2; ++i) illumination_[i] = createFloatTexture(size);
+    for (int i = 0; i < 2; ++i) {
+        illumination_[i] = createFloatTexture(size);
+        // denoise_atrous.frag blurs the variance with bilinear reads (every other read is exact).
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
     guide_ = createFloatTexture(size);
     albedo_ = createFloatTexture(size);
     result_ = createFloatTexture(size);
