@@ -18,7 +18,8 @@ uniform sampler2D uPrevAlbedoDepth;
 uniform sampler2D uPrevNormal;
 
 layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m)
-layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that hit a surface
+layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that met a surface
+                                              // (not the environment, not an emitter)
 
 // Delta bounces followed before a surface counts as the first one whatever it is: a path that
 // long between mirrors is rare, and features that stop there are still features.
@@ -34,7 +35,8 @@ bool isPurelySpecular(Material material) {
     return false;
 }
 
-// Albedo, normal (0 where the ray leaves the scene) and distance of one camera ray.
+// Albedo, normal and distance of one camera ray; normal 0 and distance -1 where it leaves the
+// scene or meets an emitter.
 void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance) {
     vec3 tint = vec3(1.0);
     distance = 0.0;
@@ -49,14 +51,24 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
         }
         distance += hit.t;
         Material material = fetchSurfaceMaterial(hit.material, hit.uv);
+        if (material.type == kMaterialEmitter) {
+            // An emitter's radiance, seen directly, has no noise to take out: like the
+            // environment, it is no surface for the filter (albedo 1, no normal, no distance).
+            albedo = tint;
+            normal = vec3(0.0);
+            distance = -1.0;
+            return;
+        }
         normal = hit.normalShading;
-        // An emitter's radiance is what the pixel shows: it is left as it is (albedo 1).
-        albedo = material.type == kMaterialEmitter ? tint : tint * material.color;
+        albedo = tint * material.color;
         if (bounce == kMaxDeltaBounces || !isPurelySpecular(material)) return;
         ShadingFrame frame = makeShadingFrame(hit.normalShading);
         vec3 woLocal = toLocal(frame, -ray.direction);
-        BsdfSample bs = sampleBsdf(material, woLocal, samplerGet1D(sampler, bsdfLobeDimension(bounce)),
-                                   samplerGet2D(sampler, bsdfDimension(bounce)));
+        // Glass both reflects and refracts; the features follow the refraction, whatever the
+        // sample (uLobe just below 1 picks the last lobe), so that every sample of a pixel sees the
+        // same surface through it: what lies behind glass is what an artist looks at, and a pixel
+        // whose samples disagreed would have to be left unfiltered (an outline, prepare's rule).
+        BsdfSample bs = sampleBsdf(material, woLocal, 0.99999994, samplerGet2D(sampler, bsdfDimension(bounce)));
         if (bs.pdfSolidAngle == 0.0) return; // the surface itself, then
         tint *= bs.weight;
         ray = spawnRay(hit.posWorld, hit.normalGeom, toWorld(frame, bs.wiLocal));

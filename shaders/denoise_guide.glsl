@@ -19,12 +19,17 @@ vec3 decodeOctahedral(vec2 e) {
 }
 
 // A guide texel: (octahedral normal, distance to the first non-delta surface, that distance's
-// change per pixel). A negative distance: the pixel sees the environment.
-bool seesEnvironment(vec4 guide) { return guide.z < 0.0; }
+// change per pixel), or, in place of the distance, one of these two marks:
+const float kGuideEnvironment = -1.0; // no sample met a surface: environment or emitters only
+const float kGuideOutline = -2.0;     // some did, some did not: the outline of a light or the sky
+bool seesEnvironment(vec4 guide) { return guide.z == kGuideEnvironment; }
+bool isOutline(vec4 guide) { return guide.z == kGuideOutline; }
 
 // How much pixel q may count toward pixel p, from their geometry: 0 across a silhouette or a
-// crease, 1 on one smooth surface. offsetPixels: q - p.
+// crease, 1 on one smooth surface. offsetPixels: q - p. Environment and emitters count only
+// among themselves; an outline pixel counts for nobody and takes nobody in (it stays as it is).
 float geometryWeight(vec4 guideP, vec4 guideQ, float offsetPixels, float sigmaNormal, float sigmaDepth) {
+    if (isOutline(guideP) || isOutline(guideQ)) return 0.0;
     bool environmentP = seesEnvironment(guideP);
     if (environmentP || seesEnvironment(guideQ)) return environmentP == seesEnvironment(guideQ) ? 1.0 : 0.0;
     float normalWeight = pow(max(0.0, dot(decodeOctahedral(guideP.xy), decodeOctahedral(guideQ.xy))), sigmaNormal);

@@ -23,6 +23,9 @@ layout(location = 2) out vec4 outAlbedo;       // what the illumination was divi
 const float kSmallestAlbedo = 1e-3;
 // Fewer samples than this give no variance worth the name: the pixel's neighbours estimate it.
 const float kSamplesForOwnVariance = 4.0;
+// A pixel counts as all surface when at most this short of it (float sums of 1s are exact, so
+// this only keeps the comparison honest).
+const float kWholeSurface = 0.9999;
 
 ivec2 clampToImage(ivec2 p) { return clamp(p, ivec2(0), textureSize(uSum, 0) - 1); }
 
@@ -97,9 +100,16 @@ void main() {
     vec3 normalSum = texelFetch(uFeatureNormal, p, 0).xyz;
     float depth = depthAt(p);
     vec2 slope = vec2(depthSlope(p, ivec2(1, 0), depth), depthSlope(p, ivec2(0, 1), depth));
-    bool environment = depth < 0.0 || dot(normalSum, normalSum) == 0.0;
+    // The share of the pixel's samples that met a surface: 0 where it sees only the environment
+    // or emitters, between 0 and 1 on their outline, where a surface's noise and a light's
+    // brightness share the pixel and no neighbour's value is a fair stand-in.
+    float surfaceShare = texelFetch(uFeatureNormal, p, 0).w * uInvFeatureCount;
     outIllumination = vec4(illumination, variance);
-    outGuide = environment ? vec4(0.0, 0.0, -1.0, 0.0)
-                           : vec4(encodeOctahedral(normalize(normalSum)), depth, length(slope));
+    if (surfaceShare <= 0.0 || dot(normalSum, normalSum) == 0.0)
+        outGuide = vec4(0.0, 0.0, kGuideEnvironment, 0.0);
+    else if (surfaceShare < kWholeSurface)
+        outGuide = vec4(0.0, 0.0, kGuideOutline, 0.0);
+    else
+        outGuide = vec4(encodeOctahedral(normalize(normalSum)), depth, length(slope));
     outAlbedo = vec4(albedo, 1.0);
 }
