@@ -126,6 +126,49 @@ TEST_F(OutputFileTest, AovLayersHoldTheDebugViews) {
     EXPECT_LT(centre, 5.2f);
 }
 
+TEST_F(OutputFileTest, DenoisedRendersKeepTheRawMeanAndRenderAgainBitForBit) {
+    const std::string arguments = shellQuoted(kCornell) + " --spp 8 --size 32x24 --seed 5 --backend fragment";
+    render(arguments + " --out " + shellQuoted(path("raw.pfm")));
+    render(arguments + " --denoise --denoise-strength 3 --denoise-iterations 4 --out " + shellQuoted(path("denoised.exr")));
+    render(arguments + " --denoise --denoise-strength 3 --denoise-iterations 4 --out " + shellQuoted(path("denoised.pfm")));
+    const ExrImage exr = readExr(path("denoised.exr"));
+    std::vector<std::string> names;
+    for (const ExrChannel& channel : exr.channels) names.push_back(channel.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"B", "G", "R", "raw.B", "raw.G", "raw.R"}));
+    const ImageRgbF raw = readPfm(path("raw.pfm")), denoised = readPfm(path("denoised.pfm"));
+    EXPECT_TRUE(sameBits(exrRgb(exr, "denoised.exr").rgb, denoised.rgb)) << "RGB is the denoised image";
+    EXPECT_FALSE(sameBits(denoised.rgb, raw.rgb)) << "and it is not the raw one";
+    const char* components[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+        const ExrChannel* layer = exr.find(std::string("raw.") + components[c]);
+        ASSERT_TRUE(layer);
+        for (std::size_t i = 0; i < raw.rgb.size() / 3; ++i) ASSERT_EQ(layer->values[i], raw.rgb[i * 3 + c]) << i;
+    }
+    // The provenance carries the denoiser and its settings: --from makes the same denoised pixels.
+    render("--from " + shellQuoted(path("denoised.exr")) + " --out " + shellQuoted(path("again.exr")));
+    EXPECT_TRUE(sameBits(exrRgb(readExr(path("again.exr")), "again.exr").rgb, denoised.rgb));
+    const testing::CommandResult info = runCommand(kBinary + " info " + shellQuoted(path("denoised.exr")));
+    EXPECT_NE(info.output.find("\"denoise\": true"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("\"denoise_strength\": 3"), std::string::npos) << info.output;
+}
+
+TEST_F(OutputFileTest, DenoiseOptionsOutOfPlaceAreRefusedNamingThem) {
+    const std::string render = kBinary + " render " + shellQuoted(kCornell) + kRenderArguments;
+    for (const auto& [arguments, named] : std::vector<std::pair<std::string, std::string>>{
+             {" --denoise-strength 2", "--denoise-strength needs --denoise"},
+             {" --denoise-iterations 3", "--denoise-iterations needs --denoise"},
+             {" --denoise --view normals", "--denoise needs the radiance view"},
+             {" --denoise --denoise-strength 100", "--denoise-strength"},
+             {" --denoise --denoise-strength nan", "--denoise-strength"},
+             {" --denoise --denoise-iterations 0", "--denoise-iterations"},
+             {" --denoise --denoise-iterations 9", "--denoise-iterations"}}) {
+        const testing::CommandResult result = runCommand(render + arguments + " --out " + shellQuoted(path("no.png")));
+        EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.output;
+        EXPECT_NE(result.output.find(named), std::string::npos) << arguments << "\n" << result.output;
+        EXPECT_FALSE(fs::exists(path("no.png"))) << arguments;
+    }
+}
+
 // The scene names its mesh by a relative path and is rendered from its own directory; --from
 // runs elsewhere.
 TEST_F(OutputFileTest, RenderFromItsOwnFileGivesTheSameImageBitForBit) {
