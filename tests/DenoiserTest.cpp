@@ -24,9 +24,10 @@ struct Renders {
 };
 
 Renders renderAndDenoise(const Scene& scene, const RenderSettings& settings, int samplesPerPixel,
-                         DenoiseSettings denoise = DenoiseSettings{true}) {
+                         DenoiseSettings denoise = DenoiseSettings{true}, Backend backend = Backend::Fragment) {
     testing::glContext();
     PathTracer tracer(PTVIEW_SHADER_DIR);
+    tracer.setBackend(backend);
     tracer.setScene(scene);
     tracer.setImageSize(scene.camera.resolution);
     tracer.setSettings(settings);
@@ -249,6 +250,32 @@ TEST(Denoiser, BlackSurfacesAndHugeSamplesGiveFiniteImages) {
     // Fireflies were there, and the filter did not spread them into blotches.
     EXPECT_GT(brightRaw, 0);
     EXPECT_LE(bright, brightRaw);
+}
+
+TEST(Denoiser, ASceneWithoutLightDenoisesToBlack) {
+    Scene scene = parseScene(R"({
+  "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [32, 32]},
+  "environment": {"color": [0, 0, 0]},
+  "materials": {"white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
+  "shapes": [{"type": "sphere", "material": "white", "center": [0, 0, 0], "radius": 1}]
+})", "dark.json");
+    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 1), 4);
+    for (float value : renders.denoised.rgb) ASSERT_EQ(value, 0.0f);
+}
+
+TEST(Denoiser, TheComputeBackendsSamplesDenoiseAsTheFragmentBackends) {
+    // The denoiser's passes are fragment passes whichever backend traced: the same samples give
+    // the same denoised image.
+    testing::glContext();
+    if (!PathTracer::computeSupported()) GTEST_SKIP() << "no OpenGL 4.3";
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    scene.camera.resolution = glm::ivec2(40, 40);
+    const RenderSettings settings = settingsOf(Integrator::Full, 8, 4);
+    Renders fragment = renderAndDenoise(scene, settings, 8, DenoiseSettings{true}, Backend::Fragment);
+    Renders compute = renderAndDenoise(scene, settings, 8, DenoiseSettings{true}, Backend::Compute);
+    ASSERT_EQ(compute.raw.rgb, fragment.raw.rgb);
+    EXPECT_EQ(compute.denoised.rgb, fragment.denoised.rgb);
+    EXPECT_NE(fragment.denoised.rgb, fragment.raw.rgb);
 }
 
 } // namespace
