@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -75,6 +76,34 @@ void expectReferenceYaw(const glm::mat3& r, float degrees) {
         for (int col = 0; col < 3; ++col)
             EXPECT_NEAR(r[col][row], reference[row][col], 1e-6f)
                 << "degrees " << degrees << " row " << row << " col " << col;
+}
+
+// --- Every shipped scene ------------------------------------------------------------------------
+
+// A one-sided emitter (quad or disk) lights only its front side, along cross(u, v) or its normal.
+// One that faces away from everything it was meant to light makes a scene that looks wrong in ways
+// a user blames on the renderer (principled_grid's light once faced the sky: its roughness row
+// looked all alike and its metal spheres reflected the light's black back).
+TEST(ShippedScenes, EveryOneSidedEmitterFacesTheShapesItLights) {
+    for (const auto& entry : std::filesystem::directory_iterator(PTVIEW_ASSETS_DIR "/scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        const Scene scene = loadScene(entry.path());
+        for (const Shape& light : scene.shapes) {
+            const bool emits = light.type != ShapeType::Mesh &&
+                               scene.materials[static_cast<std::size_t>(light.material)].type == MaterialType::Emitter;
+            if (!emits || (light.type != ShapeType::Quad && light.type != ShapeType::Disk)) continue;
+            const glm::vec3 front = light.type == ShapeType::Quad ? glm::cross(light.u, light.v) : light.normal;
+            int inFront = 0, others = 0;
+            for (const Shape& shape : scene.shapes) {
+                if (&shape == &light || shape.type == ShapeType::Mesh || shape.type == ShapeType::Box) continue;
+                ++others;
+                inFront += glm::dot(front, shape.center - light.center) > 0.0f;
+            }
+            EXPECT_TRUE(others == 0 || inFront * 2 >= others)
+                << entry.path().filename() << ": " << light.name << " faces away from " << others - inFront << " of " << others
+                << " shapes";
+        }
+    }
 }
 
 // --- The shipped Cornell box --------------------------------------------------------------------
