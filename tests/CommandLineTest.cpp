@@ -365,6 +365,19 @@ TEST_F(CommandLineTest, DefaultIntegratorIsFullAndHelpDescribesEachSampler) {
     }
 }
 
+// A bad value points to the help that lists its option: `ptview render --help` for render's.
+TEST_F(CommandLineTest, ABadOptionPointsToTheHelpThatListsIt) {
+    const std::string out = " --out " + shellQuoted(path("out.png"));
+    expectRefused("render " + shellQuoted(kCornell) + " --size 10" + out, "(see ptview render --help)");
+    expectRefused("render " + shellQuoted(kCornell) + " --aovs foo" + out, "(see ptview render --help)");
+    expectRefused("bench --seconds 0", "(see ptview bench --help)");
+    expectRefused("--depth -1", "(see ptview --help)");
+    for (const char* command : {"render", "bench"}) {
+        testing::CommandResult help = runCommand(kBinary + " " + command + " --help");
+        EXPECT_NE(help.output.find(std::string(command) == "render" ? "--aovs" : "--seconds"), std::string::npos) << help.output;
+    }
+}
+
 TEST_F(CommandLineTest, UnknownWarpOrSamplerListsValidNames) {
     expectRefused("warp --warp cone --out " + shellQuoted(path("out.png")),
                   "unknown warp \"cone\" (valid: square, uniform-disk, concentric-disk, uniform-sphere, uniform-cone, "

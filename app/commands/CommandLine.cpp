@@ -478,7 +478,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "ptview: " << e.what() << " (see ptview --help)\n";
+        // The help that lists the option: a subcommand's options are in its own help only.
+        std::string help = "ptview --help";
+        for (const CLI::App* command : app.get_subcommands()) help = "ptview " + command->get_name() + " --help";
+        std::cerr << "ptview: " << e.what() << " (see " << help << ")\n";
         return kExitBadInput;
     }
 
