@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -432,6 +433,32 @@ TEST_F(CommandLineTest, BenchReportsEachSceneAsATableRow) {
     testing::CommandResult bad = runCommand(kBinary + " bench " + shellQuoted(path("absent.json")) + " --seconds 0.1");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
     EXPECT_NE(bad.output.find("absent.json"), std::string::npos) << bad.output;
+}
+
+// What loading a scene warns about comes before the table, not between its rows, and the "-" of
+// an untimed compile is explained under it (issue 37).
+TEST_F(CommandLineTest, BenchWarningsStayOutOfItsTableAndItsDashIsExplained) {
+    write("tri.obj", "mtllib absent.mtl\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string scene = write("warns.json", R"({
+      "camera": {"eye": [0, 0.5, 3], "target": [0, 0.5, 0], "vfov_deg": 50, "resolution": [8, 8]},
+      "materials": {"white": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]}},
+      "meshes": {"tri": {"file": "tri.obj"}},
+      "shapes": [{"type": "mesh", "mesh": "tri", "material": "white"}]})");
+    testing::CommandResult result = runCommand(kBinary + " bench " + shellQuoted(scene) + " " + shellQuoted(kCornell) +
+                                               " " + shellQuoted(scene) + " --seconds 0.1 --size 8x8 --depth 1");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    ASSERT_NE(result.output.find("absent.mtl"), std::string::npos) << "the scene warns: " << result.output;
+    const std::size_t header = result.output.find("| scene |");
+    ASSERT_NE(header, std::string::npos) << result.output;
+    std::istringstream table(result.output.substr(header));
+    std::string line;
+    int rows = 0;
+    while (std::getline(table, line) && !line.empty()) {
+        EXPECT_EQ(line.rfind("|", 0), 0u) << "a table line: " << line << "\n" << result.output;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 2 + 3) << result.output;
+    EXPECT_NE(result.output.find("compile s \"-\": with --backend auto"), std::string::npos) << result.output;
 }
 
 // ---- Inputs that are not regular files or are too large, outputs that cannot be written (issue 17)

@@ -103,8 +103,6 @@ int runBenchCommand(const BenchOptions& options) {
         std::printf("ptview bench on %s; %s integrator, depth %d, %s sampler, at least %.1f s per scene\n\n",
                     context.description().c_str(), integratorName(options.settings.integrator),
                     options.settings.maxDepth, samplerModeName(options.settings.sampler), options.seconds);
-        std::printf("| scene | program | backend | compile s | triangles | load s | image decode s | BVH build s | tangents s | BVH + triangles MB | textures MB | largest texture | size | spp | M samples/s |\n");
-        std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---:|---:|\n");
         std::fflush(stdout);
         std::vector<ProgramOptions> programs = {options.program};
         if (options.variants) {
@@ -114,21 +112,37 @@ int runBenchCommand(const BenchOptions& options) {
                 for (bool allFeatures : {false, true}) programs.push_back(ProgramOptions{allFeatures, backend});
             }
         }
+        // The rows are printed once every scene has run, so that what loading a scene warns about
+        // (on stderr) comes before the table instead of between its rows.
+        std::vector<std::string> rows;
+        bool compileUntimed = false;
         for (const std::string& scene : options.scenePaths) {
             for (const ProgramOptions& program : programs) {
+                std::fprintf(stderr, "ptview: bench %s (%s, %s)\n", printableText(scene).c_str(),
+                             program.allFeatures ? "uber" : "specialized", program.backend ? backendName(*program.backend) : "auto");
                 BenchResult r = bench(scene, options, program);
                 char compile[32] = "-";
                 if (r.compileSeconds >= 0.0) std::snprintf(compile, sizeof compile, "%.3f", r.compileSeconds);
+                compileUntimed = compileUntimed || r.compileSeconds < 0.0;
                 char largest[32] = "-";
                 if (r.largestTexture.x > 0) std::snprintf(largest, sizeof largest, "%dx%d", r.largestTexture.x, r.largestTexture.y);
-                std::printf("| %s | %s | %s | %s | %zu | %.3f | %.3f | %.3f | %.3f | %.1f | %.1f | %s | %dx%d | %d | %.2f |\n",
-                            printableText(std::filesystem::path(scene).stem().string()).c_str(), program.allFeatures ? "uber" : "specialized",
-                            backendName(r.backend), compile, r.triangles, r.loadSeconds, r.decodeSeconds, r.buildSeconds, r.tangentSeconds,
-                            double(r.meshBytes) / (1024.0 * 1024.0), double(r.textureBytes) / (1024.0 * 1024.0), largest,
-                            r.size.x, r.size.y, r.samples, r.samplesPerSecond * 1e-6);
-                std::fflush(stdout);
+                char row[1024];
+                std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %zu | %.3f | %.3f | %.3f | %.3f | %.1f | %.1f | %s | %dx%d | %d | %.2f |\n",
+                              printableText(std::filesystem::path(scene).stem().string()).c_str(), program.allFeatures ? "uber" : "specialized",
+                              backendName(r.backend), compile, r.triangles, r.loadSeconds, r.decodeSeconds, r.buildSeconds, r.tangentSeconds,
+                              double(r.meshBytes) / (1024.0 * 1024.0), double(r.textureBytes) / (1024.0 * 1024.0), largest,
+                              r.size.x, r.size.y, r.samples, r.samplesPerSecond * 1e-6);
+                rows.push_back(row);
             }
         }
+        std::fflush(stderr);
+        std::printf("| scene | program | backend | compile s | triangles | load s | image decode s | BVH build s | tangents s | BVH + triangles MB | textures MB | largest texture | size | spp | M samples/s |\n");
+        std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---:|---:|\n");
+        for (const std::string& row : rows) std::fputs(row.c_str(), stdout);
+        if (compileUntimed)
+            std::printf("\ncompile s \"-\": with --backend auto both backends' programs are built to choose between "
+                        "them, so no compile is timed; --backend fragment or compute times it.\n");
+        std::fflush(stdout);
     } catch (const std::exception&) {
         return reportCommandError();
     }
