@@ -106,6 +106,17 @@ TEST(ShippedScenes, EveryOneSidedEmitterFacesTheShapesItLights) {
     }
 }
 
+// The dense bunny is generated at build time beside the shipped meshes, so the scene that names it
+// loads whatever the build directory is called (it named build/assets/ once: issue 37).
+TEST(ShippedScenes, TheDenseBunnySceneNamesAMeshInsideTheAssets) {
+    const Scene scene = loadScene(std::filesystem::path(PTVIEW_ASSETS_DIR) / "scenes" / "cornell_bunny_1m.json");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const std::filesystem::path assets = std::filesystem::weakly_canonical(PTVIEW_ASSETS_DIR);
+    const std::filesystem::path mesh = std::filesystem::weakly_canonical(scene.meshes[0].file);
+    EXPECT_EQ(mesh.string().rfind(assets.string() + "/", 0), 0u) << mesh << " is outside " << assets;
+    EXPECT_EQ(scene.meshes[0].data->triangles.size(), 1111216u);
+}
+
 // --- The shipped Cornell box --------------------------------------------------------------------
 
 Scene loadCornell() {
