@@ -1,6 +1,7 @@
 #include <ptview/window/PanelWidgets.h>
 #include <ptview/window/Panels.h>
 #include <ptview/io/PrintableText.h>
+#include <ptview/model/NearbyFiles.h>
 #include <ptview/scene/SceneRanges.h>
 
 #include <imgui.h>
@@ -28,12 +29,17 @@ void drawEnvironmentPanel(ViewerSession& session, PanelState& state) {
     Scene& scene = model.scene;
     bool hasMap = !scene.environmentMap.empty();
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("map: %s", hasMap ? printableText(scene.environmentMap.lexically_normal().string()).c_str() : "none (constant colour)");
+    ImGui::Text("map: %s", hasMap ? printableText(nameRelativeToScene(scene.environmentMap, scene.path).string()).c_str()
+                                  : "none (constant colour)");
     ImGui::PopTextWrapPos();
 
     ImGui::PushID("environment");
-    std::optional<std::filesystem::path> picked =
-        fileCombo("maps", std::filesystem::path(assetsDirectory()) / "hdr", ".hdr", scene.environmentMap);
+    // Maps near the scene (its folder, hdr/, ../hdr/), named as the scene file will store them.
+    const std::filesystem::path& scenePath = scene.path;
+    std::optional<std::filesystem::path> picked = fileCombo(
+        "maps", [&scenePath] { return environmentMapsNear(scenePath, std::filesystem::path(assetsDirectory()) / "hdr"); },
+        scene.environmentMap, "no .hdr files beside the scene, in its hdr/ or in ../hdr/: type a path below",
+        [&scenePath](const std::filesystem::path& file) { return nameRelativeToScene(file, scenePath); });
     if (picked) session.setEnvironmentMap(*picked);
     if (pathField("Load", state.environmentPathInput)) session.setEnvironmentMap(state.environmentPathInput);
     ImGui::BeginDisabled(!hasMap);

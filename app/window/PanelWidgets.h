@@ -59,33 +59,21 @@ inline void noteText(const std::string& text) {
 
 // The files in directory with this extension (".json"), sorted; none when it cannot be read,
 // since a missing assets folder only means an empty list.
-inline std::vector<std::filesystem::path> filesWithExtension(const std::filesystem::path& directory,
-                                                             const std::string& extension) {
-    std::vector<std::filesystem::path> files;
-    std::error_code error;
-    for (std::filesystem::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-        std::error_code typeError;
-        if (it->is_regular_file(typeError) && it->path().extension() == extension) files.push_back(it->path());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-// A combo of the files with `extension` in `directory`. The folder is read only while the combo
-// is open (a handful of files), so files added while the viewer runs show up. Returns the file
-// picked this frame.
-inline std::optional<std::filesystem::path> fileCombo(const char* label, const std::filesystem::path& directory,
-                                                      const std::string& extension,
-                                                      const std::filesystem::path& current) {
-    std::string preview = current.empty() ? "choose..." : printableText(current.filename().string());
+// A combo of the files listFiles() returns, each shown as nameOf names it. The files are listed
+// only while the combo is open (a few folder reads), so files added while the viewer runs show
+// up. Returns the file picked this frame.
+template <typename ListFiles, typename NameOf>
+std::optional<std::filesystem::path> fileCombo(const char* label, ListFiles listFiles, const std::filesystem::path& current,
+                                               const char* whereNone, NameOf nameOf) {
+    std::string preview = current.empty() ? "choose..." : printableText(nameOf(current).string());
     if (!ImGui::BeginCombo(label, preview.c_str())) return std::nullopt;
     std::optional<std::filesystem::path> picked;
-    std::vector<std::filesystem::path> files = filesWithExtension(directory, extension);
-    if (files.empty()) ImGui::TextDisabled("no %s files in %s", extension.c_str(), printableText(directory.string()).c_str());
+    const std::vector<std::filesystem::path> files = listFiles();
+    if (files.empty()) ImGui::TextDisabled("%s", whereNone);
     for (const std::filesystem::path& file : files) {
         std::error_code error; // `current` may name the same file by another path, or none
         bool isCurrent = !current.empty() && std::filesystem::equivalent(file, current, error);
-        if (ImGui::Selectable(printableText(file.filename().string()).c_str(), isCurrent)) picked = file;
+        if (ImGui::Selectable(printableText(nameOf(file).string()).c_str(), isCurrent)) picked = file;
         if (isCurrent) ImGui::SetItemDefaultFocus();
     }
     ImGui::EndCombo();

@@ -1,3 +1,4 @@
+#include <ptview/model/NearbyFiles.h>
 #include <ptview/window/PanelWidgets.h>
 #include <ptview/window/Panels.h>
 #include <ptview/io/PrintableText.h>
@@ -19,7 +20,8 @@ void drawScenePanel(ViewerSession& session, PanelState& state) {
 
     ImGui::PushID("scene");
     std::optional<std::filesystem::path> picked =
-        fileCombo("scenes", std::filesystem::path(assetsDirectory()) / "scenes", ".json", file);
+        fileCombo("scenes", [] { return filesWithExtension(std::filesystem::path(assetsDirectory()) / "scenes", ".json"); },
+                  file, "no scenes shipped with ptview found", [](const std::filesystem::path& path) { return path.filename(); });
     if (pathField("Open", state.scenePathInput)) picked = state.scenePathInput;
     if (picked) state.unsavedEdits.request(session, UnsavedEditsPrompt::Action::OpenScene, *picked);
     ImGui::PopID();
