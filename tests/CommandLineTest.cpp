@@ -168,7 +168,7 @@ TEST_F(CommandLineTest, ConvergeConfigsRefuseEmptyItemsAndExtraParts) {
     expectRefused(converge + "mis/sobol/+8", "bad configuration \"mis/sobol/+8\"");
     expectRefused(converge + "mis/sobol", "bad configuration \"mis/sobol\"");
     expectRefused(converge + "mis/sobol/8/clamp=0", "bad configuration \"mis/sobol/8/clamp=0\"");
-    expectRefused(converge + "mis/sobol/8/clamp=", "the fourth part must be clamp=VALUE");
+    expectRefused(converge + "mis/sobol/8/clamp=", "clamp=VALUE needs VALUE > 0");
     expectRefused(converge + "mis/sobol/8/clamp=1e99", "bad configuration");
     expectRefused(converge + "mis/sobol/8/clamp=2x", "bad configuration");
     expectRefused(converge + "mis/sobol/8/clamp=1/1", "bad configuration");

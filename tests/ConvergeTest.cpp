@@ -163,6 +163,86 @@ TEST(Converge, BadConfigurationsAreRefused) {
     EXPECT_FALSE(fs::exists("/tmp/never/convergence.csv"));
 }
 
+// "/denoise" is a word alone, once: a value, another word after the depth, a repeat or a suffix
+// in place of the depth is refused (exit 2) naming the configuration, before any rendering.
+TEST(Converge, BadDenoiseSuffixesAreRefused) {
+    testing::ScratchFiles files("converge_bad_denoise");
+    const fs::path out = files.directory() / "out";
+    for (const std::string config : {"full/sobol/8/denoise=x", "full/sobol/8/denoised", "full/sobol/8/fast",
+                                     "full/sobol/8/denoise/denoise", "full/sobol/denoise", "full/sobol/8/denoise/",
+                                     "full/sobol/8/clamp=0/denoise"}) {
+        testing::CommandResult result = testing::runCommand(
+            std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+            " --out " + testing::shellQuoted(out.string()) + " --size 8x8 --configs full/sobol/8," + config);
+        EXPECT_EQ(result.exitCode, 2) << config << ": " << result.output;
+        EXPECT_NE(result.output.find("bad configuration \"" + config + "\""), std::string::npos) << result.output;
+        EXPECT_EQ(result.output.find("rendering the reference"), std::string::npos) << result.output;
+    }
+    EXPECT_FALSE(fs::exists(out / "convergence.csv"));
+}
+
+// "/denoise" parses after the depth, with or without a clamp and in either order, and names the
+// configuration the same way whichever order it was given in.
+TEST(Converge, DenoiseSuffixParsesAloneAndWithAClamp) {
+    testing::ScratchFiles files("converge_denoise_parse");
+    const fs::path out = files.directory() / "out";
+    testing::CommandResult result = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+        " --out " + testing::shellQuoted(out.string()) +
+        " --size 8x8 --reference-spp 4 --max-spp 2 --configs mis/random/2/denoise,full/sobol/4/denoise/clamp=2");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::map<std::string, std::vector<Row>> rows = readCsv(out / "convergence.csv");
+    EXPECT_EQ(rows["mis/random/2/denoise"].size(), 2u) << "checkpoints at 1 and 2 spp";
+    EXPECT_EQ(rows["full/sobol/4/clamp=2/denoise"].size(), 2u);
+    EXPECT_EQ(rows.size(), 2u);
+}
+
+// A /denoise configuration renders like the one without it and measures the denoised image at
+// each checkpoint, the denoising counted in its time: its curve lies beside the raw one in the
+// CSV and the plot, and the summary calls it biased whatever its error does (a filter converges
+// to another image than the reference), as it does a clamp. Nothing here is about how good the
+// filter is: only that what is measured is the denoised image.
+TEST(Converge, ADenoisedConfigurationIsMeasuredBesideTheRawOneAndReportedBiased) {
+    testing::ScratchFiles files("converge_denoise");
+    const fs::path out = files.directory() / "out";
+    testing::CommandResult result = testing::runCommand(
+        std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
+        " --out " + testing::shellQuoted(out.string()) +
+        " --size 24x24 --reference-spp 1024 --max-spp 16 --time-budget 60 --configs full/sobol/4,full/sobol/4/denoise");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::map<std::string, std::vector<Row>> rows = readCsv(out / "convergence.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    const std::vector<Row>& raw = rows["full/sobol/4"];
+    const std::vector<Row>& denoised = rows["full/sobol/4/denoise"];
+    ASSERT_EQ(raw.size(), 5u) << "checkpoints at 1, 2, 4, 8, 16 spp";
+    ASSERT_EQ(denoised.size(), raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        EXPECT_EQ(denoised[i].spp, raw[i].spp);
+        EXPECT_TRUE(std::isfinite(denoised[i].relativeMse) && denoised[i].relativeMse > 0.0) << denoised[i].spp << " spp";
+        EXPECT_GT(denoised[i].seconds, 0.0);
+        // Same settings and seed, so the same samples: a different error is the filter's doing.
+        EXPECT_NE(denoised[i].relativeMse, raw[i].relativeMse) << denoised[i].spp << " spp: the raw mean was measured";
+        if (i > 0) EXPECT_GT(denoised[i].seconds, denoised[i - 1].seconds) << "the time axis accumulates";
+    }
+    std::string summary = testing::readFileBytes(out / "summary.md");
+    std::istringstream lines(summary);
+    bool found = false;
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("| full/sobol/4/denoise |", 0) == 0) {
+            found = true;
+            EXPECT_NE(line.find("**biased**"), std::string::npos) << line;
+            EXPECT_NE(line.find("denoised"), std::string::npos) << line;
+        } else if (line.rfind("| full/sobol/4 |", 0) == 0) {
+            EXPECT_EQ(line.find("biased"), std::string::npos) << line;
+        }
+    EXPECT_TRUE(found) << summary;
+    EXPECT_EQ(summary.find("Most efficient configuration that converges steadily: **full/sobol/4/denoise**"), std::string::npos)
+        << summary;
+    EXPECT_NE(result.output.find("full/sobol/4/denoise: 1 spp"), std::string::npos) << result.output;
+    EXPECT_GT(fs::file_size(out / "convergence.png"), 1000u) << result.output;
+    EXPECT_EQ(result.output.find("warning"), std::string::npos) << result.output;
+}
+
 // --all-features was accepted and ignored: the runs used the program specialized to the scene. The
 // summary says what the runs were compiled for, as the tracer has it; the empty Cornell box has no
 // mesh, the uber-shader has the mesh code.

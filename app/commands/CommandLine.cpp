@@ -377,7 +377,7 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeT
     command->add_option("--reference-depth", converge.referenceDepth,
                         "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
         ->transform(kDecimalInteger)->check(inRange(settingRanges::kMaxDepth));
-    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE], comma-separated (clamp: biased firefly control, as --clamp)")->capture_default_str();
+    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise], comma-separated (clamp: biased firefly control, as --clamp; denoise: measure the denoised image, as --denoise, its time included; both biased)")->capture_default_str();
     command->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
     command->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")

@@ -78,6 +78,7 @@ struct ConvergeConfig {
     SamplerMode sampler = SamplerMode::Sobol;
     int maxDepth = 8;
     std::optional<float> radianceClamp; // "/clamp=VALUE" after the depth: biased firefly control
+    bool denoise = false;               // "/denoise" after the depth: measure the denoised image (biased)
 };
 
 struct ConvergeOptions {

@@ -52,6 +52,7 @@ std::string configName(const ConvergeConfig& config) {
         std::snprintf(value, sizeof value, "%g", static_cast<double>(*config.radianceClamp));
         name += std::string("/clamp=") + value;
     }
+    if (config.denoise) name += "/denoise";
     return name;
 }
 
@@ -69,7 +70,17 @@ double referenceNoiseFloor(const PixelStatistics& statistics) {
     return count ? sum / double(count) : 0.0;
 }
 
+// Biased by construction, whatever the measured error does: a radiance clamp removes energy, the
+// denoiser (docs/denoising.md) borrows from neighbours. The summary, the CSV's names and the plot
+// say so for these even where the error has not yet levelled off.
+bool biasedByConstruction(const ConvergeConfig& config) { return config.radianceClamp || config.denoise; }
+
 // Progressive render with checkpoints at 1, 2, 4, ... samples per pixel until the budget is spent.
+// With /denoise each checkpoint measures the denoised image instead of the raw mean; its time is
+// the path tracing's plus every denoise pass made so far (the features traced for it and each
+// checkpoint's filtering), as a viewer refreshing its denoised view at each checkpoint would
+// spend: more than one final denoise would cost, never less. The programs are compiled before
+// the clock starts, as the path tracer's are by warmUp.
 ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const ConvergeOptions& options,
                       const ImageRgbF& reference) {
     ConfigResult result{config, {}};
@@ -81,16 +92,32 @@ ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const Co
     settings.seed = options.seed;
     settings.sampleBudget = static_cast<std::uint32_t>(options.maxSpp); // patterns complete at the last checkpoint
     tracer.setSettings(settings);
+    DenoiseSettings denoise;
+    denoise.enabled = config.denoise;
+    tracer.setDenoise(denoise);
+    if (config.denoise) {
+        // Compiles the feature and filter programs; not timed, not kept. Twice: on llvmpipe the
+        // second denoise of an accumulation (features added to earlier ones) still compiled
+        // something, 0.15 s of a 24x24 image's first timed checkpoint when warmed up once.
+        tracer.restart();
+        for (int i = 0; i < 2; ++i) {
+            tracer.renderSamples(1);
+            tracer.updateDenoised();
+        }
+        glFinish();
+    }
     tracer.warmUp(); // not timed, not kept
     double seconds = 0.0;
     for (int target = 1; target <= options.maxSpp; target *= 2) {
         Clock::time_point start = Clock::now();
         tracer.renderSamples(target - tracer.sampleCount());
+        if (config.denoise) tracer.updateDenoised();
         glFinish();
         seconds += std::chrono::duration<double>(Clock::now() - start).count();
-        result.checkpoints.push_back(Checkpoint{target, seconds, compareToReference(tracer.readMean(), reference)});
-        std::fprintf(stderr, "ptview: %s: %d spp, %.2f s, relMSE %.3g\n", configName(config).c_str(), target, seconds,
-                     result.checkpoints.back().error.relativeMse);
+        const ImageRgbF image = config.denoise ? tracer.readDenoised() : tracer.readMean();
+        result.checkpoints.push_back(Checkpoint{target, seconds, compareToReference(image, reference)});
+        std::fprintf(stderr, "ptview: %s: %d spp, %.2f s%s, relMSE %.3g\n", configName(config).c_str(), target, seconds,
+                     config.denoise ? " (path tracing and denoising; biased)" : "", result.checkpoints.back().error.relativeMse);
         if (seconds >= options.timeBudgetSeconds) break;
     }
     return result;
@@ -166,8 +193,13 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
         const Checkpoint& last = result.checkpoints.back();
         double efficiency = last.error.relativeMse > 0 ? 1.0 / (last.error.relativeMse * last.seconds) : 0.0;
         bool biased = looksBiased(result, floor);
-        if (!biased && !hasFireflies(result) && efficiency > bestEfficiency) best = &result, bestEfficiency = efficiency;
+        if (!biased && !biasedByConstruction(result.config) && !hasFireflies(result) && efficiency > bestEfficiency)
+            best = &result, bestEfficiency = efficiency;
         double slope = lateSlope(result.checkpoints);
+        // What makes a configuration biased whatever its curve does so far.
+        const std::string cause = result.config.denoise && result.config.radianceClamp ? "denoised and clamped"
+                                  : result.config.denoise                              ? "denoised (docs/denoising.md)"
+                                                                                       : "radiance clamp";
         out << "| " << configName(result.config) << " | " << last.spp << " | " << number(last.seconds) << " | "
             << number(last.error.rmse) << " | " << number(last.error.relativeMse) << " | "
             << number(last.error.meanBias.r, "%+.2g") << ", " << number(last.error.meanBias.g, "%+.2g") << ", "
@@ -176,7 +208,10 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
             << time(timeToReach(result.checkpoints, 0.01)) << " | " << time(timeToReach(result.checkpoints, 0.001))
             << " | " << number(slope, "%.2f") << " | "
             << (!std::isfinite(last.error.relativeMse) ? std::string("**not measured**: no finite pixel to compare")
-                : biased ? "**biased**: the error stops falling at relMSE " + number(last.error.relativeMse)
+                : biased ? "**biased**" + (biasedByConstruction(result.config) ? " (" + cause + ")" : std::string()) +
+                               ": the error stops falling at relMSE " + number(last.error.relativeMse)
+                : biasedByConstruction(result.config) ? "**biased** by construction (" + cause + "): it converges to another image "
+                               "than the reference, though its error has not levelled off yet"
                 : hasFireflies(result) ? std::string("**fireflies**: rare very bright samples make the error jump; not converged")
                 : slope < -0.75 ? std::string("converging (error ~ 1/spp)") : std::string("converging slowly, or near the floor"))
             << " |\n";
@@ -184,7 +219,13 @@ std::string summary(const std::string& scene, const std::vector<ConfigResult>& r
     if (best)
         out << "\nMost efficient configuration that converges steadily: **" << configName(best->config)
             << "**. A slope near -1 means the MSE halves with each doubling of samples; a biased configuration "
-               "(too few bounces, an integrator that leaves out light, a radiance clamp) levels off however long it runs.\n";
+               "(too few bounces, an integrator that leaves out light, a radiance clamp, a denoiser) levels off however long it runs.\n";
+    bool anyDenoised = false;
+    for (const ConfigResult& result : results) anyDenoised = anyDenoised || result.config.denoise;
+    if (anyDenoised)
+        out << "\nA /denoise configuration measures the denoised image at each checkpoint; its time is the path tracing's plus "
+               "every denoise pass so far (features and filtering), an upper bound on one final denoise. Denoising trades noise "
+               "for bias: it is never the most efficient converging configuration here, however low its error.\n";
     return out.str();
 }
 
@@ -242,22 +283,31 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         const std::string integrator = parts[0];
         const std::string sampler = parts.size() > 1 ? parts[1] : std::string();
         // Digits only: strtol would take "+8" or " 8".
-        const std::string depth = (parts.size() == 3 || parts.size() == 4) &&
-                                          parts[2].find_first_not_of("0123456789") == std::string::npos &&
+        const std::string depth = parts.size() >= 3 && parts[2].find_first_not_of("0123456789") == std::string::npos &&
                                           parts[2].size() <= 4 ? parts[2] : std::string();
         ConvergeConfig config;
-        if (parts.size() == 4) {
-            // "clamp=VALUE": a positive finite decimal, all of the part.
+        // After the depth, each at most once and in either order: "clamp=VALUE" (a positive finite
+        // decimal, all of the part) and "denoise" (the word alone: no "denoise=...").
+        for (std::size_t i = 3; i < parts.size(); ++i) {
+            const std::string& part = parts[i];
             const std::string prefix = "clamp=";
-            const std::string value = parts[3].rfind(prefix, 0) == 0 ? parts[3].substr(prefix.size()) : std::string();
-            char* valueEnd = nullptr;
-            double clamp = value.empty() || value.find_first_not_of("0123456789.eE+-") != std::string::npos
-                               ? 0.0 : std::strtod(value.c_str(), &valueEnd);
-            if (!(clamp > 0.0 && std::isfinite(clamp) && *valueEnd == '\0' && std::isfinite(static_cast<float>(clamp)))) {
-                error = "bad configuration \"" + item + "\": the fourth part must be clamp=VALUE, VALUE > 0, e.g. full/sobol/8/clamp=10";
+            if (part.rfind(prefix, 0) == 0 && !config.radianceClamp) {
+                const std::string value = part.substr(prefix.size());
+                char* valueEnd = nullptr;
+                double clamp = value.empty() || value.find_first_not_of("0123456789.eE+-") != std::string::npos
+                                   ? 0.0 : std::strtod(value.c_str(), &valueEnd);
+                if (!(clamp > 0.0 && std::isfinite(clamp) && *valueEnd == '\0' && std::isfinite(static_cast<float>(clamp)))) {
+                    error = "bad configuration \"" + item + "\": clamp=VALUE needs VALUE > 0, e.g. full/sobol/8/clamp=10";
+                    return std::nullopt;
+                }
+                config.radianceClamp = static_cast<float>(clamp);
+            } else if (part == "denoise" && !config.denoise) {
+                config.denoise = true;
+            } else {
+                error = "bad configuration \"" + item + "\": after the depth only /clamp=VALUE and /denoise may follow, each once, "
+                        "e.g. full/sobol/8/clamp=10 or full/sobol/8/denoise";
                 return std::nullopt;
             }
-            config.radianceClamp = static_cast<float>(clamp);
         }
         std::optional<Integrator> knownIntegrator = integratorNames().parse(integrator);
         if (knownIntegrator) config.integrator = *knownIntegrator;
@@ -265,7 +315,7 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         char* end = nullptr;
         long maxDepth = depth.empty() ? -1 : std::strtol(depth.c_str(), &end, 10);
         if (!knownIntegrator || !mode || depth.empty() || *end != '\0' || maxDepth < 0 || maxDepth > 1024) {
-            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE], e.g. mis/sobol/8";
+            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise], e.g. mis/sobol/8";
             return std::nullopt;
         }
         config.sampler = *mode;

@@ -1,6 +1,6 @@
 #pragma once
 // `ptview converge`: what accuracy costs in time. Renders a scene progressively with each
-// configuration (integrator / sampler / MAX_DEPTH), measures at 1, 2, 4, ... spp the GPU time and
+// configuration (integrator / sampler / MAX_DEPTH [/clamp=VALUE] [/denoise]), measures at 1, 2, 4, ... spp the GPU time and
 // the error against a reference, and writes convergence.csv, convergence.png (error against time,
 // log-log) and summary.md (time to reach an error, efficiency, bias) into the output directory.
 // docs/accuracy.md shows what it found.
