@@ -222,7 +222,9 @@ TEST(Converge, ADenoisedConfigurationIsMeasuredBesideTheRawOneAndReportedBiased)
         EXPECT_GT(denoised[i].seconds, 0.0);
         // Same settings and seed, so the same samples: a different error is the filter's doing.
         EXPECT_NE(denoised[i].relativeMse, raw[i].relativeMse) << denoised[i].spp << " spp: the raw mean was measured";
-        if (i > 0) EXPECT_GT(denoised[i].seconds, denoised[i - 1].seconds) << "the time axis accumulates";
+        if (i > 0) {
+            EXPECT_GT(denoised[i].seconds, denoised[i - 1].seconds) << "the time axis accumulates";
+        }
     }
     std::string summary = testing::readFileBytes(out / "summary.md");
     std::istringstream lines(summary);
