@@ -692,6 +692,9 @@ TEST_F(ViewerSessionTest, TheDisplayShowsTheDenoisedImageOfTheLastSample) {
     EXPECT_EQ(*inspection->denoised, denoisedMean.at(5, 7));
     EXPECT_EQ(inspection->reading.mean, tracer.readMean().at(5, 7));
     EXPECT_EQ(inspection->denoisedSamples, 4);
+    const std::string json = pixelInspectionJson(*inspection, model.scene);
+    EXPECT_NE(json.find("\"denoised\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"denoised_spp\": 4"), std::string::npos) << json;
 
     model.denoise.enabled = false;
     session->update();

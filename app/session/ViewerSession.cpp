@@ -653,8 +653,8 @@ void ViewerSession::denoise(View& view) {
     Clock::time_point start = Clock::now();
     try {
         view.tracer->updateDenoised();
-    } catch (const ShaderError& e) { // the denoiser's shaders, edited on disk: the raw image instead
-        model_.shaderError = e.what();
+    } catch (const std::exception& e) { // its shaders edited on disk, a target this GPU refuses: the raw image instead
+        model_.shaderError = std::string("denoiser: ") + e.what();
         model_.denoise.enabled = false;
         model_.compare.rightDenoised = false;
         if (splitsRawAndDenoised()) model_.compare.enabled = false;
