@@ -748,6 +748,13 @@ TEST_F(ViewerSessionTest, SplitViewShowsRawAndDenoisedOfOneRenderOrEachRendersOw
     ASSERT_TRUE(session->comparing());
     EXPECT_FALSE(session->comparesTwoRenders());
     EXPECT_EQ(&session->tracer(ViewerSession::Side::Right), &session->tracer(ViewerSession::Side::Left));
+    EXPECT_TRUE(session->accumulating()) << "the one render's, with no second tracer to ask";
+    session->model().pinnedPixel = glm::ivec2(20, 3); // right of the divider: the denoised side
+    session->renderFrame();
+    std::optional<PixelInspection> right = session->inspectPinnedPixel();
+    ASSERT_TRUE(right);
+    EXPECT_TRUE(right->rightSide);
+    EXPECT_TRUE(right->denoised);
     EXPECT_FALSE(session->displaySettings(ViewerSession::Side::Left).denoised);
     EXPECT_TRUE(session->displaySettings(ViewerSession::Side::Right).denoised);
     fs::path directory = freshDirectory("split_denoise");

@@ -580,7 +580,7 @@ bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
 
 bool ViewerSession::accumulating() const {
     bool left = wantsSamples(left_, 0);
-    return comparing() ? left || wantsSamples(*right_, 0) : left;
+    return comparesTwoRenders() ? left || wantsSamples(*right_, 0) : left; // a raw | denoised split is one render
 }
 
 double ViewerSession::renderFrame(double budgetSeconds) {
