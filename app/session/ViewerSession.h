@@ -84,8 +84,9 @@ public:
     // Split view: the view whose numbers a pixel shows, by the side of the divider its centre is on.
     Side sideOf(glm::ivec2 pixel) const;
     // The pinned pixel's numbers now: one pixel read back from that side's accumulation (and from
-    // its denoised image, where the side shows one), and the first hit, probed again only when the pixel, the side or the tracer's accumulation (camera,
-    // scene) changed. nullopt when none is pinned or it is outside the render.
+    // its denoised image, where the side shows one), and the first hit, probed again only when
+    // the pixel, the side or the tracer's accumulation (camera, scene) changed. nullopt when none
+    // is pinned or it is outside the render.
     std::optional<PixelInspection> inspectPinnedPixel();
     // Whether the scene in memory differs from its file in anything the file holds, the camera
     // included (a view the user set up is work): what quitting or opening another scene would

@@ -59,8 +59,8 @@ void denoiseControls(ViewerModel& model) {
         !(model.compare.enabled && model.compare.rightDenoised))
         return;
     const NumberRange& strength = settingRanges::kDenoiseStrength;
-    ImGui::SliderFloat("strength", &model.denoise.strength, static_cast<float>(strength.panelLo), static_cast<float>(strength.panelHi),
-                       "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("strength", &model.denoise.strength, static_cast<float>(strength.panelLo),
+                       static_cast<float>(strength.panelHi), "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     itemTooltip(strength.description);
     settingSlider("iterations", model.denoise.iterations, settingRanges::kDenoiseIterations);
     itemTooltip(settingRanges::kDenoiseIterations.description);

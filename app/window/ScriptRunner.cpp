@@ -509,7 +509,8 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         // ---- compare mode
         {"compare", [](Step& s) { s.model.compare.enabled = s.command.isWord(0, "on"); }},
         {"compare-sides", [](Step& s) {
-             s.model.compare.sides = s.command.isWord(0, "raw-denoised") ? CompareSides::RawAndDenoised : CompareSides::TwoRenders;
+             s.model.compare.sides =
+                 s.command.isWord(0, "raw-denoised") ? CompareSides::RawAndDenoised : CompareSides::TwoRenders;
          }},
         {"compare-denoise", [](Step& s) { s.model.compare.rightDenoised = s.command.isWord(0, "on"); }},
         {"compare-integrator", [](Step& s) { s.model.compare.right.integrator = integratorNamed(s.word); }},
