@@ -118,5 +118,22 @@ TEST(ScriptRunner, ATextureThatDoesNotLoadFailsNamingItAndKeepsTheMaterial) {
               std::string::npos);
 }
 
+// The denoiser's commands edit the model as the Render panel's controls do, and restart nothing.
+TEST(ScriptRunner, DenoiseCommandsSetTheModelsDenoiserAndSplit) {
+    ScriptedSession scripted(std::filesystem::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json",
+                             "denoise on\ndenoise-strength 8\ndenoise-iterations 3\ncompare-sides raw-denoised\n"
+                             "compare-denoise on\n");
+    const ViewerModel& model = scripted.session->model();
+    EXPECT_TRUE(model.denoise.enabled);
+    EXPECT_FLOAT_EQ(model.denoise.strength, 8.0f);
+    EXPECT_EQ(model.denoise.iterations, 3);
+    EXPECT_EQ(model.compare.sides, CompareSides::RawAndDenoised);
+    EXPECT_TRUE(model.compare.rightDenoised);
+    const DenoiseSettings& pushed = scripted.session->tracer(ViewerSession::Side::Left).denoiseSettings();
+    EXPECT_TRUE(pushed.enabled);
+    EXPECT_FLOAT_EQ(pushed.strength, 8.0f);
+    EXPECT_EQ(pushed.iterations, 3);
+}
+
 } // namespace
 } // namespace ptview

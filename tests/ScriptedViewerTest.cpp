@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -582,6 +583,49 @@ TEST_F(ScriptedViewer, F12SavesPngPfmAndExrIntoScreenshots) {
     EXPECT_GE(png, 1);
     EXPECT_EQ(pfm, png);
     EXPECT_EQ(exr, png);
+    fs::remove_all(directory);
+}
+
+// N as a user presses it (xdotool): the denoiser comes on without a restart (the same samples,
+// the same render time), the image saved is the denoised one, and the EXR keeps the raw mean.
+TEST_F(ScriptedViewer, NKeyTurnsDenoiseOnWithoutRestartingAndScreenshotsShowIt) {
+    fs::path directory = freshDirectory("denoise");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
+target-spp 4
+wait-spp 4
+screenshot raw.pfm
+status
+wait-seconds 4
+status
+screenshot denoised.pfm
+screenshot denoised.exr
+quit
+)";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_denoise.sh " + PTVIEW_BINARY);
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "denoise"), "off");
+    EXPECT_EQ(field(status[1], "denoise"), "on") << "N toggles the denoiser";
+    EXPECT_EQ(field(status[1], "spp"), "4");
+    EXPECT_EQ(field(status[1], "render-seconds"), field(status[0], "render-seconds")) << "no restart";
+    EXPECT_EQ(field(status[1], "denoised-spp"), "4") << "the last samples are denoised once they stop";
+    ImageRgbF raw = readPfm(directory / "raw.pfm"), denoised = readPfm(directory / "denoised.pfm");
+    ASSERT_EQ(raw.rgb.size(), denoised.rgb.size());
+    EXPECT_NE(raw.rgb, denoised.rgb);
+    ExrImage exr = readExr(directory / "denoised.exr");
+    EXPECT_EQ(exrRgb(exr, "denoised.exr").rgb, denoised.rgb);
+    bool rawLayer = std::any_of(exr.channels.begin(), exr.channels.end(), [](const ExrChannel& c) { return c.name == "raw.R"; });
+    EXPECT_TRUE(rawLayer);
+    EXPECT_TRUE(readProvenance(directory / "denoised.exr").recipe.denoise.enabled);
+    // Opened again (`ptview shot.exr`), the image brings the denoiser back on.
+    result = runViewer(directory, (directory / "denoised.exr").string(), "status\nquit\n");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 1u) << result.output;
+    EXPECT_EQ(field(status[0], "denoise"), "on");
     fs::remove_all(directory);
 }
 

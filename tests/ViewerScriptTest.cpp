@@ -99,13 +99,18 @@ save-pixel out/pixel.json
 path-count 8
 trace-paths
 save-paths out/paths.json
+denoise on
+denoise-strength 6
+denoise-iterations 4
+compare-sides raw-denoised
+compare-denoise on
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 58u);
+    ASSERT_EQ(script.commands.size(), 63u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -350,7 +355,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 55u);
+    EXPECT_EQ(referenceVerbs().size(), 60u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
@@ -364,4 +369,24 @@ TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     EXPECT_NE(reference.find("RADIUS: number in [0, 1000000000]"), std::string::npos) << reference;
     EXPECT_NE(reference.find("DISTANCE: number in (0, 1000000000]"), std::string::npos) << reference;
     EXPECT_NE(reference.find("camera-focus-at X Y"), std::string::npos);
+    EXPECT_NE(reference.find("denoise-strength F"), std::string::npos);
+    EXPECT_NE(reference.find("F: number in [0.25, 64]"), std::string::npos) << reference;
+}
+
+// The denoiser's commands take their ranges from SettingRanges.h, as --denoise-* and the panel do.
+TEST(ViewerScript, DenoiseCommandsParseWithinTheSettingRanges) {
+    ViewerScript script = parse("denoise on\ndenoise-strength 8\ndenoise-iterations 3\ncompare-sides raw-denoised\n"
+                                "compare-denoise off\n");
+    EXPECT_EQ(verbsOf(script), (std::vector<std::string>{"denoise", "denoise-strength", "denoise-iterations", "compare-sides",
+                                                         "compare-denoise"}));
+    EXPECT_TRUE(script.commands[0].isWord(0, "on"));
+    EXPECT_FLOAT_EQ(script.commands[1].number(0), 8.0f);
+    EXPECT_EQ(script.commands[2].integer(0), 3);
+    EXPECT_TRUE(script.commands[3].isWord(0, "raw-denoised"));
+    EXPECT_EQ(errorOf("denoise-strength 100"), "s.txt:1: denoise-strength: F must be in [0.25, 64], got 100");
+    EXPECT_EQ(errorOf("denoise-strength 0.1"), "s.txt:1: denoise-strength: F must be in [0.25, 64], got 0.1");
+    EXPECT_EQ(errorOf("denoise-iterations 9"), "s.txt:1: denoise-iterations: N must be in 1..8, got 9");
+    EXPECT_EQ(errorOf("denoise-iterations 0"), "s.txt:1: denoise-iterations: N must be in 1..8, got 0");
+    EXPECT_EQ(errorOf("denoise yes"), "s.txt:1: denoise: unknown value \"yes\" (valid: on, off)");
+    EXPECT_EQ(errorOf("compare-sides both"), "s.txt:1: compare-sides: unknown split \"both\" (valid: renders, raw-denoised)");
 }

@@ -1,6 +1,7 @@
 // The viewer's session headless: hot reload of the scene and the shaders keeps the last good
 // ones and the user's edits, the split view renders both sides, screenshots land where they say.
 #include <ptview/io/ExrIO.h>
+#include <ptview/gl/Readback.h>
 #include "GlTestContext.h"
 #include <ptview/provenance/Provenance.h>
 #include <ptview/io/ImageIO.h>
@@ -609,6 +610,176 @@ TEST_F(ViewerSessionTest, TracedPathsAreTheSamplesOfTheViewsPixel) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], rendered[c], 1e-4f * (1.0f + rendered[c]));
     EXPECT_THROW(session->tracePaths({24, 0}, 4), std::invalid_argument);
     EXPECT_TRUE(session->tracedPaths().has_value()) << "a refused trace keeps the last paths";
+}
+
+// ---- the denoiser (docs/viewer.md, "Denoising") ---------------------------------------------
+
+const ExrChannel* exrChannel(const ExrImage& exr, const std::string& name) {
+    for (const ExrChannel& channel : exr.channels)
+        if (channel.name == name) return &channel;
+    return nullptr;
+}
+
+// The denoised image is a view of the accumulation: turning it on or off, changing its settings
+// or splitting raw | denoised never starts the samples over.
+TEST_F(ViewerSessionTest, TogglingDenoiseOrItsSettingsDoesNotRestartTheAccumulation) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    renderSamples(*session, 3);
+    const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
+    const int restarts = tracer.restartCount();
+    int samples = tracer.sampleCount();
+    auto expectSameAccumulation = [&](const char* step) {
+        session->update();
+        EXPECT_EQ(tracer.restartCount(), restarts) << step;
+        EXPECT_GE(tracer.sampleCount(), samples) << step;
+        samples = tracer.sampleCount();
+    };
+    model.denoise.enabled = true;
+    expectSameAccumulation("denoise on");
+    EXPECT_TRUE(tracer.denoiseSettings().enabled);
+    session->renderFrame();
+    model.denoise.strength = 9.0f;
+    model.denoise.iterations = 2;
+    expectSameAccumulation("strength and iterations");
+    EXPECT_FLOAT_EQ(tracer.denoiseSettings().strength, 9.0f);
+    EXPECT_EQ(tracer.denoiseSettings().iterations, 2);
+    model.compare.enabled = true;
+    model.compare.sides = CompareSides::RawAndDenoised;
+    expectSameAccumulation("raw | denoised split");
+    EXPECT_TRUE(session->comparing());
+    model.compare.enabled = false;
+    model.denoise.enabled = false;
+    expectSameAccumulation("denoise off");
+    EXPECT_FALSE(tracer.denoiseSettings().enabled);
+    renderSamples(*session, samples + 1);
+    EXPECT_EQ(tracer.restartCount(), restarts);
+}
+
+// What the session displays with denoise on is the tracer's denoised image, tone mapped; once the
+// samples stop, the last of them are denoised at once, whatever the cadence.
+TEST_F(ViewerSessionTest, TheDisplayShowsTheDenoisedImageOfTheLastSample) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    model.targetSamples = 4;
+    renderSamples(*session, 4);
+    ASSERT_FALSE(session->accumulating());
+    model.denoise.enabled = true;
+    session->update();
+    EXPECT_TRUE(session->denoisePending());
+    session->renderFrame();
+    EXPECT_FALSE(session->denoisePending());
+    const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
+    ASSERT_TRUE(tracer.hasDenoised());
+    EXPECT_EQ(tracer.denoisedSampleCount(), 4);
+
+    const DisplaySettings shown = session->displaySettings(ViewerSession::Side::Left);
+    EXPECT_TRUE(shown.denoised);
+    DisplaySettings rawSettings = shown;
+    rawSettings.denoised = false;
+    const ImageRgba8 denoised = tracer.readToneMapped(shown);
+    EXPECT_NE(denoised.rgba, tracer.readToneMapped(rawSettings).rgba) << "4 spp of the Cornell box: the filter changes it";
+    // display() itself draws it (the image area is the render's size: one texel a pixel).
+    ASSERT_EQ(session->displayArea().size, session->renderSize());
+    const ImageRgba8 drawn = renderOffscreenRgba8(session->renderSize(), [&](glm::ivec2) { session->display(); });
+    EXPECT_EQ(drawn.rgba, denoised.rgba);
+
+    // The pixel inspector has the raw mean and the denoised value.
+    model.pinnedPixel = glm::ivec2(5, 7);
+    std::optional<PixelInspection> inspection = session->inspectPinnedPixel();
+    ASSERT_TRUE(inspection && inspection->denoised);
+    const ImageRgbF denoisedMean = tracer.readDenoised();
+    EXPECT_EQ(*inspection->denoised, denoisedMean.at(5, 7));
+    EXPECT_EQ(inspection->reading.mean, tracer.readMean().at(5, 7));
+    EXPECT_EQ(inspection->denoisedSamples, 4);
+    const std::string json = pixelInspectionJson(*inspection, model.scene);
+    EXPECT_NE(json.find("\"denoised\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"denoised_spp\": 4"), std::string::npos) << json;
+
+    model.denoise.enabled = false;
+    session->update();
+    EXPECT_FALSE(session->displaySettings(ViewerSession::Side::Left).denoised);
+    EXPECT_FALSE(session->inspectPinnedPixel()->denoised);
+}
+
+// F12 with denoise on: the PNG and PFM are the denoised image, the EXR has it as RGB and the raw
+// mean as "raw.", and every file says the denoiser made it, so that opening it turns it on.
+TEST_F(ViewerSessionTest, ScreenshotsWithDenoiseHoldTheDenoisedImageTheRawLayerAndTheSettings) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    renderSamples(*session, 3);
+    model.denoise = DenoiseSettings{true, 3, 6.0f};
+    session->update(); // no renderFrame: the screenshot denoises what there is itself
+    fs::path directory = freshDirectory("denoise");
+    std::vector<fs::path> files = session->saveScreenshots(directory);
+    ASSERT_EQ(files.size(), 3u);
+    const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
+    ASSERT_TRUE(tracer.denoisedUpToDate());
+    const ImageRgbF denoised = tracer.readDenoised(), raw = tracer.readMean();
+    EXPECT_EQ(readPfm(files[1]).rgb, denoised.rgb);
+    ExrImage exr = readExr(files[2]);
+    EXPECT_EQ(exrRgb(exr, files[2].string()).rgb, denoised.rgb);
+    const ExrChannel* rawRed = exrChannel(exr, "raw.R");
+    ASSERT_TRUE(rawRed && exrChannel(exr, "raw.G") && exrChannel(exr, "raw.B"));
+    for (size_t i = 0; i < rawRed->values.size(); i += 37) EXPECT_EQ(rawRed->values[i], raw.rgb[3 * i]) << i;
+    for (const fs::path& file : {files[0], files[2]}) {
+        const RenderRecipe recipe = readProvenance(file).recipe;
+        EXPECT_EQ(recipe.denoise, model.denoise) << file;
+    }
+
+    // Off: the raw image, and the files say so.
+    model.denoise.enabled = false;
+    session->update();
+    files = session->saveScreenshots(directory);
+    EXPECT_EQ(readPfm(files[1]).rgb, raw.rgb);
+    EXPECT_EQ(exrChannel(readExr(files[2]), "raw.R"), nullptr);
+    EXPECT_FALSE(readProvenance(files[0]).recipe.denoise.enabled);
+    fs::remove_all(directory);
+}
+
+// The split view compares raw and denoised of one render (no second tracer, both halves the same
+// samples), or two renders, each denoised where its own setting says.
+TEST_F(ViewerSessionTest, SplitViewShowsRawAndDenoisedOfOneRenderOrEachRendersOwnChoice) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    model.compare.enabled = true;
+    model.compare.sides = CompareSides::RawAndDenoised;
+    renderSamples(*session, 2);
+    ASSERT_TRUE(session->comparing());
+    EXPECT_FALSE(session->comparesTwoRenders());
+    EXPECT_EQ(&session->tracer(ViewerSession::Side::Right), &session->tracer(ViewerSession::Side::Left));
+    EXPECT_TRUE(session->accumulating()) << "the one render's, with no second tracer to ask";
+    session->model().pinnedPixel = glm::ivec2(20, 3); // right of the divider: the denoised side
+    session->renderFrame();
+    std::optional<PixelInspection> right = session->inspectPinnedPixel();
+    ASSERT_TRUE(right);
+    EXPECT_TRUE(right->rightSide);
+    EXPECT_TRUE(right->denoised);
+    EXPECT_FALSE(session->displaySettings(ViewerSession::Side::Left).denoised);
+    EXPECT_TRUE(session->displaySettings(ViewerSession::Side::Right).denoised);
+    fs::path directory = freshDirectory("split_denoise");
+    std::vector<fs::path> files = session->saveScreenshots(directory);
+    ASSERT_EQ(files.size(), 6u);
+    const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
+    EXPECT_EQ(readPfm(files[1]).rgb, tracer.readMean().rgb);     // left: raw
+    EXPECT_EQ(readPfm(files[4]).rgb, tracer.readDenoised().rgb); // right: denoised
+    EXPECT_FALSE(readProvenance(files[0]).recipe.denoise.enabled);
+    EXPECT_TRUE(readProvenance(files[3]).recipe.denoise.enabled);
+
+    model.compare.sides = CompareSides::TwoRenders;
+    model.compare.rightDenoised = true;
+    model.compare.right.integrator = Integrator::Mis;
+    renderSamples(*session, 2);
+    ASSERT_TRUE(session->comparesTwoRenders());
+    EXPECT_NE(&session->tracer(ViewerSession::Side::Right), &session->tracer(ViewerSession::Side::Left));
+    EXPECT_FALSE(session->displaySettings(ViewerSession::Side::Left).denoised);
+    EXPECT_TRUE(session->displaySettings(ViewerSession::Side::Right).denoised);
+    EXPECT_FALSE(session->tracer(ViewerSession::Side::Left).denoiseSettings().enabled);
+    EXPECT_TRUE(session->tracer(ViewerSession::Side::Right).denoiseSettings().enabled);
+    model.denoise.enabled = true;
+    session->update();
+    EXPECT_TRUE(session->displaySettings(ViewerSession::Side::Left).denoised);
+    fs::remove_all(directory);
 }
 
 } // namespace

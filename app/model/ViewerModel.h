@@ -4,6 +4,7 @@
 // ViewerSession pushes the changes to the renderer. Nothing here knows about ImGui or OpenGL.
 
 #include <ptview/settings/Backend.h>
+#include <ptview/settings/DenoiseSettings.h>
 #include <ptview/scene/EnvironmentMap.h>
 #include <ptview/io/Image.h>
 #include <ptview/settings/RenderSettings.h>
@@ -17,10 +18,19 @@
 
 namespace ptview {
 
-// The split view: the left half renders with ViewerModel::settings, the right with `right`.
+// What the split view's two halves show.
+enum class CompareSides {
+    TwoRenders,     // two renders: the left half with ViewerModel::settings, the right with `right`
+    RawAndDenoised, // one render, the main view's: its raw mean left of the divider, denoised right of it
+};
+
 struct CompareSettings {
     bool enabled = false;
+    CompareSides sides = CompareSides::TwoRenders;
     RenderSettings right;
+    // Two renders: whether the right half shows its render denoised (with ViewerModel::denoise's
+    // iterations and strength); the left half follows ViewerModel::denoise.enabled.
+    bool rightDenoised = false;
     float dividerFraction = 0.5f; // where the divider is, as a fraction of the image width
     // Equal time gives both sides the same GPU time per frame (the fair comparison: a cheaper
     // integrator gets more samples); otherwise both get the same number of samples.
@@ -37,7 +47,11 @@ struct ViewerModel {
     std::shared_ptr<const EnvironmentMap> environmentMap;
 
     RenderSettings settings;
-    DisplaySettings display;
+    DisplaySettings display; // its `denoised` is ViewerSession's to set per side, from `denoise` and `compare`
+    // The denoiser (docs/denoising.md): while enabled the main view shows a filtered copy of its
+    // accumulation instead of the raw mean. Biased, and it restarts nothing: the samples go on
+    // accumulating raw underneath (ViewerSession::renderFrame says how often it filters them).
+    DenoiseSettings denoise;
     Backend backend = Backend::Fragment; // how both views run (compute needs OpenGL 4.3)
     std::string backendChoice;           // how `auto` chose it at start ("" when the user named one)
     float resolutionScale = 1.0f; // render size / image area size

@@ -126,6 +126,8 @@ std::vector<std::string> materialTypeChoices() {
     return names;
 }
 std::vector<std::string> onOffChoices() { return {"on", "off"}; }
+// CompareSides, as `compare-sides` writes them.
+std::vector<std::string> compareSidesChoices() { return {"renders", "raw-denoised"}; }
 std::vector<std::string> panelChoices() {
     return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"};
 }
@@ -212,6 +214,13 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"pause", {}, nullptr, "stop accumulating samples"},
         {"resume", {}, nullptr, "accumulate samples again"},
         {"target-spp", {settingArg("N", settingRanges::kTargetSamples)}, nullptr, "stop accumulating at N samples per pixel (0: never)"},
+        // The denoiser (docs/denoising.md): none of these restarts the accumulation
+        {"denoise", {choiceArg("on|off", "value", onOffChoices)}, nullptr,
+         "show the denoised image (biased; the samples go on accumulating raw)"},
+        {"denoise-strength", {settingArg("F", settingRanges::kDenoiseStrength)}, nullptr,
+         "standard deviations of noise the denoiser smooths over (larger: smoother, more biased)"},
+        {"denoise-iterations", {settingArg("N", settingRanges::kDenoiseIterations)}, nullptr,
+         "a-trous iterations of the denoiser (each doubles its reach)"},
         // Scene edits
         {"set-material", {}, &materialFields(), "edit a field of the material named NAME (split at the last dot)"},
         {"set-light", {}, &lightFields(), "edit a field of the light named NAME (split at the last dot)"},
@@ -243,6 +252,10 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"copy-file", {tokenArg("SRC"), tokenArg("DST")}, nullptr, "copy a file (e.g. to change a watched scene)"},
         // Split-view comparison
         {"compare", {choiceArg("on|off", "value", onOffChoices)}, nullptr, "show the split view"},
+        {"compare-sides", {choiceArg("renders|raw-denoised", "split", compareSidesChoices)}, nullptr,
+         "what the halves show: two renders, or the main render raw left and denoised right"},
+        {"compare-denoise", {choiceArg("on|off", "value", onOffChoices)}, nullptr,
+         "two renders: show the right side's render denoised"},
         {"compare-integrator", {choiceArg("NAME", "integrator", integratorChoices)}, nullptr,
          "the integrator of the split view's right side"},
         {"compare-sampler", {choiceArg("NAME", "sampler", samplerChoices)}, nullptr,

@@ -32,6 +32,10 @@ std::string pixelInspectionJson(const PixelInspection& inspection, const Scene& 
     out["standard_error"] = vectorJson(reading.standardError());
     out["status"] = finiteStatus(reading.mean);
     out["displayed_srgb8"] = {reading.displayed.x, reading.displayed.y, reading.displayed.z};
+    if (inspection.denoised) { // only where the side shows the denoised image; "mean" stays the raw one
+        out["denoised"] = vectorJson(*inspection.denoised);
+        out["denoised_spp"] = inspection.denoisedSamples;
+    }
     if (!inspection.hit) {
         out["hit"] = nullptr; // the ray escapes to the environment
     } else {

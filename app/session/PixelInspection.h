@@ -18,7 +18,11 @@ struct PixelInspection {
     glm::ivec2 imageSize{0};
     bool rightSide = false; // split view: the pixel lies right of the divider (the right view's numbers)
     bool comparing = false;
-    PixelReading reading;
+    PixelReading reading; // of the raw accumulation; `displayed` is what the side shows, denoised or not
+    // The denoised image's value, where the side shows it (ViewerSession::showsDenoised), and the
+    // samples that image was filtered from (it may lag the accumulation: DenoiseCadence.h).
+    std::optional<glm::vec3> denoised;
+    int denoisedSamples = 0;
     std::optional<SurfaceHit> hit; // nullopt: the ray escapes to the environment
 };
 

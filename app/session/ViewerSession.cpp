@@ -224,7 +224,12 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
     inspection.imageSize = size;
     inspection.comparing = comparing();
     inspection.rightSide = side == Side::Right;
-    inspection.reading = tracer.readPixel(pixel, model_.display);
+    const DisplaySettings display = displaySettings(side);
+    inspection.reading = tracer.readPixel(pixel, display); // its displayed colour is the denoised one where shown
+    if (display.denoised && tracer.hasDenoised()) {
+        inspection.denoised = tracer.readDenoisedPixel(pixel);
+        inspection.denoisedSamples = tracer.denoisedSampleCount();
+    }
     if (pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount != tracer.restartCount()) {
         // The pinhole ray through the pixel's centre; the film counts rows from the bottom.
         glm::vec2 filmPos(static_cast<float>(pixel.x) + 0.5f, static_cast<float>(size.y - pixel.y) - 0.5f);
@@ -289,30 +294,47 @@ bool ViewerSession::saveReplacesAnotherFile(const std::filesystem::path& path) c
     return own.empty() || !std::filesystem::equivalent(path, own, error);
 }
 
-void ViewerSession::writeImage(Side side, const std::filesystem::path& path) const {
-    const PathTracer& tracer = *view(side).tracer;
+void ViewerSession::writeImage(Side side, const std::filesystem::path& path) {
+    PathTracer& tracer = *view(side).tracer;
     if (tracer.sampleCount() == 0) throw std::runtime_error("nothing rendered yet: wait for a sample");
+    syncDenoise(); // the model as it is now, even before this frame's update
+    // A saved image is of every sample there is, whatever the cadence left on screen.
+    if (showsDenoised(side)) tracer.updateDenoised();
+    const bool denoised = showsDenoised(side) && tracer.hasDenoised();
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     if (extension == ".pfm") {
-        writePfm(path, tracer.readMean());
+        writePfm(path, denoised ? tracer.readDenoised() : tracer.readMean());
     } else if (extension == ".exr") {
+        // As `ptview render --denoise` writes it (RenderCommand.cpp, exrWithAovs): RGB is the
+        // image shown, the raw mean follows as the layer "raw.".
         ExrImage exr;
         const ImageRgbF mean = tracer.readMean();
         exr.width = mean.width;
         exr.height = mean.height;
-        exr.addRgb(mean);
+        if (denoised) {
+            exr.addRgb(tracer.readDenoised());
+            exr.addRgb(mean, "raw.");
+        } else {
+            exr.addRgb(mean);
+        }
         exr.metadata = provenance(side);
         writeExr(path, exr, ExrPixelType::Float);
     } else {
-        writePng(path, tracer.readToneMapped(model_.display), provenance(side));
+        writePng(path, tracer.readToneMapped(displaySettings(side)), provenance(side));
     }
 }
 
 ImageMetadata ViewerSession::provenance(Side side) const {
     const PathTracer& tracer = *view(side).tracer;
-    const RenderRecipe recipe{tracer.settings(), model_.display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                              programOptions_.allFeatures, DenoiseSettings{}};
+    // The denoiser as it made the image: on only where the side shows a denoised image, so that
+    // opening the image again (`ptview shot.png`, --from) turns it on exactly then.
+    DenoiseSettings denoise = model_.denoise;
+    denoise.enabled = showsDenoised(side) && tracer.hasDenoised();
+    DisplaySettings display = displaySettings(side);
+    display.denoised = denoise.enabled;
+    const RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
+                              programOptions_.allFeatures, denoise};
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
 
@@ -440,7 +462,7 @@ void ViewerSession::followImageArea(unsigned changes) {
     bool restarting = (changes & (ViewerModel::kSceneChanged | ViewerModel::kMaterialsChanged |
                                   ViewerModel::kCameraChanged | ViewerModel::kRestart)) != 0 ||
                       model_.resolutionScale != followedScale_ || settingsChange(left_, model_.settings) ||
-                      (right_ && settingsChange(*right_, model_.compare.right)) || (model_.compare.enabled && !right_);
+                      (right_ && settingsChange(*right_, model_.compare.right)) || (twoRendersWanted() && !right_);
     bool nothingRendered = left_.tracer->sampleCount() == 0 && (!right_ || right_->tracer->sampleCount() == 0);
     bool settled = secondsSince(wantedSince_) >= kResizeSettleSeconds;
     if (renderSize_.x == 0 || restarting || (nothingRendered && settled)) {
@@ -464,7 +486,7 @@ void ViewerSession::update() {
     unsigned changes = model_.pendingChanges | restartOnCompare();
     model_.pendingChanges = 0;
     followImageArea(changes);
-    if (model_.compare.enabled && !right_) {
+    if (twoRendersWanted() && !right_) {
         // A first comparison shows something worth comparing: MIS against what the left side has.
         CompareSettings& compare = model_.compare;
         if (compare.right == model_.settings)
@@ -481,6 +503,33 @@ void ViewerSession::update() {
     } catch (const EnvironmentMapError& e) { // a map larger than this GPU's textures
         setEnvironmentMap({}); // the constant colour instead, and say why
         model_.sceneError = e.what();
+    }
+    syncDenoise();
+}
+
+bool ViewerSession::showsDenoised(Side side) const {
+    if (model_.settings.debugView != DebugView::Radiance) return false; // a feature, not light: no noise to take out
+    if (splitsRawAndDenoised()) return side == Side::Right;
+    if (side == Side::Right && comparesTwoRenders()) return model_.compare.rightDenoised;
+    return model_.denoise.enabled;
+}
+
+DisplaySettings ViewerSession::displaySettings(Side side) const {
+    DisplaySettings display = model_.display;
+    display.denoised = showsDenoised(side);
+    return display;
+}
+
+// Each tracer denoises when a side shown from it wants the denoised image; the settings change
+// nothing of the accumulation, so this never restarts.
+void ViewerSession::syncDenoise() {
+    DenoiseSettings left = model_.denoise;
+    left.enabled = showsDenoised(Side::Left) || (splitsRawAndDenoised() && showsDenoised(Side::Right));
+    left_.tracer->setDenoise(left);
+    if (right_) {
+        DenoiseSettings right = model_.denoise;
+        right.enabled = comparesTwoRenders() && showsDenoised(Side::Right);
+        right_->tracer->setDenoise(right);
     }
 }
 
@@ -505,8 +554,8 @@ void ViewerSession::setPatternTarget() {
 // Equal time must mean equal time from the first frame: turning the split view on starts both
 // sides afresh, not the left one with a head start.
 unsigned ViewerSession::restartOnCompare() {
-    bool turnedOn = model_.compare.enabled && !seenCompare_;
-    seenCompare_ = model_.compare.enabled;
+    bool turnedOn = twoRendersWanted() && !seenCompare_; // a raw | denoised split is of one render: nothing to restart
+    seenCompare_ = twoRendersWanted();
     return turnedOn ? ViewerModel::kRestart : 0u;
 }
 
@@ -520,6 +569,7 @@ void ViewerSession::trackRestart(View& view) {
     view.earlierMeans.clear();
     view.trueError.reset();
     view.trueErrorHistory.clear();
+    view.denoisedTrueError.reset();
 }
 
 bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
@@ -530,13 +580,21 @@ bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
 
 bool ViewerSession::accumulating() const {
     bool left = wantsSamples(left_, 0);
-    return comparing() ? left || wantsSamples(*right_, 0) : left;
+    return comparesTwoRenders() ? left || wantsSamples(*right_, 0) : left; // a raw | denoised split is one render
 }
 
 double ViewerSession::renderFrame(double budgetSeconds) {
-    View* views[2] = {&left_, comparing() ? right_.get() : nullptr};
+    View* views[2] = {&left_, comparesTwoRenders() ? right_.get() : nullptr};
     int passes[2] = {0, 0};
     Clock::time_point frameStart = Clock::now();
+    // The denoises due this frame run after the tracing, in time the tracing leaves them.
+    bool denoiseDue[2] = {false, false};
+    for (int i = 0; i < 2; ++i) {
+        if (!views[i] || !denoiseStale(*views[i])) continue;
+        const View& v = *views[i];
+        denoiseDue[i] = v.denoiseCadence.due(secondsSince(v.lastDenoise), wantsSamples(v, 0));
+        if (denoiseDue[i]) budgetSeconds -= v.denoiseCadence.expectedSeconds();
+    }
     bool worked = false;
     for (;;) {
         // The view that is behind goes next: in GPU time, or in samples (with the pass in
@@ -574,10 +632,38 @@ double ViewerSession::renderFrame(double budgetSeconds) {
         worked = true;
         if (passDone && !preview) ++passes[next];
     }
+    for (int i = 0; i < 2; ++i)
+        if (denoiseDue[i]) denoise(*views[i]);
     double seconds = secondsSince(frameStart);
     for (View* v : views)
         if (v) updateErrorEstimate(*v);
     return seconds;
+}
+
+bool ViewerSession::denoiseStale(const View& view) const {
+    const PathTracer& tracer = *view.tracer;
+    return tracer.denoiseSettings().enabled && tracer.sampleCount() > 0 && !tracer.denoisedUpToDate();
+}
+
+bool ViewerSession::denoisePending() const {
+    return denoiseStale(left_) || (comparesTwoRenders() && denoiseStale(*right_));
+}
+
+void ViewerSession::denoise(View& view) {
+    Clock::time_point start = Clock::now();
+    try {
+        view.tracer->updateDenoised();
+    } catch (const std::exception& e) { // its shaders edited on disk, a target this GPU refuses: the raw image instead
+        model_.shaderError = std::string("denoiser: ") + e.what();
+        model_.denoise.enabled = false;
+        model_.compare.rightDenoised = false;
+        if (splitsRawAndDenoised()) model_.compare.enabled = false;
+        syncDenoise();
+        return;
+    }
+    glFinish(); // the time of the GPU work, not of its submission
+    view.denoiseCadence.record(secondsSince(start));
+    view.lastDenoise = start;
 }
 
 void ViewerSession::updateErrorEstimate(View& view) {
@@ -593,8 +679,17 @@ void ViewerSession::updateErrorEstimate(View& view) {
         view.trueError = compareToReference(statistics.mean, *reference);
         if (view.trueErrorHistory.size() == kErrorHistoryLength) view.trueErrorHistory.erase(view.trueErrorHistory.begin());
         view.trueErrorHistory.emplace_back(static_cast<float>(view.renderSeconds), static_cast<float>(view.trueError->relativeMse));
+        // The denoised image is judged against the same reference, so the two lines tell what
+        // the filter's bias buys in noise.
+        const PathTracer& tracer = *view.tracer;
+        if (tracer.denoiseSettings().enabled && tracer.hasDenoised()) {
+            view.denoisedTrueError = compareToReference(tracer.readDenoised(), *reference);
+        } else {
+            view.denoisedTrueError.reset();
+        }
     } else {
         view.trueError.reset();
+        view.denoisedTrueError.reset();
     }
 }
 
@@ -627,14 +722,14 @@ int ViewerSession::dividerX() const {
 void ViewerSession::display() const {
     PixelRect area = displayArea();
     if (!comparing()) {
-        left_.tracer->display(area, model_.display);
+        left_.tracer->display(area, displaySettings(Side::Left));
         return;
     }
     int divider = dividerX();
     PixelRect leftClip{area.origin, {divider - area.origin.x, area.size.y}};
     PixelRect rightClip{{divider, area.origin.y}, {area.origin.x + area.size.x - divider, area.size.y}};
-    if (leftClip.size.x > 0) left_.tracer->display(area, model_.display, leftClip);
-    if (rightClip.size.x > 0) right_->tracer->display(area, model_.display, rightClip);
+    if (leftClip.size.x > 0) left_.tracer->display(area, displaySettings(Side::Left), leftClip);
+    if (rightClip.size.x > 0) view(Side::Right).tracer->display(area, displaySettings(Side::Right), rightClip);
     // The divider: two pixels of white, drawn by clearing a scissored column.
     glEnable(GL_SCISSOR_TEST);
     glScissor(divider - 1, area.origin.y, 2, area.size.y);
@@ -655,6 +750,11 @@ ViewerSession::ViewStats ViewerSession::stats(Side side) const {
     stats.errorHistory = v.errorHistory;
     stats.trueError = v.trueError;
     stats.trueErrorHistory = v.trueErrorHistory;
+    stats.denoised = showsDenoised(side);
+    if (stats.denoised) {
+        stats.denoisedSamples = v.tracer->denoisedSampleCount();
+        stats.denoisedTrueError = v.denoisedTrueError;
+    }
     return stats;
 }
 

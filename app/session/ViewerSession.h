@@ -12,6 +12,7 @@
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/session/PixelInspection.h>
 #include <ptview/model/SceneInput.h>
+#include <ptview/session/DenoiseCadence.h>
 #include <ptview/session/TileCost.h>
 #include <ptview/model/ViewerModel.h>
 
@@ -37,6 +38,8 @@ public:
         int samples = 0;
         double renderSeconds = 0.0; // GPU time spent on the current accumulation
         double samplesPerSecond = 0.0;
+        // The error estimate and the true error measure the raw accumulation (readStatistics),
+        // whatever the view shows.
         ErrorEstimate error;
         // (render seconds, estimated relative MSE) once a second or so while the estimate is
         // reliable, for the error-vs-time plot.
@@ -44,6 +47,11 @@ public:
         // Against the reference image, when one of the render's size is loaded.
         std::optional<ErrorMetrics> trueError;
         std::vector<std::pair<float, float>> trueErrorHistory; // (seconds, relative MSE)
+        // Whether the view shows the denoised image (showsDenoised), of how many samples, and,
+        // with a reference, the true error of that image too (measured with the raw one's).
+        bool denoised = false;
+        int denoisedSamples = 0;
+        std::optional<ErrorMetrics> denoisedTrueError;
     };
 
     // Compiles the programs from shaderDir (throws ShaderError). Without a backend in `program`,
@@ -75,9 +83,10 @@ public:
     void togglePinnedPixel(glm::ivec2 pixel);
     // Split view: the view whose numbers a pixel shows, by the side of the divider its centre is on.
     Side sideOf(glm::ivec2 pixel) const;
-    // The pinned pixel's numbers now: one pixel read back from that side's accumulation, and the
-    // first hit, probed again only when the pixel, the side or the tracer's accumulation (camera,
-    // scene) changed. nullopt when none is pinned or it is outside the render.
+    // The pinned pixel's numbers now: one pixel read back from that side's accumulation (and from
+    // its denoised image, where the side shows one), and the first hit, probed again only when
+    // the pixel, the side or the tracer's accumulation (camera, scene) changed. nullopt when none
+    // is pinned or it is outside the render.
     std::optional<PixelInspection> inspectPinnedPixel();
     // Whether the scene in memory differs from its file in anything the file holds, the camera
     // included (a view the user set up is work): what quitting or opening another scene would
@@ -105,8 +114,10 @@ public:
     std::vector<std::filesystem::path> saveScreenshots(const std::filesystem::path& directory);
     // One image of a view: .png tone mapped as displayed, or .pfm or .exr (float) linear; the PNG and
     // EXR carry the view's provenance (Provenance.h: the scene with its edits and the settings).
-    // Throws as above.
-    void writeImage(Side side, const std::filesystem::path& path) const;
+    // Where the view shows the denoised image, it is first denoised up to the last sample, and
+    // every format holds it: the EXR has it as RGB and the raw mean as the layer "raw." (as
+    // `ptview render --denoise` writes). Throws as above.
+    void writeImage(Side side, const std::filesystem::path& path);
     // What a PNG or EXR of a view carries to be rendered again (Provenance.h); the window's
     // screenshots carry the left view's.
     ImageMetadata provenance(Side side) const;
@@ -116,11 +127,30 @@ public:
     void setImageArea(PixelRect area);  // where the image goes in the window's framebuffer
     void update();                      // pushes model changes to the renderer(s)
     // Path traces for up to budgetSeconds (at least one tile of one row, so a frame always
-    // progresses), measured with glFinish after each tile; returns the seconds spent.
+    // progresses), measured with glFinish after each tile, then denoises the views that show the
+    // denoised image when their DenoiseCadence says it is due (its expected time comes out of the
+    // tracing budget); returns the seconds spent, denoising included.
     double renderFrame(double budgetSeconds = kDefaultTracingSeconds);
+    // Whether a view shows the denoised image and it is not of the samples and settings as they
+    // are now: worth a renderFrame even when nothing accumulates.
+    bool denoisePending() const;
     void display() const;               // draws the view(s) into the image area
 
-    bool comparing() const { return model_.compare.enabled && right_ != nullptr; }
+    // The split view is on: two renders, or the main view's raw and denoised images of one.
+    bool comparing() const { return splitsRawAndDenoised() || comparesTwoRenders(); }
+    bool splitsRawAndDenoised() const {
+        return model_.compare.enabled && model_.compare.sides == CompareSides::RawAndDenoised;
+    }
+    bool comparesTwoRenders() const {
+        return model_.compare.enabled && model_.compare.sides == CompareSides::TwoRenders && right_ != nullptr;
+    }
+    // Whether a side shows the denoised image (where its tracer has one): the main view while
+    // ViewerModel::denoise is on, the right half of a raw | denoised split, the right render of
+    // two while CompareSettings::rightDenoised is on; never a debug view, which has no noise.
+    bool showsDenoised(Side side) const;
+    // How a side is displayed: ViewerModel::display with `denoised` as showsDenoised says.
+    DisplaySettings displaySettings(Side side) const;
+    // The tracer of a side: in a raw | denoised split both sides are the main view's.
     const PathTracer& tracer(Side side) const { return *view(side).tracer; }
     ViewStats stats(Side side) const;
     const RenderSettings& settings(Side side) const;
@@ -168,10 +198,19 @@ private:
         // Means read back earlier in this accumulation, at sample counts at least doubling, for
         // the error estimate (which compares the mean with one at half the samples or fewer).
         std::vector<std::pair<int, ImageRgbF>> earlierMeans;
+        DenoiseCadence denoiseCadence;
+        std::chrono::steady_clock::time_point lastDenoise{}; // when the last denoise began
+        std::optional<ErrorMetrics> denoisedTrueError;       // of the denoised image, with a reference
     };
 
-    View& view(Side side) { return side == Side::Left ? left_ : *right_; }
-    const View& view(Side side) const { return side == Side::Left ? left_ : *right_; }
+    View& view(Side side) { return side == Side::Left || !comparesTwoRenders() ? left_ : *right_; }
+    const View& view(Side side) const { return side == Side::Left || !comparesTwoRenders() ? left_ : *right_; }
+    bool twoRendersWanted() const {
+        return model_.compare.enabled && model_.compare.sides == CompareSides::TwoRenders;
+    }
+    void syncDenoise();
+    bool denoiseStale(const View& view) const;
+    void denoise(View& view);
     RenderSettings effectiveSettings(const RenderSettings& settings) const;
     bool wantsSamples(const View& view, int passesThisFrame) const;
     void syncView(View& view, const RenderSettings& settings, unsigned changes);

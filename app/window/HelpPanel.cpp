@@ -24,6 +24,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Space", "pause / resume"},
     {"R", "restart accumulation"},
     {"C", "toggle the compare split view; drag the white divider to move it"},
+    {"N", "denoise on / off (biased; Render panel: strength, iterations, raw | denoised split)"},
     {"F12", "screenshot (PNG + PFM + EXR into screenshots/)"},
     {"Tab", "hide / show the sidebar"},
     {"F1", "this help"},

@@ -26,9 +26,10 @@ void vectorRow(const char* label, const glm::vec3& v, const char* format = "%.4g
 // The tone-mapped neighbourhood, nearest-neighbour zoomed, the pinned pixel outlined.
 void drawMagnifier(const ViewerSession& session, const PixelInspection& inspection, GlTexture& texture) {
     const int side = 2 * kMagnifierRadius + 1;
-    const PathTracer& tracer = session.tracer(inspection.rightSide ? ViewerSession::Side::Right : ViewerSession::Side::Left);
+    const ViewerSession::Side viewSide = inspection.rightSide ? ViewerSession::Side::Right : ViewerSession::Side::Left;
+    const PathTracer& tracer = session.tracer(viewSide);
     ImageRgba8 region = tracer.readDisplayed(inspection.pixel - glm::ivec2(kMagnifierRadius), glm::ivec2(side),
-                                             session.model().display);
+                                             session.displaySettings(viewSide));
     uploadImageTexture(texture, region, TextureFilter::Nearest); // the zoom shows pixels, not a blur
     float extent = kMagnifierCellSize * static_cast<float>(side) * ImGui::GetIO().FontGlobalScale;
     ImVec2 corner = ImGui::GetCursorScreenPos();
@@ -76,16 +77,22 @@ void drawPixelPanel(ViewerSession& session, PanelState& state) {
     if (inspection->comparing) ImGui::Text("split view: the %s side's render", inspection->rightSide ? "right" : "left");
     ImGui::Text("%d spp", reading.sampleCount);
     vectorRow("radiance", reading.mean);
-    itemTooltip("the linear RGB mean of the samples accumulated so far");
+    itemTooltip("raw: the linear RGB mean of the samples accumulated so far");
     vectorRow("std. error", reading.standardError());
     itemTooltip("the standard error of that mean per channel: sqrt(sample variance / spp), from the sums of squares");
+    if (inspection->denoised) {
+        vectorRow("denoised", *inspection->denoised);
+        itemTooltip(("the denoised image's linear RGB here, filtered from " + std::to_string(inspection->denoisedSamples) +
+                     " spp (biased: it borrows from the neighbours; the raw mean above is what converges)").c_str());
+    }
     ImGui::TextUnformatted("displayed");
     ImGui::SameLine(ImGui::GetFontSize() * 8.0f);
     ImGui::Text("%d  %d  %d", reading.displayed.x, reading.displayed.y, reading.displayed.z);
     ImGui::SameLine();
     ImGui::ColorButton("##shown", ImVec4(reading.displayed.x / 255.0f, reading.displayed.y / 255.0f, reading.displayed.z / 255.0f, 1.0f),
                        ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFontSize(), ImGui::GetFontSize()));
-    itemTooltip("8-bit sRGB as the display pass shows it: exposure, tone mapper and gamma applied");
+    itemTooltip("8-bit sRGB as the display pass shows it: exposure, tone mapper and gamma applied\n"
+                "(of the denoised value where the image shown is denoised)");
     const char* status = finiteStatus(reading.mean);
     if (std::string(status) == "finite") ImGui::TextUnformatted("mean is finite");
     else ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "mean is %s", status);

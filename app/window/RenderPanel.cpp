@@ -47,6 +47,38 @@ void clampControls(RenderSettings& settings) {
         settings.radianceClamp = value;
 }
 
+// The denoiser's controls (docs/denoising.md): none of them restarts the accumulation.
+void denoiseControls(ViewerModel& model) {
+    ImGui::Checkbox("Denoise (N)", &model.denoise.enabled);
+    itemTooltip("show a denoised copy of the render: an edge-avoiding a-trous filter guided by albedo, normal,\n"
+                "depth and each pixel's variance. BIASED: it borrows light from neighbours, so fine detail and\n"
+                "soft shadows blur and the image does not converge to the true one; the samples still accumulate raw\n"
+                "underneath (Stats' errors are of the raw image). Filtered every frame or every few (docs/viewer.md)");
+    if (model.settings.debugView != DebugView::Radiance) noteText("the debug view is shown raw: it has no noise to take out");
+    if (!model.denoise.enabled && !(model.compare.enabled && model.compare.sides == CompareSides::RawAndDenoised) &&
+        !(model.compare.enabled && model.compare.rightDenoised))
+        return;
+    const NumberRange& strength = settingRanges::kDenoiseStrength;
+    ImGui::SliderFloat("strength", &model.denoise.strength, static_cast<float>(strength.panelLo),
+                       static_cast<float>(strength.panelHi), "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    itemTooltip(strength.description);
+    settingSlider("iterations", model.denoise.iterations, settingRanges::kDenoiseIterations);
+    itemTooltip(settingRanges::kDenoiseIterations.description);
+    noteText("biased: smoother than the truth, not closer to it");
+}
+
+// What the split view's halves show: two renders, or the main one raw and denoised.
+void compareSidesControls(ViewerModel& model) {
+    int sides = static_cast<int>(model.compare.sides);
+    ImGui::RadioButton("two renders", &sides, static_cast<int>(CompareSides::TwoRenders));
+    itemTooltip("left: the settings above; right: the settings below, each its own render");
+    ImGui::SameLine();
+    ImGui::RadioButton("raw | denoised", &sides, static_cast<int>(CompareSides::RawAndDenoised));
+    itemTooltip("one render, the left settings': its raw mean left of the divider, denoised right of it\n"
+                "(with the strength and iterations above)");
+    model.compare.sides = static_cast<CompareSides>(sides);
+}
+
 } // namespace
 
 void saveScreenshots(ViewerSession& session, PanelState& state) {
@@ -118,13 +150,19 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper);
 
     ImGui::Separator();
+    denoiseControls(model);
+
+    ImGui::Separator();
     ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
     itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
-    if (model.compare.enabled) {
+    if (model.compare.enabled) compareSidesControls(model);
+    if (model.compare.enabled && model.compare.sides == CompareSides::TwoRenders) {
         ImGui::TextDisabled("right side (above: the left side):");
         enumCombo("integrator##right", integratorNames(), model.compare.right.integrator);
         enumCombo("sampler##right", samplerModeNames(), model.compare.right.sampler);
         settingSlider("MAX_DEPTH##right", model.compare.right.maxDepth, settingRanges::kMaxDepth);
+        ImGui::Checkbox("denoise##right", &model.compare.rightDenoised);
+        itemTooltip("show the right render denoised (strength and iterations above); the left follows Denoise above");
         ImGui::Checkbox("equal time", &model.compare.equalTime);
         itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
                 "off: both get the same number of samples per pixel");

@@ -103,6 +103,11 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
         std::snprintf(text, sizeof text, " true-rel-mse=%.6g", left.trueError->relativeMse);
         line += text;
     }
+    // The denoiser: on or off, and the samples of the denoised image shown (it may lag spp).
+    const DenoiseSettings& denoise = model.denoise;
+    line += std::string(" denoise=") + (denoise.enabled ? "on" : "off") + " denoise-strength=" +
+            numberText(denoise.strength) + " denoise-iterations=" + std::to_string(denoise.iterations) +
+            " denoised-spp=" + std::to_string(left.denoised ? left.denoisedSamples : 0);
     std::vector<std::string> edits = session.unsavedEdits();
     std::optional<UnsavedEditsPrompt::Action> asking = panels.unsavedEdits.pending();
     line += " edits=" + (edits.empty() ? std::string("none") : joined(edits, ",")) +
@@ -469,6 +474,10 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"pause", [](Step& s) { s.model.paused = true; }},
         {"resume", [](Step& s) { s.model.paused = false; }},
         {"target-spp", [](Step& s) { s.model.targetSamples = s.command.integer(0); }},
+        // ---- the denoiser
+        {"denoise", [](Step& s) { s.model.denoise.enabled = s.command.isWord(0, "on"); }},
+        {"denoise-strength", [](Step& s) { s.model.denoise.strength = s.command.number(0); }},
+        {"denoise-iterations", [](Step& s) { s.model.denoise.iterations = s.command.integer(0); }},
         // ---- scene edits
         {"set-material", setMaterial},
         {"set-light", setLight},
@@ -499,6 +508,11 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
          }},
         // ---- compare mode
         {"compare", [](Step& s) { s.model.compare.enabled = s.command.isWord(0, "on"); }},
+        {"compare-sides", [](Step& s) {
+             s.model.compare.sides =
+                 s.command.isWord(0, "raw-denoised") ? CompareSides::RawAndDenoised : CompareSides::TwoRenders;
+         }},
+        {"compare-denoise", [](Step& s) { s.model.compare.rightDenoised = s.command.isWord(0, "on"); }},
         {"compare-integrator", [](Step& s) { s.model.compare.right.integrator = integratorNamed(s.word); }},
         {"compare-sampler", [](Step& s) { s.model.compare.right.sampler = *parseSamplerMode(s.word); }},
         {"compare-depth", [](Step& s) { s.model.compare.right.maxDepth = s.command.integer(0); }},

@@ -49,11 +49,14 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     ImGui::Text("%.2f M samples/s, %.1f s rendering", stats.samplesPerSecond * 1e-6, stats.renderSeconds);
     // The estimate and the true error are the same quantity (relative MSE as ErrorMetrics.h defines
     // it), shown the same way, so with a reference loaded the two lines can be compared directly.
+    // Both come from the raw accumulation (readStatistics): labelled so, since the image shown may
+    // be the denoised one.
+    if (stats.denoised) noteText("shown: denoised, of " + std::to_string(stats.denoisedSamples) + " spp (biased)");
     if (stats.error.reliable)
-        ImGui::Text("relative error ~%.3g %% (relMSE %.3g)", 100.0 * relativeError(stats.error.relativeMse),
+        ImGui::Text("raw: relative error ~%.3g %% (relMSE %.3g)", 100.0 * relativeError(stats.error.relativeMse),
                     stats.error.relativeMse);
     else
-        ImGui::TextUnformatted("relative error -  (not yet reliable)"); // ImGui's default font has no em dash
+        ImGui::TextUnformatted("raw: relative error -  (not yet reliable)"); // ImGui's default font has no em dash
     if (stats.error.reliable)
         itemTooltip("estimated from the render itself: sqrt of the relative MSE against the image it converges to,\n"
                     "mean of (x - converged)^2 / (converged^2 + 0.01); each pixel's change since an earlier read-back,\n"
@@ -62,12 +65,19 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
         itemTooltip((std::string("no estimate yet: ") + stats.error.unreliableReason).c_str());
     if (stats.trueError) {
         const ErrorMetrics& e = *stats.trueError;
-        ImGui::Text("vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g", 100.0 * relativeError(e.relativeMse),
+        ImGui::Text("raw vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g", 100.0 * relativeError(e.relativeMse),
                     e.relativeMse, e.rmse);
         itemTooltip("the true error against the loaded reference image: sqrt of the relative MSE,\n"
                     "mean of (x - ref)^2 / (ref^2 + 0.01); includes the reference's own noise");
         ImGui::Text("bias %+.2g %+.2g %+.2g", e.meanBias.r, e.meanBias.g, e.meanBias.b);
         itemTooltip("mean of the image minus mean of the reference, per channel: what more samples cannot remove");
+        if (stats.denoisedTrueError) {
+            const ErrorMetrics& d = *stats.denoisedTrueError;
+            ImGui::Text("denoised vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g",
+                        100.0 * relativeError(d.relativeMse), d.relativeMse, d.rmse);
+            itemTooltip("the same measure of the denoised image: lower than the raw one while the filter takes out more\n"
+                        "noise than the bias it adds; it stops falling where the bias dominates");
+        }
         std::vector<float> logs;
         for (const auto& [seconds, relMse] : stats.trueErrorHistory)
             if (relMse > 0.0f) logs.push_back(std::log10(float(relativeError(relMse))));

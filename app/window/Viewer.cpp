@@ -193,6 +193,7 @@ void ViewerWindow::handleKeys() {
         case GLFW_KEY_SPACE: model.paused = !model.paused; break;
         case GLFW_KEY_R: model.pendingChanges |= ViewerModel::kRestart; break;
         case GLFW_KEY_C: model.compare.enabled = !model.compare.enabled; break;
+        case GLFW_KEY_N: model.denoise.enabled = !model.denoise.enabled; break; // D flies right (W A S D)
         case GLFW_KEY_F: session_.resetCamera(); break;
         default: break;
         }
@@ -470,8 +471,10 @@ void ViewerWindow::drawCompareLabels() {
         char text[160];
         char error[32] = "-"; // until the estimate is reliable (the Stats panel's tooltip says why)
         if (stats.error.reliable) std::snprintf(error, sizeof(error), "~%.2f%%", 100.0 * relativeError(stats.error.relativeMse));
-        std::snprintf(text, sizeof(text), "%s / %s / depth %d\n%d spp, %.1f s, error %s", integratorName(settings.integrator),
-                      samplerModeName(settings.sampler), settings.maxDepth, stats.samples, stats.renderSeconds, error);
+        // The error is the raw accumulation's, also on a denoised side (the Stats panel says so).
+        std::snprintf(text, sizeof(text), "%s / %s / depth %d%s\n%d spp, %.1f s, raw error %s", integratorName(settings.integrator),
+                      samplerModeName(settings.sampler), settings.maxDepth, stats.denoised ? " / denoised" : "", stats.samples,
+                      stats.renderSeconds, error);
         ImVec2 size = ImGui::CalcTextSize(text);
         ImVec2 position(alignRight ? x - size.x - 10.0f : x + 10.0f, top);
         draw->AddRectFilled(ImVec2(position.x - 4, position.y - 2), ImVec2(position.x + size.x + 4, position.y + size.y + 2),
@@ -602,7 +605,7 @@ void ViewerWindow::drawImage() {
         warpVisualizer_.draw(area.origin, area.size, framebufferSize_, framebufferScale_);
         return;
     }
-    if (session_.accumulating())
+    if (session_.accumulating() || session_.denoisePending())
         lastTracingSeconds_ = session_.renderFrame(std::max(kMinTracingSeconds, kFrameSeconds - overheadSeconds_));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     session_.display();
@@ -625,7 +628,9 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
     const Clock::time_point start = lastFrame_ = Clock::now();
     int frame = 0;
     while (!panelState_.unsavedEdits.quitConfirmed()) {
-        if (!waitForEvents(session_.accumulating() || (script && !script->quitRequested()))) continue;
+        // A denoise still to come (the samples stopped between two of its cadence) is work too.
+        bool busy = session_.accumulating() || session_.denoisePending();
+        if (!waitForEvents(busy || (script && !script->quitRequested()))) continue;
         double seconds = timeFrame();
 
         handleKeys();
@@ -810,6 +815,7 @@ int runViewer(const ViewerOptions& requested) {
     try {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
                               options.program);
+        session.model().denoise = options.denoise; // --denoise, or the denoiser an opened image was made with
         if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
             printMessage(session.model().sceneError);
             return kExitBadInput;

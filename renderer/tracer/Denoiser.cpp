@@ -219,4 +219,14 @@ ImageRgbF Denoiser::readResult() const {
     return image;
 }
 
+glm::vec3 Denoiser::readResultPixel(glm::ivec2 glPixel) const {
+    float rgba[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resultFramebuffer_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(glPixel.x, glPixel.y, 1, 1, GL_RGBA, GL_FLOAT, rgba); // 1x1: no whole-image read-back per frame
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    return glm::vec3(rgba[0], rgba[1], rgba[2]);
+}
+
 } // namespace ptview

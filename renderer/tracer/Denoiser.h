@@ -37,6 +37,7 @@ public:
     int sampleCount() const { return resultSamples_; }     // of the radiance it was made from
     int featureSampleCount() const { return featureSamples_; }
     ImageRgbF readResult() const;                          // rows top first, as readMean
+    glm::vec3 readResultPixel(glm::ivec2 glPixel) const;   // one pixel (GL rows bottom-up): the pixel inspector's
     // Binds the result as a display pass's sum, and a black texture as its compensation.
     void bindResult(int sumUnit, int compensationUnit) const;
 

@@ -431,7 +431,7 @@ void PathTracer::setDenoise(const DenoiseSettings& settings) {
 void PathTracer::updateDenoised() {
     if (!denoiseSettings_.enabled || accumulator_.sampleCount() == 0) return;
     if (!denoiser_) denoiser_ = std::make_unique<Denoiser>(shaderDir_);
-    if (hasDenoised() && denoiser_->sampleCount() == accumulator_.sampleCount() && denoisedWith_ == denoiseSettings_) return;
+    if (denoisedUpToDate()) return;
     denoiser_->denoise(*this, denoiseSettings_);
     denoisedRestartCount_ = restartCount_;
     denoisedWith_ = denoiseSettings_;
@@ -445,6 +445,19 @@ bool PathTracer::hasDenoised() const {
 ImageRgbF PathTracer::readDenoised() const {
     if (!hasDenoised()) throw std::logic_error("PathTracer::readDenoised without a denoised image");
     return denoiser_->readResult();
+}
+
+bool PathTracer::denoisedUpToDate() const {
+    return hasDenoised() && denoiser_->sampleCount() == accumulator_.sampleCount() && denoisedWith_ == denoiseSettings_;
+}
+
+glm::vec3 PathTracer::readDenoisedPixel(glm::ivec2 pixel) const {
+    if (!hasDenoised()) throw std::logic_error("PathTracer::readDenoisedPixel without a denoised image");
+    glm::ivec2 size = accumulator_.size();
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.x || pixel.y >= size.y)
+        throw std::out_of_range("pixel " + std::to_string(pixel.x) + " " + std::to_string(pixel.y) + " is outside the " +
+                                std::to_string(size.x) + "x" + std::to_string(size.y) + " image");
+    return denoiser_->readResultPixel(glm::ivec2(pixel.x, size.y - 1 - pixel.y)); // GL rows run bottom-up
 }
 
 void PathTracer::renderSample() {

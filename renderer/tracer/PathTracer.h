@@ -152,6 +152,12 @@ public:
     bool hasDenoised() const;
     int denoisedSampleCount() const { return hasDenoised() ? denoiser_->sampleCount() : 0; }
     ImageRgbF readDenoised() const; // the denoised mean, rows top first; throws std::logic_error without one
+    // Whether the denoised image is of the accumulation as it is now, with the settings as they
+    // are now: what updateDenoised() would leave unchanged.
+    bool denoisedUpToDate() const;
+    // One pixel of the denoised image (x from the left, y from the top), read back alone: the
+    // pixel inspector's. Throws std::logic_error without one, std::out_of_range outside the image.
+    glm::vec3 readDenoisedPixel(glm::ivec2 pixel) const;
 
     // Draws the tone-mapped mean stretched over `target` of the bound draw framebuffer, touching
     // only the pixels inside `clip` (the split view shows two renders side by side).
