@@ -278,5 +278,43 @@ TEST(Denoiser, TheComputeBackendsSamplesDenoiseAsTheFragmentBackends) {
     EXPECT_NE(fragment.denoised.rgb, fragment.raw.rgb);
 }
 
+TEST(Denoiser, ADenoiseSpreadOverBandsOfRowsIsTheDenoiseDoneAtOnce) {
+    // The viewer runs a denoise a few rows at a time between frames (PathTracer::advanceDenoised):
+    // the passes are the same, so the image is the same bit for bit, and the image shown does not
+    // change until the last band.
+    testing::glContext();
+    Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    scene.camera.resolution = glm::ivec2(40, 30);
+    const RenderSettings settings = settingsOf(Integrator::Full, 8, 4);
+    const Renders atOnce = renderAndDenoise(scene, settings, 8);
+
+    PathTracer tracer(PTVIEW_SHADER_DIR);
+    tracer.setScene(scene);
+    tracer.setImageSize(scene.camera.resolution);
+    tracer.setSettings(settings);
+    tracer.renderSamples(8);
+    tracer.setDenoise(DenoiseSettings{true});
+    int calls = 0;
+    while (!tracer.advanceDenoised(7)) {
+        ASSERT_FALSE(tracer.hasDenoised()) << "nothing finished yet, nothing shown";
+        ASSERT_GT(tracer.denoiseRowsLeft(), 0);
+        ASSERT_LT(++calls, 1000);
+    }
+    EXPECT_GT(calls, 5) << "the passes took several bands";
+    EXPECT_TRUE(tracer.denoisedUpToDate());
+    EXPECT_EQ(tracer.denoiseRowsLeft(), 0);
+    EXPECT_EQ(tracer.readDenoised().rgb, atOnce.denoised.rgb);
+    EXPECT_FALSE(tracer.advanceDenoised(7)) << "up to date: nothing to do";
+
+    // A restart in the middle drops the denoise of the old accumulation.
+    tracer.renderSamples(1);
+    EXPECT_FALSE(tracer.advanceDenoised(7));
+    tracer.restart();
+    tracer.renderSamples(2);
+    EXPECT_FALSE(tracer.hasDenoised()) << "the old image is of an accumulation that is gone";
+    while (!tracer.advanceDenoised(7)) ASSERT_LT(++calls, 2000);
+    EXPECT_EQ(tracer.denoisedSampleCount(), 2);
+}
+
 } // namespace
 } // namespace ptview

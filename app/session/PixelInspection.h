@@ -20,7 +20,7 @@ struct PixelInspection {
     bool comparing = false;
     PixelReading reading; // of the raw accumulation; `displayed` is what the side shows, denoised or not
     // The denoised image's value, where the side shows it (ViewerSession::showsDenoised), and the
-    // samples that image was filtered from (it may lag the accumulation: DenoiseCadence.h).
+    // samples that image was filtered from (it may lag the accumulation while a denoise runs over several frames).
     std::optional<glm::vec3> denoised;
     int denoisedSamples = 0;
     std::optional<SurfaceHit> hit; // nullopt: the ray escapes to the environment

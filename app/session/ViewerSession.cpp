@@ -298,7 +298,7 @@ void ViewerSession::writeImage(Side side, const std::filesystem::path& path) {
     PathTracer& tracer = *view(side).tracer;
     if (tracer.sampleCount() == 0) throw std::runtime_error("nothing rendered yet: wait for a sample");
     syncDenoise(); // the model as it is now, even before this frame's update
-    // A saved image is of every sample there is, whatever the cadence left on screen.
+    // A saved image is of every sample there is, whatever denoise the frames had finished.
     if (showsDenoised(side)) tracer.updateDenoised();
     const bool denoised = showsDenoised(side) && tracer.hasDenoised();
     std::string extension = path.extension().string();
@@ -587,13 +587,15 @@ double ViewerSession::renderFrame(double budgetSeconds) {
     View* views[2] = {&left_, comparesTwoRenders() ? right_.get() : nullptr};
     int passes[2] = {0, 0};
     Clock::time_point frameStart = Clock::now();
-    // The denoises due this frame run after the tracing, in time the tracing leaves them.
-    bool denoiseDue[2] = {false, false};
+    // A stale denoised image gets its share of the frame: bands of the denoise's passes after the
+    // tracing (PathTracer::advanceDenoised), so a denoise spreads over frames as a sample pass
+    // does and no frame waits for a whole one. While samples accumulate the share is
+    // kDenoiseShare; once they stop, the denoise takes the frame.
+    double denoiseSeconds[2] = {0.0, 0.0};
     for (int i = 0; i < 2; ++i) {
         if (!views[i] || !denoiseStale(*views[i])) continue;
-        const View& v = *views[i];
-        denoiseDue[i] = v.denoiseCadence.due(secondsSince(v.lastDenoise), wantsSamples(v, 0));
-        if (denoiseDue[i]) budgetSeconds -= v.denoiseCadence.expectedSeconds();
+        denoiseSeconds[i] = wantsSamples(*views[i], 0) ? kDenoiseShare * budgetSeconds : budgetSeconds;
+        budgetSeconds -= denoiseSeconds[i];
     }
     bool worked = false;
     for (;;) {
@@ -633,7 +635,7 @@ double ViewerSession::renderFrame(double budgetSeconds) {
         if (passDone && !preview) ++passes[next];
     }
     for (int i = 0; i < 2; ++i)
-        if (denoiseDue[i]) denoise(*views[i]);
+        if (denoiseSeconds[i] > 0.0) denoise(*views[i], denoiseSeconds[i]);
     double seconds = secondsSince(frameStart);
     for (View* v : views)
         if (v) updateErrorEstimate(*v);
@@ -649,21 +651,29 @@ bool ViewerSession::denoisePending() const {
     return denoiseStale(left_) || (comparesTwoRenders() && denoiseStale(*right_));
 }
 
-void ViewerSession::denoise(View& view) {
-    Clock::time_point start = Clock::now();
+void ViewerSession::denoise(View& view, double seconds) {
+    PathTracer& tracer = *view.tracer;
     try {
-        view.tracer->updateDenoised();
+        // At least one band, so a denoise always progresses; then as many as the time allows.
+        for (bool first = true;; first = false) {
+            const int rowsLeft = tracer.denoiseRowsLeft();
+            if (rowsLeft == 0 || (!first && view.denoiseCost.rowOverruns(seconds))) break;
+            const int rows = view.denoiseCost.rowsFitting(seconds, rowsLeft);
+            Clock::time_point start = Clock::now();
+            const bool finished = tracer.advanceDenoised(rows);
+            glFinish(); // the time of the GPU work, not of its submission
+            const double spent = secondsSince(start);
+            view.denoiseCost.record(rows, spent);
+            seconds -= spent;
+            if (finished || seconds <= 0.0) break;
+        }
     } catch (const std::exception& e) { // its shaders edited on disk, a target this GPU refuses: the raw image instead
         model_.shaderError = std::string("denoiser: ") + e.what();
         model_.denoise.enabled = false;
         model_.compare.rightDenoised = false;
         if (splitsRawAndDenoised()) model_.compare.enabled = false;
         syncDenoise();
-        return;
     }
-    glFinish(); // the time of the GPU work, not of its submission
-    view.denoiseCadence.record(secondsSince(start));
-    view.lastDenoise = start;
 }
 
 void ViewerSession::updateErrorEstimate(View& view) {

@@ -12,7 +12,6 @@
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/session/PixelInspection.h>
 #include <ptview/model/SceneInput.h>
-#include <ptview/session/DenoiseCadence.h>
 #include <ptview/session/TileCost.h>
 #include <ptview/model/ViewerModel.h>
 
@@ -30,6 +29,9 @@ public:
     // Path tracing per displayed frame when the caller does not say: the viewer passes what is
     // left of its ~33 ms frame after the display pass and the UI.
     static constexpr double kDefaultTracingSeconds = 0.030;
+    // The share of a frame's budget a stale denoised image gets while samples accumulate: the
+    // rest goes on samples, which the denoised image needs too.
+    static constexpr double kDenoiseShare = 0.25;
 
     enum class Side { Left, Right }; // Left is the only view outside compare mode
 
@@ -127,9 +129,9 @@ public:
     void setImageArea(PixelRect area);  // where the image goes in the window's framebuffer
     void update();                      // pushes model changes to the renderer(s)
     // Path traces for up to budgetSeconds (at least one tile of one row, so a frame always
-    // progresses), measured with glFinish after each tile, then denoises the views that show the
-    // denoised image when their DenoiseCadence says it is due (its expected time comes out of the
-    // tracing budget); returns the seconds spent, denoising included.
+    // progresses), measured with glFinish after each tile, then advances the denoise of each view
+    // whose denoised image is stale by bands of rows, in kDenoiseShare of the budget (all of it
+    // once the samples stop); returns the seconds spent, denoising included.
     double renderFrame(double budgetSeconds = kDefaultTracingSeconds);
     // Whether a view shows the denoised image and it is not of the samples and settings as they
     // are now: worth a renderFrame even when nothing accumulates.
@@ -198,8 +200,7 @@ private:
         // Means read back earlier in this accumulation, at sample counts at least doubling, for
         // the error estimate (which compares the mean with one at half the samples or fewer).
         std::vector<std::pair<int, ImageRgbF>> earlierMeans;
-        DenoiseCadence denoiseCadence;
-        std::chrono::steady_clock::time_point lastDenoise{}; // when the last denoise began
+        TileCost denoiseCost; // of a row of the denoiser's passes (PathTracer::advanceDenoised)
         std::optional<ErrorMetrics> denoisedTrueError;       // of the denoised image, with a reference
     };
 
@@ -210,7 +211,7 @@ private:
     }
     void syncDenoise();
     bool denoiseStale(const View& view) const;
-    void denoise(View& view);
+    void denoise(View& view, double seconds); // bands of the view's denoise for about `seconds`
     RenderSettings effectiveSettings(const RenderSettings& settings) const;
     bool wantsSamples(const View& view, int passesThisFrame) const;
     void syncView(View& view, const RenderSettings& settings, unsigned changes);

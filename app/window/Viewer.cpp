@@ -628,7 +628,7 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
     const Clock::time_point start = lastFrame_ = Clock::now();
     int frame = 0;
     while (!panelState_.unsavedEdits.quitConfirmed()) {
-        // A denoise still to come (the samples stopped between two of its cadence) is work too.
+        // A denoise still to come (its bands run over frames, also after the samples stop) is work too.
         bool busy = session_.accumulating() || session_.denoisePending();
         if (!waitForEvents(busy || (script && !script->quitRequested()))) continue;
         double seconds = timeFrame();

@@ -99,23 +99,30 @@ void Denoiser::resize(glm::ivec2 size) {
     }
     guide_ = createFloatTexture(size);
     albedo_ = createFloatTexture(size);
-    result_ = createFloatTexture(size);
     prepareFramebuffer_ = createFramebufferOf({illumination_[0].id(), guide_.id(), albedo_.id()});
-    for (int i = 0; i < 2; ++i) illuminationFramebuffer_[i] = createFramebufferOf({illumination_[i].id()});
-    resultFramebuffer_ = createFramebufferOf({result_.id()});
+    for (int i = 0; i < 2; ++i) {
+        illuminationFramebuffer_[i] = createFramebufferOf({illumination_[i].id()});
+        result_[i] = createFloatTexture(size);
+        resultFramebuffer_[i] = createFramebufferOf({result_[i].id()});
+    }
     size_ = size;
     featureSamples_ = 0;
     resultSamples_ = 0;
+    resultRestartCount_ = -1;
+    cycle_.active = false;
 }
 
-void Denoiser::drawFullScreen() const {
+void Denoiser::drawRows(int rowBegin, int rowEnd) const {
     glViewport(0, 0, size_.x, size_.y);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, rowBegin, size_.x, rowEnd - rowBegin);
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
 }
 
-void Denoiser::updateFeatures(PathTracer& tracer) {
+void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
     if (tracer.restartCount() != featureRestartCount_) {
         featureSamples_ = 0;
         featureRestartCount_ = tracer.restartCount();
@@ -131,73 +138,130 @@ void Denoiser::updateFeatures(PathTracer& tracer) {
         featureProgramSampler_ = sampler;
         featureSamples_ = 0;
     }
-    const int wanted = std::min(tracer.sampleCount(), kMaxFeatureSamples);
-    while (featureSamples_ < wanted) {
-        const int count = std::min(tracer.samplesPerPass(), wanted - featureSamples_);
-        tracer.useSceneIn(*featureProgram_, featureSamples_, count);
-        featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", 0);
-        featureProgram_->bindSamplerUnit("uPrevNormal", 1);
-        const FeatureTarget& previous = features_[1 - featureWrite_];
-        bindTexture(0, previous.albedoDepth.id());
-        bindTexture(1, previous.normal.id());
-        glActiveTexture(GL_TEXTURE0);
-        glBindFramebuffer(GL_FRAMEBUFFER, features_[featureWrite_].framebuffer.id());
-        drawFullScreen();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        featureWrite_ = 1 - featureWrite_;
-        featureSamples_ += count;
-    }
 }
 
-void Denoiser::denoise(PathTracer& tracer, const DenoiseSettings& settings) {
+int Denoiser::featureSamplesThisPass(const PathTracer& tracer) const {
+    return std::min(tracer.samplesPerPass(), cycle_.featureTarget - featureSamples_);
+}
+
+void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     resize(tracer.imageSize());
-    updateFeatures(tracer);
-    filter(tracer, settings);
+    prepareFeatureProgram(tracer);
+    cycle_ = Cycle{};
+    cycle_.active = true;
+    cycle_.settings = settings;
+    cycle_.restartCount = tracer.restartCount();
+    cycle_.featureTarget = std::max(featureSamples_, std::min(tracer.sampleCount(), kMaxFeatureSamples));
+    const int perPass = std::max(1, tracer.samplesPerPass());
+    cycle_.featurePasses = (cycle_.featureTarget - featureSamples_ + perPass - 1) / perPass;
+    cycle_.samples = tracer.sampleCount();
 }
 
-void Denoiser::filter(PathTracer& tracer, const DenoiseSettings& settings) {
-    const int samples = tracer.sampleCount();
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_DEPTH_TEST);
+int Denoiser::rowsLeft() const {
+    if (!cycle_.active) return 0;
+    return (cycle_.stepCount() - cycle_.step) * size_.y - cycle_.nextRow;
+}
 
+bool Denoiser::advance(PathTracer& tracer, int rows) {
+    if (!cycle_.active) return false;
+    if (tracer.restartCount() != cycle_.restartCount || tracer.imageSize() != size_) {
+        cycle_.active = false; // of an accumulation that is gone
+        return false;
+    }
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    while (rows > 0 && cycle_.active) {
+        const int rowEnd = std::min(size_.y, cycle_.nextRow + rows);
+        const int step = cycle_.step;
+        if (step < cycle_.featurePasses) {
+            drawFeatureRows(tracer, cycle_.nextRow, rowEnd);
+        } else if (step == cycle_.featurePasses) {
+            if (cycle_.nextRow == 0) cycle_.samples = tracer.sampleCount();
+            drawPrepareRows(tracer, cycle_.nextRow, rowEnd);
+        } else if (step < cycle_.stepCount() - 1) {
+            drawAtrousRows(step - cycle_.featurePasses - 1, cycle_.nextRow, rowEnd);
+        } else {
+            drawComposeRows(cycle_.nextRow, rowEnd);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        rows -= rowEnd - cycle_.nextRow;
+        cycle_.nextRow = rowEnd;
+        if (cycle_.nextRow == size_.y) finishStep(tracer);
+    }
+    return !cycle_.active;
+}
+
+void Denoiser::finishStep(PathTracer& tracer) {
+    if (cycle_.step < cycle_.featurePasses) {
+        featureSamples_ += featureSamplesThisPass(tracer);
+        featureWrite_ = 1 - featureWrite_;
+    }
+    cycle_.nextRow = 0;
+    if (++cycle_.step < cycle_.stepCount()) return;
+    shownResult_ = 1 - shownResult_;
+    resultSamples_ = cycle_.samples;
+    resultRestartCount_ = cycle_.restartCount;
+    resultSettings_ = cycle_.settings;
+    cycle_.active = false;
+}
+
+void Denoiser::drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd) {
+    // Every band sets the frame uniforms again: the tracer's own passes change them in between.
+    tracer.useSceneIn(*featureProgram_, featureSamples_, featureSamplesThisPass(tracer));
+    featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", 0);
+    featureProgram_->bindSamplerUnit("uPrevNormal", 1);
+    const FeatureTarget& previous = features_[1 - featureWrite_];
+    bindTexture(0, previous.albedoDepth.id());
+    bindTexture(1, previous.normal.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, features_[featureWrite_].framebuffer.id());
+    drawRows(rowBegin, rowEnd);
+}
+
+void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     glUseProgram(prepare_->id());
     tracer.bindLatestSums(kSumUnit, kCompensationUnit, kSumSquaresUnit);
     const FeatureTarget& features = features_[1 - featureWrite_];
     bindTexture(kFeatureAlbedoDepthUnit, features.albedoDepth.id());
     bindTexture(kFeatureNormalUnit, features.normal.id());
     glActiveTexture(GL_TEXTURE0);
-    glUniform1f(prepare_->uniformLocation("uSampleCount"), static_cast<float>(std::max(samples, 1)));
+    // The sums bound are those of sampleCount() samples, whenever this band runs.
+    glUniform1f(prepare_->uniformLocation("uSampleCount"), static_cast<float>(std::max(tracer.sampleCount(), 1)));
     glUniform1f(prepare_->uniformLocation("uInvFeatureCount"), featureSamples_ > 0 ? 1.0f / static_cast<float>(featureSamples_) : 0.0f);
     glBindFramebuffer(GL_FRAMEBUFFER, prepareFramebuffer_.id());
-    drawFullScreen();
+    drawRows(rowBegin, rowEnd);
+}
 
+// Iteration i reads illumination_[i % 2] (the prepare pass wrote [0]) and writes the other.
+void Denoiser::drawAtrousRows(int iteration, int rowBegin, int rowEnd) {
     glUseProgram(atrous_->id());
-    glUniform1f(atrous_->uniformLocation("uSigmaLuminance"), settings.strength);
+    glUniform1f(atrous_->uniformLocation("uSigmaLuminance"), cycle_.settings.strength);
     glUniform1f(atrous_->uniformLocation("uSigmaNormal"), kSigmaNormal);
     glUniform1f(atrous_->uniformLocation("uSigmaDepth"), kSigmaDepth);
+    glUniform1i(atrous_->uniformLocation("uStepPixels"), 1 << iteration);
     bindTexture(kGuideUnit, guide_.id());
-    int read = 0;
-    for (int i = 0; i < settings.iterations; ++i) {
-        glUniform1i(atrous_->uniformLocation("uStepPixels"), 1 << i);
-        bindTexture(kIlluminationUnit, illumination_[read].id());
-        glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[1 - read].id());
-        drawFullScreen();
-        read = 1 - read;
-    }
+    bindTexture(kIlluminationUnit, illumination_[iteration % 2].id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[1 - iteration % 2].id());
+    drawRows(rowBegin, rowEnd);
+}
 
+void Denoiser::drawComposeRows(int rowBegin, int rowEnd) {
     glUseProgram(compose_->id());
-    bindTexture(kIlluminationUnit, illumination_[read].id());
+    bindTexture(kIlluminationUnit, illumination_[cycle_.settings.iterations % 2].id());
     bindTexture(kAlbedoUnit, albedo_.id());
     glActiveTexture(GL_TEXTURE0);
-    glBindFramebuffer(GL_FRAMEBUFFER, resultFramebuffer_.id());
-    drawFullScreen();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    resultSamples_ = samples;
+    glBindFramebuffer(GL_FRAMEBUFFER, resultFramebuffer_[1 - shownResult_].id());
+    drawRows(rowBegin, rowEnd);
+}
+
+void Denoiser::denoise(PathTracer& tracer, const DenoiseSettings& settings) {
+    begin(tracer, settings);
+    advance(tracer, rowsLeft());
 }
 
 void Denoiser::bindResult(int sumUnit, int compensationUnit) const {
-    bindTexture(sumUnit, result_.id());
+    bindTexture(sumUnit, result_[shownResult_].id());
     bindTexture(compensationUnit, black_.id());
     glActiveTexture(GL_TEXTURE0);
 }
@@ -206,7 +270,7 @@ ImageRgbF Denoiser::readResult() const {
     ImageRgbF image(size_.x, size_.y);
     if (size_.x == 0) return image;
     std::vector<float> rgba(static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resultFramebuffer_.id());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resultFramebuffer_[shownResult_].id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, rgba.data());
@@ -221,7 +285,7 @@ ImageRgbF Denoiser::readResult() const {
 
 glm::vec3 Denoiser::readResultPixel(glm::ivec2 glPixel) const {
     float rgba[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resultFramebuffer_.id());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resultFramebuffer_[shownResult_].id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(glPixel.x, glPixel.y, 1, 1, GL_RGBA, GL_FLOAT, rgba); // 1x1: no whole-image read-back per frame

@@ -26,15 +26,30 @@ class Denoiser {
 public:
     explicit Denoiser(const std::filesystem::path& shaderDir);
 
-    // Filters the tracer's accumulation as it is now into result(). First brings the features up
-    // to the radiance's sample count (at most kMaxFeatureSamples: features converge long before
-    // radiance does), starting them over whenever the tracer's accumulation started over.
+    // Filters the tracer's accumulation as it is now into the result, all at once: begin() then
+    // advance() to the end.
     void denoise(PathTracer& tracer, const DenoiseSettings& settings);
 
-    // The denoised radiance of the last denoise() (RGBA32F, alpha 1, GL rows bottom-up), or 0.
-    GLuint resultTexture() const { return result_.id(); }
+    // The same in pieces, so that a viewer can spread a denoise over frames (it costs several
+    // full-image passes). begin() fixes what the denoise is of: the features are brought up to
+    // the radiance's sample count now (at most kMaxFeatureSamples: features converge long before
+    // radiance does; started over whenever the tracer's accumulation started over), and the
+    // radiance is read as it is when the prepare pass reaches each row. advance() runs up to
+    // `rows` rows of the remaining passes (feature passes, prepare, the iterations, compose, each
+    // a whole image of rows) and returns true when it finished the denoise; only then does the
+    // result change. A restart of the tracer's accumulation abandons a denoise in progress.
+    void begin(PathTracer& tracer, const DenoiseSettings& settings);
+    bool advance(PathTracer& tracer, int rows);
+    bool inProgress() const { return cycle_.active; }
+    int rowsLeft() const; // of the denoise in progress
+    const DenoiseSettings& settingsInProgress() const { return cycle_.settings; }
+
+    // The last finished denoise: its radiance (RGBA32F, alpha 1, GL rows bottom-up), size,
+    // samples, and the restart of the tracer it belongs to.
     glm::ivec2 size() const { return size_; }
     int sampleCount() const { return resultSamples_; }     // of the radiance it was made from
+    int restartCount() const { return resultRestartCount_; }
+    const DenoiseSettings& settings() const { return resultSettings_; }
     int featureSampleCount() const { return featureSamples_; }
     ImageRgbF readResult() const;                          // rows top first, as readMean
     glm::vec3 readResultPixel(glm::ivec2 glPixel) const;   // one pixel (GL rows bottom-up): the pixel inspector's
@@ -48,10 +63,28 @@ private:
         GlFramebuffer framebuffer;
         GlTexture albedoDepth, normal;
     };
+    // The denoise in progress: its passes in order, each size_.y rows, done up to (step, nextRow).
+    struct Cycle {
+        bool active = false;
+        DenoiseSettings settings;
+        int restartCount = -1;
+        int featurePasses = 0;  // first steps: feature passes up to featureTarget samples
+        int featureTarget = 0;
+        int step = 0;
+        int nextRow = 0;
+        int samples = 0;        // of the radiance, as the prepare pass began
+        int stepCount() const { return featurePasses + 2 + settings.iterations; }
+    };
     void resize(glm::ivec2 size);
-    void updateFeatures(PathTracer& tracer);
-    void filter(PathTracer& tracer, const DenoiseSettings& settings);
-    void drawFullScreen() const;
+    void prepareFeatureProgram(PathTracer& tracer);
+    // Row bands [rowBegin, rowEnd) of one pass.
+    void drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd);
+    void drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd);
+    void drawAtrousRows(int iteration, int rowBegin, int rowEnd);
+    void drawComposeRows(int rowBegin, int rowEnd);
+    void drawRows(int rowBegin, int rowEnd) const;
+    void finishStep(PathTracer& tracer);
+    int featureSamplesThisPass(const PathTracer& tracer) const;
 
     std::filesystem::path shaderDir_;
     std::unique_ptr<GlProgram> featureProgram_;
@@ -66,13 +99,18 @@ private:
     int featureSamples_ = 0;
     int featureRestartCount_ = -1; // the tracer's restartCount() the features belong to
 
+    Cycle cycle_;
     GlFramebuffer prepareFramebuffer_;
     GlTexture illumination_[2], guide_, albedo_;
     GlFramebuffer illuminationFramebuffer_[2];
-    GlFramebuffer resultFramebuffer_;
-    GlTexture result_;
+    // Two results: the last finished one is shown while the next is composed.
+    GlFramebuffer resultFramebuffer_[2];
+    GlTexture result_[2];
+    int shownResult_ = 0;
     GlTexture black_; // 1x1: the compensation of an image that has none
     int resultSamples_ = 0;
+    int resultRestartCount_ = -1;
+    DenoiseSettings resultSettings_;
 };
 
 } // namespace ptview

@@ -433,12 +433,34 @@ void PathTracer::updateDenoised() {
     if (!denoiser_) denoiser_ = std::make_unique<Denoiser>(shaderDir_);
     if (denoisedUpToDate()) return;
     denoiser_->denoise(*this, denoiseSettings_);
-    denoisedRestartCount_ = restartCount_;
-    denoisedWith_ = denoiseSettings_;
+}
+
+bool PathTracer::advanceDenoised(int rows) {
+    if (!denoiseSettings_.enabled || accumulator_.sampleCount() == 0) return false;
+    if (!denoiser_) denoiser_ = std::make_unique<Denoiser>(shaderDir_);
+    // A denoise in progress with other settings, or of an accumulation that restarted since, is
+    // of no use: a new one begins (advance() drops one whose accumulation is gone).
+    if (denoiser_->inProgress() && denoiser_->settingsInProgress() != denoiseSettings_) denoiser_->begin(*this, denoiseSettings_);
+    if (!denoiser_->inProgress()) {
+        if (denoisedUpToDate()) return false;
+        denoiser_->begin(*this, denoiseSettings_);
+    }
+    if (denoiser_->advance(*this, rows)) return true;
+    if (!denoiser_->inProgress() && !denoisedUpToDate()) { // dropped: the accumulation restarted
+        denoiser_->begin(*this, denoiseSettings_);
+        return denoiser_->advance(*this, rows);
+    }
+    return false;
+}
+
+int PathTracer::denoiseRowsLeft() const {
+    if (denoiser_ && denoiser_->inProgress()) return denoiser_->rowsLeft();
+    if (!denoiseSettings_.enabled || denoisedUpToDate()) return 0;
+    return accumulator_.size().y * (denoiseSettings_.iterations + 3); // about a new denoise's, features aside
 }
 
 bool PathTracer::hasDenoised() const {
-    return denoiser_ && denoisedRestartCount_ == restartCount_ && denoiser_->size() == accumulator_.size() &&
+    return denoiser_ && denoiser_->restartCount() == restartCount_ && denoiser_->size() == accumulator_.size() &&
            denoiser_->sampleCount() > 0;
 }
 
@@ -448,7 +470,7 @@ ImageRgbF PathTracer::readDenoised() const {
 }
 
 bool PathTracer::denoisedUpToDate() const {
-    return hasDenoised() && denoiser_->sampleCount() == accumulator_.sampleCount() && denoisedWith_ == denoiseSettings_;
+    return hasDenoised() && denoiser_->sampleCount() == accumulator_.sampleCount() && denoiser_->settings() == denoiseSettings_;
 }
 
 glm::vec3 PathTracer::readDenoisedPixel(glm::ivec2 pixel) const {

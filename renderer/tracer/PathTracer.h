@@ -147,6 +147,13 @@ public:
     void setDenoise(const DenoiseSettings& settings);
     const DenoiseSettings& denoiseSettings() const { return denoiseSettings_; }
     void updateDenoised();
+    // The same spread over calls, for a viewer that has a frame's time to give it (a denoise is
+    // several full-image passes): runs up to `rows` rows of a denoise's passes, beginning one
+    // when there is none in progress and the denoised image is not up to date; true when this
+    // call finished one (the shown image then changes). denoiseRowsLeft(): about how many rows
+    // the denoise in progress (or the next) still needs; 0 when up to date.
+    bool advanceDenoised(int rows);
+    int denoiseRowsLeft() const;
     // Whether a denoised image of the current accumulation is at hand (possibly of fewer samples
     // than sampleCount(), when updateDenoised() was not called since).
     bool hasDenoised() const;
@@ -260,8 +267,6 @@ private:
     int restartCount_ = 0;
     DenoiseSettings denoiseSettings_;
     std::unique_ptr<Denoiser> denoiser_; // made when first enabled
-    int denoisedRestartCount_ = -1;      // the restart the denoised image belongs to
-    DenoiseSettings denoisedWith_;       // and the settings it was filtered with
 };
 
 // A tracer as every command and the viewer begin: compiled as options ask, with the scene (and the
