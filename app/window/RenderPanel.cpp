@@ -1,4 +1,5 @@
 // The Render panel: how the image is computed and shown, the split view, and screenshots.
+#include <ptview/window/PanelText.h>
 #include <ptview/window/Panels.h>
 
 #include <ptview/window/PanelWidgets.h>
@@ -64,7 +65,7 @@ void denoiseControls(ViewerModel& model) {
     itemTooltip(strength.description);
     settingSlider("iterations", model.denoise.iterations, settingRanges::kDenoiseIterations);
     itemTooltip(settingRanges::kDenoiseIterations.description);
-    noteText("biased: smoother than the truth, not closer to it");
+    noteText("biased: it borrows light from neighbours; the bias falls as the noise does");
 }
 
 // What the split view's halves show: two renders, or the main one raw and denoised.
@@ -131,7 +132,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
                 "(compute only where clearly faster), remembered per device and program.");
     if (!model.backendChoice.empty()) noteText("auto: " + model.backendChoice);
     const PathTracer& tracer = session.tracer(ViewerSession::Side::Left);
-    ImGui::TextDisabled("%d programs compiled (hover: this scene's features)", tracer.programsCompiled());
+    ImGui::TextDisabled("%s compiled (hover: this scene's features)", countOf(tracer.programsCompiled(), "program").c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tracer.features().describe().c_str());
     ImGui::SliderFloat("resolution", &model.resolutionScale, settingRanges::kResolutionScale.panelLo,
                        settingRanges::kResolutionScale.panelHi, "%.3f x");

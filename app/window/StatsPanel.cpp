@@ -1,5 +1,6 @@
 #include <ptview/settings/Integrator.h>
 #include <ptview/window/PanelWidgets.h>
+#include <ptview/window/PanelText.h>
 #include <ptview/window/Panels.h>
 #include <ptview/io/PrintableText.h>
 #include <ptview/settings/SamplerMode.h>
@@ -36,8 +37,8 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     const ViewerModel& model = session.model();
     const RenderSettings& settings = session.settings(side);
     ViewerSession::ViewStats stats = session.stats(side);
-    ImGui::Text("%s: %s, %s", side == ViewerSession::Side::Left ? "left" : "right", integratorName(settings.integrator),
-                samplerModeName(settings.sampler));
+    ImGui::TextUnformatted(
+        viewHeading(session.comparing(), side == ViewerSession::Side::Left, settings.integrator, settings.sampler).c_str());
     if (model.targetSamples > 0) {
         ImGui::Text("%d / %d spp%s", stats.samples, model.targetSamples,
                     stats.samples >= model.targetSamples ? "  (target reached)" : "");
