@@ -1,25 +1,12 @@
 #include <ptview/tracer/Accumulator.h>
 
+#include <ptview/gl/FloatTexture.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace ptview {
-namespace {
-
-GlTexture createFloatTarget(glm::ivec2 size) {
-    GlTexture texture = createTexture();
-    glBindTexture(GL_TEXTURE_2D, texture.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
-    // Nearest: pixels are shown as accumulated, never blended with their neighbours.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return texture;
-}
-
-} // namespace
 
 void Accumulator::bindSamplers(const GlProgram& program, int firstUnit) {
     program.bindSamplerUnit("uPrevSum", firstUnit);
@@ -42,7 +29,7 @@ void Accumulator::resize(glm::ivec2 size) {
         glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
         GLenum drawBuffers[kTextureCount];
         for (int i = 0; i < kTextureCount; ++i) {
-            target.textures[i] = createFloatTarget(size);
+            target.textures[i] = createFloatTexture(size);
             drawBuffers[i] = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + i);
             glFramebufferTexture2D(GL_FRAMEBUFFER, drawBuffers[i], GL_TEXTURE_2D, target.textures[i].id(), 0);
         }

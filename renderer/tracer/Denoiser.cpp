@@ -1,5 +1,6 @@
 #include <ptview/tracer/Denoiser.h>
 
+#include <ptview/gl/FloatTexture.h>
 #include <ptview/gl/ShaderAssembler.h>
 #include <ptview/tracer/PathTracer.h>
 
@@ -21,16 +22,6 @@ constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2;
 constexpr float kSigmaNormal = 16.0f;
 constexpr float kSigmaDepth = 1.0f; // in units of the depth's change per pixel, as SVGF
 
-GlTexture createFloatTexture(glm::ivec2 size) {
-    GlTexture texture = createTexture();
-    glBindTexture(GL_TEXTURE_2D, texture.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return texture;
-}
 
 // A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...
 GlFramebuffer createFramebufferOf(std::initializer_list<GLuint> textures) {
