@@ -77,13 +77,15 @@ void drawCameraPanel(ViewerSession& session) {
     ImGui::Text("distance %.3g m", static_cast<double>(distance));
 
     // The lens. Opening it from 0 (or closing it) compiles the program with (without) the lens once.
+    // Labels no longer than the sidebar's label column ("samples/frame", Viewer.cpp): "aperture radius"
+    // was cut to "aperture radiu"; the tooltips say the rest.
     const SceneRange& aperture = ranges::kApertureRadius;
-    changed |= ImGui::SliderFloat("aperture radius", &edited.apertureRadius, aperture.panelLo, aperture.panelHi, "%.4f m",
+    changed |= ImGui::SliderFloat("aperture", &edited.apertureRadius, aperture.panelLo, aperture.panelHi, "%.4f m",
                                   ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     itemTooltip("radius of the thin lens; 0 is a pinhole (everything sharp)");
     ImGui::BeginDisabled(edited.apertureRadius == 0.0f);
     const SceneRange& focus = ranges::kFocusDistance;
-    changed |= ImGui::SliderFloat("focus distance", &edited.focusDistance, focus.panelLo, focus.panelHi, "%.3f m",
+    changed |= ImGui::SliderFloat("focus", &edited.focusDistance, focus.panelLo, focus.panelHi, "%.3f m",
                                   ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     ImGui::EndDisabled();
     itemTooltip("distance along the view direction to the plane in focus;\nCtrl+click the image to focus on what is there");
