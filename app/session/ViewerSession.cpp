@@ -201,7 +201,18 @@ std::optional<glm::ivec2> ViewerSession::pixelAt(glm::vec2 imageFraction) const 
 
 void ViewerSession::togglePinnedPixel(glm::ivec2 pixel) {
     if (model_.pinnedPixel == pixel) model_.pinnedPixel.reset();
-    else model_.pinnedPixel = pixel;
+    else pinPixel(pixel);
+}
+
+void ViewerSession::pinPixel(glm::ivec2 pixel) {
+    model_.pinnedPixel = pixel;
+    pixelProbe_ = PixelProbe{}; // a new pin: probed under the camera as it is now
+}
+
+void ViewerSession::restorePinnedCamera() {
+    if (!model_.pinnedPixel || pixelProbe_.restartCount < 0) return;
+    model_.scene.camera = pixelProbe_.camera;
+    model_.pendingChanges |= ViewerModel::kCameraChanged;
 }
 
 ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
@@ -213,7 +224,10 @@ ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
 }
 
 std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
-    if (!model_.pinnedPixel) return std::nullopt;
+    if (!model_.pinnedPixel) {
+        pixelProbe_ = PixelProbe{}; // pinning the same pixel again is a new pin
+        return std::nullopt;
+    }
     glm::ivec2 pixel = *model_.pinnedPixel;
     Side side = sideOf(pixel);
     PathTracer& tracer = *view(side).tracer;
@@ -230,12 +244,21 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
         inspection.denoised = tracer.readDenoisedPixel(pixel);
         inspection.denoisedSamples = tracer.denoisedSampleCount();
     }
-    if (pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount != tracer.restartCount()) {
+    const CameraDesc& camera = model_.scene.camera;
+    const bool newPin = pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount < 0;
+    // A scene edit under the pin's camera may change what the pixel shows: probe again. After a
+    // camera move the tracer's rays are another camera's, and the pin keeps what it showed.
+    // (Only once update() has given the tracer the model's camera: until then its rays are the last frame's.)
+    const bool sceneChangedUnderPin = pixelProbe_.restartCount != tracer.restartCount() && sameView(pixelProbe_.camera, camera) &&
+                                      (model_.pendingChanges & ViewerModel::kCameraChanged) == 0;
+    if (newPin || sceneChangedUnderPin) {
         // The pinhole ray through the pixel's centre; the film counts rows from the bottom.
         glm::vec2 filmPos(static_cast<float>(pixel.x) + 0.5f, static_cast<float>(size.y - pixel.y) - 0.5f);
-        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), tracer.probeSurface(filmPos)};
+        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), camera, tracer.probeSurface(filmPos)};
     }
     inspection.hit = pixelProbe_.hit;
+    inspection.pinnedCamera = pixelProbe_.camera;
+    inspection.cameraMoved = !sameView(pixelProbe_.camera, camera);
     return inspection;
 }
 
