@@ -63,8 +63,12 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     if (!input.carriedBy.empty()) {
         // The scene file an image names is the sender's word, not a file of the user's: it is
         // neither written by Save nor watched for reload (docs/robustness.md).
+        const std::filesystem::path named = model_.scene.path;
         model_.scene.path.clear();
+        carriedSceneUnsaved_ = !input.carriedSceneIsInItsFile;
         model_.notice = "opened the scene carried by " + input.carriedBy.string() +
+                        (carriedSceneUnsaved_ ? "; it differs from " + named.string() + " (or that file cannot be read from the image's folder)"
+                                              : "; it is the scene of " + named.string()) +
                         "; it has no file of its own: type one in Materials > Save scene as to save it";
     }
     model_.fileScene = model_.scene;
@@ -104,6 +108,7 @@ bool ViewerSession::openScene(const std::filesystem::path& path) {
         std::optional<EnvironmentMap> map;
         if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
         model_.fileScene = scene;
+        carriedSceneUnsaved_ = false;
         saveTarget_ = path.string(); // Save must not write the new scene over the last one's file
         model_.notice = "opened " + path.string();
         for (const std::string& warning : scene.warnings) model_.notice += "\nwarning: " + warning;
@@ -266,6 +271,7 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
 // the file, and a field the file does not keep (one the material's type does not use) does not.
 // Materials a glTF file made are in it too, as overrides in the file's reference.
 bool ViewerSession::hasUnsavedEdits() const {
+    if (carriedSceneUnsaved_) return true; // the image holds it, no file does
     try {
         return sceneToJson(model_.scene) != sceneToJson(model_.fileScene);
     } catch (const std::exception&) { // a model no file can hold is certainly not the file's
@@ -279,7 +285,10 @@ std::vector<std::string> ViewerSession::unsavedEdits() const {
     std::vector<std::string> kinds;
     try {
         const std::string fileJson = sceneToJson(file);
-        if (sceneToJson(edited) == fileJson) return kinds;
+        if (sceneToJson(edited) == fileJson) {
+            if (carriedSceneUnsaved_) kinds.push_back("scene"); // all of it: the image holds it, no file does
+            return kinds;
+        }
         // Each kind alone on the file's scene: does it change what the file would hold?
         auto differs = [&](const char* kind, auto copyPart) {
             Scene partial = file;
@@ -306,6 +315,7 @@ void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
     saveScene(model_.scene, path);
     model_.scene.path = path;
     model_.fileScene = model_.scene;
+    carriedSceneUnsaved_ = false;
     saveTarget_ = path.string();
     watchFiles();
 }

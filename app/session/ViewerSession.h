@@ -98,7 +98,8 @@ public:
     std::optional<PixelInspection> inspectPinnedPixel();
     // Whether the scene in memory differs from its file in anything the file holds, the camera
     // included (a view the user set up is work): what quitting or opening another scene would
-    // throw away.
+    // throw away. A scene an image carried counts as edits until saved, unless the file it names
+    // holds it as it is (SceneInput::carriedSceneIsInItsFile).
     bool hasUnsavedEdits() const;
     // The kinds of those edits, in this order: "materials" (those a glTF file made too),
     // "lights", "camera", "environment", and "scene" for anything else; empty when there are none.
@@ -248,6 +249,9 @@ private:
     SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
     bool seenCompare_ = false;
     std::string saveTarget_;
+    // The open scene came from an image and no file holds it (SceneInput::carriedSceneIsInItsFile
+    // false): unsaved until Save writes it or another scene is opened.
+    bool carriedSceneUnsaved_ = false;
     std::vector<std::filesystem::path> allowedDirectories_; // --allow-dir and the prompt's answers (ReadScope.h)
     // The pixel inspector's last probe, and what it was probed for.
     struct PixelProbe {
