@@ -3,6 +3,7 @@
 // split view and a resize treat the pinned pixel as documented (ViewerModel::pinnedPixel).
 #include "GlTestContext.h"
 #include <ptview/tracer/PathTracer.h>
+#include <ptview/model/CameraController.h>
 #include <ptview/model/SceneInput.h>
 #include <ptview/scene/SceneLoader.h>
 #include <ptview/session/ViewerSession.h>
@@ -235,6 +236,46 @@ TEST(PixelInspector, ANewRenderSizeUnpinsThePixel) {
     ASSERT_EQ(session->renderSize(), glm::ivec2(40, 32));
     EXPECT_FALSE(session->model().pinnedPixel);
     EXPECT_FALSE(session->inspectPinnedPixel());
+}
+
+// The pin holds on to what it showed: after an orbit the Pixel panel still describes the surface
+// it pinned (where the traced paths start), says the camera moved, and a re-pin or the pinned
+// camera brings the pixel and the pin together again.
+TEST(PixelInspector, AnOrbitKeepsThePinnedSurfaceAndSaysTheCameraMoved) {
+    std::unique_ptr<ViewerSession> session = openSession(kCornell, {32, 32});
+    renderSamples(*session, 1);
+    const glm::ivec2 pixel(8, 16);
+    session->pinPixel(pixel);
+    std::optional<PixelInspection> pinned = session->inspectPinnedPixel();
+    ASSERT_TRUE(pinned && pinned->hit);
+    EXPECT_FALSE(pinned->cameraMoved);
+    const CameraDesc pinCamera = session->model().scene.camera;
+
+    session->model().scene.camera = orbitCamera(pinCamera, 35.0f, 10.0f);
+    session->model().pendingChanges |= ViewerModel::kCameraChanged;
+    renderSamples(*session, 1);
+    std::optional<PixelInspection> moved = session->inspectPinnedPixel();
+    ASSERT_TRUE(moved && moved->hit);
+    EXPECT_TRUE(moved->cameraMoved);
+    EXPECT_EQ(moved->pinnedCamera.eye, pinCamera.eye);
+    EXPECT_EQ(moved->hit->position, pinned->hit->position) << "the pin describes the surface it pinned, not a new probe";
+    EXPECT_EQ(moved->hit->shape, pinned->hit->shape);
+
+    session->restorePinnedCamera(); // "Back to the pinned camera"
+    renderSamples(*session, 2);
+    std::optional<PixelInspection> back = session->inspectPinnedPixel();
+    ASSERT_TRUE(back && back->hit);
+    EXPECT_FALSE(back->cameraMoved);
+    EXPECT_EQ(back->hit->position, pinned->hit->position);
+
+    session->model().scene.camera = orbitCamera(pinCamera, 35.0f, 10.0f);
+    session->model().pendingChanges |= ViewerModel::kCameraChanged;
+    renderSamples(*session, 3);
+    session->pinPixel(pixel); // "Re-pin here"
+    std::optional<PixelInspection> repinned = session->inspectPinnedPixel();
+    ASSERT_TRUE(repinned && repinned->hit);
+    EXPECT_FALSE(repinned->cameraMoved);
+    EXPECT_GT(glm::length(repinned->hit->position - pinned->hit->position), 0.01f) << "the pixel now shows another place";
 }
 
 } // namespace

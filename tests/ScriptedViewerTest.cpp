@@ -668,6 +668,34 @@ quit
     fs::remove_all(directory);
 }
 
+// The wheel belongs to what is under the pointer when it turns: a pointer that reaches the
+// sidebar and a wheel turned in the same frame (ImGui's WantCaptureMouse still of the frame before,
+// over the image) must not zoom the camera, which would restart the accumulation.
+TEST_F(ScriptedViewer, TheWheelOverTheSidebarNeverZoomsEvenInTheFrameThePointerArrives) {
+    fs::path directory = freshDirectory("wheel");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
+wait-spp 1
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+quit
+)";
+    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
+                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_wheel.sh " + PTVIEW_BINARY);
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 3u) << result.output;
+    glm::vec3 start = eyeOf(status[0]), afterSidebarWheel = eyeOf(status[1]), afterImageWheel = eyeOf(status[2]);
+    EXPECT_EQ(start, afterSidebarWheel) << "a wheel over the sidebar is the sidebar's";
+    EXPECT_GT(glm::length(afterImageWheel - start), 0.01f) << "a wheel over the image zooms";
+    fs::remove_all(directory);
+}
+
 // A reference loaded into the viewer gives the true error: present, small, not zero (another
 // seed), and absent for a reference of another size.
 TEST_F(ScriptedViewer, ReferenceImageGivesTheTrueErrorInStatus) {

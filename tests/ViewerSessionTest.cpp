@@ -1,5 +1,6 @@
 // The viewer's session headless: hot reload of the scene and the shaders keeps the last good
 // ones and the user's edits, the split view renders both sides, screenshots land where they say.
+#include <ptview/commands/SceneFromImage.h>
 #include <ptview/io/ExrIO.h>
 #include <ptview/gl/Readback.h>
 #include "GlTestContext.h"
@@ -481,7 +482,7 @@ TEST_F(ViewerSessionTest, ASceneCarriedByAnImageHasNoSaveTarget) {
     ViewerSession session(std::move(*input), testing::naiveSettings(3, 0), DisplaySettings{}, PTVIEW_SHADER_DIR);
     EXPECT_EQ(session.saveTarget(), "");
     EXPECT_TRUE(session.model().fileScene.path.empty());
-    EXPECT_FALSE(session.hasUnsavedEdits()) << "opening is no edit";
+    EXPECT_TRUE(session.hasUnsavedEdits()) << "the named file does not hold the image's scene: only the image does";
     EXPECT_NE(session.model().notice.find("shot.png"), std::string::npos) << session.model().notice;
     session.model().scene.materials[0].color *= 0.5f;
     EXPECT_TRUE(session.hasUnsavedEdits());
@@ -491,6 +492,47 @@ TEST_F(ViewerSessionTest, ASceneCarriedByAnImageHasNoSaveTarget) {
     EXPECT_FALSE(prompt.quitConfirmed());
     EXPECT_NE(prompt.saveError().find("no file to save to"), std::string::npos) << prompt.saveError();
     EXPECT_EQ(testing::readFileBytes(notes), "my notes\n");
+    fs::remove_all(directory);
+}
+
+// Opening a screenshot: the scene it carries counts as unsaved (the star; Save asks for a name)
+// unless the file it names holds it as it is. A lens the user set before the screenshot is such a
+// difference; the named file is read only inside the image's folder, as the scene's files are.
+TEST_F(ViewerSessionTest, AScreenshotsSceneIsUnsavedUnlessTheFileItNamesHoldsIt) {
+    fs::path directory = freshDirectory("screenshot-star");
+    fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/cornell.json", directory / "scene.json");
+    fs::create_directories(directory / "elsewhere");
+    auto session = openSession(directory / "scene.json");
+    renderSamples(*session, 1);
+    session->writeImage(ViewerSession::Side::Left, directory / "same.png");
+    fs::copy_file(directory / "same.png", directory / "elsewhere" / "same.png");
+    session->model().scene.camera.apertureRadius = 0.05f;
+    session->model().pendingChanges |= ViewerModel::kCameraChanged;
+    renderSamples(*session, 1);
+    session->writeImage(ViewerSession::Side::Left, directory / "lens.png");
+
+    struct Case {
+        fs::path image;
+        bool unsaved;
+        const char* why;
+    };
+    for (const Case& c : {Case{directory / "same.png", false, "scene.json holds the image's scene"},
+                          Case{directory / "lens.png", true, "the lens differs from scene.json"},
+                          Case{directory / "elsewhere" / "same.png", true, "scene.json is outside the image's folder: unread"}}) {
+        SCOPED_TRACE(c.why);
+        std::optional<Provenance> provenance;
+        std::optional<SceneInput> input = loadSceneInputFromImage(c.image.string(), provenance);
+        ASSERT_TRUE(input);
+        EXPECT_EQ(input->carriedSceneIsInItsFile, !c.unsaved);
+        ViewerSession opened(std::move(*input), testing::naiveSettings(3, 0), DisplaySettings{}, PTVIEW_SHADER_DIR);
+        EXPECT_EQ(opened.hasUnsavedEdits(), c.unsaved);
+        EXPECT_EQ(opened.unsavedEdits(), c.unsaved ? std::vector<std::string>{"scene"} : std::vector<std::string>{});
+        EXPECT_EQ(opened.saveTarget(), "") << "still no save target (docs/robustness.md)";
+        if (c.unsaved) {
+            opened.saveSceneAs(directory / "saved.json");
+            EXPECT_FALSE(opened.hasUnsavedEdits()) << "saved";
+        }
+    }
     fs::remove_all(directory);
 }
 

@@ -19,7 +19,9 @@
 
 namespace ptview {
 
-// The scene a .png or .exr carries, and in `provenance` the rest of what it says. Prints
+// The scene a .png or .exr carries, and in `provenance` the rest of what it says. Its
+// SceneInput::carriedSceneIsInItsFile says whether the file it names holds the same scene, that
+// file read only inside the same boundary (a file outside is not read, nor offered to allow). Prints
 // "ptview: FILE: ..." and returns nullopt when the file has no usable metadata or scene.
 // `scope`, when given, records the files the boundary refused (what the viewer offers to allow).
 std::optional<SceneInput> loadSceneInputFromImage(const std::string& imagePath, std::optional<Provenance>& provenance,

@@ -22,6 +22,10 @@ struct SceneInput {
     // a scene has no file of its own: its Scene::path is what the image claims, which sets no
     // save or reload target (docs/robustness.md).
     std::filesystem::path carriedBy;
+    // For a carried scene: whether the file it names holds exactly this scene, as far as the
+    // image's trust boundary lets us read that file (SceneFromImage.h). When it does not, or
+    // cannot be read, the scene exists only in the image: the viewer counts it as unsaved.
+    bool carriedSceneIsInItsFile = false;
 
     const EnvironmentMap* environmentMapOrNull() const { return environmentMap ? &*environmentMap : nullptr; }
 };

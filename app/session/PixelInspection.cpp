@@ -21,6 +21,10 @@ const char* finiteStatus(const glm::vec3& mean) {
     return "finite";
 }
 
+bool sameView(const CameraDesc& a, const CameraDesc& b) {
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.vfovDeg == b.vfovDeg;
+}
+
 std::string pixelInspectionJson(const PixelInspection& inspection, const Scene& scene) {
     const PixelReading& reading = inspection.reading;
     nlohmann::ordered_json out;
@@ -36,6 +40,8 @@ std::string pixelInspectionJson(const PixelInspection& inspection, const Scene& 
         out["denoised"] = vectorJson(*inspection.denoised);
         out["denoised_spp"] = inspection.denoisedSamples;
     }
+    // "hit" is the surface the pixel showed when pinned; after a camera move the mean is not of it.
+    out["camera_moved_since_pin"] = inspection.cameraMoved;
     if (!inspection.hit) {
         out["hit"] = nullptr; // the ray escapes to the environment
     } else {

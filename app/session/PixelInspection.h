@@ -24,7 +24,17 @@ struct PixelInspection {
     std::optional<glm::vec3> denoised;
     int denoisedSamples = 0;
     std::optional<SurfaceHit> hit; // nullopt: the ray escapes to the environment
+    // The pin holds on to what it showed: `hit` is probed with the camera the pixel was pinned
+    // under (`pinnedCamera`), and a camera move since (cameraMoved) does not probe again, so
+    // the surface described stays the one the traced paths start at. `reading` is always the
+    // pixel of the render as it is now, which after a camera move shows another place.
+    CameraDesc pinnedCamera;
+    bool cameraMoved = false;
 };
+
+// Whether two cameras send the same pinhole ray through every pixel (eye, target, up, field of
+// view); the lens alone does not move a pin.
+bool sameView(const CameraDesc& a, const CameraDesc& b);
 
 // "finite", "NaN" or "Inf" for the mean (any channel; NaN first).
 const char* finiteStatus(const glm::vec3& mean);

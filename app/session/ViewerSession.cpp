@@ -63,8 +63,12 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
     if (!input.carriedBy.empty()) {
         // The scene file an image names is the sender's word, not a file of the user's: it is
         // neither written by Save nor watched for reload (docs/robustness.md).
+        const std::filesystem::path named = model_.scene.path;
         model_.scene.path.clear();
+        carriedSceneUnsaved_ = !input.carriedSceneIsInItsFile;
         model_.notice = "opened the scene carried by " + input.carriedBy.string() +
+                        (carriedSceneUnsaved_ ? "; it differs from " + named.string() + " (or that file cannot be read from the image's folder)"
+                                              : "; it is the scene of " + named.string()) +
                         "; it has no file of its own: type one in Materials > Save scene as to save it";
     }
     model_.fileScene = model_.scene;
@@ -104,6 +108,7 @@ bool ViewerSession::openScene(const std::filesystem::path& path) {
         std::optional<EnvironmentMap> map;
         if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
         model_.fileScene = scene;
+        carriedSceneUnsaved_ = false;
         saveTarget_ = path.string(); // Save must not write the new scene over the last one's file
         model_.notice = "opened " + path.string();
         for (const std::string& warning : scene.warnings) model_.notice += "\nwarning: " + warning;
@@ -201,7 +206,18 @@ std::optional<glm::ivec2> ViewerSession::pixelAt(glm::vec2 imageFraction) const 
 
 void ViewerSession::togglePinnedPixel(glm::ivec2 pixel) {
     if (model_.pinnedPixel == pixel) model_.pinnedPixel.reset();
-    else model_.pinnedPixel = pixel;
+    else pinPixel(pixel);
+}
+
+void ViewerSession::pinPixel(glm::ivec2 pixel) {
+    model_.pinnedPixel = pixel;
+    pixelProbe_ = PixelProbe{}; // a new pin: probed under the camera as it is now
+}
+
+void ViewerSession::restorePinnedCamera() {
+    if (!model_.pinnedPixel || pixelProbe_.restartCount < 0) return;
+    model_.scene.camera = pixelProbe_.camera;
+    model_.pendingChanges |= ViewerModel::kCameraChanged;
 }
 
 ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
@@ -213,7 +229,10 @@ ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
 }
 
 std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
-    if (!model_.pinnedPixel) return std::nullopt;
+    if (!model_.pinnedPixel) {
+        pixelProbe_ = PixelProbe{}; // pinning the same pixel again is a new pin
+        return std::nullopt;
+    }
     glm::ivec2 pixel = *model_.pinnedPixel;
     Side side = sideOf(pixel);
     PathTracer& tracer = *view(side).tracer;
@@ -230,12 +249,21 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
         inspection.denoised = tracer.readDenoisedPixel(pixel);
         inspection.denoisedSamples = tracer.denoisedSampleCount();
     }
-    if (pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount != tracer.restartCount()) {
+    const CameraDesc& camera = model_.scene.camera;
+    const bool newPin = pixelProbe_.pixel != pixel || pixelProbe_.side != side || pixelProbe_.restartCount < 0;
+    // A scene edit under the pin's camera may change what the pixel shows: probe again. After a
+    // camera move the tracer's rays are another camera's, and the pin keeps what it showed.
+    // (Only once update() has given the tracer the model's camera: until then its rays are the last frame's.)
+    const bool sceneChangedUnderPin = pixelProbe_.restartCount != tracer.restartCount() && sameView(pixelProbe_.camera, camera) &&
+                                      (model_.pendingChanges & ViewerModel::kCameraChanged) == 0;
+    if (newPin || sceneChangedUnderPin) {
         // The pinhole ray through the pixel's centre; the film counts rows from the bottom.
         glm::vec2 filmPos(static_cast<float>(pixel.x) + 0.5f, static_cast<float>(size.y - pixel.y) - 0.5f);
-        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), tracer.probeSurface(filmPos)};
+        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), camera, tracer.probeSurface(filmPos)};
     }
     inspection.hit = pixelProbe_.hit;
+    inspection.pinnedCamera = pixelProbe_.camera;
+    inspection.cameraMoved = !sameView(pixelProbe_.camera, camera);
     return inspection;
 }
 
@@ -243,6 +271,7 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
 // the file, and a field the file does not keep (one the material's type does not use) does not.
 // Materials a glTF file made are in it too, as overrides in the file's reference.
 bool ViewerSession::hasUnsavedEdits() const {
+    if (carriedSceneUnsaved_) return true; // the image holds it, no file does
     try {
         return sceneToJson(model_.scene) != sceneToJson(model_.fileScene);
     } catch (const std::exception&) { // a model no file can hold is certainly not the file's
@@ -256,7 +285,10 @@ std::vector<std::string> ViewerSession::unsavedEdits() const {
     std::vector<std::string> kinds;
     try {
         const std::string fileJson = sceneToJson(file);
-        if (sceneToJson(edited) == fileJson) return kinds;
+        if (sceneToJson(edited) == fileJson) {
+            if (carriedSceneUnsaved_) kinds.push_back("scene"); // all of it: the image holds it, no file does
+            return kinds;
+        }
         // Each kind alone on the file's scene: does it change what the file would hold?
         auto differs = [&](const char* kind, auto copyPart) {
             Scene partial = file;
@@ -283,6 +315,7 @@ void ViewerSession::saveSceneAs(const std::filesystem::path& path) {
     saveScene(model_.scene, path);
     model_.scene.path = path;
     model_.fileScene = model_.scene;
+    carriedSceneUnsaved_ = false;
     saveTarget_ = path.string();
     watchFiles();
 }

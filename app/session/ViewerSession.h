@@ -83,16 +83,23 @@ public:
     std::optional<glm::ivec2> pixelAt(glm::vec2 imageFraction) const;
     // Alt+click: pins the pixel, or unpins it when it is the one pinned.
     void togglePinnedPixel(glm::ivec2 pixel);
+    // Pins the pixel under the camera as it is now (`pin-pixel`, and the Pixel panel's "Re-pin
+    // here" after a camera move): its first hit is probed afresh.
+    void pinPixel(glm::ivec2 pixel);
+    // The Pixel panel's "Back to the pinned camera": the camera the pixel was pinned under.
+    void restorePinnedCamera();
     // Split view: the view whose numbers a pixel shows, by the side of the divider its centre is on.
     Side sideOf(glm::ivec2 pixel) const;
     // The pinned pixel's numbers now: one pixel read back from that side's accumulation (and from
-    // its denoised image, where the side shows one), and the first hit, probed again only when
-    // the pixel, the side or the tracer's accumulation (camera, scene) changed. nullopt when none
-    // is pinned or it is outside the render.
+    // its denoised image, where the side shows one), and the first hit. The hit is probed with
+    // the camera of the pin and again only when the pixel or the side changed, or the scene
+    // changed while the camera is still the pin's: a camera move keeps the pinned surface
+    // (PixelInspection::cameraMoved says so). nullopt when none is pinned or it is outside the render.
     std::optional<PixelInspection> inspectPinnedPixel();
     // Whether the scene in memory differs from its file in anything the file holds, the camera
     // included (a view the user set up is work): what quitting or opening another scene would
-    // throw away.
+    // throw away. A scene an image carried counts as edits until saved, unless the file it names
+    // holds it as it is (SceneInput::carriedSceneIsInItsFile).
     bool hasUnsavedEdits() const;
     // The kinds of those edits, in this order: "materials" (those a glTF file made too),
     // "lights", "camera", "environment", and "scene" for anything else; empty when there are none.
@@ -242,12 +249,16 @@ private:
     SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
     bool seenCompare_ = false;
     std::string saveTarget_;
+    // The open scene came from an image and no file holds it (SceneInput::carriedSceneIsInItsFile
+    // false): unsaved until Save writes it or another scene is opened.
+    bool carriedSceneUnsaved_ = false;
     std::vector<std::filesystem::path> allowedDirectories_; // --allow-dir and the prompt's answers (ReadScope.h)
     // The pixel inspector's last probe, and what it was probed for.
     struct PixelProbe {
         glm::ivec2 pixel{-1};
         Side side = Side::Left;
         int restartCount = -1;
+        CameraDesc camera; // the view the hit was probed with: the pin's
         std::optional<SurfaceHit> hit;
     };
     PixelProbe pixelProbe_;

@@ -53,8 +53,9 @@ void drawPixelPanel(ViewerSession& session, PanelState& state);
 // Mouse and keyboard shortcuts.
 void drawHelpPanel();
 // In the Pixel panel: how many paths to trace for `pixel`, "Trace paths", and the traced paths'
-// vertex table (PathsPanel.cpp).
-void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel);
+// vertex table (PathsPanel.cpp). `cameraMoved` (PixelInspection::cameraMoved): the pixel now sees
+// another place than the pin, so tracing is offered only after a re-pin.
+void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel, bool cameraMoved);
 // The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,
 // Discard, Cancel. Drawn outside the sidebar, so it shows with the sidebar hidden too.
 void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state);

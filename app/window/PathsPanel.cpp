@@ -99,7 +99,7 @@ void vertexDetails(const PathVertex& v) {
 
 } // namespace
 
-void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel) {
+void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel, bool cameraMoved) {
     ViewerModel& model = session.model();
     ImGui::Separator();
     ImGui::TextUnformatted("Paths behind the pixel");
@@ -107,7 +107,11 @@ void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixe
     if (ImGui::InputInt("paths", &model.pathCount)) model.pathCount = std::clamp(model.pathCount, 1, kMaxTracedPaths);
     itemTooltip("how many of the pixel's samples to trace again (samples 0 .. N-1 of the render)");
     ImGui::SameLine();
-    if (ImGui::Button("Trace paths")) {
+    ImGui::BeginDisabled(cameraMoved); // the tracer would trace the pixel from here, not the pinned surface's paths
+    bool trace = ImGui::Button("Trace paths");
+    ImGui::EndDisabled();
+    if (cameraMoved) itemTooltip("the camera moved since the pin: Re-pin here (above) to trace from this camera");
+    if (trace) {
         try {
             session.tracePaths(pixel, model.pathCount);
             state.selectedPath = PathPick{0, -1};

@@ -63,6 +63,21 @@ void drawHit(const ViewerSession& session, const SurfaceHit& hit, PanelState& st
     ImGui::Text("uv        %.4g  %.4g", hit.uv.x, hit.uv.y);
 }
 
+// After a camera move the pin keeps its surface and paths (PixelInspection::cameraMoved): say so
+// where the numbers start, and offer both ways to make the pixel and the pin agree again.
+void drawCameraMovedNote(ViewerSession& session, const PixelInspection& inspection) {
+    const glm::vec3& eye = inspection.pinnedCamera.eye;
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "pinned at the camera of eye %.3g %.3g %.3g; the camera moved", eye.x, eye.y,
+                       eye.z);
+    itemTooltip("the first hit below and the traced paths are what the pixel showed when pinned;\n"
+                "spp, radiance and displayed are of this pixel in the render now, which shows another place");
+    if (ImGui::SmallButton("Re-pin here")) session.pinPixel(inspection.pixel);
+    itemTooltip("pin this pixel under the camera as it is now");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Back to the pinned camera")) session.restorePinnedCamera();
+    itemTooltip("move the camera back to where the pixel was pinned (restarts the accumulation)");
+}
+
 } // namespace
 
 void drawPixelPanel(ViewerSession& session, PanelState& state) {
@@ -74,6 +89,7 @@ void drawPixelPanel(ViewerSession& session, PanelState& state) {
     const PixelReading& reading = inspection->reading;
     ImGui::Text("pixel %d, %d of %dx%d (from the top-left)", inspection->pixel.x, inspection->pixel.y, inspection->imageSize.x,
                 inspection->imageSize.y);
+    if (inspection->cameraMoved) drawCameraMovedNote(session, *inspection);
     if (inspection->comparing) ImGui::Text("split view: the %s side's render", inspection->rightSide ? "right" : "left");
     ImGui::Text("%d spp", reading.sampleCount);
     vectorRow("radiance", reading.mean);
@@ -97,11 +113,12 @@ void drawPixelPanel(ViewerSession& session, PanelState& state) {
     if (std::string(status) == "finite") ImGui::TextUnformatted("mean is finite");
     else ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "mean is %s", status);
     ImGui::Separator();
+    if (inspection->cameraMoved) ImGui::TextUnformatted("when pinned:");
     if (inspection->hit) drawHit(session, *inspection->hit, state);
     else ImGui::TextUnformatted("no surface (environment): the ray escapes");
     if (ImGui::Button("Unpin")) session.model().pinnedPixel.reset();
     drawMagnifier(session, *inspection, state.pixelMagnifier);
-    drawPathsSection(session, state, inspection->pixel);
+    drawPathsSection(session, state, inspection->pixel, inspection->cameraMoved);
 }
 
 } // namespace ptview

@@ -335,7 +335,7 @@ void pinPixel(Step& s) {
                ", y 0.." + std::to_string(size.y - 1) + " from the top-left)");
         return;
     }
-    s.model.pinnedPixel = pixel;
+    s.session.pinPixel(pixel);
     s.panels.panelsToOpen.push_back("pixel");
 }
 

@@ -51,7 +51,11 @@ constexpr std::chrono::milliseconds kTitleInterval{250}; // how soon the title's
 // from the key callback, so a press shorter than a (slow) frame is never lost.
 struct InputEvents {
     std::vector<int> pressedKeys;
-    double scrollSteps = 0.0;
+    double scrollSteps = 0.0; // of the wheel turned over the image area only
+    // The image area in window coordinates (top-left origin), as the last layout placed it: a
+    // wheel turned anywhere else (over the sidebar) is the sidebar's, and never zooms.
+    glm::dvec2 imageTopLeft{0.0};
+    glm::dvec2 imageBottomRight{0.0};
     float contentScale = 1.0f;
     bool contentScaleChanged = false;
 };
@@ -65,8 +69,15 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
     if (action == GLFW_PRESS) events(window).pressedKeys.push_back(key);
 }
 
+// Judged by where the pointer is when the wheel turns, not by ImGui's WantCaptureMouse alone:
+// that flag is of the last frame, so a pointer that reached the sidebar and a wheel turned within
+// one frame would zoom the camera and restart the accumulation.
 void onScroll(GLFWwindow* window, double /*x*/, double y) {
-    events(window).scrollSteps += y;
+    InputEvents& input = events(window);
+    glm::dvec2 cursor;
+    glfwGetCursorPos(window, &cursor.x, &cursor.y);
+    bool overImage = glm::all(glm::greaterThanEqual(cursor, input.imageTopLeft)) && glm::all(glm::lessThan(cursor, input.imageBottomRight));
+    if (overImage) input.scrollSteps += y;
 }
 
 void onContentScale(GLFWwindow* window, float xScale, float /*yScale*/) {
@@ -394,6 +405,9 @@ void ViewerWindow::layout() {
     int sidebarPixels = sidebarVisible_ ? static_cast<int>(sidebarWidth_ * framebufferScale_.x) : 0;
     sidebarPixels = std::min(sidebarPixels, framebufferSize_.x - 1); // keep a column of image
     session_.setImageArea(PixelRect{{sidebarPixels, 0}, {framebufferSize_.x - sidebarPixels, framebufferSize_.y}});
+    // The same area for the scroll callback, which runs between frames.
+    events(window_).imageTopLeft = glm::dvec2(static_cast<double>(sidebarPixels) / framebufferScale_.x, 0.0);
+    events(window_).imageBottomRight = glm::dvec2(windowSize);
 }
 
 void ViewerWindow::drawSidebar() {
