@@ -192,6 +192,7 @@ status
 copy-file good.json scene.json
 wait-reload
 status
+wait-spp 1
 save-screenshots
 status
 quit

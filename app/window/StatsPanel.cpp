@@ -26,11 +26,12 @@ void drawErrorPlot(const ViewerSession::ViewStats& stats) {
         if (relativeMse > 0.0f && std::isfinite(relativeMse)) logErrors.push_back(std::log10(float(relativeError(relativeMse))));
     if (logErrors.size() < 2) return;
     char overlay[48];
-    std::snprintf(overlay, sizeof overlay, "%.3g %% (log scale)", 100.0 * relativeError(stats.errorHistory.back().second));
+    std::snprintf(overlay, sizeof overlay, "noise %.3g %% (log scale)", 100.0 * relativeError(stats.errorHistory.back().second));
     // An explicit width: PlotLines in ImGui 1.86 does not take -1 to mean "to the right edge".
     ImGui::PlotLines("##error", logErrors.data(), static_cast<int>(logErrors.size()), 0, overlay, FLT_MAX, FLT_MAX,
                      ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
-    itemTooltip("log10 of the estimated relative error, about once a second of rendering while the estimate is reliable");
+    itemTooltip("log10 of the estimated noise (relative error without bias), about once a second of rendering while the\n"
+                "estimate is reliable");
 }
 
 void drawViewStats(const ViewerSession& session, ViewerSession::Side side, double frameSeconds) {
