@@ -1,5 +1,7 @@
-// What the panels say where it depends on numbers and state (issue 37: "1 programs compiled", and
-// "left: full, sobol" with no split view to be the left of).
+// What the panels and the image say where it depends on numbers and state (issue 37: "1 programs
+// compiled", "left: full, sobol" with no split view to be the left of, an error figure printed
+// beside a spp it was not measured at, an estimate of noise called "error", feedback that only
+// the sidebar gave).
 #include <ptview/window/PanelText.h>
 
 #include <gtest/gtest.h>
@@ -43,6 +45,75 @@ TEST(PanelText, EveryWidgetLabelFitsTheSidebarsLabelColumn) {
         }
     }
     EXPECT_GT(labels, 30) << "the widgets were found";
+}
+
+ErrorEstimate reliableEstimate(double relativeErrorFraction) {
+    ErrorEstimate estimate;
+    estimate.reliable = true;
+    estimate.relativeMse = relativeErrorFraction * relativeErrorFraction;
+    return estimate;
+}
+
+ErrorMetrics trueError(double relativeErrorFraction) {
+    ErrorMetrics metrics;
+    metrics.relativeMse = relativeErrorFraction * relativeErrorFraction;
+    return metrics;
+}
+
+// The error is measured about once a second: "16 spp ... relative error 29.6%" was the 2-spp value.
+TEST(PanelText, AnErrorFigureSaysTheSppItWasMeasuredAt) {
+    EXPECT_EQ(noiseEstimateText(reliableEstimate(0.092), 16), "noise ~9.2% (at 16 spp)");
+    EXPECT_EQ(trueErrorText(trueError(0.296), 2), "true error 29.6% (at 2 spp)");
+    EXPECT_EQ(noiseEstimateText(ErrorEstimate{}, 16), "noise -") << "no figure, no count";
+}
+
+// Direct lighting alone showed "error ~0.54%" beside full's "~11.25%" though it lacks all the
+// indirect light: the estimate sees noise, not bias, so it is called noise, and with a reference
+// the true error stands beside it.
+TEST(PanelText, TheSplitViewLabelCallsTheEstimateNoiseAndShowsTheTrueErrorBesideIt) {
+    EXPECT_EQ(splitLabelNumbers(16, 1.3, reliableEstimate(0.0054), nullptr, 16), "16 spp, 1.3 s, raw noise ~0.54% (at 16 spp)");
+    ErrorMetrics reference = trueError(0.278);
+    EXPECT_EQ(splitLabelNumbers(20, 1.3, reliableEstimate(0.0054), &reference, 16),
+              "20 spp, 1.3 s, raw noise ~0.54% (at 16 spp), true error 27.8% (at 16 spp)");
+}
+
+// After Tab hides the sidebar, the image says what it shows when that is not the plain render.
+TEST(PanelText, TheImageIsLabelledWhenItIsNotThePlainRender) {
+    RenderSettings settings;
+    EXPECT_EQ(imageContentLabel(settings, false), "");
+    EXPECT_EQ(imageContentLabel(settings, true), "denoised");
+    settings.lightPaths = LightPaths::Direct;
+    EXPECT_EQ(imageContentLabel(settings, false), "light paths: direct only");
+    EXPECT_EQ(imageContentLabel(settings, true), "light paths: direct only, denoised");
+    settings.lightPaths = LightPaths::Exactly;
+    settings.lightPathBounces = 2;
+    EXPECT_EQ(imageContentLabel(settings, false), "light paths: exactly 2 bounces");
+    settings.lightPaths = LightPaths::AtMost;
+    settings.lightPathBounces = 1;
+    EXPECT_EQ(imageContentLabel(settings, false), "light paths: at most 1 bounce");
+    settings.debugView = DebugView::Normals;
+    EXPECT_EQ(imageContentLabel(settings, false), "view: normals") << "a debug view replaces the radiance";
+}
+
+// A reload error sat below the fold of the sidebar: the title says the last file did not apply,
+// and clears with the error (which a successful reload clears).
+TEST(PanelText, TheTitleSaysWhenTheLastSceneOrShaderFileDidNotApply) {
+    const std::string dash = " \xE2\x80\x94 ";
+    EXPECT_EQ(windowTitle("dir/cornell.json", false, "", ""), "ptview" + dash + "cornell.json");
+    EXPECT_EQ(windowTitle("dir/cornell.json", true, "", ""), "ptview" + dash + "cornell.json *");
+    EXPECT_EQ(windowTitle("dir/cornell.json", true, "cornell.json: /shapes/0: no such material", ""),
+              "ptview" + dash + "cornell.json *" + dash + "load failed: see Scene panel");
+    EXPECT_EQ(windowTitle("", false, "", "pathtrace.frag:12: syntax error"),
+              "ptview" + dash + "untitled" + dash + "shader reload failed: see Render panel");
+    EXPECT_EQ(reloadFailureNote("", ""), "");
+    EXPECT_EQ(reloadFailureNote("x", "y"), "scene not applied: see Scene panel\nshader not applied: see Render panel");
+}
+
+// F12 confirmed only inside the Render panel: the image says which files it wrote.
+TEST(PanelText, AScreenshotNoticeNamesTheFilesWritten) {
+    std::vector<std::filesystem::path> files = {"screenshots/cornell-1.png", "screenshots/cornell-1.pfm",
+                                                "screenshots/cornell-1.exr"};
+    EXPECT_EQ(screenshotNotice(files), "saved screenshots/cornell-1.png, cornell-1.pfm, cornell-1.exr");
 }
 
 } // namespace

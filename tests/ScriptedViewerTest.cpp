@@ -169,6 +169,53 @@ quit
     fs::remove_all(directory);
 }
 
+// What the window says beyond the sidebar, for when Tab hides it or a panel is scrolled away
+// (issue 37): what the image shows when it is not the plain render, that the last save of the
+// scene did not apply (cleared by a good one), and which files F12 wrote. The status line gives
+// the title, the image's label and its last notice as the window draws them (PanelText.h).
+TEST_F(ScriptedViewer, TheTitleAndTheImageSayWhatTheSidebarWouldSay) {
+    fs::path directory = freshDirectory("feedback");
+    fs::copy_file(kCornell, directory / "scene.json");
+    fs::copy_file(kCornell, directory / "good.json");
+    std::ofstream(directory / "broken.json") << "{ \"camera\": ";
+    testing::CommandResult result = runViewer(directory, (directory / "scene.json").string(), R"(resolution-scale 0.125
+target-spp 1
+light-paths direct
+denoise on
+wait-spp 1
+status
+light-paths all
+denoise off
+copy-file broken.json scene.json
+wait-reload
+status
+copy-file good.json scene.json
+wait-reload
+status
+wait-spp 1
+save-screenshots
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 4u) << result.output;
+    const std::string title = "ptview \xE2\x80\x94 scene.json";
+    EXPECT_EQ(field(status[0], "image-label"), "\"light paths: direct only, denoised\"");
+    EXPECT_EQ(field(status[0], "title"), "\"" + title + "\"");
+    EXPECT_EQ(field(status[1], "image-label"), "\"\"") << "the plain render has no label";
+    EXPECT_NE(field(status[1], "scene-error"), "\"\"");
+    EXPECT_EQ(field(status[1], "title"), "\"" + title + " \xE2\x80\x94 load failed: see Scene panel\"");
+    EXPECT_EQ(field(status[2], "scene-error"), "\"\"");
+    EXPECT_EQ(field(status[2], "title"), "\"" + title + "\"") << "a good reload clears it";
+    EXPECT_EQ(field(status[2], "notice"), "\"\"");
+    const std::string notice = field(status[3], "notice");
+    EXPECT_EQ(notice.rfind("\"saved screenshots/", 0), 0u) << notice;
+    EXPECT_NE(notice.find(".png, "), std::string::npos) << notice;
+    EXPECT_NE(notice.find(".exr"), std::string::npos) << notice;
+    fs::remove_all(directory);
+}
+
 // A direction is any non-zero vector and is stored at unit length. A float's square underflows
 // for (1e-30, 0, 0) and overflows for (1e20, 1e20, 1e20): normalized in float they became Inf and
 // (0, 0, 0), and the spot light a NaN in the shader.

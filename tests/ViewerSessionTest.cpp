@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -324,6 +325,36 @@ TEST_F(ViewerSessionTest, TargetSamplesStopsAccumulationAtExactlyTheTarget) {
     EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 5);
     session->renderFrame();
     EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 5);
+}
+
+// The error (estimate and true error) is measured about once a second, not every frame: the
+// Stats panel printed a 2-spp figure beside "16 spp". Each figure carries the count and the
+// seconds it was measured at, which the panels print beside it.
+TEST_F(ViewerSessionTest, ErrorFiguresCarryTheSppTheyWereMeasuredAt) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    session->model().maxSamplesPerFrame = 1;
+    session->update();
+    int measuredAt = 0;
+    bool sawAnOlderFigure = false;
+    auto start = std::chrono::steady_clock::now();
+    for (int frame = 0; frame < 400 && std::chrono::steady_clock::now() - start < std::chrono::seconds(3); ++frame) {
+        session->renderFrame();
+        ViewerSession::ViewStats stats = session->stats(ViewerSession::Side::Left);
+        ASSERT_LE(stats.errorSamples, stats.samples);
+        ASSERT_LE(stats.errorSeconds, stats.renderSeconds);
+        if (stats.errorSamples != measuredAt) {
+            // A new measurement happens at the end of a frame: of the samples that frame left.
+            EXPECT_EQ(stats.errorSamples, stats.samples);
+            EXPECT_EQ(stats.errorSeconds, stats.renderSeconds);
+            measuredAt = stats.errorSamples;
+        }
+        if (measuredAt >= 2 && stats.samples > stats.errorSamples) {
+            sawAnOlderFigure = true;
+            EXPECT_LT(stats.errorSeconds, stats.renderSeconds);
+        }
+    }
+    EXPECT_GE(measuredAt, 2) << "an estimate was made";
+    EXPECT_TRUE(sawAnOlderFigure) << "between measurements the figure is of fewer samples than the image, and says so";
 }
 
 TEST_F(ViewerSessionTest, UnreadableSceneOrMapLeavesTheCurrentSceneAlone) {

@@ -715,6 +715,7 @@ void ViewerSession::updateErrorEstimate(View& view) {
     if (secondsSince(view.lastEstimate) < kErrorEstimateIntervalSeconds) return;
     view.lastEstimate = Clock::now();
     view.estimatedSamples = samples;
+    view.estimatedSeconds = view.renderSeconds;
     PixelStatistics statistics = view.tracer->readStatistics();
     recordErrorEstimate(view, statistics);
     const ImageRgbF* reference = model_.reference.get();
@@ -789,6 +790,8 @@ ViewerSession::ViewStats ViewerSession::stats(Side side) const {
     glm::ivec2 size = v.tracer->imageSize();
     if (v.renderSeconds > 0.0)
         stats.samplesPerSecond = double(size.x) * size.y * (stats.samples + double(v.tracer->nextRow()) / size.y) / v.renderSeconds;
+    stats.errorSamples = v.estimatedSamples;
+    stats.errorSeconds = v.estimatedSeconds;
     stats.error = v.error;
     stats.errorHistory = v.errorHistory;
     stats.trueError = v.trueError;

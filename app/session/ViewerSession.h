@@ -41,7 +41,11 @@ public:
         double renderSeconds = 0.0; // GPU time spent on the current accumulation
         double samplesPerSecond = 0.0;
         // The error estimate and the true error measure the raw accumulation (readStatistics),
-        // whatever the view shows.
+        // whatever the view shows. They are measured about once a second, not every frame: at
+        // errorSamples spp, errorSeconds into the rendering, which the panels print beside them
+        // (a figure beside `samples` alone would pass an old count's error off as the current one).
+        int errorSamples = 0;
+        double errorSeconds = 0.0;
         ErrorEstimate error;
         // (render seconds, estimated relative MSE) once a second or so while the estimate is
         // reliable, for the error-vs-time plot.
@@ -198,7 +202,8 @@ private:
         TileCost previewCost; // of the preview's rows (PathTracer::renderPreviewRows)
         double renderSeconds = 0.0;
         int seenRestartCount = -1; // the tracer's restartCount() when renderSeconds was zeroed
-        int estimatedSamples = 0;  // the sample count `error` was estimated at
+        int estimatedSamples = 0;  // the sample count `error` (and `trueError`) was estimated at
+        double estimatedSeconds = 0.0; // renderSeconds then
         ErrorEstimate error;
         std::vector<std::pair<float, float>> errorHistory;
         std::optional<ErrorMetrics> trueError;

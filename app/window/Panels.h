@@ -8,6 +8,7 @@
 #include <ptview/session/UnsavedEditsPrompt.h>
 #include <ptview/session/ViewerSession.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct PanelState {
     std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
+    // The same, briefly on the image (kImageNoticeSeconds), where it is seen with the sidebar
+    // hidden or the Render panel closed.
+    std::string imageNotice;
+    std::chrono::steady_clock::time_point imageNoticeSince{};
     // Pixel panel: the material its "open in Materials" button asked for (-1: none); the window
     // hands it to the Materials panel and opens that panel.
     int materialToOpen = -1;

@@ -90,10 +90,13 @@ void saveScreenshots(ViewerSession& session, PanelState& state) {
         state.screenshotMessage = "saved";
         for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + printableText(file.string());
         state.screenshotFailed = false;
+        state.imageNotice = printableText(screenshotNotice(files));
     } catch (const std::exception& e) {
         state.screenshotMessage = printableText(std::string("screenshot not saved: ") + e.what());
         state.screenshotFailed = true;
+        state.imageNotice = state.screenshotMessage;
     }
+    state.imageNoticeSince = std::chrono::steady_clock::now();
 }
 
 void drawRenderPanel(ViewerSession& session, PanelState& state) {

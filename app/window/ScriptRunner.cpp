@@ -8,6 +8,7 @@
 #include <ptview/scene/SceneLoader.h>
 #include <ptview/commands/OutputPath.h>
 #include <ptview/commands/PathsJson.h>
+#include <ptview/window/PanelText.h>
 #include <ptview/io/PrintableText.h>
 #include <ptview/io/ImageIO.h>
 #include <ptview/scene/SceneRanges.h>
@@ -114,6 +115,11 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
             " prompt=" + (asking ? actionName(*asking) : "none") + " save-target=" + quoted(session.saveTarget());
     line += " scene=" + quoted(model.scene.path.string()) + " scene-error=" + quoted(model.sceneError) +
             " shader-error=" + quoted(model.shaderError);
+    // What the window says beyond the sidebar: its title, the label on the image (empty for the
+    // plain render) and the last notice drawn on it (PanelText.h decides all three).
+    line += " title=" + quoted(windowTitle(model.fileScene.path, session.hasUnsavedEdits(), model.sceneError, model.shaderError)) +
+            " image-label=" + quoted(imageContentLabel(settings, session.showsDenoised(ViewerSession::Side::Left))) +
+            " notice=" + quoted(panels.imageNotice);
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
 }

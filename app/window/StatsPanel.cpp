@@ -26,11 +26,12 @@ void drawErrorPlot(const ViewerSession::ViewStats& stats) {
         if (relativeMse > 0.0f && std::isfinite(relativeMse)) logErrors.push_back(std::log10(float(relativeError(relativeMse))));
     if (logErrors.size() < 2) return;
     char overlay[48];
-    std::snprintf(overlay, sizeof overlay, "%.3g %% (log scale)", 100.0 * relativeError(stats.errorHistory.back().second));
+    std::snprintf(overlay, sizeof overlay, "noise %.3g %% (log scale)", 100.0 * relativeError(stats.errorHistory.back().second));
     // An explicit width: PlotLines in ImGui 1.86 does not take -1 to mean "to the right edge".
     ImGui::PlotLines("##error", logErrors.data(), static_cast<int>(logErrors.size()), 0, overlay, FLT_MAX, FLT_MAX,
                      ImVec2(ImGui::GetContentRegionAvail().x, kPlotHeight));
-    itemTooltip("log10 of the estimated relative error, about once a second of rendering while the estimate is reliable");
+    itemTooltip("log10 of the estimated noise (relative error without bias), about once a second of rendering while the\n"
+                "estimate is reliable");
 }
 
 void drawViewStats(const ViewerSession& session, ViewerSession::Side side, double frameSeconds) {
@@ -53,20 +54,28 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     // Both come from the raw accumulation (readStatistics): labelled so, since the image shown may
     // be the denoised one.
     if (stats.denoised) noteText("shown: denoised, of " + std::to_string(stats.denoisedSamples) + " spp (biased)");
-    if (stats.error.reliable)
-        ImGui::Text("raw: relative error ~%.3g %% (relMSE %.3g)", 100.0 * relativeError(stats.error.relativeMse),
-                    stats.error.relativeMse);
-    else
-        ImGui::TextUnformatted("raw: relative error -  (not yet reliable)"); // ImGui's default font has no em dash
+    // Each figure with the spp it was measured at (about once a second), and the estimate named
+    // for what it sees: noise, not bias (PanelText.h).
+    std::string estimate = "raw: estimated " + noiseEstimateText(stats.error, stats.errorSamples);
+    if (stats.error.reliable) {
+        char relMse[32];
+        std::snprintf(relMse, sizeof relMse, " (relMSE %.3g)", stats.error.relativeMse);
+        estimate += relMse;
+    } else {
+        estimate += "  (not yet reliable)";
+    }
+    ImGui::TextUnformatted(estimate.c_str());
     if (stats.error.reliable)
         itemTooltip("estimated from the render itself: sqrt of the relative MSE against the image it converges to,\n"
                     "mean of (x - converged)^2 / (converged^2 + 0.01); each pixel's change since an earlier read-back,\n"
-                    "over the brightness of the smallest neighbourhood that knows it (docs/viewer.md). Measures noise, not bias");
+                    "over the brightness of the smallest neighbourhood that knows it (docs/viewer.md).\n"
+                    "It measures noise only: a view that leaves light out (direct only, a low depth) converges to\n"
+                    "the wrong image with a small estimate. Only a reference shows that bias");
     else
         itemTooltip((std::string("no estimate yet: ") + stats.error.unreliableReason).c_str());
     if (stats.trueError) {
         const ErrorMetrics& e = *stats.trueError;
-        ImGui::Text("raw vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g", 100.0 * relativeError(e.relativeMse),
+        ImGui::Text("raw vs reference: %s, relMSE %.3g, RMSE %.3g", trueErrorText(e, stats.errorSamples).c_str(),
                     e.relativeMse, e.rmse);
         itemTooltip("the true error against the loaded reference image: sqrt of the relative MSE,\n"
                     "mean of (x - ref)^2 / (ref^2 + 0.01); includes the reference's own noise");
@@ -74,8 +83,8 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
         itemTooltip("mean of the image minus mean of the reference, per channel: what more samples cannot remove");
         if (stats.denoisedTrueError) {
             const ErrorMetrics& d = *stats.denoisedTrueError;
-            ImGui::Text("denoised vs reference: relative error %.3g %% (relMSE %.3g), RMSE %.3g",
-                        100.0 * relativeError(d.relativeMse), d.relativeMse, d.rmse);
+            ImGui::Text("denoised vs reference: %s, relMSE %.3g, RMSE %.3g", trueErrorText(d, stats.errorSamples).c_str(),
+                        d.relativeMse, d.rmse);
             itemTooltip("the same measure of the denoised image: lower than the raw one while the filter takes out more\n"
                         "noise than the bias it adds; it stops falling where the bias dominates");
         }

@@ -5,6 +5,7 @@
 #include <ptview/io/ImageIO.h>
 #include <ptview/window/MaterialsPanel.h>
 #include <ptview/commands/OutputPath.h>
+#include <ptview/window/PanelText.h>
 #include <ptview/window/PanelWidgets.h>
 #include <ptview/window/Panels.h>
 #include <ptview/window/PathsOverlay.h>
@@ -112,11 +113,11 @@ ImageRgba8 readWindow(glm::ivec2 size) {
     return image;
 }
 
-// "ptview — cornell.json *": the scene's file, starred while it has unsaved edits.
-std::string windowTitle(const ViewerSession& session) {
-    const std::filesystem::path& file = session.model().fileScene.path;
-    std::string title = "ptview \xE2\x80\x94 " + (file.empty() ? std::string("untitled") : file.filename().string());
-    return session.hasUnsavedEdits() ? title + " *" : title;
+// "ptview — cornell.json *": the scene's file, starred while it has unsaved edits, and saying so
+// while the last scene or shader file did not apply (PanelText.h).
+std::string titleOf(const ViewerSession& session) {
+    const ViewerModel& model = session.model();
+    return windowTitle(model.fileScene.path, session.hasUnsavedEdits(), model.sceneError, model.shaderError);
 }
 
 // Fonts and widget sizes follow the monitor's content scale (HiDPI).
@@ -166,6 +167,7 @@ private:
     void drawSidebar();
     void drawCompareLabels();
     void drawImageNotes();
+    void drawImageNote(const std::string& text, ImVec2 anchor, bool alignRight, bool alignBottom, ImU32 colour);
 
     GLFWwindow* window_;
     ViewerSession& session_;
@@ -227,7 +229,7 @@ void ViewerWindow::updateTitle() {
     Clock::time_point now = Clock::now();
     if (now - lastTitleUpdate_ < kTitleInterval) return;
     lastTitleUpdate_ = now;
-    std::string title = windowTitle(session_);
+    std::string title = titleOf(session_);
     if (title == title_) return;
     glfwSetWindowTitle(window_, printableText(title).c_str()); // the scene's name may be a stranger's
     title_ = std::move(title);
@@ -482,18 +484,20 @@ void ViewerWindow::drawCompareLabels() {
     auto label = [&](ViewerSession::Side side, float x, bool alignRight) {
         const RenderSettings& settings = session_.settings(side);
         ViewerSession::ViewStats stats = session_.stats(side);
-        char text[160];
-        char error[32] = "-"; // until the estimate is reliable (the Stats panel's tooltip says why)
-        if (stats.error.reliable) std::snprintf(error, sizeof(error), "~%.2f%%", 100.0 * relativeError(stats.error.relativeMse));
-        // The error is the raw accumulation's, also on a denoised side (the Stats panel says so).
-        std::snprintf(text, sizeof(text), "%s / %s / depth %d%s\n%d spp, %.1f s, raw error %s", integratorName(settings.integrator),
-                      samplerModeName(settings.sampler), settings.maxDepth, stats.denoised ? " / denoised" : "", stats.samples,
-                      stats.renderSeconds, error);
-        ImVec2 size = ImGui::CalcTextSize(text);
+        char heading[128];
+        std::snprintf(heading, sizeof(heading), "%s / %s / depth %d", integratorName(settings.integrator),
+                      samplerModeName(settings.sampler), settings.maxDepth);
+        std::string text = heading;
+        if (std::string content = imageContentLabel(settings, stats.denoised); !content.empty()) text += " / " + content;
+        // The noise is the raw accumulation's, also on a denoised side (the Stats panel says so);
+        // beside it the true error where a reference is loaded, which alone sees a missing light.
+        text += "\n" + splitLabelNumbers(stats.samples, stats.renderSeconds, stats.error,
+                                         stats.trueError ? &*stats.trueError : nullptr, stats.errorSamples);
+        ImVec2 size = ImGui::CalcTextSize(text.c_str());
         ImVec2 position(alignRight ? x - size.x - 10.0f : x + 10.0f, top);
         draw->AddRectFilled(ImVec2(position.x - 4, position.y - 2), ImVec2(position.x + size.x + 4, position.y + size.y + 2),
                             IM_COL32(0, 0, 0, 160), 3.0f);
-        draw->AddText(position, IM_COL32(255, 255, 255, 255), text);
+        draw->AddText(position, IM_COL32(255, 255, 255, 255), text.c_str());
     };
     float divider = static_cast<float>(session_.dividerX()) / framebufferScale_.x;
     label(ViewerSession::Side::Left, divider, true);
@@ -501,7 +505,9 @@ void ViewerWindow::drawCompareLabels() {
 }
 
 // What the image shows when it is not simply the render at the window's size: a low-resolution
-// preview before the first full sample, or a render kept through a resize and shown scaled.
+// preview before the first full sample, or a render kept through a resize and shown scaled; what
+// it shows when it is not the plain radiance; and feedback that must be seen with the sidebar
+// hidden (Tab) or scrolled: a scene or shader file that did not apply, what F12 saved.
 void ViewerWindow::drawImageNotes() {
     std::string note;
     const PathTracer& tracer = session_.tracer(ViewerSession::Side::Left);
@@ -515,15 +521,39 @@ void ViewerWindow::drawImageNotes() {
         note += "render " + std::to_string(rendered.x) + "x" + std::to_string(rendered.y) + " shown scaled; R renders at " +
                 std::to_string(wanted.x) + "x" + std::to_string(wanted.y);
     }
-    if (note.empty()) return;
     PixelRect area = session_.imageArea();
-    ImVec2 size = ImGui::CalcTextSize(note.c_str());
-    ImVec2 position(static_cast<float>(area.origin.x) / framebufferScale_.x + 10.0f,
-                    ImGui::GetIO().DisplaySize.y - size.y - 10.0f);
+    float left = static_cast<float>(area.origin.x) / framebufferScale_.x + 10.0f;
+    float right = static_cast<float>(area.origin.x + area.size.x) / framebufferScale_.x - 10.0f;
+    float bottom = ImGui::GetIO().DisplaySize.y - 10.0f;
+    if (!note.empty()) drawImageNote(note, ImVec2(left, bottom), false, true, IM_COL32(255, 255, 255, 255));
+    // What the image shows when it is not the plain render, readable after Tab hides the sidebar
+    // (the split view's labels say it for each side).
+    if (!session_.comparing()) {
+        const RenderSettings& settings = session_.settings(ViewerSession::Side::Left);
+        std::string content = imageContentLabel(settings, session_.showsDenoised(ViewerSession::Side::Left));
+        if (!content.empty()) drawImageNote(content, ImVec2(left, 8.0f), false, false, IM_COL32(255, 255, 255, 255));
+    }
+    // Feedback the sidebar may hide: a save that did not apply, the files F12 wrote.
+    const ViewerModel& model = session_.model();
+    std::string failure = reloadFailureNote(model.sceneError, model.shaderError);
+    if (!failure.empty()) drawImageNote(failure, ImVec2(right, bottom), true, true, IM_COL32(255, 120, 110, 255));
+    bool noticeShown = std::chrono::duration<double>(Clock::now() - panelState_.imageNoticeSince).count() < kImageNoticeSeconds;
+    if (!panelState_.imageNotice.empty() && noticeShown) {
+        float above = failure.empty() ? 0.0f : ImGui::CalcTextSize(failure.c_str()).y + 10.0f;
+        drawImageNote(panelState_.imageNotice, ImVec2(right, bottom - above), true, true,
+                      panelState_.screenshotFailed ? IM_COL32(255, 120, 110, 255) : IM_COL32(140, 235, 140, 255));
+    }
+}
+
+// A line or two on a dark box over the image, placed by the corner at `anchor` (window
+// coordinates): its right edge there when alignRight, its bottom when alignBottom.
+void ViewerWindow::drawImageNote(const std::string& text, ImVec2 anchor, bool alignRight, bool alignBottom, ImU32 colour) {
+    ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    ImVec2 position(alignRight ? anchor.x - size.x : anchor.x, alignBottom ? anchor.y - size.y : anchor.y);
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     draw->AddRectFilled(ImVec2(position.x - 4, position.y - 2), ImVec2(position.x + size.x + 4, position.y + size.y + 2),
                         IM_COL32(0, 0, 0, 160), 3.0f);
-    draw->AddText(position, IM_COL32(255, 255, 255, 255), note.c_str());
+    draw->AddText(position, colour, text.c_str());
 }
 
 void ViewerWindow::drawUi() {
