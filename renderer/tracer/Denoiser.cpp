@@ -22,7 +22,6 @@ constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2;
 constexpr float kSigmaNormal = 16.0f;
 constexpr float kSigmaDepth = 1.0f; // in units of the depth's change per pixel, as SVGF
 
-
 // A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...
 GlFramebuffer createFramebufferOf(std::initializer_list<GLuint> textures) {
     GlFramebuffer framebuffer = createFramebuffer();
@@ -125,6 +124,8 @@ void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
         ShaderAssembler assembler(shaderDir_);
         specializeShaders(assembler, tracer.features(), tracer.settings().integrator, sampler);
         featureProgram_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("denoise_features.frag"));
+        featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", 0); // the scene's units start at 3
+        featureProgram_->bindSamplerUnit("uPrevNormal", 1);
         featureProgramFeatures_ = tracer.features();
         featureProgramSampler_ = sampler;
         featureSamples_ = 0;
@@ -199,8 +200,6 @@ void Denoiser::finishStep(PathTracer& tracer) {
 void Denoiser::drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     // Every band sets the frame uniforms again: the tracer's own passes change them in between.
     tracer.useSceneIn(*featureProgram_, featureSamples_, featureSamplesThisPass(tracer));
-    featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", 0);
-    featureProgram_->bindSamplerUnit("uPrevNormal", 1);
     const FeatureTarget& previous = features_[1 - featureWrite_];
     bindTexture(0, previous.albedoDepth.id());
     bindTexture(1, previous.normal.id());

@@ -43,6 +43,7 @@ public:
     bool inProgress() const { return cycle_.active; }
     int rowsLeft() const; // of the denoise in progress
     const DenoiseSettings& settingsInProgress() const { return cycle_.settings; }
+    int restartCountInProgress() const { return cycle_.restartCount; } // the tracer's, when it began
 
     // The last finished denoise: its radiance (RGBA32F, alpha 1, GL rows bottom-up), size,
     // samples, and the restart of the tracer it belongs to.

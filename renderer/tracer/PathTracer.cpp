@@ -94,8 +94,8 @@ void PathTracer::attachScene(const GlProgram& program) {
     environmentMap_.attach(program, kEnvironmentUnit);
 }
 
-void PathTracer::bindScene(const GlProgram& program, const Accumulator& target, int samplesPerPass) {
-    updateFrameUniforms(target, samplesPerPass);
+void PathTracer::bindScene(const GlProgram& program, glm::ivec2 size, int firstSample, int samplesPerPass) {
+    updateFrameUniforms(size, firstSample, samplesPerPass);
     resetPassState();
     glUseProgram(program.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniformBuffer_.id());
@@ -317,10 +317,6 @@ glm::ivec2 PathTracer::shownPreviewSize() const {
     return shown ? shown->size() : glm::ivec2(0);
 }
 
-void PathTracer::updateFrameUniforms(const Accumulator& target, int samplesPerPass) {
-    updateFrameUniforms(target.size(), target.sampleCount(), samplesPerPass);
-}
-
 void PathTracer::updateFrameUniforms(glm::ivec2 size, int firstSample, int samplesPerPass) {
     const CameraFrame camera = cameraFrame(camera_);
     FrameUniforms frame{};
@@ -416,8 +412,7 @@ void PathTracer::useSceneIn(const GlProgram& program, int firstSample, int sampl
     program.bindUniformBlock("FrameBlock", kFrameBlockBinding);
     attachScene(program);
     attached_ = nullptr; // the path-tracing program's uniform locations are looked up again at its next pass
-    bindScene(program, accumulator_, samplesPerPass);
-    updateFrameUniforms(accumulator_.size(), firstSample, samplesPerPass);
+    bindScene(program, accumulator_.size(), firstSample, samplesPerPass);
 }
 
 void PathTracer::bindLatestSums(int sumUnit, int compensationUnit, int sumSquaresUnit) const {
@@ -439,23 +434,22 @@ bool PathTracer::advanceDenoised(int rows) {
     if (!denoiseSettings_.enabled || accumulator_.sampleCount() == 0) return false;
     if (!denoiser_) denoiser_ = std::make_unique<Denoiser>(shaderDir_);
     // A denoise in progress with other settings, or of an accumulation that restarted since, is
-    // of no use: a new one begins (advance() drops one whose accumulation is gone).
-    if (denoiser_->inProgress() && denoiser_->settingsInProgress() != denoiseSettings_) denoiser_->begin(*this, denoiseSettings_);
-    if (!denoiser_->inProgress()) {
+    // of no use: when the image is stale, a new one begins.
+    if (!denoiseInProgressIsCurrent()) {
         if (denoisedUpToDate()) return false;
         denoiser_->begin(*this, denoiseSettings_);
     }
-    if (denoiser_->advance(*this, rows)) return true;
-    if (!denoiser_->inProgress() && !denoisedUpToDate()) { // dropped: the accumulation restarted
-        denoiser_->begin(*this, denoiseSettings_);
-        return denoiser_->advance(*this, rows);
-    }
-    return false;
+    return denoiser_->advance(*this, rows);
+}
+
+bool PathTracer::denoiseInProgressIsCurrent() const {
+    return denoiser_ && denoiser_->inProgress() && denoiser_->settingsInProgress() == denoiseSettings_ &&
+           denoiser_->restartCountInProgress() == restartCount_ && denoiser_->size() == accumulator_.size();
 }
 
 int PathTracer::denoiseRowsLeft() const {
-    if (denoiser_ && denoiser_->inProgress()) return denoiser_->rowsLeft();
     if (!denoiseSettings_.enabled || denoisedUpToDate()) return 0;
+    if (denoiseInProgressIsCurrent()) return denoiser_->rowsLeft();
     return accumulator_.size().y * (denoiseSettings_.iterations + 3); // about a new denoise's, features aside
 }
 
@@ -520,7 +514,7 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
     glm::ivec2 size = target.size();
     int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
     const TraceProgram& trace = useTraceProgram();
-    bindScene(*trace.program, target, samplesPerPass);
+    bindScene(*trace.program, size, target.sampleCount(), samplesPerPass);
     if (backend_ == Backend::Compute) {
         target.beginComputePass(kAccumulationUnit, 0);
         glUniform2i(trace.tileOrigin, 0, nextRow);

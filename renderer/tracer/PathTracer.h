@@ -228,15 +228,17 @@ private:
     TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
     // The scene's and the environment map's samplers and uniform locations, looked up in program.
     void attachScene(const GlProgram& program);
-    // Makes program (attached) current with the scene, the map and the frame uniforms of the next
-    // pass into target: what every program that traces the scene reads.
-    void bindScene(const GlProgram& program, const Accumulator& target, int samplesPerPass);
+    // Makes program (attached) current with the scene, the map and the frame uniforms of a pass
+    // over an image of `size` tracing samples firstSample .. + samplesPerPass - 1: what every
+    // program that traces the scene reads.
+    void bindScene(const GlProgram& program, glm::ivec2 size, int firstSample, int samplesPerPass);
     void updateProgramKey();
-    void updateFrameUniforms(const Accumulator& target, int samplesPerPass);
     bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass);
     void resizePreview();
     void drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const;
     void updateFrameUniforms(glm::ivec2 size, int firstSample, int samplesPerPass);
+    // Whether the denoiser has a denoise in progress of this accumulation with these settings.
+    bool denoiseInProgressIsCurrent() const;
 
     std::filesystem::path shaderDir_;
     PathTracerOptions options_;
