@@ -10,6 +10,7 @@
 #include <ptview/settings/RenderSettings.h>
 #include <ptview/settings/SamplerMode.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -72,17 +73,14 @@ inline std::string splitLabelNumbers(int samples, double seconds, const ErrorEst
 inline std::string imageContentLabel(const RenderSettings& settings, bool denoised) {
     if (settings.debugView != DebugView::Radiance) return std::string("view: ") + debugViewName(settings.debugView);
     std::vector<std::string> parts;
-    switch (settings.lightPaths) {
-    case LightPaths::All: break;
-    case LightPaths::Exactly:
-        parts.push_back("light paths: exactly " + countOf(settings.lightPathBounces, "bounce"));
-        break;
-    case LightPaths::AtMost:
-        parts.push_back("light paths: at most " + countOf(settings.lightPathBounces, "bounce"));
-        break;
-    case LightPaths::Direct: parts.push_back("light paths: direct only"); break;
-    case LightPaths::Indirect: parts.push_back("light paths: indirect only"); break;
-    case LightPaths::Caustics: parts.push_back("light paths: caustics only"); break;
+    if (settings.lightPaths != LightPaths::All) {
+        // The Render panel's label of the view ("Exactly k bounces", "Direct only"), with k filled in.
+        std::string view = lightPathsNames().entry(settings.lightPaths).label;
+        view[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(view[0])));
+        const std::string k = "k bounces";
+        if (lightPathsUseBounces(settings.lightPaths) && view.find(k) != std::string::npos)
+            view.replace(view.find(k), k.size(), countOf(settings.lightPathBounces, "bounce"));
+        parts.push_back("light paths: " + view);
     }
     if (denoised) parts.push_back("denoised");
     std::string label;
