@@ -53,8 +53,8 @@ void denoiseControls(ViewerModel& model) {
     ImGui::Checkbox("Denoise (N)", &model.denoise.enabled);
     itemTooltip("show a denoised copy of the render: an edge-avoiding a-trous filter guided by albedo, normal,\n"
                 "depth and each pixel's variance. BIASED: it borrows light from neighbours, so fine detail and\n"
-                "soft shadows blur and the image does not converge to the true one; the samples still accumulate raw\n"
-                "underneath (Stats' errors are of the raw image). Filtered every frame or every few (docs/viewer.md)");
+                "soft shadows blur; the bias falls as the noise does. The samples still accumulate raw underneath\n"
+                "(Stats' errors are of the raw image). Filtered in bands of rows over a few frames (docs/viewer.md)");
     if (model.settings.debugView != DebugView::Radiance) noteText("the debug view is shown raw: it has no noise to take out");
     if (!model.denoise.enabled && !(model.compare.enabled && model.compare.sides == CompareSides::RawAndDenoised) &&
         !(model.compare.enabled && model.compare.rightDenoised))
