@@ -1,6 +1,7 @@
 #include <ptview/tracer/Denoiser.h>
 
 #include <ptview/gl/FloatTexture.h>
+#include <ptview/gl/FullScreenRows.h>
 #include <ptview/gl/ShaderAssembler.h>
 #include <ptview/tracer/PathTracer.h>
 
@@ -103,13 +104,7 @@ void Denoiser::resize(glm::ivec2 size) {
 }
 
 void Denoiser::drawRows(int rowBegin, int rowEnd) const {
-    glViewport(0, 0, size_.x, size_.y);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, rowBegin, size_.x, rowEnd - rowBegin);
-    glBindVertexArray(emptyVertexArray_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glDisable(GL_SCISSOR_TEST);
+    drawFullScreenRows(emptyVertexArray_, size_, rowBegin, rowEnd);
 }
 
 void Denoiser::prepareFeatureProgram(PathTracer& tracer) {

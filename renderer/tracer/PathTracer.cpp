@@ -1,5 +1,6 @@
 #include <ptview/tracer/PathTracer.h>
 
+#include <ptview/gl/FullScreenRows.h>
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/gpudata/GpuLayout.h>
 #include <ptview/probes/ProbePass.h>
@@ -524,14 +525,7 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     } else {
         target.beginPass(kAccumulationUnit);
-        if (nextRow > 0 || endRow < size.y) { // the rest of the target keeps what earlier tiles wrote
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(0, nextRow, size.x, endRow - nextRow);
-        }
-        glBindVertexArray(emptyVertexArray_.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindVertexArray(0);
-        glDisable(GL_SCISSOR_TEST);
+        drawFullScreenRows(emptyVertexArray_, size, nextRow, endRow);
     }
     if (endRow < size.y) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
