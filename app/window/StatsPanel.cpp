@@ -73,18 +73,20 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
                     "the wrong image with a small estimate. Only a reference shows that bias");
     else
         itemTooltip((std::string("no estimate yet: ") + stats.error.unreliableReason).c_str());
+    // One line of a true error: "raw vs reference: true error 9.2% (at 16 spp), relMSE ..., RMSE ...".
+    auto trueErrorLine = [&stats](const char* image, const ErrorMetrics& e) {
+        ImGui::Text("%s vs reference: %s, relMSE %.3g, RMSE %.3g", image, trueErrorText(e, stats.errorSamples).c_str(),
+                    e.relativeMse, e.rmse);
+    };
     if (stats.trueError) {
         const ErrorMetrics& e = *stats.trueError;
-        ImGui::Text("raw vs reference: %s, relMSE %.3g, RMSE %.3g", trueErrorText(e, stats.errorSamples).c_str(),
-                    e.relativeMse, e.rmse);
+        trueErrorLine("raw", e);
         itemTooltip("the true error against the loaded reference image: sqrt of the relative MSE,\n"
                     "mean of (x - ref)^2 / (ref^2 + 0.01); includes the reference's own noise");
         ImGui::Text("bias %+.2g %+.2g %+.2g", e.meanBias.r, e.meanBias.g, e.meanBias.b);
         itemTooltip("mean of the image minus mean of the reference, per channel: what more samples cannot remove");
         if (stats.denoisedTrueError) {
-            const ErrorMetrics& d = *stats.denoisedTrueError;
-            ImGui::Text("denoised vs reference: %s, relMSE %.3g, RMSE %.3g", trueErrorText(d, stats.errorSamples).c_str(),
-                        d.relativeMse, d.rmse);
+            trueErrorLine("denoised", *stats.denoisedTrueError);
             itemTooltip("the same measure of the denoised image: lower than the raw one while the filter takes out more\n"
                         "noise than the bias it adds; it stops falling where the bias dominates");
         }
