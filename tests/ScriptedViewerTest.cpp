@@ -48,6 +48,14 @@ testing::CommandResult runViewer(const fs::path& directory, const std::string& s
                                " " + extraArguments);
 }
 
+// Runs a window driver in `directory` (tests/window_*.sh: real input through xdotool while the
+// viewer runs a script.txt there), `arguments` after the binary, under Xvfb with `xvfb`'s screen.
+testing::CommandResult runWindowDriver(const fs::path& directory, const std::string& driver, const std::string& arguments = "",
+                                       const std::string& xvfb = kXvfb) {
+    return testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + xvfb + "bash " +
+                               PTVIEW_TEST_SCRIPT_DIR + "/" + driver + " " + PTVIEW_BINARY + (arguments.empty() ? "" : " " + arguments));
+}
+
 glm::dvec3 regionMean(const ImageRgbF& image, int x0, int x1, int y0, int y1) {
     glm::dvec3 sum(0.0);
     for (int y = y0; y < y1; ++y)
@@ -436,8 +444,7 @@ TEST_F(ScriptedViewer, CtrlClickOnTheImageFocusesThere) {
     fs::path directory = freshDirectory("ctrl_click");
     std::ofstream(directory / "scene.json") << kWallScene;
     std::ofstream(directory / "script.txt") << "resolution-scale 0.25\ncamera-aperture 0.05\nwait-spp 1\nstatus\nwait-reload\nframes 2\nstatus\nquit\n";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_focus.sh " + PTVIEW_BINARY);
+    testing::CommandResult result = runWindowDriver(directory, "window_focus.sh");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 2u) << result.output;
@@ -576,9 +583,7 @@ TEST_F(ScriptedViewer, AltClickPinsThePixelUnderTheCursor) {
     std::ofstream(directory / "script.txt")
         << "resolution-scale 0.125\ntarget-spp 2\nwait-spp 1\nstatus\nwait-reload\nwait-spp 2\nstatus\nsave-pixel clicked.json\nquit\n";
     // Window x 380 + 8 * 20 + 4, y 8 * 60 + 4: the middle of render pixel (20, 60).
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_pixel.sh " + PTVIEW_BINARY +
-                                                        " 544 484");
+    testing::CommandResult result = runWindowDriver(directory, "window_pixel.sh", "544 484");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 2u) << result.output;
@@ -607,9 +612,7 @@ TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {
 // F12 as a user presses it (xdotool), in an interactive session without a script.
 TEST_F(ScriptedViewer, F12SavesPngPfmAndExrIntoScreenshots) {
     fs::path directory = freshDirectory("f12");
-    testing::CommandResult result = testing::runCommand(
-        "cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb + "bash " + PTVIEW_TEST_SCRIPT_DIR +
-        "/window_keys.sh " + PTVIEW_BINARY + " " + testing::shellQuoted(kCornell) +
+    testing::CommandResult result = runWindowDriver(directory, "window_keys.sh", testing::shellQuoted(kCornell) +
         // Naive, as the default was when this was written: the test is about F12, and a naive
         // first 768x768 sample is the cheapest to have within the script's ten presses.
         " --integrator naive");
@@ -649,8 +652,7 @@ screenshot denoised.pfm
 screenshot denoised.exr
 quit
 )";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_denoise.sh " + PTVIEW_BINARY);
+    testing::CommandResult result = runWindowDriver(directory, "window_denoise.sh");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 2u) << result.output;
@@ -700,8 +702,7 @@ frames 2
 status
 quit
 )";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_mouse.sh " + PTVIEW_BINARY);
+    testing::CommandResult result = runWindowDriver(directory, "window_mouse.sh");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 4u) << result.output;
@@ -732,8 +733,7 @@ frames 2
 status
 quit
 )";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_wheel.sh " + PTVIEW_BINARY);
+    testing::CommandResult result = runWindowDriver(directory, "window_wheel.sh");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 3u) << result.output;
@@ -844,9 +844,7 @@ frames 2
 status
 wait-reload
 )";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_unsaved.sh " +
-                                                        PTVIEW_BINARY + " Escape Escape close d");
+    testing::CommandResult result = runWindowDriver(directory, "window_unsaved.sh", "Escape Escape close d");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 4u) << result.output;
@@ -886,9 +884,7 @@ frames 2
 status
 wait-reload
 )";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " + kXvfb +
-                                                        "bash " + PTVIEW_TEST_SCRIPT_DIR + "/window_unsaved.sh " +
-                                                        PTVIEW_BINARY + " none none Escape s");
+    testing::CommandResult result = runWindowDriver(directory, "window_unsaved.sh", "none none Escape s");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::vector<std::string> status = statusLines(result.output);
     ASSERT_EQ(status.size(), 4u) << result.output;
@@ -1015,9 +1011,7 @@ screenshot-window panel3.png
 save-scene removed.json
 quit
 )";
-    testing::CommandResult result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && " +
-                                                        testing::xvfbRun("1000x520x24") + "bash " + PTVIEW_TEST_SCRIPT_DIR +
-                                                        "/window_textures.sh " + PTVIEW_BINARY);
+    testing::CommandResult result = runWindowDriver(directory, "window_textures.sh", "", testing::xvfbRun("1000x520x24"));
     ASSERT_EQ(result.exitCode, 0) << result.output;
     ASSERT_EQ(statusLines(result.output).size(), 3u) << result.output;
 
