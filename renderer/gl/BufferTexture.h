@@ -44,10 +44,16 @@ public:
             glBindBuffer(GL_TEXTURE_BUFFER, 0);
             throw std::runtime_error("could not map a scene buffer of " + std::to_string(size) + " bytes");
         }
-        if (count == 0)
-            *static_cast<T*>(mapped) = T{};
-        else
-            write(static_cast<T*>(mapped));
+        try {
+            if (count == 0)
+                *static_cast<T*>(mapped) = T{};
+            else
+                write(static_cast<T*>(mapped));
+        } catch (...) { // a layout the writer refuses (an index past what a float holds): no buffer left mapped
+            glUnmapBuffer(GL_TEXTURE_BUFFER);
+            glBindBuffer(GL_TEXTURE_BUFFER, 0);
+            throw;
+        }
         const bool intact = glUnmapBuffer(GL_TEXTURE_BUFFER) == GL_TRUE;
         glBindTexture(GL_TEXTURE_BUFFER, texture_.id());
         glTexBuffer(GL_TEXTURE_BUFFER, format, buffer_.id());
