@@ -5,6 +5,7 @@
 #include "ChiSquare.h"
 #include "GlTestContext.h"
 #include <ptview/probes/WarpProbe.h>
+#include <ptview/probes/WarpView.h>
 
 #include <gtest/gtest.h>
 
@@ -341,6 +342,44 @@ TEST_P(Warps, SamplesLieInTheDomainWithPositiveDensity) {
     }
     EXPECT_EQ(outside, 0);
     EXPECT_EQ(zeroDensity, 0);
+}
+
+// The view's outline (the warp visualizer, `ptview warp`) encloses exactly where the warp's points
+// land: a hemisphere warp is drawn on a hemisphere, not inside a whole sphere (issue 37), and every
+// sample lies on or above the outline's lowest point.
+TEST_P(Warps, OutlineReachesDownToWhereTheSamplesCanLandAndNoFurther) {
+    const WarpVariant& variant = GetParam();
+    WarpRequest request = variant.request(SamplerMode::Random, kValiditySamples, 7u);
+    const float lowest = lowestCosTheta(request);
+    float outlineLowestZ = 1.0f;
+    for (glm::vec3 p : warpOutline(variant.info.domain, lowest))
+        if (variant.info.domain != WarpDomain::Sphere || std::abs(glm::length(p) - 1.0f) < 1e-3f) // not the +z axis
+            outlineLowestZ = std::min(outlineLowestZ, p.z);
+    float samplesLowestZ = 1.0f;
+    for (const WarpSample& sample : probe().sample(request))
+        samplesLowestZ = std::min(samplesLowestZ, displayPosition(variant.info.domain, sample.point).z);
+    if (variant.info.domain != WarpDomain::Sphere) {
+        EXPECT_EQ(outlineLowestZ, 0.0f); // planar: outline and points in z = 0
+        EXPECT_EQ(samplesLowestZ, 0.0f);
+        return;
+    }
+    EXPECT_NEAR(outlineLowestZ, lowest, 1e-5f) << warpSupportText(request);
+    EXPECT_GE(samplesLowestZ, lowest - 1e-5f) << warpSupportText(request);
+    // and the samples fill the support down to its rim (within a few degrees at this many points)
+    EXPECT_LT(samplesLowestZ, lowest + 0.1f) << warpSupportText(request);
+}
+
+TEST(WarpSupportText, SaysWhereEachWarpsPointsLand) {
+    WarpRequest request;
+    request.warp = Warp::CosineHemisphere;
+    EXPECT_EQ(warpSupportText(request), "directions on the upper hemisphere (z >= 0)");
+    request.warp = Warp::UniformSphere;
+    EXPECT_EQ(warpSupportText(request), "directions on the whole sphere");
+    request.warp = Warp::UniformCone;
+    request.cosThetaMax = 0.5f;
+    EXPECT_EQ(warpSupportText(request), "directions within 60 deg of +z");
+    request.warp = Warp::UniformDiskConcentric;
+    EXPECT_EQ(warpSupportText(request), "points in the unit disk");
 }
 
 INSTANTIATE_TEST_SUITE_P(AllWarps, Warps, ::testing::ValuesIn(warpVariants()),

@@ -21,8 +21,7 @@ int runWarpCommand(const WarpOptions& options) {
         WarpProbe probe;
         WarpView view;
         const WarpInfo& info = warpInfo(options.request.warp);
-        view.setSamples(info.domain, probe.sample(options.request),
-                        options.request.warp == Warp::UniformCone ? options.request.cosThetaMax : -1.0f);
+        view.setSamples(options.request, probe.sample(options.request));
         writePng(options.outPath, view.renderImage(glm::ivec2(options.imageSize), defaultWarpCamera(info.domain)));
         std::fprintf(stderr, "ptview: wrote %s (%d points, %s warp, %s sampler)\n", options.outPath.c_str(),
                      options.request.count, info.name, samplerModeName(options.request.sampler));

@@ -56,8 +56,7 @@ void WarpVisualizer::handleMouse() {
 void WarpVisualizer::draw(glm::ivec2 areaOrigin, glm::ivec2 areaSize, glm::ivec2 framebufferSize, glm::vec2 pixelsPerPoint) {
     if (dirty_) {
         request_.count = glm::clamp(request_.count, 1, 1 << 20);
-        view_.setSamples(warpInfo(request_.warp).domain, probe_.sample(request_),
-                         request_.warp == Warp::UniformCone ? request_.cosThetaMax : -1.0f);
+        view_.setSamples(request_, probe_.sample(request_));
         dirty_ = false;
     }
     view_.draw(areaOrigin, areaSize, camera_);
@@ -98,11 +97,9 @@ void WarpVisualizer::drawLabels() {
             draw->AddText(ImVec2(end.x + 4.0f, end.y - 8.0f), axis.color, axis.name);
         }
     }
-    char caption[160];
-    std::snprintf(caption, sizeof caption, "%s (%s domain), %d points, sampler %s; colour = (u.x, u.y)", info.name,
-                  info.domain == WarpDomain::Square ? "square" : info.domain == WarpDomain::Disk ? "disk"
-                  : info.domain == WarpDomain::Triangle ? "triangle" : "sphere",
-                  request_.count, samplerModeName(request_.sampler));
+    char caption[200];
+    std::snprintf(caption, sizeof caption, "%s: %s\n%d points, sampler %s; colour = (u.x, u.y)", info.name,
+                  warpSupportText(request_).c_str(), request_.count, samplerModeName(request_.sampler));
     draw->AddText(ImVec2(labelOrigin_.x + 10.0f, labelOrigin_.y + 8.0f), IM_COL32(230, 230, 230, 255), caption);
 }
 

@@ -5,7 +5,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace ptview {
@@ -14,16 +16,23 @@ namespace {
 const glm::vec3 kOutlineColor(0.55f, 0.55f, 0.6f);
 const glm::vec3 kTriangleCorners[3] = {{-1.0f, -0.577f, 0.0f}, {1.0f, -0.577f, 0.0f}, {0.0f, 1.155f, 0.0f}};
 
-void appendCircle(std::vector<glm::vec3>& lines, glm::vec3 center, glm::vec3 a, glm::vec3 b) {
-    const int segments = 96;
+// Segments along center + cos(t) a + sin(t) b for t from t0 to t1 (radians).
+void appendArc(std::vector<glm::vec3>& lines, glm::vec3 center, glm::vec3 a, glm::vec3 b, float t0, float t1) {
+    const int segments = std::max(8, static_cast<int>(std::ceil(96.0f * std::abs(t1 - t0) / 6.2831853f)));
     for (int i = 0; i < segments; ++i) {
-        float t0 = 6.2831853f * static_cast<float>(i) / segments, t1 = 6.2831853f * static_cast<float>(i + 1) / segments;
-        lines.push_back(center + std::cos(t0) * a + std::sin(t0) * b);
-        lines.push_back(center + std::cos(t1) * a + std::sin(t1) * b);
+        float s0 = t0 + (t1 - t0) * static_cast<float>(i) / segments, s1 = t0 + (t1 - t0) * static_cast<float>(i + 1) / segments;
+        lines.push_back(center + std::cos(s0) * a + std::sin(s0) * b);
+        lines.push_back(center + std::cos(s1) * a + std::sin(s1) * b);
     }
 }
 
-std::vector<glm::vec3> outline(WarpDomain domain, float cosThetaMax) {
+void appendCircle(std::vector<glm::vec3>& lines, glm::vec3 center, glm::vec3 a, glm::vec3 b) {
+    appendArc(lines, center, a, b, 0.0f, 6.2831853f);
+}
+
+} // namespace
+
+std::vector<glm::vec3> warpOutline(WarpDomain domain, float lowestCosTheta) {
     std::vector<glm::vec3> lines;
     const glm::vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
     switch (domain) {
@@ -39,21 +48,50 @@ std::vector<glm::vec3> outline(WarpDomain domain, float cosThetaMax) {
         for (int i = 0; i < 3; ++i) lines.insert(lines.end(), {kTriangleCorners[i], kTriangleCorners[(i + 1) % 3]});
         break;
     case WarpDomain::Sphere: {
-        appendCircle(lines, glm::vec3(0.0f), x, y); // equator
-        appendCircle(lines, glm::vec3(0.0f), x, z);
-        appendCircle(lines, glm::vec3(0.0f), y, z);
-        lines.insert(lines.end(), {glm::vec3(0.0f), 1.3f * z}); // the warp's axis, +z
-        if (cosThetaMax > -1.0f) {                              // the cone's rim
-            float sinThetaMax = std::sqrt(std::max(0.0f, 1.0f - cosThetaMax * cosThetaMax));
-            appendCircle(lines, cosThetaMax * z, sinThetaMax * x, sinThetaMax * y);
+        float cosThetaRim = glm::clamp(lowestCosTheta, -1.0f, 1.0f);
+        float thetaRim = std::acos(cosThetaRim);
+        // Two meridians, from the rim on one side over +z to the rim on the other (t is theta, from +z).
+        appendArc(lines, glm::vec3(0.0f), z, x, -thetaRim, thetaRim);
+        appendArc(lines, glm::vec3(0.0f), z, y, -thetaRim, thetaRim);
+        if (cosThetaRim > -1.0f) { // the rim: the hemisphere's equator, the cone's edge
+            float sinThetaRim = std::sqrt(std::max(0.0f, 1.0f - cosThetaRim * cosThetaRim));
+            appendCircle(lines, cosThetaRim * z, sinThetaRim * x, sinThetaRim * y);
         }
+        if (cosThetaRim < 0.0f) appendCircle(lines, glm::vec3(0.0f), x, y); // the equator, inside the support
+        lines.insert(lines.end(), {glm::vec3(0.0f), 1.3f * z}); // the warp's axis, +z
         break;
     }
     }
     return lines;
 }
 
-} // namespace
+float lowestCosTheta(const WarpRequest& request) {
+    switch (request.warp) {
+    case Warp::UniformCone: return request.cosThetaMax;
+    case Warp::UniformHemisphere:
+    case Warp::CosineHemisphere: return 0.0f;
+    default: return -1.0f;
+    }
+}
+
+std::string warpSupportText(const WarpRequest& request) {
+    switch (request.warp) {
+    case Warp::Square: return "points in the unit square";
+    case Warp::UniformDiskPolar:
+    case Warp::UniformDiskConcentric: return "points in the unit disk";
+    case Warp::UniformSphere: return "directions on the whole sphere";
+    case Warp::UniformCone: {
+        char text[64];
+        std::snprintf(text, sizeof text, "directions within %.3g deg of +z",
+                      glm::degrees(std::acos(glm::clamp(request.cosThetaMax, -1.0f, 1.0f))));
+        return text;
+    }
+    case Warp::UniformHemisphere:
+    case Warp::CosineHemisphere: return "directions on the upper hemisphere (z >= 0)";
+    case Warp::UniformTriangle: return "points in a triangle (barycentrics)";
+    }
+    return "?";
+}
 
 glm::mat4 OrbitCamera::viewProjection(float aspect) const {
     float yaw = glm::radians(yawDeg), pitch = glm::radians(glm::clamp(pitchDeg, -89.0f, 89.0f));
@@ -99,7 +137,8 @@ void WarpView::upload(GlVertexArray& vertexArray, GlBuffer& buffer, const std::v
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void WarpView::setSamples(WarpDomain domain, const std::vector<WarpSample>& samples, float cosThetaMax) {
+void WarpView::setSamples(const WarpRequest& request, const std::vector<WarpSample>& samples) {
+    const WarpDomain domain = warpInfo(request.warp).domain;
     std::vector<Vertex> points;
     points.reserve(samples.size());
     for (const WarpSample& sample : samples)
@@ -108,7 +147,7 @@ void WarpView::setSamples(WarpDomain domain, const std::vector<WarpSample>& samp
     pointCount_ = static_cast<GLsizei>(points.size());
 
     std::vector<Vertex> lines;
-    for (glm::vec3 p : outline(domain, cosThetaMax)) lines.push_back({p, kOutlineColor});
+    for (glm::vec3 p : warpOutline(domain, lowestCosTheta(request))) lines.push_back({p, kOutlineColor});
     upload(outlineArray_, outlineBuffer_, lines);
     outlineCount_ = static_cast<GLsizei>(lines.size());
 }

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ptview {
@@ -33,11 +34,25 @@ OrbitCamera defaultWarpCamera(WarpDomain domain);
 // origin; disks and directions are drawn as they are.
 glm::vec3 displayPosition(WarpDomain domain, glm::vec3 point);
 
+// The lowest cos theta (z) a direction warp can produce: -1 for the sphere, 0 for the hemispheres,
+// the cone's cosThetaMax; -1 for the planar domains, which have no theta.
+float lowestCosTheta(const WarpRequest& request);
+
+// What the view's outline draws, as line segments (pairs of points): the edge of the planar domains,
+// and for directions the part of the unit sphere the warp can reach (its rim, and meridians from +z
+// down to the rim), so a hemisphere warp is not drawn inside a whole sphere.
+std::vector<glm::vec3> warpOutline(WarpDomain domain, float lowestCosTheta);
+
+// Where the request's points land, in words for the view's caption: "directions on the upper
+// hemisphere (z >= 0)", "directions within 60 deg of +z", "points in the unit disk".
+std::string warpSupportText(const WarpRequest& request);
+
 class WarpView {
 public:
     explicit WarpView(const std::filesystem::path& shaderDir = PTVIEW_SHADER_DIR);
 
-    void setSamples(WarpDomain domain, const std::vector<WarpSample>& samples, float cosThetaMax);
+    // The points of request (from WarpProbe::sample) and the outline of where they can land.
+    void setSamples(const WarpRequest& request, const std::vector<WarpSample>& samples);
     // Into the bound draw framebuffer, over the whole viewport.
     void draw(glm::ivec2 viewportSize, const OrbitCamera& camera) const { draw({0, 0}, viewportSize, camera); }
     // Into the rectangle at origin (lower left, framebuffer pixels) of that size, touching
