@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <unistd.h>
 
@@ -571,6 +572,80 @@ quit
     stbi_image_free(before);
     stbi_image_free(after);
     EXPECT_GT(changed, 500) << "the paths' lines over the image";
+    fs::remove_all(directory);
+}
+
+// The paths table, cramped in the sidebar (its pdf and MIS columns scrolled out of sight), pops out
+// into a window of its own that is wider than the sidebar and is drawn over the image; the
+// light-path and split-view controls pop out beside it without covering it; closing puts them back
+// (issue 37).
+TEST_F(ScriptedViewer, PoppedOutSectionsGetTheirOwnWindowsOverTheImageAndGoBack) {
+    fs::path directory = freshDirectory("pop_out");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.25
+target-spp 2
+wait-spp 2
+pin-pixel 40 150
+trace-paths
+frames 3
+screenshot-window inside.png
+status
+pop-out paths-table on
+pop-out light-paths on
+pop-out compare on
+frames 3
+screenshot-window out.png
+status
+pop-out paths-table off
+pop-out light-paths off
+pop-out compare off
+frames 2
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 3u) << result.output;
+    EXPECT_EQ(field(status[0], "popped-out"), "none");
+    EXPECT_EQ(field(status[2], "popped-out"), "none");
+    struct Rect {
+        int x, y, w, h;
+    };
+    std::map<std::string, Rect> windows;
+    std::string list = field(status[1], "popped-out");
+    std::regex entry(R"((paths-table|light-paths|compare)@(-?\d+),(-?\d+),(\d+)x(\d+))");
+    for (auto it = std::sregex_iterator(list.begin(), list.end(), entry); it != std::sregex_iterator(); ++it)
+        windows[(*it)[1]] = Rect{std::stoi((*it)[2]), std::stoi((*it)[3]), std::stoi((*it)[4]), std::stoi((*it)[5])};
+    ASSERT_EQ(windows.size(), 3u) << list;
+
+    int width = 0, height = 0, channels = 0;
+    unsigned char* inside = stbi_load((directory / "inside.png").string().c_str(), &width, &height, &channels, 3);
+    int width2 = 0, height2 = 0;
+    unsigned char* out = stbi_load((directory / "out.png").string().c_str(), &width2, &height2, &channels, 3);
+    ASSERT_NE(inside, nullptr);
+    ASSERT_NE(out, nullptr);
+    ASSERT_EQ(width, width2);
+    const Rect table = windows["paths-table"];
+    EXPECT_GT(table.w, 760) << "every column of the table (the sidebar is 380 points wide)";
+    for (const auto& [name, rect] : windows) {
+        EXPECT_GE(rect.x, 0) << name;
+        EXPECT_LE(rect.x + rect.w, width) << name << " inside the window";
+        EXPECT_LE(rect.y + rect.h, height) << name << " inside the window";
+        // drawn there: its pixels are not the render's any more
+        int changed = 0;
+        for (int y = rect.y + 4; y < rect.y + rect.h - 4; ++y)
+            for (int x = rect.x + 4; x < rect.x + rect.w - 4; ++x) {
+                const int i = 3 * (y * width + x);
+                changed += std::abs(inside[i] - out[i]) + std::abs(inside[i + 1] - out[i + 1]) + std::abs(inside[i + 2] - out[i + 2]) > 30;
+            }
+        EXPECT_GT(changed, (rect.w - 8) * (rect.h - 8) / 10) << name;
+    }
+    auto overlap = [](const Rect& a, const Rect& b) {
+        return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+    };
+    EXPECT_FALSE(overlap(windows["light-paths"], windows["compare"]));
+    EXPECT_FALSE(overlap(windows["light-paths"], table));
+    stbi_image_free(inside);
+    stbi_image_free(out);
     fs::remove_all(directory);
 }
 

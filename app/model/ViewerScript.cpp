@@ -1,5 +1,6 @@
 #include <ptview/model/ViewerScript.h>
 
+#include <ptview/model/DetachableSection.h>
 #include <ptview/model/EditDistance.h>
 #include <ptview/io/InputFile.h>
 #include <ptview/settings/Integrator.h>
@@ -128,6 +129,11 @@ std::vector<std::string> materialTypeChoices() {
 std::vector<std::string> onOffChoices() { return {"on", "off"}; }
 // CompareSides, as `compare-sides` writes them.
 std::vector<std::string> compareSidesChoices() { return {"renders", "raw-denoised"}; }
+std::vector<std::string> detachableSectionChoices() {
+    std::vector<std::string> names;
+    for (const DetachableSectionInfo& section : detachableSections()) names.emplace_back(section.name);
+    return names;
+}
 std::vector<std::string> panelChoices() {
     return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"};
 }
@@ -278,6 +284,8 @@ const std::vector<CommandSpec>& commandSpecs() {
          "load a reference image (.pfm or .exr) for the true error in Stats and status, or none"},
         {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,
          "open a sidebar panel, or all of them"},
+        {"pop-out", {choiceArg("NAME", "section", detachableSectionChoices), choiceArg("on|off", "value", onOffChoices)}, nullptr,
+         "show a sidebar section in its own window (on), or back in the sidebar (off), as its pop out button does"},
         {"open-material", {tokenArg("NAME")}, nullptr,
          "open the Materials panel at the material named NAME, as the Pixel panel's open button does"},
         // The pixel inspector

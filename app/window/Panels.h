@@ -4,6 +4,7 @@
 // its actions; the session pushes the changes to the renderer. One file per panel.
 
 #include <ptview/gl/GlObjects.h>
+#include <ptview/window/DetachedWindows.h>
 #include <ptview/window/PathsOverlay.h>
 #include <ptview/session/UnsavedEditsPrompt.h>
 #include <ptview/session/ViewerSession.h>
@@ -34,6 +35,7 @@ struct PanelState {
     PathPick selectedPath; // Pixel panel: the traced path and vertex the table shows (clicking a vertex on the image picks it)
     // Panels to open on the next frame ("all" for every one), asked for by a script.
     std::vector<std::string> panelsToOpen;
+    DetachedWindows detached; // sections popped out of the sidebar into their own windows
 };
 
 // Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,
@@ -61,6 +63,13 @@ void drawHelpPanel();
 // vertex table (PathsPanel.cpp). `cameraMoved` (PixelInspection::cameraMoved): the pixel now sees
 // another place than the pin, so tracing is offered only after a re-pin.
 void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixel, bool cameraMoved);
+// The pinned pixel's traced paths and the selected one's vertex table: in the Pixel panel, or in
+// its own window (ownWindow, popped out: the table then shows every column without scrolling sideways).
+void drawTracedPathsTable(ViewerSession& session, PanelState& state, bool ownWindow);
+// The Render panel's view, NaN highlight and light-path explorer controls (also in their own window).
+void drawViewControls(ViewerModel& model);
+// The Render panel's split-view controls (also in their own window).
+void drawCompareControls(ViewerModel& model);
 // The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,
 // Discard, Cancel. Drawn outside the sidebar, so it shows with the sidebar hidden too.
 void drawUnsavedEditsDialog(ViewerSession& session, PanelState& state);

@@ -35,10 +35,13 @@ const char* shadowText(const PathVertex& v) {
     return v.shadowBlocked ? "blocked" : "reached";
 }
 
-void vertexTable(const RecordedPath& path, const Scene& scene, PathPick& selected) {
-    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
-                                  ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("vertices", 11, flags, ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * 10.0f))) return;
+// In the sidebar the table scrolls sideways; in its own window it scrolls only down, so every
+// column shows at once where the window is wide enough.
+void vertexTable(const RecordedPath& path, const Scene& scene, PathPick& selected, bool ownWindow) {
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
+                                  (ownWindow ? ImGuiTableFlags_ScrollY : ImGuiTableFlags_ScrollX);
+    const float rows = ownWindow ? 16.0f : 10.0f;
+    if (!ImGui::BeginTable("vertices", 11, flags, ImVec2(0.0f, ImGui::GetTextLineHeightWithSpacing() * rows))) return;
     for (const char* column : {"#", "kind", "material", "position", "throughput in", "added", "bsdf pdf", "light pdf",
                                "shadow ray", "w light", "w emission"})
         ImGui::TableSetupColumn(column);
@@ -121,9 +124,18 @@ void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixe
     }
     itemTooltip("trace them on the GPU with the current integrator, sampler and depth, and draw them over the image; "
                 "orbit to see them from the side. Trace again after changing the scene or the settings.");
+    if (state.detached.drawInSidebar(DetachableSection::PathsTable)) drawTracedPathsTable(session, state, false);
+}
+
+void drawTracedPathsTable(ViewerSession& session, PanelState& state, bool ownWindow) {
+    const ViewerModel& model = session.model();
     const std::optional<ViewerSession::TracedPaths>& traced = session.tracedPaths();
-    if (!traced || traced->pixel != pixel) return;
+    if (!traced || !model.pinnedPixel || traced->pixel != *model.pinnedPixel) {
+        if (ownWindow) noteText("No traced paths: pin a pixel (Alt+click) and press Trace paths in the Pixel panel.");
+        return;
+    }
     const Scene& scene = model.scene;
+    if (ownWindow) ImGui::Text("pixel %d, %d", traced->pixel.x, traced->pixel.y);
     const int count = static_cast<int>(traced->paths.size());
     glm::vec3 mean(0.0f);
     for (const RecordedPath& path : traced->paths) mean += path.summedContributions() / static_cast<float>(count);
@@ -138,7 +150,7 @@ void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixe
     ImGui::SameLine();
     ImGui::Text("sample %d, ends: %s, radiance %s", path.sampleIndex, pathEnd(path, traced->settings, scene),
                 vec3Text(path.radiance).c_str());
-    vertexTable(path, scene, state.selectedPath);
+    vertexTable(path, scene, state.selectedPath, ownWindow);
     if (state.selectedPath.vertex >= 0 && state.selectedPath.vertex < static_cast<int>(path.vertices.size()))
         vertexDetails(path.vertices[static_cast<size_t>(state.selectedPath.vertex)]);
 }

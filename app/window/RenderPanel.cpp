@@ -99,6 +99,33 @@ void saveScreenshots(ViewerSession& session, PanelState& state) {
     state.imageNoticeSince = std::chrono::steady_clock::now();
 }
 
+void drawViewControls(ViewerModel& model) {
+    RenderSettings& settings = model.settings;
+    enumCombo("view", debugViewNames(), settings.debugView);
+    itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
+    ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
+    // The light-path explorer: the same paths, only a part of what they carry added up.
+    enumCombo("light paths", lightPathsNames(), settings.lightPaths);
+    if (lightPathsUseBounces(settings.lightPaths)) settingSlider("bounces k", settings.lightPathBounces, settingRanges::kLightPathBounces);
+}
+
+void drawCompareControls(ViewerModel& model) {
+    ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
+    itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
+    if (model.compare.enabled) compareSidesControls(model);
+    if (model.compare.enabled && model.compare.sides == CompareSides::TwoRenders) {
+        ImGui::TextDisabled("right side (above: the left side):");
+        enumCombo("integrator##right", integratorNames(), model.compare.right.integrator);
+        enumCombo("sampler##right", samplerModeNames(), model.compare.right.sampler);
+        settingSlider("MAX_DEPTH##right", model.compare.right.maxDepth, settingRanges::kMaxDepth);
+        ImGui::Checkbox("denoise##right", &model.compare.rightDenoised);
+        itemTooltip("show the right render denoised (strength and iterations above); the left follows Denoise above");
+        ImGui::Checkbox("equal time", &model.compare.equalTime);
+        itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
+                "off: both get the same number of samples per pixel");
+    }
+}
+
 void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ViewerModel& model = session.model();
     RenderSettings& settings = model.settings;
@@ -141,12 +168,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
                        settingRanges::kResolutionScale.panelHi, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
-    enumCombo("view", debugViewNames(), settings.debugView);
-    itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
-    ImGui::Checkbox("highlight NaN/Inf (magenta)", &model.display.highlightNonFinite);
-    // The light-path explorer: the same paths, only a part of what they carry added up.
-    enumCombo("light paths", lightPathsNames(), settings.lightPaths);
-    if (lightPathsUseBounces(settings.lightPaths)) settingSlider("bounces k", settings.lightPathBounces, settingRanges::kLightPathBounces);
+    if (state.detached.drawInSidebar(DetachableSection::LightPaths)) drawViewControls(model);
 
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, settingRanges::kExposure.panelLo, settingRanges::kExposure.panelHi,
@@ -157,20 +179,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     denoiseControls(model);
 
     ImGui::Separator();
-    ImGui::Checkbox("Compare (split view)", &model.compare.enabled);
-    itemTooltip("two renders of the same scene side by side; drag the white divider (key C)");
-    if (model.compare.enabled) compareSidesControls(model);
-    if (model.compare.enabled && model.compare.sides == CompareSides::TwoRenders) {
-        ImGui::TextDisabled("right side (above: the left side):");
-        enumCombo("integrator##right", integratorNames(), model.compare.right.integrator);
-        enumCombo("sampler##right", samplerModeNames(), model.compare.right.sampler);
-        settingSlider("MAX_DEPTH##right", model.compare.right.maxDepth, settingRanges::kMaxDepth);
-        ImGui::Checkbox("denoise##right", &model.compare.rightDenoised);
-        itemTooltip("show the right render denoised (strength and iterations above); the left follows Denoise above");
-        ImGui::Checkbox("equal time", &model.compare.equalTime);
-        itemTooltip("on: both sides get the same GPU time (a cheaper method gets more samples);\n"
-                "off: both get the same number of samples per pixel");
-    }
+    if (state.detached.drawInSidebar(DetachableSection::Compare)) drawCompareControls(model);
 
     ImGui::Separator();
     if (ImGui::Button("Screenshot (F12)")) saveScreenshots(session, state);

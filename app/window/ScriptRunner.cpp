@@ -119,7 +119,7 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
     // plain render) and the last notice drawn on it (PanelText.h decides all three).
     line += " title=" + quoted(windowTitle(model.fileScene.path, session.hasUnsavedEdits(), model.sceneError, model.shaderError)) +
             " image-label=" + quoted(imageContentLabel(settings, session.showsDenoised(ViewerSession::Side::Left))) +
-            " notice=" + quoted(panels.imageNotice);
+            " notice=" + quoted(panels.imageNotice) + " popped-out=" + panels.detached.describe();
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
 }
@@ -356,6 +356,11 @@ void savePixel(Step& s) {
     std::printf("ptview: wrote %s\n", s.word.c_str());
 }
 
+void popOut(Step& s) {
+    for (const DetachableSectionInfo& section : detachableSections())
+        if (s.command.isWord(0, section.name)) s.panels.detached.setOut(section.section, s.command.isWord(1, "on"));
+}
+
 void resetCamera(Step& s) {
     s.session.resetCamera();
     s.model.pendingChanges |= ViewerModel::kCameraChanged;
@@ -538,6 +543,7 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
          }},
         {"open-panel", [](Step& s) { s.panels.panelsToOpen.push_back(s.word); }},
         {"open-material", openMaterial},
+        {"pop-out", popOut},
         {"pin-pixel", pinPixel},
         {"unpin-pixel", [](Step& s) { s.model.pinnedPixel.reset(); }},
         {"save-pixel", savePixel},

@@ -165,6 +165,7 @@ private:
     void layout();
     void drawUi();
     void drawSidebar();
+    void drawDetachedWindows();
     void drawCompareLabels();
     void drawImageNotes();
     void drawImageNote(const std::string& text, ImVec2 anchor, bool alignRight, bool alignBottom, ImU32 colour);
@@ -477,6 +478,24 @@ void ViewerWindow::drawSidebar() {
     ImGui::End();
 }
 
+// The sidebar's sections the user popped out, each in its own window over the image.
+void ViewerWindow::drawDetachedWindows() {
+    const float em = ImGui::GetFontSize();
+    DetachedWindows& detached = panelState_.detached;
+    detached.drawWindow(DetachableSection::PathsTable, ImVec2(0.0f, 26.0f * em), ImVec2(1.0f, 1.0f),
+                        [&] { drawTracedPathsTable(session_, panelState_, true); });
+    detached.drawWindow(DetachableSection::LightPaths, ImVec2(26.0f * em, 0.0f), ImVec2(1.0f, 0.0f), [&] {
+        ImGui::PushItemWidth(-ImGui::CalcTextSize("bounces k").x - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x);
+        drawViewControls(session_.model());
+        ImGui::PopItemWidth();
+    });
+    detached.drawWindow(DetachableSection::Compare, ImVec2(26.0f * em, 0.0f), ImVec2(1.0f, 0.3f), [&] {
+        ImGui::PushItemWidth(-ImGui::CalcTextSize("MAX_DEPTH").x - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x);
+        drawCompareControls(session_.model());
+        ImGui::PopItemWidth();
+    });
+}
+
 void ViewerWindow::drawCompareLabels() {
     if (!session_.comparing()) return;
     ImDrawList* draw = ImGui::GetForegroundDrawList();
@@ -572,6 +591,7 @@ void ViewerWindow::drawUi() {
         ImGui::End();
     }
     if (!warpVisualizer_.active()) {
+        drawDetachedWindows();
         drawCompareLabels();
         drawImageNotes();
         drawTracedPaths();
