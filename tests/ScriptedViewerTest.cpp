@@ -649,6 +649,75 @@ quit
     fs::remove_all(directory);
 }
 
+// The most common colour of the window's left `width` columns (the sidebar's background).
+glm::ivec3 commonColour(const fs::path& png, int width) {
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(png.string().c_str(), &w, &h, &channels, 3);
+    if (!pixels) return glm::ivec3(-1);
+    std::map<int, int> counts;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < std::min(width, w); ++x) {
+            const unsigned char* p = pixels + 3 * (y * w + x);
+            ++counts[(p[0] << 16) | (p[1] << 8) | p[2]];
+        }
+    stbi_image_free(pixels);
+    int best = std::max_element(counts.begin(), counts.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+    return glm::ivec3(best >> 16, (best >> 8) & 255, best & 255);
+}
+
+// Ctrl + (pressed by xdotool, tests/window_ui_scale.sh) enlarges the interface, the sidebar with it;
+// the choice and the high-contrast theme are kept for the next run; a scale out of range is
+// clamped and said so (issue 37).
+TEST_F(ScriptedViewer, CtrlPlusScalesTheInterfaceAndTheChoiceIsKeptForTheNextRun) {
+    fs::path directory = freshDirectory("ui_scale");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
+target-spp 1
+wait-spp 1
+frames 2
+screenshot-window normal.png
+status
+wait-seconds 4
+status
+high-contrast on
+frames 3
+screenshot-window contrast.png
+ui-scale 7
+status
+quit
+)";
+    testing::CommandResult result = runWindowDriver(directory, "window_ui_scale.sh");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 3u) << result.output;
+    EXPECT_EQ(field(status[0], "ui-scale"), "1");
+    const float twoSteps = 1.10408951f * 1.10408951f; // kUiScaleStep (UserPreferences.h) squared
+    EXPECT_NEAR(std::stof(field(status[1], "ui-scale")), twoSteps, 1e-4f) << "Ctrl + twice";
+    EXPECT_LT(std::stoi(field(status[1], "area").substr(0, field(status[1], "area").find('x'))),
+              std::stoi(field(status[0], "area").substr(0, field(status[0], "area").find('x'))))
+        << "the wider sidebar leaves the image less room";
+    EXPECT_EQ(field(status[2], "ui-scale"), "3");
+    EXPECT_NE(result.output.find("script.txt:12: ui-scale: UI scale 7 is outside [0.5, 3]: using 3"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(field(status[2], "high-contrast"), "on");
+    EXPECT_EQ(commonColour(directory / "contrast.png", 200), glm::ivec3(0, 0, 0)) << "black panels";
+    EXPECT_NE(commonColour(directory / "normal.png", 200), glm::ivec3(0, 0, 0));
+
+    // The next run starts as this one ended.
+    nlohmann::json kept = nlohmann::json::parse(std::ifstream(directory / "prefs.json"));
+    EXPECT_EQ(kept["ui_scale"], 3.0);
+    EXPECT_EQ(kept["high_contrast"], true);
+    std::ofstream(directory / "again.txt") << "status\nquit\n";
+    result = testing::runCommand("cd " + testing::shellQuoted(directory.string()) + " && PTVIEW_CONFIG=prefs.json " + kXvfb +
+                                 PTVIEW_BINARY + " scene.json --script again.txt");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 1u) << result.output;
+    EXPECT_EQ(field(status[0], "ui-scale"), "3");
+    EXPECT_EQ(field(status[0], "high-contrast"), "on");
+    fs::remove_all(directory);
+}
+
 // The same by hand: Alt+click on the image (xdotool, tests/window_pixel.sh) pins the render pixel
 // under the cursor, through the resolution scale (8 window pixels per render pixel here); the
 // camera does not move.

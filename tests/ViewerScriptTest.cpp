@@ -105,13 +105,15 @@ denoise-iterations 4
 compare-sides raw-denoised
 compare-denoise on
 pop-out paths-table on
+ui-scale 1.5
+high-contrast on
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 64u);
+    ASSERT_EQ(script.commands.size(), 66u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -356,7 +358,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 61u);
+    EXPECT_EQ(referenceVerbs().size(), 63u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

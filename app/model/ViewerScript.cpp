@@ -135,7 +135,7 @@ std::vector<std::string> detachableSectionChoices() {
     return names;
 }
 std::vector<std::string> panelChoices() {
-    return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"};
+    return {"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "interface", "help", "all"};
 }
 
 // =====================================================================================
@@ -284,6 +284,11 @@ const std::vector<CommandSpec>& commandSpecs() {
          "load a reference image (.pfm or .exr) for the true error in Stats and status, or none"},
         {"open-panel", {choiceArg("NAME", "panel", panelChoices)}, nullptr,
          "open a sidebar panel, or all of them"},
+        {"ui-scale", {numberArg("F")}, nullptr,
+         "the interface's size on top of the monitor's scale, as Ctrl + and Ctrl - change it (kept for the next run); "
+         "outside [0.5, 3] it is clamped, and said so"},
+        {"high-contrast", {choiceArg("on|off", "value", onOffChoices)}, nullptr,
+         "the high-contrast theme of the panels (kept for the next run)"},
         {"pop-out", {choiceArg("NAME", "section", detachableSectionChoices), choiceArg("on|off", "value", onOffChoices)}, nullptr,
          "show a sidebar section in its own window (on), or back in the sidebar (off), as its pop out button does"},
         {"open-material", {tokenArg("NAME")}, nullptr,

@@ -27,6 +27,7 @@ constexpr Shortcut kShortcuts[] = {
     {"N", "denoise on / off (biased; Render panel: strength, iterations, raw | denoised split)"},
     {"F12", "screenshot (PNG + PFM + EXR into screenshots/)"},
     {"Tab", "hide / show the sidebar"},
+    {"Ctrl + / Ctrl -", "larger / smaller interface (Ctrl 0: back to 1x; kept for the next run)"},
     {"F1", "this help"},
     {"Esc", "quit (asks first when the scene has unsaved edits)"},
 };
@@ -49,6 +50,25 @@ void drawHelpPanel() {
         ImGui::EndTable();
     }
     noteText("Edit the scene JSON or a shader on disk: the viewer reloads it; errors show in Scene / Render.");
+}
+
+void drawInterfacePanel(PanelState& state) {
+    UserPreferences& preferences = state.preferences;
+    // Applied when the drag ends: a style rebuilt under the pointer every frame would move the
+    // slider away from it. Meanwhile the slider shows the value being dragged.
+    float& dragged = state.uiScaleDragged;
+    float scale = dragged > 0.0f ? dragged : preferences.uiScale;
+    ImGui::SliderFloat("UI scale", &scale, kUiScale.panelLo, kUiScale.panelHi, "%.2f x", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemActive()) {
+        dragged = scale;
+    } else {
+        if (ImGui::IsItemDeactivatedAfterEdit()) preferences.uiScale = clampedUiScale(scale, nullptr);
+        dragged = 0.0f;
+    }
+    itemTooltip("size of the text and widgets, on top of the monitor's scale (Ctrl + / Ctrl -; Ctrl 0: 1x);\n"
+                "kept for the next run in ~/.config/ptview/viewer.json");
+    ImGui::Checkbox("high contrast", &preferences.highContrast);
+    itemTooltip("black panels, white text, bordered fields and strong accents: for projectors and bright rooms");
 }
 
 } // namespace ptview

@@ -4,6 +4,7 @@
 // its actions; the session pushes the changes to the renderer. One file per panel.
 
 #include <ptview/gl/GlObjects.h>
+#include <ptview/model/UserPreferences.h>
 #include <ptview/window/DetachedWindows.h>
 #include <ptview/window/PathsOverlay.h>
 #include <ptview/session/UnsavedEditsPrompt.h>
@@ -36,6 +37,10 @@ struct PanelState {
     // Panels to open on the next frame ("all" for every one), asked for by a script.
     std::vector<std::string> panelsToOpen;
     DetachedWindows detached; // sections popped out of the sidebar into their own windows
+    // The UI scale and high-contrast theme: the Interface panel, Ctrl +/- and scripts change
+    // them; the window applies a change on its next frame and keeps it for the next run.
+    UserPreferences preferences;
+    float uiScaleDragged = 0.0f; // the Interface panel's slider value while it is dragged (0: not dragged)
 };
 
 // Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,
@@ -59,6 +64,8 @@ void drawStatsPanel(ViewerSession& session, PanelState& state, double frameSecon
 void drawPixelPanel(ViewerSession& session, PanelState& state);
 // Mouse and keyboard shortcuts.
 void drawHelpPanel();
+// The UI scale and the high-contrast theme (UserPreferences.h), kept between runs.
+void drawInterfacePanel(PanelState& state);
 // In the Pixel panel: how many paths to trace for `pixel`, "Trace paths", and the traced paths'
 // vertex table (PathsPanel.cpp). `cameraMoved` (PixelInspection::cameraMoved): the pixel now sees
 // another place than the pin, so tracing is offered only after a re-pin.

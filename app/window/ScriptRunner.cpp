@@ -119,7 +119,9 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
     // plain render) and the last notice drawn on it (PanelText.h decides all three).
     line += " title=" + quoted(windowTitle(model.fileScene.path, session.hasUnsavedEdits(), model.sceneError, model.shaderError)) +
             " image-label=" + quoted(imageContentLabel(settings, session.showsDenoised(ViewerSession::Side::Left))) +
-            " notice=" + quoted(panels.imageNotice) + " popped-out=" + panels.detached.describe();
+            " notice=" + quoted(panels.imageNotice) + " popped-out=" + panels.detached.describe() +
+            " ui-scale=" + numberText(panels.preferences.uiScale) +
+            " high-contrast=" + (panels.preferences.highContrast ? "on" : "off");
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
 }
@@ -176,6 +178,10 @@ struct ScriptRunner::Step {
     bool failed() const { return runner_.quit_; }
     void quit() { runner_.quit_ = true; }
     void noteDiscardedEdits(const std::vector<std::string>& edits) { runner_.noteDiscardedEdits(command, edits); }
+    // "FILE:LINE: verb: text" on stderr; the script goes on.
+    void note(const std::string& text) {
+        printMessage(runner_.script_.path.string() + ":" + std::to_string(command.line) + ": " + command.verb + ": " + text);
+    }
     void takeWindowScreenshot(const std::filesystem::path& path) { runner_.windowScreenshot_ = path; }
     long long framesDisplayed() const { return runner_.framesDisplayed_; }
     // What the command waits for, set on its first run (firstRun() is true once per command).
@@ -544,6 +550,12 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"open-panel", [](Step& s) { s.panels.panelsToOpen.push_back(s.word); }},
         {"open-material", openMaterial},
         {"pop-out", popOut},
+        {"ui-scale", [](Step& s) {
+             std::string clamped;
+             s.panels.preferences.uiScale = clampedUiScale(s.command.number(0), &clamped);
+             if (!clamped.empty()) s.note(clamped);
+         }},
+        {"high-contrast", [](Step& s) { s.panels.preferences.highContrast = s.command.isWord(0, "on"); }},
         {"pin-pixel", pinPixel},
         {"unpin-pixel", [](Step& s) { s.model.pinnedPixel.reset(); }},
         {"save-pixel", savePixel},

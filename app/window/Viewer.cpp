@@ -16,6 +16,7 @@
 #include <ptview/window/ScriptRunner.h>
 #include <ptview/session/ViewerSession.h>
 #include <ptview/window/WarpVisualizer.h>
+#include <ptview/model/UserPreferences.h>
 
 #include <glad/gl.h>
 // GLFW after glad, so it does not pull in the system GL header.
@@ -50,8 +51,13 @@ constexpr std::chrono::milliseconds kTitleInterval{250}; // how soon the title's
 
 // What the window's callbacks saw since the last frame. Keys that trigger an action are queued
 // from the key callback, so a press shorter than a (slow) frame is never lost.
+struct KeyPress {
+    int key;
+    int mods; // GLFW_MOD_CONTROL ...: as held at the press (a fast Ctrl+= is released before the frame reads it)
+};
+
 struct InputEvents {
-    std::vector<int> pressedKeys;
+    std::vector<KeyPress> pressedKeys;
     double scrollSteps = 0.0; // of the wheel turned over the image area only
     // The image area in window coordinates (top-left origin), as the last layout placed it: a
     // wheel turned anywhere else (over the sidebar) is the sidebar's, and never zooms.
@@ -66,8 +72,8 @@ InputEvents& events(GLFWwindow* window) {
 }
 
 // Installed before ImGui's own callbacks, which chain to them.
-void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
-    if (action == GLFW_PRESS) events(window).pressedKeys.push_back(key);
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
+    if (action == GLFW_PRESS) events(window).pressedKeys.push_back(KeyPress{key, mods});
 }
 
 // Judged by where the pointer is when the wheel turns, not by ImGui's WantCaptureMouse alone:
@@ -120,14 +126,37 @@ std::string titleOf(const ViewerSession& session) {
     return windowTitle(model.fileScene.path, session.hasUnsavedEdits(), model.sceneError, model.shaderError);
 }
 
-// Fonts and widget sizes follow the monitor's content scale (HiDPI).
-void applyContentScale(float scale) {
+// Fonts and widget sizes follow the monitor's content scale (HiDPI) times the user's UI scale;
+// the high-contrast theme is for projectors and bright rooms: black panels, white text, a border
+// on every field and strong accents (docs/viewer.md, "Interface").
+void applyInterfaceStyle(float scale, bool highContrast) {
     ImGuiStyle style;
     ImGui::StyleColorsDark(&style);
     // Slider handles: narrow and translucent, so the value printed over them stays readable.
     style.GrabMinSize = 4.0f;
     style.Colors[ImGuiCol_SliderGrab].w = 0.45f;
     style.Colors[ImGuiCol_SliderGrabActive].w = 0.6f;
+    if (highContrast) {
+        const ImVec4 black(0.0f, 0.0f, 0.0f, 1.0f), white(1.0f, 1.0f, 1.0f, 1.0f), yellow(1.0f, 0.85f, 0.0f, 1.0f);
+        const ImVec4 blue(0.0f, 0.3f, 0.85f, 1.0f), brightBlue(0.15f, 0.5f, 1.0f, 1.0f);
+        style.Colors[ImGuiCol_WindowBg] = black;
+        style.Colors[ImGuiCol_PopupBg] = black;
+        style.Colors[ImGuiCol_Text] = white;
+        style.Colors[ImGuiCol_TextDisabled] = ImVec4(0.85f, 0.85f, 0.85f, 1.0f);
+        style.Colors[ImGuiCol_Border] = white;
+        style.Colors[ImGuiCol_FrameBg] = ImVec4(0.12f, 0.12f, 0.12f, 1.0f);
+        style.Colors[ImGuiCol_FrameBgHovered] = ImVec4(0.25f, 0.25f, 0.25f, 1.0f);
+        style.Colors[ImGuiCol_FrameBgActive] = ImVec4(0.35f, 0.35f, 0.35f, 1.0f);
+        for (ImGuiCol col : {ImGuiCol_Header, ImGuiCol_Button, ImGuiCol_TitleBgActive}) style.Colors[col] = blue;
+        for (ImGuiCol col : {ImGuiCol_HeaderHovered, ImGuiCol_ButtonHovered, ImGuiCol_HeaderActive, ImGuiCol_ButtonActive})
+            style.Colors[col] = brightBlue;
+        for (ImGuiCol col : {ImGuiCol_CheckMark, ImGuiCol_SliderGrab, ImGuiCol_SliderGrabActive, ImGuiCol_PlotLines,
+                             ImGuiCol_PlotHistogram, ImGuiCol_NavHighlight})
+            style.Colors[col] = yellow;
+        style.FrameBorderSize = 1.0f;
+        style.WindowBorderSize = 2.0f;
+        style.GrabMinSize = 8.0f;
+    }
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
     ImGui::GetIO().FontGlobalScale = scale;
@@ -140,18 +169,27 @@ public:
     ViewerWindow(GLFWwindow* window, ViewerSession& session, const ViewerOptions& options)
         : window_(window), session_(session), options_(options), warpVisualizer_(options.warp) {
         warpVisualizer_.setActive(options.showWarp);
+        if (preferencesPath_) {
+            std::string warning;
+            panelState_.preferences = savedPreferences_ = loadPreferences(*preferencesPath_, warning);
+            if (!warning.empty()) printMessage("warning: " + warning);
+        }
     }
 
     int run(std::optional<ScriptRunner>& script);
 
 private:
     bool waitForEvents(bool busy);
+    void applyInterface();
+    void keepPreferences();
     double timeFrame();
     void updateSession();
     void drawImage();
     bool frameScreenshotDone(int frame, Clock::time_point start);
     void handleKeys();
-    void answerUnsavedEdits(const std::vector<int>& keys);
+    void handleControlKey(int key);
+    void scaleInterface(float factor);
+    void answerUnsavedEdits(const std::vector<KeyPress>& keys);
     void updateTitle();
     void handleMouseAndFlight(double seconds);
     std::optional<glm::vec2> imageFractionAtCursor(glm::dvec2 cursor) const;
@@ -179,6 +217,9 @@ private:
     bool sidebarVisible_ = true;
     bool helpOpen_ = false;
     float sidebarWidth_ = kSidebarWidth; // in window coordinates, as ImGui measures
+    std::optional<std::filesystem::path> preferencesPath_ = defaultPreferencesPath();
+    std::optional<UserPreferences> appliedPreferences_; // what the style shows; none before the first frame
+    UserPreferences savedPreferences_;                  // what the preferences file holds
     glm::ivec2 framebufferSize_{0, 0};
     glm::vec2 framebufferScale_{1.0f}; // framebuffer pixels per window coordinate
     glm::dvec2 lastCursor_{0.0};
@@ -192,14 +233,18 @@ private:
 };
 
 void ViewerWindow::handleKeys() {
-    std::vector<int> keys;
+    std::vector<KeyPress> keys;
     std::swap(keys, events(window_).pressedKeys);
     if (panelState_.unsavedEdits.pending()) return answerUnsavedEdits(keys);
     if (ImGui::GetIO().WantCaptureKeyboard) return; // typing into a field
     ViewerModel& model = session_.model();
-    for (int key : keys) {
+    for (KeyPress press : keys) {
         if (panelState_.unsavedEdits.pending()) break; // keys typed after Esc are no answer to an unseen question
-        switch (key) {
+        if (press.mods & GLFW_MOD_CONTROL) {
+            handleControlKey(press.key);
+            continue;
+        }
+        switch (press.key) {
         case GLFW_KEY_ESCAPE: panelState_.unsavedEdits.request(session_, UnsavedEditsPrompt::Action::Quit); break;
         case GLFW_KEY_F12: saveScreenshots(session_, panelState_); break;
         case GLFW_KEY_F1: helpOpen_ = !helpOpen_; break;
@@ -214,9 +259,34 @@ void ViewerWindow::handleKeys() {
     }
 }
 
+// Ctrl + (with or without Shift) and Ctrl - scale the interface; Ctrl 0 sets it back to 1.
+void ViewerWindow::handleControlKey(int key) {
+    switch (key) {
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD: scaleInterface(kUiScaleStep); break;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: scaleInterface(1.0f / kUiScaleStep); break;
+    case GLFW_KEY_0:
+    case GLFW_KEY_KP_0: scaleInterface(1.0f / panelState_.preferences.uiScale); break;
+    default: break;
+    }
+}
+
+// Past either end of kUiScale the scale stops there, and the image says so.
+void ViewerWindow::scaleInterface(float factor) {
+    std::string message;
+    panelState_.preferences.uiScale = clampedUiScale(panelState_.preferences.uiScale * factor, &message);
+    if (std::abs(panelState_.preferences.uiScale - 1.0f) < 1e-4f) panelState_.preferences.uiScale = 1.0f; // back to exactly 1
+    if (message.empty()) return;
+    panelState_.imageNotice = message;
+    panelState_.screenshotFailed = false; // (the notice's colour: not an error)
+    panelState_.imageNoticeSince = Clock::now();
+}
+
 // While the "Unsaved edits" question is open, the keys answer it (the dialog has buttons too).
-void ViewerWindow::answerUnsavedEdits(const std::vector<int>& keys) {
-    for (int key : keys) {
+void ViewerWindow::answerUnsavedEdits(const std::vector<KeyPress>& keys) {
+    for (const KeyPress& press : keys) {
+        const int key = press.key;
         if (!panelState_.unsavedEdits.pending()) break;
         if (key == GLFW_KEY_ESCAPE) panelState_.unsavedEdits.answer(session_, UnsavedEditsPrompt::Answer::Cancel);
         if (key == GLFW_KEY_S) panelState_.unsavedEdits.answer(session_, UnsavedEditsPrompt::Answer::Save);
@@ -462,6 +532,7 @@ void ViewerWindow::drawSidebar() {
         if (rendering && header("Materials")) materialsPanel_.draw(session_);
         if (rendering && header("Lights")) drawLightsPanel(session_);
         if (rendering && header("Camera")) drawCameraPanel(session_);
+        if (header("Interface")) drawInterfacePanel(panelState_);
         if (header("Help")) drawHelpPanel();
         ImGui::SetNextItemOpen(warpVisualizer_.active(), ImGuiCond_Once);
         if (ImGui::CollapsingHeader("Warp visualizer")) warpVisualizer_.drawControls();
@@ -622,12 +693,33 @@ bool ViewerWindow::waitForEvents(bool busy) {
         glfwWaitEvents();
         return false;
     }
-    if (events(window_).contentScaleChanged) {
-        applyContentScale(events(window_).contentScale);
-        sidebarWidth_ = kSidebarWidth * events(window_).contentScale;
-        events(window_).contentScaleChanged = false;
-    }
+    applyInterface();
     return true;
+}
+
+// A change of the monitor's scale or of the user's preferences restyles the panels; a change the
+// user made is kept for the next run (UserPreferences.h).
+void ViewerWindow::applyInterface() {
+    const UserPreferences& wanted = panelState_.preferences;
+    if (!events(window_).contentScaleChanged && wanted == appliedPreferences_) return;
+    const float scale = events(window_).contentScale * wanted.uiScale;
+    applyInterfaceStyle(scale, wanted.highContrast);
+    sidebarWidth_ = kSidebarWidth * scale;
+    events(window_).contentScaleChanged = false;
+    appliedPreferences_ = wanted;
+    keepPreferences();
+}
+
+// Written when they differ from what the file holds (loaded or last saved), so a run that changes
+// nothing writes nothing.
+void ViewerWindow::keepPreferences() {
+    if (!preferencesPath_ || panelState_.preferences == savedPreferences_) return;
+    savedPreferences_ = panelState_.preferences;
+    try {
+        savePreferences(*preferencesPath_, savedPreferences_);
+    } catch (const std::exception& e) {
+        printMessage(std::string("warning: ") + e.what());
+    }
 }
 
 // The time since the last frame, smoothed into the frame time and the part of it that is not
@@ -721,6 +813,7 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
         if (frameScreenshotDone(++frame, start)) break;
         glfwSwapBuffers(window_);
     }
+    keepPreferences(); // a change in the last frame (a script's last command) too
     return script ? script->exitCode() : 0;
 }
 
