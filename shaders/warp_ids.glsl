@@ -8,3 +8,4 @@ const int kWarpUniformCone = 4; // uniform-cone
 const int kWarpUniformHemisphere = 5; // uniform-hemisphere
 const int kWarpCosineHemisphere = 6; // cosine-hemisphere
 const int kWarpUniformTriangle = 7; // uniform-triangle
+const int kWarpHenyeyGreenstein = 8; // henyey-greenstein

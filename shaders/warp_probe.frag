@@ -12,6 +12,7 @@
 uniform int uProbeMode;
 uniform int uWarp;
 uniform float uCosThetaMax;     // uniform cone only
+uniform float uG;               // henyey-greenstein only
 uniform int uWidth;             // fragments per row
 uniform int uCount;             // fragments that carry work
 uniform uint uSamplerMode;
@@ -32,6 +33,7 @@ vec3 warpPoint(vec2 u) {
     if (uWarp == kWarpUniformHemisphere) return sampleUniformHemisphere(u);
     if (uWarp == kWarpCosineHemisphere) return sampleCosineHemisphere(u);
     if (uWarp == kWarpUniformTriangle) return vec3(sampleUniformTriangle(u), 0.0);
+    if (uWarp == kWarpHenyeyGreenstein) return sampleHenyeyGreenstein(u, uG);
     return vec3(u, 0.0);
 }
 
@@ -42,6 +44,7 @@ float warpPdf(vec3 p) {
     if (uWarp == kWarpUniformHemisphere) return uniformHemispherePdf(p);
     if (uWarp == kWarpCosineHemisphere) return cosineHemispherePdf(p.z);
     if (uWarp == kWarpUniformTriangle) return uniformTrianglePdf(p.xy);
+    if (uWarp == kWarpHenyeyGreenstein) return henyeyGreensteinPdf(p.z, uG);
     return all(greaterThanEqual(p.xy, vec2(0.0))) && all(lessThan(p.xy, vec2(1.0))) ? 1.0 : 0.0;
 }
 
@@ -53,6 +56,7 @@ vec2 invertWarp(vec3 p) {
     if (uWarp == kWarpUniformHemisphere) return invertUniformHemisphere(p);
     if (uWarp == kWarpCosineHemisphere) return invertCosineHemisphere(p);
     if (uWarp == kWarpUniformTriangle) return invertUniformTriangle(p.xy);
+    if (uWarp == kWarpHenyeyGreenstein) return invertHenyeyGreenstein(p, uG);
     return p.xy;
 }
 

@@ -144,3 +144,33 @@ vec2 invertUniformTriangle(vec2 b) {
     float s = 1.0 - b.x;
     return vec2(s * s, s > 0.0 ? b.y / s : 0.0);
 }
+
+// ---- Henyey-Greenstein: directions about +z, the direction of travel, with the phase function
+// (1 - g^2) / (4 pi (1 + g^2 - 2 g cos theta)^(3/2)) as density; g in (-1, 1) is the mean cosine,
+// g > 0 scatters forward (as in pbrt and Cycles). Inverts the CDF of mu = cos theta,
+// F(mu) = (1 - g) (1 + mu) / (d (1 + g + d)), d = sqrt(1 + g^2 - 2 g mu): with s = (1 - g^2) /
+// (1 - g + 2 g u), 1 - mu = (1 - g)(1 - u)(1 - g + s) / (1 - g + 2 g u) and 1 + mu = (1 + g) u
+// (1 + g + s) / (1 - g + 2 g u). Written so, without the textbook's 1 / (2 g), they hold at g = 0
+// (uniform) and lose no digits near the poles, where a strongly peaked lobe puts its samples:
+// sin theta comes from the product, not from 1 - cos^2.
+vec3 sampleHenyeyGreenstein(vec2 u, float g) {
+    float denominator = 1.0 - g + 2.0 * g * u.x;
+    float s = (1.0 - g * g) / denominator;
+    float oneMinusCos = (1.0 - g) * (1.0 - u.x) * (1.0 - g + s) / denominator;
+    float onePlusCos = (1.0 + g) * u.x * (1.0 + g + s) / denominator;
+    float cosTheta = clamp(oneMinusCos < onePlusCos ? 1.0 - oneMinusCos : onePlusCos - 1.0, -1.0, 1.0);
+    float sinTheta = sqrt(max(0.0, oneMinusCos * onePlusCos));
+    float phi = kTwoPi * u.y;
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// Solid-angle density (the phase function itself: it integrates to 1 over the sphere).
+float henyeyGreensteinPdf(float cosTheta, float g) {
+    float d2 = 1.0 + g * g - 2.0 * g * cosTheta;
+    return 0.25 * kInvPi * (1.0 - g * g) / (d2 * sqrt(d2));
+}
+
+vec2 invertHenyeyGreenstein(vec3 w, float g) {
+    float d = sqrt(1.0 + g * g - 2.0 * g * w.z);
+    return vec2((1.0 - g) * (1.0 + w.z) / (d * (1.0 + g + d)), azimuth(w.xy) / kTwoPi);
+}

@@ -382,7 +382,7 @@ TEST_F(CommandLineTest, ABadOptionPointsToTheHelpThatListsIt) {
 TEST_F(CommandLineTest, UnknownWarpOrSamplerListsValidNames) {
     expectRefused("warp --warp cone --out " + shellQuoted(path("out.png")),
                   "unknown warp \"cone\" (valid: square, uniform-disk, concentric-disk, uniform-sphere, uniform-cone, "
-                  "uniform-hemisphere, cosine-hemisphere, uniform-triangle)");
+                  "uniform-hemisphere, cosine-hemisphere, uniform-triangle, henyey-greenstein)");
     expectRefused("warp --warp square --sampler halton --out " + shellQuoted(path("out.png")),
                   "unknown sampler \"halton\" (valid: random, grid, stratified, sobol)");
     expectRefused("render " + shellQuoted(kCornell) + " --sampler halton --out " + shellQuoted(path("out.png")),

@@ -113,6 +113,7 @@ struct WarpVariant {
     WarpInfo info;
     float cosThetaMax = 0.5f;
     std::string label; // test name suffix
+    float g = 0.0f;    // henyey-greenstein's mean cosine
 
     bool isCone() const { return info.warp == Warp::UniformCone; }
 
@@ -123,6 +124,7 @@ struct WarpVariant {
         request.count = count;
         request.seed = seed;
         request.cosThetaMax = cosThetaMax;
+        request.g = g;
         return request;
     }
 
@@ -170,14 +172,14 @@ struct WarpVariant {
     // Whether u.y is an azimuth (phi = 2 pi u.y): its inverse may wrap from ~1 to ~0.
     bool azimuthalV() const {
         return info.warp == Warp::UniformDiskPolar || info.warp == Warp::UniformSphere || isCone() ||
-               info.warp == Warp::UniformHemisphere;
+               info.warp == Warp::UniformHemisphere || info.warp == Warp::HenyeyGreenstein;
     }
 
     // Whether the whole edge u.x = 0 lands on one point (the polar disk's centre, the pole, the
     // triangle's vertex b0 = 1), where no inverse can recover u.y.
     bool collapsesEdgeUx0() const {
         return info.warp == Warp::UniformDiskPolar || info.warp == Warp::UniformSphere || isCone() ||
-               info.warp == Warp::UniformTriangle;
+               info.warp == Warp::UniformTriangle || info.warp == Warp::HenyeyGreenstein;
     }
 };
 
@@ -196,6 +198,10 @@ std::vector<WarpVariant> warpVariants() {
         if (info.warp == Warp::UniformCone) {
             variants.push_back({info, 0.5f, testName(std::string(info.name) + "-0.5")});
             variants.push_back({info, 0.95f, testName(std::string(info.name) + "-0.95")});
+        } else if (info.warp == Warp::HenyeyGreenstein) {
+            // backward, isotropic (the g = 0 branch), mildly and strongly forward (fog, clouds)
+            for (auto [g, label] : {std::pair{-0.6f, "-m0.6"}, {0.0f, "-0"}, {0.3f, "-0.3"}, {0.9f, "-0.9"}})
+                variants.push_back({info, 0.5f, testName(std::string(info.name) + label), g});
         } else {
             variants.push_back({info, 0.5f, testName(info.name)});
         }
@@ -277,8 +283,11 @@ TEST_P(Warps, DensityIntegratesToOne) {
     // row edges, and the midpoint rule is exact for the cosine's linear z.
     const Binning whole{variant.domainChart(), 1, 1};
     const bool spherical = whole.chart.spherical;
-    double integral = integrateBins(variant.request(SamplerMode::Random, 1, 0), whole, spherical ? 400 : 512,
-                                    spherical ? 63 : 511)[0];
+    // Henyey-Greenstein at g = 0.9 peaks within ~0.006 of z = 1 (its width (1 - g)^2 / 2g): many
+    // thin z rows, few azimuths (it does not depend on them).
+    const bool peaked = variant.info.warp == Warp::HenyeyGreenstein;
+    double integral = integrateBins(variant.request(SamplerMode::Random, 1, 0), whole,
+                                    peaked ? 8000 : spherical ? 400 : 512, peaked ? 4 : spherical ? 63 : 511)[0];
     EXPECT_NEAR(integral, 1.0, 1e-3);
 }
 
@@ -294,7 +303,7 @@ TEST_P(Warps, DensityIsZeroOutsideTheDomain) {
                                       chart.y0 + (j + 0.5) * (chart.y1 - chart.y0) / 100);
             if (!variant.contains(p, 1e-3f)) points.push_back(p);
         }
-    if (variant.info.warp == Warp::UniformSphere) {
+    if (variant.info.warp == Warp::UniformSphere || variant.info.warp == Warp::HenyeyGreenstein) { // the whole sphere
         EXPECT_TRUE(points.empty());
         return;
     }

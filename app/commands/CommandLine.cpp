@@ -418,6 +418,8 @@ CLI::App* addWarpCommand(CLI::App& app, WarpOptions& warp, float& coneAngleDeg) 
         ->transform(kDecimalInteger)->check(inRange(settingRanges::kSeed))->capture_default_str();
     command->add_option("--cone-angle", coneAngleDeg, "half-angle of uniform-cone in degrees")
         ->check(kFiniteNumber)->check(CLI::Range(0.1f, 180.0f))->capture_default_str();
+    command->add_option("--g", warp.request.g, "mean cosine of henyey-greenstein (> 0: forward), in (-1, 1)")
+        ->check(kFiniteNumber)->check(CLI::Range(-0.99f, 0.99f))->capture_default_str();
     command->add_option("--out,-o", warp.outPath, "output image (.png)")->required();
     command->add_option("--image-size", warp.imageSize, "width and height of the picture in pixels")
         ->transform(kDecimalInteger)->check(CLI::Range(64, 8192))->capture_default_str();

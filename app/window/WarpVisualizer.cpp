@@ -34,6 +34,8 @@ void WarpVisualizer::drawControls() {
         request_.cosThetaMax = std::cos(glm::radians(coneAngleDeg_));
         dirty_ = true;
     }
+    if (request_.warp == Warp::HenyeyGreenstein)
+        dirty_ |= ImGui::SliderFloat("g", &request_.g, -0.99f, 0.99f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     int seed = static_cast<int>(request_.seed);
     if (ImGui::InputInt("seed", &seed)) {
         request_.seed = static_cast<std::uint32_t>(std::max(seed, 0));

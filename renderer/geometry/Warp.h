@@ -17,6 +17,7 @@ enum class Warp {
     UniformHemisphere = 5,
     CosineHemisphere = 6,
     UniformTriangle = 7, // barycentrics (b0, b1)
+    HenyeyGreenstein = 8, // the phase function of media about +z, the direction of travel (mean cosine g)
 };
 
 enum class WarpDomain { Square, Disk, Sphere, Triangle };
@@ -37,6 +38,7 @@ inline const std::vector<WarpInfo>& warpInfos() {
         {Warp::UniformHemisphere, "uniform-hemisphere", WarpDomain::Sphere},
         {Warp::CosineHemisphere, "cosine-hemisphere", WarpDomain::Sphere},
         {Warp::UniformTriangle, "uniform-triangle", WarpDomain::Triangle},
+        {Warp::HenyeyGreenstein, "henyey-greenstein", WarpDomain::Sphere},
     };
     return infos;
 }

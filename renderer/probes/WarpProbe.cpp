@@ -22,6 +22,7 @@ constexpr WarpGlslName kWarpGlslNames[] = {
     {Warp::UniformHemisphere, "kWarpUniformHemisphere"},
     {Warp::CosineHemisphere, "kWarpCosineHemisphere"},
     {Warp::UniformTriangle, "kWarpUniformTriangle"},
+    {Warp::HenyeyGreenstein, "kWarpHenyeyGreenstein"},
 };
 
 } // namespace
@@ -49,6 +50,7 @@ std::vector<ProbeData> WarpProbe::run(const WarpRequest& request, int mode, int 
     glUniform1i(program_->uniformLocation("uProbeMode"), mode);
     glUniform1i(program_->uniformLocation("uWarp"), static_cast<int>(request.warp));
     glUniform1f(program_->uniformLocation("uCosThetaMax"), request.cosThetaMax);
+    glUniform1f(program_->uniformLocation("uG"), request.g);
     glUniform1ui(program_->uniformLocation("uSamplerMode"), static_cast<GLuint>(request.sampler));
     glUniform1ui(program_->uniformLocation("uSampleBudget"), request.sampleBudget ? request.sampleBudget : samplesPerPixel);
     glUniform1ui(program_->uniformLocation("uSamplesPerPixel"), samplesPerPixel);

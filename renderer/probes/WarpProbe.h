@@ -26,6 +26,7 @@ struct WarpRequest {
     std::uint32_t seed = 0;
     std::uint32_t dimension = 0;       // which sampler dimension feeds the warp
     float cosThetaMax = 0.5f;          // uniform cone only (0.5: a 60 degree half-angle)
+    float g = 0.5f;                    // henyey-greenstein only: the mean cosine, in (-1, 1)
 };
 
 struct WarpSample {
@@ -44,7 +45,7 @@ public:
 
     // Sample i is sample i % samplesPerPixel of pixel i / samplesPerPixel.
     std::vector<WarpSample> sample(const WarpRequest& request) const;
-    // The density of request.warp at each point (request.warp and cosThetaMax are used).
+    // The density of request.warp at each point (request.warp, cosThetaMax and g are used).
     std::vector<float> pdf(const WarpRequest& request, const std::vector<glm::vec3>& points) const;
 
 private:

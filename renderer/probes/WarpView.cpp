@@ -89,6 +89,11 @@ std::string warpSupportText(const WarpRequest& request) {
     case Warp::UniformHemisphere:
     case Warp::CosineHemisphere: return "directions on the upper hemisphere (z >= 0)";
     case Warp::UniformTriangle: return "points in a triangle (barycentrics)";
+    case Warp::HenyeyGreenstein: {
+        char text[96];
+        std::snprintf(text, sizeof text, "directions about +z, the direction of travel, mean cosine g = %.3g", request.g);
+        return text;
+    }
     }
     return "?";
 }
