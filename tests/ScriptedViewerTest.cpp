@@ -595,6 +595,32 @@ TEST_F(ScriptedViewer, AltClickPinsThePixelUnderTheCursor) {
     fs::remove_all(directory);
 }
 
+// Zoomed 16:1 and panned (`zoom`, `pan`), an Alt+click (tests/window_pixel.sh) pins the render
+// pixel drawn under the cursor, and the Pixel panel's numbers (save-pixel) are that pixel's.
+TEST_F(ScriptedViewer, ZoomedAltClickPinsTheRenderPixelDrawnUnderTheCursor) {
+    fs::path directory = freshDirectory("zoomed_click");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << "resolution-scale 0.125\ntarget-spp 2\nwait-spp 1\nzoom 16\npan 40 -24\n"
+                                               "view estimated-error\nstatus\nwait-reload\nwait-spp 2\nstatus\n"
+                                               "save-pixel clicked.json\nquit\n";
+    // The 96x96 render at 16:1 is 1536 screen pixels square, its centre on the image area's
+    // (window x 380 + 384, y 384), then moved 40 right and 24 up: its top-left corner at window
+    // (380 + 384 - 768 + 40, 384 - 768 - 24) = (36, -408). Window (600, 300) is then render
+    // pixel ((600 - 36) / 16, (300 + 408) / 16) = (35.25, 44.25): pixel (35, 44).
+    testing::CommandResult result = runWindowDriver(directory, "window_pixel.sh", "600 300");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "zoom"), "16");
+    EXPECT_EQ(field(status[0], "view"), "estimated-error");
+    EXPECT_EQ(field(status[0], "image-rect"), "36,-360,1536x1536") << "framebuffer rows count from the bottom";
+    EXPECT_EQ(field(status[0], "eye"), field(status[1], "eye")) << "an Alt+click does not orbit";
+    nlohmann::json clicked = nlohmann::json::parse(std::ifstream(directory / "clicked.json"));
+    EXPECT_EQ(clicked["pixel"], nlohmann::json::array({35, 44}));
+    EXPECT_EQ(clicked["spp"], 2);
+    fs::remove_all(directory);
+}
+
 // Before: `screenshot-window` to a missing directory failed after the frame, in the window's
 // code, without the script's file and line (exit 1); `screenshot` always named them.
 TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {
