@@ -29,7 +29,7 @@ void drawViewControls(ViewerSession& session, PanelState& state) {
             range.errorLog10Max = std::log10(hi / 100.0f);
         }
     } else if (display.view == DisplayView::Difference) {
-        ImGui::SliderFloat("difference range", &range.differenceRange, kDifferenceRangeMin, kDifferenceRangeMax, "+-%.3g",
+        ImGui::SliderFloat("diff. range", &range.differenceRange, kDifferenceRangeMin, kDifferenceRangeMax, "+-%.3g",
                            ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
         itemTooltip("the colour map's ends: render - other of -range (blue) and +range (red), linear radiance");
     }
