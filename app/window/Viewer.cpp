@@ -387,6 +387,8 @@ void ViewerWindow::drawPinnedPixelMarker() {
                       static_cast<float>(framebufferSize_.y - area.origin.y - area.size.y) / framebufferScale_.y +
                           cell.y * static_cast<float>(pinned->y));
     glm::vec2 centre = topLeft + 0.5f * cell;
+    // Zoomed in, the pin may lie outside the window's part that shows the image: no mark over the sidebar.
+    if (std::optional<glm::ivec2> shown = session_.pixelAtFramebuffer(framebufferAt(glm::dvec2(centre))); shown != pinned) return;
     glm::vec2 half = glm::max(0.5f * cell, glm::vec2(3.0f)) + 1.0f;
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     const ImU32 dark = IM_COL32(0, 0, 0, 200), bright = IM_COL32(255, 64, 255, 255);
