@@ -2,6 +2,7 @@
 // Every include generated from C++ layouts, tables and a scene's features, by the name shaders #include it: the
 // checked-in copies in shaders/ must equal these texts (GeneratedGlslTest), and no other shader
 // may define a constant they define (EnumTableTest).
+#include <ptview/tracer/DisplayViewGlsl.h>
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/tracer/PathRecorder.h>
 #include <ptview/gpu/ShaderFeatures.h>
@@ -24,6 +25,8 @@ inline std::vector<GeneratedInclude> generatedIncludes() {
         {"frame_uniforms.glsl", glslFrameBlock()},
         {"recorded_path.glsl", recordedPathGlsl()},
         {"warp_ids.glsl", warpIdsGlsl()},
+        {"display_views.glsl", displayViewsGlsl()},
+        {"colormap_points.glsl", colorMapPointsGlsl()},
         // Generated per scene; the copies are what a program with every feature gets.
         {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
         {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},

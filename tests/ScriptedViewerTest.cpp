@@ -739,6 +739,72 @@ TEST_F(ScriptedViewer, AltClickPinsThePixelUnderTheCursor) {
     fs::remove_all(directory);
 }
 
+// Zoomed 16:1 and panned (`zoom`, `pan`), an Alt+click (tests/window_pixel.sh) pins the render
+// pixel drawn under the cursor, and the Pixel panel's numbers (save-pixel) are that pixel's.
+TEST_F(ScriptedViewer, ZoomedAltClickPinsTheRenderPixelDrawnUnderTheCursor) {
+    fs::path directory = freshDirectory("zoomed_click");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << "resolution-scale 0.125\ntarget-spp 2\nwait-spp 1\nzoom 16\npan 40 -24\n"
+                                               "view estimated-error\nstatus\nwait-reload\nwait-spp 2\nstatus\n"
+                                               "save-pixel clicked.json\nquit\n";
+    // The 96x96 render at 16:1 is 1536 screen pixels square, its centre on the image area's
+    // (window x 380 + 384, y 384), then moved 40 right and 24 up: its top-left corner at window
+    // (380 + 384 - 768 + 40, 384 - 768 - 24) = (36, -408). Window (600, 300) is then render
+    // pixel ((600 - 36) / 16, (300 + 408) / 16) = (35.25, 44.25): pixel (35, 44).
+    testing::CommandResult result = runWindowDriver(directory, "window_pixel.sh", "600 300");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 2u) << result.output;
+    EXPECT_EQ(field(status[0], "zoom"), "16");
+    EXPECT_EQ(field(status[0], "view"), "estimated-error");
+    EXPECT_EQ(field(status[0], "image-rect"), "36,-360,1536x1536") << "framebuffer rows count from the bottom";
+    EXPECT_EQ(field(status[0], "eye"), field(status[1], "eye")) << "an Alt+click does not orbit";
+    nlohmann::json clicked = nlohmann::json::parse(std::ifstream(directory / "clicked.json"));
+    EXPECT_EQ(clicked["pixel"], nlohmann::json::array({35, 44}));
+    EXPECT_EQ(clicked["spp"], 2);
+    fs::remove_all(directory);
+}
+
+// The difference view end to end: the render against its own saved PFM is white (no difference)
+// everywhere; a comparison image that cannot be read, or of another size, is said in status
+// (scene-error) without ending the script, and the image loaded before stays.
+TEST_F(ScriptedViewer, DifferenceFromItsOwnImageIsWhiteAndABadComparisonImageKeepsTheOneBefore) {
+    fs::path directory = freshDirectory("difference");
+    std::ofstream(directory / "bad.pfm") << "PF\n3 3\n-1.0\ntoo short";
+    std::ofstream(directory / "small.pfm") << "PF\n2 1\n-1.0\n" << std::string(2 * 3 * 4, '\0');
+    testing::CommandResult result = runViewer(directory, kCornell,
+                                              "resolution-scale 0.125\ntarget-spp 2\nwait-spp 2\nscreenshot own.pfm\n"
+                                              "load-compare-image own.pfm\nview difference\nstatus\nscreenshot diff.png\n"
+                                              "load-compare-image bad.pfm\nstatus\nload-compare-image small.pfm\nstatus\n"
+                                              "view other-image\nscreenshot other.png\nview image\nscreenshot image.png\nquit\n");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 3u) << result.output;
+    EXPECT_EQ(field(status[0], "view"), "difference");
+    EXPECT_EQ(field(status[0], "compare-image"), "\"own.pfm\"");
+    EXPECT_EQ(field(status[0], "view-problem"), "\"\"");
+    EXPECT_NE(field(status[1], "scene-error").find("bad.pfm"), std::string::npos) << status[1];
+    EXPECT_NE(field(status[2], "scene-error").find("small.pfm is 2x1 but the render is 96x96"), std::string::npos) << status[2];
+    EXPECT_EQ(field(status[2], "compare-image"), "\"own.pfm\"") << "the image before is kept";
+    auto rgbOf = [&](const char* name) {
+        int width = 0, height = 0, channels = 0;
+        unsigned char* data = stbi_load((directory / name).string().c_str(), &width, &height, &channels, 3);
+        std::vector<unsigned char> rgb;
+        if (data) rgb.assign(data, data + 3 * width * height);
+        stbi_image_free(data);
+        return rgb;
+    };
+    std::vector<unsigned char> difference = rgbOf("diff.png");
+    ASSERT_EQ(difference.size(), 96u * 96u * 3u);
+    for (size_t i = 0; i < difference.size(); i += 3)
+        ASSERT_GE(std::min({difference[i], difference[i + 1], difference[i + 2]}), 240) << "pixel " << i / 3;
+    std::vector<unsigned char> image = rgbOf("image.png"), other = rgbOf("other.png");
+    ASSERT_EQ(other.size(), image.size());
+    for (size_t i = 0; i < image.size(); ++i) // the saved mean and the display's differ in float rounding only
+        ASSERT_LE(std::abs(int(other[i]) - int(image[i])), 1) << "its own image, shown like the render: byte " << i;
+    fs::remove_all(directory);
+}
+
 // Before: `screenshot-window` to a missing directory failed after the frame, in the window's
 // code, without the script's file and line (exit 1); `screenshot` always named them.
 TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {

@@ -107,13 +107,21 @@ compare-denoise on
 pop-out paths-table on
 ui-scale 1.5
 high-contrast on
+view error-map
+error-range 0.001 1
+difference-range 0.25
+load-compare-image out/other image.exr
+zoom 4
+zoom fit
+pan 12 -3.5
+compare-sides image-view
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 66u);
+    ASSERT_EQ(script.commands.size(), 74u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -356,9 +364,25 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
     std::filesystem::remove(path);
 }
 
+// The view and zoom commands take the views' names, the zoom's range or "fit", and refuse the rest
+// before any window opens.
+TEST(ViewerScript, ViewAndZoomCommandsParseWithinTheirRanges) {
+    ViewerScript script = parse("view difference\nzoom fit\nzoom 0.0625\nerror-range 1e-6 100\nload-compare-image none\n");
+    EXPECT_EQ(errorOf("error-range 0 1"), "s.txt:1: error-range: LO must be in (0, 100], got 0");
+    ASSERT_EQ(script.commands.size(), 5u);
+    EXPECT_TRUE(script.commands[1].isWord(0, "fit"));
+    EXPECT_FLOAT_EQ(script.commands[2].number(0), 0.0625f);
+    EXPECT_EQ(errorOf("view errors"), "s.txt:1: view: unknown view \"errors\" (valid: image, error-map, estimated-error, "
+                                      "difference, abs-difference, other-image)");
+    EXPECT_EQ(errorOf("zoom 128"), "s.txt:1: zoom: N must be in [0.0625, 64], got 128");
+    EXPECT_EQ(errorOf("zoom"), "s.txt:1: zoom: expected 1 argument (zoom N|fit), got 0");
+    EXPECT_EQ(errorOf("pan 3"), "s.txt:1: pan: expected 2 arguments (pan DX DY), got 1");
+    EXPECT_EQ(errorOf("load-compare-image other.png"), "s.txt:1: load-compare-image: PATH must end in .pfm or .exr, got \"other.png\"");
+}
+
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 63u);
+    EXPECT_EQ(referenceVerbs().size(), 69u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
@@ -391,5 +415,5 @@ TEST(ViewerScript, DenoiseCommandsParseWithinTheSettingRanges) {
     EXPECT_EQ(errorOf("denoise-iterations 9"), "s.txt:1: denoise-iterations: N must be in 1..8, got 9");
     EXPECT_EQ(errorOf("denoise-iterations 0"), "s.txt:1: denoise-iterations: N must be in 1..8, got 0");
     EXPECT_EQ(errorOf("denoise yes"), "s.txt:1: denoise: unknown value \"yes\" (valid: on, off)");
-    EXPECT_EQ(errorOf("compare-sides both"), "s.txt:1: compare-sides: unknown split \"both\" (valid: renders, raw-denoised)");
+    EXPECT_EQ(errorOf("compare-sides both"), "s.txt:1: compare-sides: unknown split \"both\" (valid: renders, raw-denoised, image-view)");
 }

@@ -864,5 +864,79 @@ TEST_F(ViewerSessionTest, SplitViewShowsRawAndDenoisedOfOneRenderOrEachRendersOw
     fs::remove_all(directory);
 }
 
+// The difference views' image: a file that cannot be read, or of another size than the render,
+// says why in the viewer (sceneError) and keeps the image before; none goes back to the reference.
+TEST_F(ViewerSessionTest, ABadOrMismatchedCompareImageSaysWhyAndKeepsTheOneBefore) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    renderSamples(*session, 1);
+    ASSERT_EQ(session->renderSize(), glm::ivec2(24, 24));
+    testing::ScratchFiles files("session_compare");
+    ImageRgbF image(24, 24);
+    image.rgb.assign(image.rgb.size(), 0.25f);
+    const fs::path good = files.write("good.pfm", "");
+    writePfm(good, image);
+    ViewerModel& model = session->model();
+    model.display.view = DisplayView::Difference;
+    EXPECT_NE(session->viewProblem(ViewerSession::Side::Left), "") << "no image to compare with yet";
+    ASSERT_TRUE(session->setCompareImage(good)) << model.sceneError;
+    EXPECT_EQ(session->viewProblem(ViewerSession::Side::Left), "");
+    const std::shared_ptr<const ImageRgbF> loaded = model.compareImage;
+
+    const fs::path small = files.write("small.pfm", "");
+    writePfm(small, ImageRgbF(16, 12));
+    EXPECT_FALSE(session->setCompareImage(small));
+    EXPECT_NE(model.sceneError.find(small.string() + " is 16x12 but the render is 24x24"), std::string::npos) << model.sceneError;
+    const fs::path garbage = files.write("garbage.pfm", "PF\nnot a size\n");
+    EXPECT_FALSE(session->setCompareImage(garbage));
+    EXPECT_NE(model.sceneError.find(garbage.string()), std::string::npos) << model.sceneError;
+    EXPECT_FALSE(session->setCompareImage(files.directory() / "missing.exr"));
+    EXPECT_EQ(model.compareImage, loaded) << "the image before is kept";
+    EXPECT_EQ(model.compareImagePath, good);
+    session->update();
+    EXPECT_EQ(session->tracer(ViewerSession::Side::Left).otherImage(), loaded);
+
+    ASSERT_TRUE(session->setCompareImage({}));
+    EXPECT_FALSE(model.compareImage);
+    ASSERT_TRUE(session->setReference(good));
+    EXPECT_EQ(session->otherImageFor(DisplayView::Difference), model.reference) << "without one, the reference";
+    EXPECT_EQ(session->otherImageFor(DisplayView::Error), model.reference);
+}
+
+// Zoomed and panned, the session draws render pixel p at exactly the framebuffer pixels whose
+// centres pixelAtFramebuffer names p: the pin of a click is the pixel the user sees.
+TEST_F(ViewerSessionTest, ZoomedPixelAtFramebufferIsThePixelDrawnThere) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    session->setImageArea(PixelRect{{0, 0}, {40, 20}});
+    session->model().pendingChanges |= ViewerModel::kRestart;
+    renderSamples(*session, 2);
+    ASSERT_EQ(session->renderSize(), glm::ivec2(40, 20));
+    // Shown scaled (it has samples), fitted with bars: 3/5 of a render pixel a screen pixel, so no
+    // screen pixel's centre falls on an edge between render pixels.
+    session->setImageArea(PixelRect{{0, 0}, {24, 24}});
+    session->update();
+    const ImageRgba8 whole = session->tracer(ViewerSession::Side::Left).readToneMapped(session->displaySettings(ViewerSession::Side::Left));
+    for (auto [scale, pan] : {std::pair{0.0f, glm::vec2(0.0f)}, std::pair{1.0f, glm::vec2(3.0f, -2.0f)},
+                              std::pair{4.0f, glm::vec2(5.0f, 3.0f)}}) {
+        SCOPED_TRACE(::testing::Message() << "scale " << scale);
+        session->fitImage();
+        if (scale > 0.0f) session->zoomImageTo(scale, glm::vec2(7.0f, 9.0f));
+        if (pan != glm::vec2(0.0f)) session->panImage(pan);
+        ImageRgba8 shown = renderOffscreenRgba8(glm::ivec2(24, 24), [&](glm::ivec2) { session->display(); });
+        int drawn = 0;
+        for (int y = 0; y < 24; ++y)
+            for (int x = 0; x < 24; ++x) {
+                std::optional<glm::ivec2> pixel = session->pixelAtFramebuffer(glm::vec2(x, y) + 0.5f);
+                if (!pixel) continue;
+                ++drawn;
+                size_t at = (static_cast<size_t>(23 - y) * 24 + x) * 4; // rows top first
+                size_t expected = (static_cast<size_t>(pixel->y) * 40 + pixel->x) * 4;
+                ASSERT_EQ(glm::ivec3(shown.rgba[at], shown.rgba[at + 1], shown.rgba[at + 2]),
+                          glm::ivec3(whole.rgba[expected], whole.rgba[expected + 1], whole.rgba[expected + 2]))
+                    << "framebuffer " << x << " " << y << " render " << pixel->x << " " << pixel->y;
+            }
+        EXPECT_GT(drawn, 24 * 10);
+    }
+}
+
 } // namespace
 } // namespace ptview

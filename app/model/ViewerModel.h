@@ -6,6 +6,7 @@
 #include <ptview/settings/Backend.h>
 #include <ptview/settings/DenoiseSettings.h>
 #include <ptview/scene/EnvironmentMap.h>
+#include <ptview/model/ImageZoom.h>
 #include <ptview/io/Image.h>
 #include <ptview/settings/RenderSettings.h>
 #include <ptview/scene/Scene.h>
@@ -22,6 +23,7 @@ namespace ptview {
 enum class CompareSides {
     TwoRenders,     // two renders: the left half with ViewerModel::settings, the right with `right`
     RawAndDenoised, // one render, the main view's: its raw mean left of the divider, denoised right of it
+    ImageAndView,   // one render, the main view's: the image left of the divider, DisplaySettings::view right of it
 };
 
 struct CompareSettings {
@@ -68,6 +70,12 @@ struct ViewerModel {
     // the Stats panel shows the true error, not only the estimate. Null for none.
     std::shared_ptr<const ImageRgbF> reference;
     std::filesystem::path referencePath;
+    // Another image of the scene (.pfm or .exr, the render's size when loaded) that the difference
+    // and other-image views compare the render with; without one they use the reference. Null: none.
+    std::shared_ptr<const ImageRgbF> compareImage;
+    std::filesystem::path compareImagePath;
+    // The image's pixel zoom and pan (ImageZoom.h); DisplaySettings::view says what it shows.
+    ImageZoom zoom;
     // How many of the pinned pixel's paths "Trace paths" and `trace-paths` record (ViewerSession::tracePaths).
     int pathCount = 16;
 

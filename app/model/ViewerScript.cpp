@@ -128,7 +128,8 @@ std::vector<std::string> materialTypeChoices() {
 }
 std::vector<std::string> onOffChoices() { return {"on", "off"}; }
 // CompareSides, as `compare-sides` writes them.
-std::vector<std::string> compareSidesChoices() { return {"renders", "raw-denoised"}; }
+std::vector<std::string> compareSidesChoices() { return {"renders", "raw-denoised", "image-view"}; }
+std::vector<std::string> displayViewChoices() { return displayViewNames().names(); }
 std::vector<std::string> detachableSectionChoices() {
     std::vector<std::string> names;
     for (const DetachableSectionInfo& section : detachableSections()) names.emplace_back(section.name);
@@ -258,8 +259,8 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"copy-file", {tokenArg("SRC"), tokenArg("DST")}, nullptr, "copy a file (e.g. to change a watched scene)"},
         // Split-view comparison
         {"compare", {choiceArg("on|off", "value", onOffChoices)}, nullptr, "show the split view"},
-        {"compare-sides", {choiceArg("renders|raw-denoised", "split", compareSidesChoices)}, nullptr,
-         "what the halves show: two renders, or the main render raw left and denoised right"},
+        {"compare-sides", {choiceArg("renders|raw-denoised|image-view", "split", compareSidesChoices)}, nullptr,
+         "what the halves show: two renders; the main render raw left, denoised right; or its image left, `view` right"},
         {"compare-denoise", {choiceArg("on|off", "value", onOffChoices)}, nullptr,
          "two renders: show the right side's render denoised"},
         {"compare-integrator", {choiceArg("NAME", "integrator", integratorChoices)}, nullptr,
@@ -268,6 +269,18 @@ const std::vector<CommandSpec>& commandSpecs() {
          "the sampler of the split view's right side"},
         {"compare-depth", {settingArg("N", settingRanges::kMaxDepth)}, nullptr, "the maximum bounces of the split view's right side"},
         {"divider", {numberArg("F", 0.0, 1.0)}, nullptr, "where the split is, as a fraction of the width from the left"},
+        // ---- error and difference views, zoom (docs/viewer.md, "Error and difference views")
+        {"view", {choiceArg("NAME", "view", displayViewChoices)}, nullptr,
+         "what the image shows: the render, its error or its difference from another image (docs/viewer.md)"},
+        {"error-range", {numberArg("LO", 0.0, 100.0, true), numberArg("HI", 0.0, 100.0, true)}, nullptr,
+         "the error maps' colour range as relative errors (0.001 1: 0.1% to 100%), log-scaled, LO < HI, each kept within 1e-6 .. 100"},
+        {"difference-range", {numberArg("R", 0.0, double(kDifferenceRangeMax), true)}, nullptr,
+         "the difference view's colour range: -R .. +R of linear radiance (at least 1e-4)"},
+        {"load-compare-image", {pathArg({".pfm", ".exr"}, "none")}, nullptr,
+         "the image the difference views compare with (the render's size), or none (then the reference)"},
+        {"zoom", {[] { ArgSpec arg = numberArg("N", kMinZoomScale, kMaxZoomScale); arg.keyword = "fit"; return arg; }()}, nullptr,
+         "pixel zoom about the view's centre: N screen pixels per render pixel (1, 2, 4, ...), or fit"},
+        {"pan", {numberArg("DX"), numberArg("DY")}, nullptr, "move the zoomed image by DX, DY screen pixels (right, down)"},
         // Waiting and output
         {"frames", {integerArg("N", 1)}, nullptr, "let N frames be displayed"},
         {"wait-spp", {integerArg("N", 1)}, nullptr, "wait until the image has N samples per pixel"},

@@ -164,6 +164,7 @@ bool ViewerSession::setReference(const std::filesystem::path& path) {
         model_.referencePath = path;
         left_.trueErrorHistory.clear();
         if (right_) right_->trueErrorHistory.clear();
+        syncOtherImages(); // the error map's
         // Judged at once, so that a finished render (no more frames of work) gets its true error too.
         for (View* view : {&left_, right_.get()}) {
             if (!view) continue;
@@ -177,6 +178,92 @@ bool ViewerSession::setReference(const std::filesystem::path& path) {
         model_.sceneError = e.what();
         return false;
     }
+}
+
+bool ViewerSession::setCompareImage(const std::filesystem::path& path) {
+    try {
+        std::shared_ptr<const ImageRgbF> image;
+        if (!path.empty()) {
+            image = std::make_shared<const ImageRgbF>(readReferenceImage(path)); // finite, or a message naming the pixel
+            if (renderSize_.x > 0 && (image->width != renderSize_.x || image->height != renderSize_.y))
+                throw std::runtime_error(path.string() + " is " + std::to_string(image->width) + "x" +
+                                         std::to_string(image->height) + " but the render is " + std::to_string(renderSize_.x) +
+                                         "x" + std::to_string(renderSize_.y) +
+                                         "; a comparison image must be of the render's size (kept the one before)");
+        }
+        model_.compareImage = std::move(image);
+        model_.compareImagePath = path;
+        model_.sceneError.clear();
+        model_.notice = path.empty() ? "no comparison image" : "comparison image " + path.string();
+        syncOtherImages();
+        return true;
+    } catch (const std::exception& e) {
+        model_.sceneError = e.what();
+        return false;
+    }
+}
+
+std::shared_ptr<const ImageRgbF> ViewerSession::otherImageFor(DisplayView view) const {
+    if (viewNeedsReference(view)) return model_.reference;
+    if (viewNeedsOtherImage(view)) return model_.compareImage ? model_.compareImage : model_.reference;
+    return nullptr;
+}
+
+std::string ViewerSession::viewProblem(Side side) const {
+    DisplayView view = displaySettings(side).view;
+    if (!viewNeedsReference(view) && !viewNeedsOtherImage(view)) return "";
+    std::shared_ptr<const ImageRgbF> other = otherImageFor(view);
+    const char* needed = viewNeedsReference(view) ? "a reference (Stats panel, or `reference FILE`)"
+                                                  : "a comparison image or a reference";
+    if (!other) return std::string(displayViewName(view)) + " needs " + needed + ": showing the image";
+    if (other->width != renderSize_.x || other->height != renderSize_.y)
+        return std::string(displayViewName(view)) + ": the other image is " + std::to_string(other->width) + "x" +
+               std::to_string(other->height) + ", the render " + std::to_string(renderSize_.x) + "x" +
+               std::to_string(renderSize_.y) + ": showing the image";
+    return "";
+}
+
+// Each tracer gets the image its side's view compares with (uploaded only when it changes). A
+// split of one render (raw | denoised, image | view) draws both sides with the left tracer, whose
+// left side then shows the image, which needs none.
+void ViewerSession::syncOtherImages() {
+    DisplayView leftView = displaySettings(Side::Left).view;
+    DisplayView rightView = displaySettings(Side::Right).view;
+    bool oneRender = comparing() && !comparesTwoRenders();
+    left_.tracer->setOtherImage(otherImageFor(oneRender && leftView == DisplayView::Image ? rightView : leftView));
+    if (right_) right_->tracer->setOtherImage(otherImageFor(rightView));
+}
+
+std::optional<glm::ivec2> ViewerSession::pixelAtFramebuffer(glm::vec2 framebufferPos) const {
+    PixelRect view = viewArea();
+    if (framebufferPos.x < static_cast<float>(view.origin.x) || framebufferPos.y < static_cast<float>(view.origin.y) ||
+        framebufferPos.x >= static_cast<float>(view.origin.x + view.size.x) ||
+        framebufferPos.y >= static_cast<float>(view.origin.y + view.size.y))
+        return std::nullopt;
+    return renderPixelAt(framebufferPos, imageRect(), renderSize_);
+}
+
+PixelRect ViewerSession::imageRect() const {
+    return zoomedImageRect(model_.zoom, imageArea_, displayArea(), renderSize_);
+}
+
+PixelRect ViewerSession::viewArea() const {
+    return model_.zoom.fit() ? displayArea() : imageArea_;
+}
+
+void ViewerSession::zoomImageTo(float scale, std::optional<glm::vec2> aboutFramebufferPos) {
+    scale = std::clamp(scale, kMinZoomScale, kMaxZoomScale);
+    glm::vec2 about = aboutFramebufferPos ? *aboutFramebufferPos
+                                          : glm::vec2(imageArea_.origin) + 0.5f * glm::vec2(imageArea_.size);
+    model_.zoom = zoomedAbout(model_.zoom, scale, about, imageArea_, displayArea(), renderSize_);
+}
+
+void ViewerSession::zoomImageBySteps(int steps, std::optional<glm::vec2> aboutFramebufferPos) {
+    zoomImageTo(steppedZoomScale(shownZoomScale(model_.zoom, displayArea(), renderSize_), steps), aboutFramebufferPos);
+}
+
+void ViewerSession::panImage(glm::vec2 framebufferDelta) {
+    model_.zoom = pannedBy(model_.zoom, framebufferDelta, displayArea(), renderSize_);
 }
 
 void ViewerSession::resetCamera() {
@@ -222,7 +309,7 @@ void ViewerSession::restorePinnedCamera() {
 
 ViewerSession::Side ViewerSession::sideOf(glm::ivec2 pixel) const {
     if (!comparing() || renderSize_.x <= 0) return Side::Left;
-    PixelRect area = displayArea();
+    PixelRect area = imageRect(); // the pixel's place on screen, zoomed and panned
     float centre = static_cast<float>(area.origin.x) +
                    (static_cast<float>(pixel.x) + 0.5f) / static_cast<float>(renderSize_.x) * static_cast<float>(area.size.x);
     return centre < static_cast<float>(dividerX()) ? Side::Left : Side::Right;
@@ -538,6 +625,7 @@ void ViewerSession::update() {
         model_.sceneError = e.what();
     }
     syncDenoise();
+    syncOtherImages();
 }
 
 bool ViewerSession::showsDenoised(Side side) const {
@@ -550,6 +638,7 @@ bool ViewerSession::showsDenoised(Side side) const {
 DisplaySettings ViewerSession::displaySettings(Side side) const {
     DisplaySettings display = model_.display;
     display.denoised = showsDenoised(side);
+    if (splitsImageAndView() && side == Side::Left) display.view = DisplayView::Image;
     return display;
 }
 
@@ -759,21 +848,22 @@ void ViewerSession::recordErrorEstimate(View& view, const PixelStatistics& stati
 
 int ViewerSession::dividerX() const {
     float fraction = std::clamp(model_.compare.dividerFraction, 0.0f, 1.0f);
-    PixelRect area = displayArea();
+    PixelRect area = viewArea();
     return area.origin.x + static_cast<int>(std::round(fraction * static_cast<float>(area.size.x)));
 }
 
 void ViewerSession::display() const {
-    PixelRect area = displayArea();
+    PixelRect area = viewArea();
+    PixelRect image = imageRect();
     if (!comparing()) {
-        left_.tracer->display(area, displaySettings(Side::Left));
+        left_.tracer->display(image, displaySettings(Side::Left), area);
         return;
     }
     int divider = dividerX();
     PixelRect leftClip{area.origin, {divider - area.origin.x, area.size.y}};
     PixelRect rightClip{{divider, area.origin.y}, {area.origin.x + area.size.x - divider, area.size.y}};
-    if (leftClip.size.x > 0) left_.tracer->display(area, displaySettings(Side::Left), leftClip);
-    if (rightClip.size.x > 0) view(Side::Right).tracer->display(area, displaySettings(Side::Right), rightClip);
+    if (leftClip.size.x > 0) left_.tracer->display(image, displaySettings(Side::Left), leftClip);
+    if (rightClip.size.x > 0) view(Side::Right).tracer->display(image, displaySettings(Side::Right), rightClip);
     // The divider: two pixels of white, drawn by clearing a scissored column.
     glEnable(GL_SCISSOR_TEST);
     glScissor(divider - 1, area.origin.y, 2, area.size.y);

@@ -76,6 +76,15 @@ public:
     // Loads a reference image (.pfm or .exr) for the true error; empty: none. A file that cannot be read
     // sets model().sceneError.
     bool setReference(const std::filesystem::path& path);
+    // Loads the image the difference and other-image views compare the render with (.pfm or .exr,
+    // finite, the render's size); empty: none (they use the reference). A file that cannot be
+    // read, or of another size, sets model().sceneError, says why, and keeps the current one.
+    bool setCompareImage(const std::filesystem::path& path);
+    // The image a view compares the render with: the reference for the error map; the comparison
+    // image, else the reference, for the difference views; null for the others or when none is loaded.
+    std::shared_ptr<const ImageRgbF> otherImageFor(DisplayView view) const;
+    // Why a side cannot show the view asked for (it shows the image instead), or "" when it can.
+    std::string viewProblem(Side side) const;
     void resetCamera();                                          // to the scene file's camera
     // Click-to-focus: sets the camera's focus distance to the distance along the view direction of
     // the surface seen at `imageFraction` of the image (x right, y down from its top-left corner,
@@ -85,6 +94,20 @@ public:
     // The pixel inspector (ViewerModel::pinnedPixel). The render pixel (x from the left, y from
     // the top) at imageFraction of the image, as focusAt takes it; nullopt before there is a render.
     std::optional<glm::ivec2> pixelAt(glm::vec2 imageFraction) const;
+    // The render pixel drawn at a framebuffer position (x right, y up), through the zoom and pan
+    // (ImageZoom.h); nullopt off the image or outside the view.
+    std::optional<glm::ivec2> pixelAtFramebuffer(glm::vec2 framebufferPos) const;
+    // Where the render is drawn: the display area when fitting, else zoomed and panned about it
+    // (possibly far larger than the window); and the part of the window it may cover (viewArea:
+    // the display area when fitting, all the image area when zoomed).
+    PixelRect imageRect() const;
+    PixelRect viewArea() const;
+    // Zoom (ImageZoom.h): to `scale` framebuffer pixels per render pixel about a framebuffer
+    // position (the mouse pointer), or the view's centre; fit; pan by framebuffer pixels (x right, y up).
+    void zoomImageTo(float scale, std::optional<glm::vec2> aboutFramebufferPos = std::nullopt);
+    void zoomImageBySteps(int steps, std::optional<glm::vec2> aboutFramebufferPos = std::nullopt);
+    void fitImage() { model_.zoom = ImageZoom{}; }
+    void panImage(glm::vec2 framebufferDelta);
     // Alt+click: pins the pixel, or unpins it when it is the one pinned.
     void togglePinnedPixel(glm::ivec2 pixel);
     // Pins the pixel under the camera as it is now (`pin-pixel`, and the Pixel panel's "Re-pin
@@ -150,7 +173,11 @@ public:
     void display() const;               // draws the view(s) into the image area
 
     // The split view is on: two renders, or the main view's raw and denoised images of one.
-    bool comparing() const { return splitsRawAndDenoised() || comparesTwoRenders(); }
+    bool comparing() const { return splitsRawAndDenoised() || splitsImageAndView() || comparesTwoRenders(); }
+    // Image | view: one render, its image left of the divider and DisplaySettings::view right of it.
+    bool splitsImageAndView() const {
+        return model_.compare.enabled && model_.compare.sides == CompareSides::ImageAndView;
+    }
     bool splitsRawAndDenoised() const {
         return model_.compare.enabled && model_.compare.sides == CompareSides::RawAndDenoised;
     }
@@ -222,6 +249,7 @@ private:
         return model_.compare.enabled && model_.compare.sides == CompareSides::TwoRenders;
     }
     void syncDenoise();
+    void syncOtherImages();
     bool denoiseStale(const View& view) const;
     void denoise(View& view, double seconds); // bands of the view's denoise for about `seconds`
     RenderSettings effectiveSettings(const RenderSettings& settings) const;

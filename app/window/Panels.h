@@ -23,6 +23,7 @@ struct PanelState {
     UnsavedEditsPrompt unsavedEdits;
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
     std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
+    std::string compareImagePathInput; // Render panel's view controls: the difference views' image
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
     // The same, briefly on the image (kImageNoticeSeconds), where it is seen with the sidebar
@@ -46,6 +47,9 @@ struct PanelState {
 // Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,
 // tone mapper, compare mode, screenshot button.
 void drawRenderPanel(ViewerSession& session, PanelState& state);
+// In the Render panel: the view (image, error map, estimated error, difference, ...), the colour
+// map's range, the comparison image, and the pixel zoom (ViewControls.cpp).
+void drawViewControls(ViewerSession& session, PanelState& state);
 // Open a scene from assets/scenes/ or a typed path; reload; load errors.
 void drawScenePanel(ViewerSession& session, PanelState& state);
 // Environment map from assets/ or a typed path, intensity, rotation, constant colour.

@@ -77,6 +77,10 @@ void compareSidesControls(ViewerModel& model) {
     ImGui::RadioButton("raw | denoised", &sides, static_cast<int>(CompareSides::RawAndDenoised));
     itemTooltip("one render, the left settings': its raw mean left of the divider, denoised right of it\n"
                 "(with the strength and iterations above)");
+    ImGui::SameLine();
+    ImGui::RadioButton("image | view", &sides, static_cast<int>(CompareSides::ImageAndView));
+    itemTooltip("one render, the left settings': the image left of the divider, the view chosen above\n"
+                "(error map, estimated error, difference) right of it");
     model.compare.sides = static_cast<CompareSides>(sides);
 }
 
@@ -174,6 +178,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     ImGui::SliderFloat("exposure", &model.display.exposureStops, settingRanges::kExposure.panelLo, settingRanges::kExposure.panelHi,
                        "%+.1f stops", ImGuiSliderFlags_AlwaysClamp);
     enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper);
+    drawViewControls(session, state);
 
     ImGui::Separator();
     denoiseControls(model);

@@ -14,6 +14,7 @@
 #include <ptview/scene/SceneRanges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <string_view>
 #include <utility>
@@ -109,6 +110,14 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
     line += std::string(" denoise=") + (denoise.enabled ? "on" : "off") + " denoise-strength=" +
             numberText(denoise.strength) + " denoise-iterations=" + std::to_string(denoise.iterations) +
             " denoised-spp=" + std::to_string(left.denoised ? left.denoisedSamples : 0);
+    // The view, what it compares with and the zoom (docs/viewer.md, "Error and difference views").
+    const PixelRect image = session.imageRect();
+    line += std::string(" view=") + displayViewName(model.display.view) +
+            " compare-image=" + quoted(model.compareImagePath.string()) + " view-problem=" +
+            quoted(session.viewProblem(ViewerSession::Side::Left)) + " zoom=" +
+            (model.zoom.fit() ? std::string("fit") : numberText(model.zoom.scale)) + " image-rect=" +
+            std::to_string(image.origin.x) + "," + std::to_string(image.origin.y) + "," + std::to_string(image.size.x) + "x" +
+            std::to_string(image.size.y);
     std::vector<std::string> edits = session.unsavedEdits();
     std::optional<UnsavedEditsPrompt::Action> asking = panels.unsavedEdits.pending();
     line += " edits=" + (edits.empty() ? std::string("none") : joined(edits, ",")) +
@@ -526,14 +535,37 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         // ---- compare mode
         {"compare", [](Step& s) { s.model.compare.enabled = s.command.isWord(0, "on"); }},
         {"compare-sides", [](Step& s) {
-             s.model.compare.sides =
-                 s.command.isWord(0, "raw-denoised") ? CompareSides::RawAndDenoised : CompareSides::TwoRenders;
+             s.model.compare.sides = s.command.isWord(0, "raw-denoised") ? CompareSides::RawAndDenoised
+                                     : s.command.isWord(0, "image-view") ? CompareSides::ImageAndView
+                                                                         : CompareSides::TwoRenders;
          }},
         {"compare-denoise", [](Step& s) { s.model.compare.rightDenoised = s.command.isWord(0, "on"); }},
         {"compare-integrator", [](Step& s) { s.model.compare.right.integrator = integratorNamed(s.word); }},
         {"compare-sampler", [](Step& s) { s.model.compare.right.sampler = *parseSamplerMode(s.word); }},
         {"compare-depth", [](Step& s) { s.model.compare.right.maxDepth = s.command.integer(0); }},
         {"divider", [](Step& s) { s.model.compare.dividerFraction = s.command.number(0); }},
+        {"view", [](Step& s) { s.model.display.view = displayViewNames().parse(s.word).value_or(DisplayView::Image); }},
+        {"error-range", [](Step& s) {
+             if (!(s.command.number(0) < s.command.number(1))) return s.fail("LO must be below HI");
+             s.model.display.mapRange.errorLog10Min = std::clamp(std::log10(s.command.number(0)), kErrorLog10Lowest, kErrorLog10Highest);
+             s.model.display.mapRange.errorLog10Max = std::clamp(std::log10(s.command.number(1)), kErrorLog10Lowest, kErrorLog10Highest);
+             if (s.model.display.mapRange.errorLog10Max <= s.model.display.mapRange.errorLog10Min)
+                 s.model.display.mapRange.errorLog10Max = s.model.display.mapRange.errorLog10Min + 1.0f; // both beyond one end
+         }},
+        {"difference-range", [](Step& s) {
+             s.model.display.mapRange.differenceRange = std::max(s.command.number(0), kDifferenceRangeMin);
+         }},
+        // A bad file shows in the UI (and status), as the panel's Load would, and keeps the image before.
+        {"load-compare-image", [](Step& s) { s.session.setCompareImage(pathOrNone(s)); }},
+        {"zoom", [](Step& s) {
+             s.session.update(); // the render's size as it is now
+             if (s.command.isWord(0, "fit")) s.session.fitImage();
+             else s.session.zoomImageTo(s.command.number(0));
+         }},
+        {"pan", [](Step& s) {
+             s.session.update();
+             s.session.panImage(glm::vec2(s.command.number(0), -s.command.number(1))); // DY counts down, GL up
+         }},
         // ---- waiting and output
         {"frames", waitFrames},
         {"wait-spp", waitSpp},

@@ -1,6 +1,7 @@
 #include <ptview/window/Viewer.h>
 
 #include <ptview/window/AllowFolderPrompt.h>
+#include <ptview/window/ErrorLegend.h>
 #include <ptview/model/CameraController.h>
 #include <ptview/io/ImageIO.h>
 #include <ptview/window/MaterialsPanel.h>
@@ -59,6 +60,7 @@ struct KeyPress {
 struct InputEvents {
     std::vector<KeyPress> pressedKeys;
     double scrollSteps = 0.0; // of the wheel turned over the image area only
+    double zoomSteps = 0.0;   // the same with Ctrl held: the image's pixel zoom, not the camera's
     // The image area in window coordinates (top-left origin), as the last layout placed it: a
     // wheel turned anywhere else (over the sidebar) is the sidebar's, and never zooms.
     glm::dvec2 imageTopLeft{0.0};
@@ -84,7 +86,8 @@ void onScroll(GLFWwindow* window, double /*x*/, double y) {
     glm::dvec2 cursor;
     glfwGetCursorPos(window, &cursor.x, &cursor.y);
     bool overImage = glm::all(glm::greaterThanEqual(cursor, input.imageTopLeft)) && glm::all(glm::lessThan(cursor, input.imageBottomRight));
-    if (overImage) input.scrollSteps += y;
+    bool control = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+    if (overImage) (control ? input.zoomSteps : input.scrollSteps) += y;
 }
 
 void onContentScale(GLFWwindow* window, float xScale, float /*yScale*/) {
@@ -193,6 +196,8 @@ private:
     void updateTitle();
     void handleMouseAndFlight(double seconds);
     std::optional<glm::vec2> imageFractionAtCursor(glm::dvec2 cursor) const;
+    glm::vec2 framebufferAt(glm::dvec2 cursor) const;
+    void drawLegend();
     void focusAtCursor(glm::dvec2 cursor);
     void pinAtCursor(glm::dvec2 cursor);
     void drawPinnedPixelMarker();
@@ -254,6 +259,16 @@ void ViewerWindow::handleKeys() {
         case GLFW_KEY_C: model.compare.enabled = !model.compare.enabled; break;
         case GLFW_KEY_N: model.denoise.enabled = !model.denoise.enabled; break; // D flies right (W A S D)
         case GLFW_KEY_F: session_.resetCamera(); break;
+        case GLFW_KEY_V: { // the next view: image, error map, estimated error, difference, ...
+            const auto& views = displayViewNames();
+            auto at = std::find_if(views.begin(), views.end(), [&](const auto& e) { return e.value == model.display.view; });
+            model.display.view = (at == views.end() || std::next(at) == views.end()) ? views.front().value : std::next(at)->value;
+            break;
+        }
+        case GLFW_KEY_0: session_.fitImage(); break;
+        case GLFW_KEY_1: session_.zoomImageTo(1.0f); break;
+        case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: session_.zoomImageBySteps(1); break;
+        case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: session_.zoomImageBySteps(-1); break;
         default: break;
         }
     }
@@ -317,6 +332,8 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
     lastCursor_ = cursor;
     double scroll = events(window_).scrollSteps;
     events(window_).scrollSteps = 0.0;
+    double zoomSteps = events(window_).zoomSteps;
+    events(window_).zoomSteps = 0.0;
 
     bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
@@ -333,7 +350,7 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
         if (left && !draggingDivider_ && session_.comparing() && std::abs(cursor.x - delta.x - dividerX) < kDividerGrabPixels &&
             ImGui::IsMouseClicked(ImGuiMouseButton_Left))
             draggingDivider_ = true;
-        PixelRect area = session_.displayArea();
+        PixelRect area = session_.viewArea(); // the divider is a fraction of it
         float imageHeight = std::max(1.0f, static_cast<float>(area.size.y) / framebufferScale_.y);
         // ImGui sees a click even when press and release fell within one frame; GLFW's state may not.
         bool clicked = ImGui::IsMouseClicked(ImGuiMouseButton_Left);
@@ -344,6 +361,11 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
             // Ctrl+click focuses; a Ctrl+drag neither orbits nor pans.
             if (clicked) focusAtCursor(cursor);
             camera = model.scene.camera;
+        } else if (control && right) {
+            // Ctrl+right or middle drag pans the image (its pixel zoom), not the camera.
+            if (delta != glm::dvec2(0.0))
+                session_.panImage(glm::vec2(static_cast<float>(delta.x) * framebufferScale_.x,
+                                            static_cast<float>(-delta.y) * framebufferScale_.y));
         } else if (alt && (left || clicked)) {
             // Alt+click pins the pixel (or unpins it); an Alt+drag neither orbits nor pans.
             if (clicked) pinAtCursor(cursor);
@@ -358,6 +380,11 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
                                  static_cast<float>(delta.y) * kOrbitDegreesPerPixel);
         }
         if (scroll != 0.0) camera = zoomCamera(camera, zoomFactorForWheel(static_cast<float>(scroll)));
+        // Ctrl+wheel: the image's pixel zoom, a power of two a notch, about the pointer.
+        if (zoomSteps != 0.0)
+            session_.zoomImageBySteps(zoomSteps > 0.0 ? std::max(1, static_cast<int>(std::lround(zoomSteps)))
+                                                      : std::min(-1, static_cast<int>(std::lround(zoomSteps))),
+                                      framebufferAt(cursor));
     }
     if (!io.WantCaptureKeyboard) {
         glm::vec3 move(0.0f);
@@ -382,14 +409,25 @@ void ViewerWindow::handleMouseAndFlight(double seconds) {
 // Where the cursor (window coordinates from the top-left) is on the image, as fractions of it
 // from its top-left corner; nullopt off the image. Click-to-focus and the pixel inspector share it.
 std::optional<glm::vec2> ViewerWindow::imageFractionAtCursor(glm::dvec2 cursor) const {
-    PixelRect area = session_.displayArea();
+    PixelRect area = session_.imageRect(); // zoomed and panned
     if (area.size.x <= 0 || area.size.y <= 0) return std::nullopt;
-    glm::vec2 pixel = glm::vec2(cursor) * framebufferScale_;
-    pixel.y = static_cast<float>(framebufferSize_.y) - pixel.y; // GL counts rows from the bottom
+    glm::vec2 pixel = framebufferAt(cursor);
+    PixelRect view = session_.viewArea();
+    if (pixel.x < static_cast<float>(view.origin.x) || pixel.y < static_cast<float>(view.origin.y) ||
+        pixel.x > static_cast<float>(view.origin.x + view.size.x) || pixel.y > static_cast<float>(view.origin.y + view.size.y))
+        return std::nullopt; // outside the part of the window the image is drawn in
     glm::vec2 fromBottomLeft = (pixel - glm::vec2(area.origin)) / glm::vec2(area.size);
     if (glm::any(glm::lessThan(fromBottomLeft, glm::vec2(0.0f))) || glm::any(glm::greaterThan(fromBottomLeft, glm::vec2(1.0f))))
         return std::nullopt;
     return glm::vec2(fromBottomLeft.x, 1.0f - fromBottomLeft.y);
+}
+
+// A cursor position (window coordinates from the top-left) in framebuffer pixels, as OpenGL
+// counts them (from the bottom-left).
+glm::vec2 ViewerWindow::framebufferAt(glm::dvec2 cursor) const {
+    glm::vec2 pixel = glm::vec2(cursor) * framebufferScale_;
+    pixel.y = static_cast<float>(framebufferSize_.y) - pixel.y;
+    return pixel;
 }
 
 // Click-to-focus on the surface under the cursor, when it is on the image.
@@ -400,9 +438,8 @@ void ViewerWindow::focusAtCursor(glm::dvec2 cursor) {
 // Alt+click: pins the render pixel under the cursor (the resolution scale and a render shown
 // scaled included), or unpins it; the Pixel panel opens to show it.
 void ViewerWindow::pinAtCursor(glm::dvec2 cursor) {
-    std::optional<glm::vec2> fraction = imageFractionAtCursor(cursor);
-    if (!fraction) return;
-    std::optional<glm::ivec2> pixel = session_.pixelAt(*fraction);
+    // Through the zoom: the render pixel drawn under the cursor, exactly.
+    std::optional<glm::ivec2> pixel = session_.pixelAtFramebuffer(framebufferAt(cursor));
     if (!pixel) return;
     session_.togglePinnedPixel(*pixel);
     if (session_.model().pinnedPixel) panelState_.panelsToOpen.push_back("pixel");
@@ -414,13 +451,15 @@ void ViewerWindow::drawPinnedPixelMarker() {
     const std::optional<glm::ivec2>& pinned = session_.model().pinnedPixel;
     glm::ivec2 render = session_.renderSize();
     if (!pinned || render.x <= 0 || render.y <= 0) return;
-    PixelRect area = session_.displayArea();
+    PixelRect area = session_.imageRect();
     glm::vec2 cell = glm::vec2(area.size) / glm::vec2(render) / framebufferScale_; // one pixel, in window coordinates
     // The pixel's top-left corner: the area's origin is its bottom-left corner, in framebuffer pixels.
     glm::vec2 topLeft(static_cast<float>(area.origin.x) / framebufferScale_.x + cell.x * static_cast<float>(pinned->x),
                       static_cast<float>(framebufferSize_.y - area.origin.y - area.size.y) / framebufferScale_.y +
                           cell.y * static_cast<float>(pinned->y));
     glm::vec2 centre = topLeft + 0.5f * cell;
+    // Zoomed in, the pin may lie outside the window's part that shows the image: no mark over the sidebar.
+    if (std::optional<glm::ivec2> shown = session_.pixelAtFramebuffer(framebufferAt(glm::dvec2(centre))); shown != pinned) return;
     glm::vec2 half = glm::max(0.5f * cell, glm::vec2(3.0f)) + 1.0f;
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     const ImU32 dark = IM_COL32(0, 0, 0, 200), bright = IM_COL32(255, 64, 255, 255);
@@ -440,7 +479,7 @@ void ViewerWindow::drawPinnedPixelMarker() {
 // The render on screen, in window coordinates from the top-left (ImGui's): the display area's
 // origin is its bottom-left corner, in framebuffer pixels.
 ScreenRect ViewerWindow::imageOnScreen() const {
-    PixelRect area = session_.displayArea();
+    PixelRect area = session_.imageRect();
     return ScreenRect{{static_cast<float>(area.origin.x) / framebufferScale_.x,
                        static_cast<float>(framebufferSize_.y - area.origin.y - area.size.y) / framebufferScale_.y},
                       glm::vec2(area.size) / framebufferScale_};
@@ -579,6 +618,8 @@ void ViewerWindow::drawCompareLabels() {
                       samplerModeName(settings.sampler), settings.maxDepth);
         std::string text = heading;
         if (std::string content = imageContentLabel(settings, stats.denoised); !content.empty()) text += " / " + content;
+        if (DisplayView view = session_.displaySettings(side).view; view != DisplayView::Image)
+            text += std::string(" / ") + displayViewNames().entry(view).displayLabel();
         // The noise is the raw accumulation's, also on a denoised side (the Stats panel says so);
         // beside it the true error where a reference is loaded, which alone sees a missing light.
         text += "\n" + splitLabelNumbers(stats.samples, stats.renderSeconds, stats.error,
@@ -611,6 +652,16 @@ void ViewerWindow::drawImageNotes() {
         note += "render " + std::to_string(rendered.x) + "x" + std::to_string(rendered.y) + " shown scaled; R renders at " +
                 std::to_string(wanted.x) + "x" + std::to_string(wanted.y);
     }
+    if (const ImageZoom& zoom = session_.model().zoom; !zoom.fit()) { // the pixel zoom, and how to leave it
+        char text[64];
+        std::snprintf(text, sizeof text, "zoom %g:1 (0: fit)", static_cast<double>(zoom.scale));
+        note += (note.empty() ? "" : "\n") + std::string(text);
+        // The render pixel under the pointer, as Alt+click would pin it.
+        glm::dvec2 cursor;
+        glfwGetCursorPos(window_, &cursor.x, &cursor.y);
+        if (std::optional<glm::ivec2> pixel = session_.pixelAtFramebuffer(framebufferAt(cursor)))
+            note += ", pixel " + std::to_string(pixel->x) + " " + std::to_string(pixel->y);
+    }
     PixelRect area = session_.imageArea();
     float left = static_cast<float>(area.origin.x) / framebufferScale_.x + 10.0f;
     float right = static_cast<float>(area.origin.x + area.size.x) / framebufferScale_.x - 10.0f;
@@ -621,6 +672,8 @@ void ViewerWindow::drawImageNotes() {
     if (!session_.comparing()) {
         const RenderSettings& settings = session_.settings(ViewerSession::Side::Left);
         std::string content = imageContentLabel(settings, session_.showsDenoised(ViewerSession::Side::Left));
+        if (DisplayView view = session_.model().display.view; view != DisplayView::Image)
+            content += (content.empty() ? "" : ", ") + std::string(displayViewNames().entry(view).displayLabel());
         if (!content.empty()) drawImageNote(content, ImVec2(left, 8.0f), false, false, IM_COL32(255, 255, 255, 255));
     }
     // Feedback the sidebar may hide: a save that did not apply, the files F12 wrote.
@@ -637,6 +690,23 @@ void ViewerWindow::drawImageNotes() {
 
 // A line or two on a dark box over the image, placed by the corner at `anchor` (window
 // coordinates): its right edge there when alignRight, its bottom when alignBottom.
+// The colour bar of an error or difference view, in the view's bottom-right corner (the right
+// side's view in a split, where the left shows the image), and why a view shows the image instead.
+void ViewerWindow::drawLegend() {
+    ViewerSession::Side side = session_.comparing() ? ViewerSession::Side::Right : ViewerSession::Side::Left;
+    PixelRect area = session_.viewArea();
+    ScreenRect view{{static_cast<float>(area.origin.x) / framebufferScale_.x,
+                     static_cast<float>(framebufferSize_.y - area.origin.y - area.size.y) / framebufferScale_.y},
+                    glm::vec2(area.size) / framebufferScale_};
+    std::string problem = session_.viewProblem(side);
+    if (!problem.empty()) {
+        drawImageNote(problem, ImVec2(view.topLeft.x + view.size.x - 10.0f, view.topLeft.y + view.size.y - 10.0f), true, true,
+                      IM_COL32(255, 200, 80, 255));
+        return;
+    }
+    drawErrorLegend(*ImGui::GetForegroundDrawList(), session_.displaySettings(side), view);
+}
+
 void ViewerWindow::drawImageNote(const std::string& text, ImVec2 anchor, bool alignRight, bool alignBottom, ImU32 colour) {
     ImVec2 size = ImGui::CalcTextSize(text.c_str());
     ImVec2 position(alignRight ? anchor.x - size.x : anchor.x, alignBottom ? anchor.y - size.y : anchor.y);
@@ -664,6 +734,7 @@ void ViewerWindow::drawUi() {
     if (!warpVisualizer_.active()) {
         drawDetachedWindows();
         drawCompareLabels();
+        drawLegend();
         drawImageNotes();
         drawTracedPaths();
         drawPinnedPixelMarker();

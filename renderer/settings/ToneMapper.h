@@ -1,6 +1,7 @@
 #pragma once
 // The display transforms of shaders/tonemap.glsl, and their names on the command line and in the UI.
 
+#include <ptview/settings/DisplayView.h>
 #include <ptview/settings/EnumTable.h>
 
 #include <cstdint>
@@ -16,6 +17,10 @@ struct DisplaySettings {
     ToneMapper toneMapper = ToneMapper::Reinhard;
     bool highlightNonFinite = false; // show pixels whose mean is NaN or infinite in magenta
     bool denoised = false;           // show the denoised image where there is one (PathTracer::hasDenoised)
+    // The image, or its error or difference (DisplayView.h) against PathTracer::setOtherImage's
+    // image; the estimated error is always of the raw samples, denoised or not.
+    DisplayView view = DisplayView::Image;
+    ErrorMapRange mapRange;
 };
 
 inline const EnumTable<ToneMapper>& toneMapperNames() {

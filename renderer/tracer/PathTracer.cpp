@@ -1,6 +1,8 @@
 #include <ptview/tracer/PathTracer.h>
 
+#include <ptview/gl/FloatTexture.h>
 #include <ptview/gl/FullScreenRows.h>
+#include <ptview/tracer/DisplayViewGlsl.h>
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/gpudata/GpuLayout.h>
 #include <ptview/probes/ProbePass.h>
@@ -22,6 +24,9 @@ constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // un
 constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // units 13..15
 static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
 static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
+// The display program's own: the sums (0, 1), the sum of squares (2) and the other image (3).
+constexpr int kDisplaySumSquaresUnit = 2;
+constexpr int kDisplayOtherImageUnit = 3;
 
 // Our passes own all of this state; ImGui or a caller may have changed it.
 void resetPassState() {
@@ -42,16 +47,22 @@ bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
 
 PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
     ShaderAssembler assembler(shaderDir_);
-    addGeneratedGlsl(assembler); // the tone mappers
+    addGeneratedGlsl(assembler);    // the tone mappers
+    addDisplayViewGlsl(assembler);  // the views and the colour maps
     DisplayProgram display;
     display.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("display.frag"));
     const GlProgram& show = *display.program;
     show.bindSamplerUnit("uSum", 0);
     show.bindSamplerUnit("uCompensation", 1);
+    show.bindSamplerUnit("uSumSquares", kDisplaySumSquaresUnit);
+    show.bindSamplerUnit("uOtherImage", kDisplayOtherImageUnit);
     display.invSampleCount = show.uniformLocation("uInvSampleCount");
     display.exposureScale = show.uniformLocation("uExposureScale");
     display.toneMapper = show.uniformLocation("uToneMapper");
     display.highlightNonFinite = show.uniformLocation("uHighlightNonFinite");
+    display.displayView = show.uniformLocation("uDisplayView");
+    display.errorLog10Range = show.uniformLocation("uErrorLog10Range");
+    display.differenceRange = show.uniformLocation("uDifferenceRange");
     display.outputOrigin = show.uniformLocation("uOutputOrigin");
     display.outputSize = show.uniformLocation("uOutputSize");
     return display;
@@ -544,27 +555,67 @@ void PathTracer::display(PixelRect target, const DisplaySettings& settings, Pixe
 
 void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const {
     resetPassState();
-    glViewport(target.origin.x, target.origin.y, target.size.x, target.size.y);
+    // The full-screen triangle covers the clip alone: a zoomed target may be far larger than the
+    // largest viewport, and the shader maps pixels to texels through uOutputOrigin/uOutputSize.
+    glViewport(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
     glEnable(GL_SCISSOR_TEST);
     glScissor(clip.origin.x, clip.origin.y, clip.size.x, clip.size.y);
     glUseProgram(display_.program->id());
-    // The denoised image is a mean already, without a compensation term.
-    const bool denoised = settings.denoised && &shown == &accumulator_ && hasDenoised();
+    // The denoised image is a mean already, without a compensation term. The estimated error
+    // needs the sums of squares, which only the raw accumulation has.
+    const bool denoised = settings.denoised && settings.view != DisplayView::EstimatedError && &shown == &accumulator_ &&
+                          hasDenoised();
     int samples = denoised ? 1 : shown.displayedSampleCount();
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
     glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
+    // A view whose other image is missing, or of another size, shows the image instead.
+    const bool otherFits = otherImage_ && otherImage_->width == accumulator_.size().x && otherImage_->height == accumulator_.size().y;
+    const DisplayView view =
+        settings.view == DisplayView::Image || settings.view == DisplayView::EstimatedError || otherFits ? settings.view
+                                                                                                         : DisplayView::Image;
+    glUniform1ui(display_.displayView, static_cast<GLuint>(view));
+    float log10Min = settings.mapRange.errorLog10Min;
+    float log10Max = std::max(settings.mapRange.errorLog10Max, log10Min + 1e-3f); // a range, never a division by 0
+    glUniform2f(display_.errorLog10Range, log10Min, log10Max);
+    glUniform1f(display_.differenceRange, std::max(settings.mapRange.differenceRange, kDifferenceRangeMin));
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
-    if (denoised)
+    if (denoised) {
         denoiser_->bindResult(0, 1);
-    else
-        shown.bindLatest(0, 1); // the preview is upscaled by the texture lookup
+    } else {
+        shown.bindLatest(0, 1, kDisplaySumSquaresUnit); // the preview is upscaled by the texture lookup
+    }
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + kDisplayOtherImageUnit));
+    glBindTexture(GL_TEXTURE_2D, otherTexture_.id()); // 0 without one: black, and the view is the image anyway
+    glActiveTexture(GL_TEXTURE0);
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glDisable(GL_SCISSOR_TEST);
+}
+
+void PathTracer::setOtherImage(std::shared_ptr<const ImageRgbF> image) {
+    if (image == otherImage_) return;
+    otherImage_ = std::move(image);
+    if (!otherImage_ || otherImage_->width <= 0 || otherImage_->height <= 0) {
+        otherTexture_ = GlTexture();
+        return;
+    }
+    const ImageRgbF& other = *otherImage_;
+    // GL rows run bottom-up: the image's last row is the texture's first.
+    std::vector<float> rgba(static_cast<size_t>(other.width) * other.height * 4);
+    for (int y = 0; y < other.height; ++y)
+        for (int x = 0; x < other.width; ++x) {
+            glm::vec3 value = other.at(x, other.height - 1 - y);
+            float* texel = &rgba[(static_cast<size_t>(y) * other.width + x) * 4];
+            texel[0] = value.r, texel[1] = value.g, texel[2] = value.b, texel[3] = 1.0f;
+        }
+    otherTexture_ = createFloatTexture({other.width, other.height});
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, other.width, other.height, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 ImageRgbF PathTracer::readMean() const {

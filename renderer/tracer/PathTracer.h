@@ -166,8 +166,16 @@ public:
     // pixel inspector's. Throws std::logic_error without one, std::out_of_range outside the image.
     glm::vec3 readDenoisedPixel(glm::ivec2 pixel) const;
 
+    // The image the error, difference and other-image views compare the render with (linear, rows
+    // top first, the render's size; DisplaySettings::view): uploaded when it is another image
+    // than the last one given. Null: none (those views then show black where it would be).
+    void setOtherImage(std::shared_ptr<const ImageRgbF> image);
+    const std::shared_ptr<const ImageRgbF>& otherImage() const { return otherImage_; }
+
     // Draws the tone-mapped mean stretched over `target` of the bound draw framebuffer, touching
-    // only the pixels inside `clip` (the split view shows two renders side by side).
+    // only the pixels inside `clip` (the split view shows two renders side by side; a zoomed
+    // image is a target larger than the clip). Texels are read nearest, so a zoom shows each
+    // render pixel as a block.
     void display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const;
     void display(PixelRect target, const DisplaySettings& settings) const { display(target, settings, target); }
 
@@ -199,6 +207,9 @@ private:
         GLint exposureScale = -1;
         GLint toneMapper = -1;
         GLint highlightNonFinite = -1;
+        GLint displayView = -1;
+        GLint errorLog10Range = -1;
+        GLint differenceRange = -1;
         GLint outputOrigin = -1;
         GLint outputSize = -1;
     };
@@ -269,6 +280,8 @@ private:
     int restartCount_ = 0;
     DenoiseSettings denoiseSettings_;
     std::unique_ptr<Denoiser> denoiser_; // made when first enabled
+    std::shared_ptr<const ImageRgbF> otherImage_; // setOtherImage's, uploaded to otherTexture_
+    GlTexture otherTexture_;
 };
 
 // A tracer as every command and the viewer begin: compiled as options ask, with the scene (and the

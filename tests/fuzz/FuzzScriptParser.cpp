@@ -123,6 +123,12 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["compare-sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
         t["compare-depth"] = {integer(0, 1024)};
         t["divider"] = {number(0, 1)};
+        t["view"] = {choice(namesOf(ptview::displayViewNames()))};
+        t["error-range"] = {number(0, 100, true), number(0, 100, true)};
+        t["difference-range"] = {number(0, 1e4, true)};
+        t["load-compare-image"] = {path({".pfm", ".exr"}, "none")};
+        t["zoom"] = {Arg{Kind::Number, 1.0 / 16, 64, false, {}, "fit"}};
+        t["pan"] = {number(), number()};
         t["frames"] = {integer(1)};
         t["wait-spp"] = {integer(1)};
         t["wait-seconds"] = {number(0, 600)};
