@@ -7,6 +7,7 @@ uniform sampler2D uCompensation;
 uniform float uInvSampleCount;
 uniform float uExposureScale; // 2^exposure
 uniform uint uToneMapper;
+uniform uint uDisplayTransfer; // DisplayTransfer: sRGB, or gamma 2.2 for older files
 uniform bool uHighlightNonFinite; // a debug view: NaN or infinite means in magenta
 uniform vec2 uOutputOrigin;   // lower-left corner of the output rectangle, in framebuffer pixels
 uniform vec2 uOutputSize;     // its size in pixels
@@ -22,5 +23,5 @@ void main() {
         outColor = vec4(1.0, 0.0, 1.0, 1.0);
         return;
     }
-    outColor = vec4(displayTransform(mean, uExposureScale, uToneMapper), 1.0);
+    outColor = vec4(displayTransform(mean, uExposureScale, uToneMapper, uDisplayTransfer), 1.0);
 }

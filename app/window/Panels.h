@@ -21,6 +21,7 @@ struct PanelState {
     UnsavedEditsPrompt unsavedEdits;
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
     std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
+    std::string ocioConfigInput;      // Render panel: an OpenColorIO config.ocio
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
     // The same, briefly on the image (kImageNoticeSeconds), where it is seen with the sidebar

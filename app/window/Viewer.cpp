@@ -4,6 +4,7 @@
 #include <ptview/model/CameraController.h>
 #include <ptview/io/ImageIO.h>
 #include <ptview/window/MaterialsPanel.h>
+#include <ptview/commands/OcioOption.h>
 #include <ptview/commands/OutputPath.h>
 #include <ptview/window/PanelText.h>
 #include <ptview/window/PanelWidgets.h>
@@ -854,12 +855,20 @@ int runViewer(const ViewerOptions& requested) {
         if (!input && scope.refusedFiles().empty()) return kExitBadInput;
     }
     if (from) applyRecipe(from->recipe, options);
+    // Checked before the session compiles anything: bad input leaves with the message and exit 2.
+    const std::optional<std::shared_ptr<const OcioView>> ocio =
+        resolveOcioView(requested.ocio, from ? &from->recipe : nullptr, options.scenePath, options.display.toneMapper);
+    if (!ocio) return kExitBadInput;
 
     // Loop, until the user or the script quits.
     try {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
                               options.program);
         session.model().denoise = options.denoise; // --denoise, or the denoiser an opened image was made with
+        if (*ocio && !session.setOcioView({(*ocio)->configPath().string(), (*ocio)->display(), (*ocio)->view()})) {
+            printMessage(session.model().ocioError);
+            return kExitBadInput;
+        }
         if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
             printMessage(session.model().sceneError);
             return kExitBadInput;

@@ -40,9 +40,14 @@ bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
            std::tie(other.integrator, other.sampler, other.debugView, other.lightPaths, other.backend);
 }
 
-PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
+PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio) const {
     ShaderAssembler assembler(shaderDir_);
     addGeneratedGlsl(assembler); // the tone mappers
+    if (ocio)
+        assembler.replaceWithText("view_transform_ocio.glsl",
+                                  "// OpenColorIO " + ocio->label() + "\n" + ocio->shader().glsl +
+                                      "\nvec3 ocioView(vec3 sceneLinear) {\n"
+                                      "    return clamp(ocioDisplayView(vec4(sceneLinear, 1.0)).rgb, 0.0, 1.0);\n}\n");
     DisplayProgram display;
     display.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("display.frag"));
     const GlProgram& show = *display.program;
@@ -51,6 +56,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
     display.invSampleCount = show.uniformLocation("uInvSampleCount");
     display.exposureScale = show.uniformLocation("uExposureScale");
     display.toneMapper = show.uniformLocation("uToneMapper");
+    display.displayTransfer = show.uniformLocation("uDisplayTransfer");
     display.highlightNonFinite = show.uniformLocation("uHighlightNonFinite");
     display.outputOrigin = show.uniformLocation("uOutputOrigin");
     display.outputSize = show.uniformLocation("uOutputSize");
@@ -187,7 +193,7 @@ std::vector<BackendTiming> PathTracer::timeBackends() {
 
 PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions options)
     : shaderDir_(shaderDir), options_(options) {
-    display_ = buildDisplayProgram();
+    display_ = buildDisplayProgram(nullptr);
     if (options_.backend) setBackend(*options_.backend);
     emptyVertexArray_ = createVertexArray();
     frameUniformBuffer_ = createBuffer();
@@ -197,11 +203,21 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions
     updateProgramKey();
 }
 
+void PathTracer::setOcioView(std::shared_ptr<const OcioView> view) {
+    DisplayProgram display = buildDisplayProgram(view.get()); // throws before anything changes
+    OcioLuts luts = view ? OcioLuts(view->shader()) : OcioLuts();
+    luts.attach(*display.program);
+    display_ = std::move(display);
+    ocioLuts_ = std::move(luts);
+    ocioView_ = std::move(view);
+}
+
 void PathTracer::reloadShaders() {
     // Everything is built before anything is replaced: a failure leaves the old programs running.
-    DisplayProgram display = buildDisplayProgram();
+    DisplayProgram display = buildDisplayProgram(ocioView_.get());
     TraceProgram trace = buildTraceProgram(programKey_);
     display_ = std::move(display);
+    ocioLuts_.attach(*display_.program);
     tracePrograms_.clear();
     surfaceProbe_.reset(); // built again from the new files when next asked
     attached_ = nullptr;
@@ -554,9 +570,11 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
+    glUniform1ui(display_.displayTransfer, static_cast<GLuint>(settings.transfer));
     glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
+    ocioLuts_.bind();
     if (denoised)
         denoiser_->bindResult(0, 1);
     else
