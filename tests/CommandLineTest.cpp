@@ -337,6 +337,11 @@ TEST_F(CommandLineTest, BadOcioInputExitsTwoNamingTheFileAndTheName) {
         for (const std::string& text : expected) EXPECT_NE(result.output.find(text), std::string::npos) << text << "\n" << result.output;
         EXPECT_FALSE(fs::exists(path("bad.png"))) << arguments;
     }
+    // The viewer refuses the same before it opens a window (none is needed to see it).
+    testing::CommandResult viewer = runCommand(kBinary + " " + shellQuoted(scene) + " --ocio-config " + shellQuoted(config) +
+                                               " --ocio-display sRGB");
+    EXPECT_EQ(viewer.exitCode, 2) << viewer.output;
+    EXPECT_NE(viewer.output.find("no display \"sRGB\""), std::string::npos) << viewer.output;
 }
 
 TEST_F(CommandLineTest, RenderReportsWhatItWrote) {

@@ -820,6 +820,12 @@ int runViewer(const ViewerOptions& requested) {
     // A file outside the folders a sent file may read is a question for the user; anything else
     // wrong is bad input, reported before any window opens.
     if (!input && scope.refusedFiles().empty()) return kExitBadInput;
+    // Checked before any window opens: bad input leaves with the message and exit 2. An image's
+    // recorded display and view are in `from` once it loaded.
+    ToneMapper toneMapper = from ? from->recipe.display.toneMapper : options.display.toneMapper;
+    const std::optional<std::shared_ptr<const OcioView>> ocio =
+        resolveOcioView(requested.ocio, from ? &from->recipe : nullptr, options.scenePath, toneMapper);
+    if (!ocio) return kExitBadInput;
 
     // Init the window. Destroyed in the reverse order: ImGui, the window, GLFW.
     glfwSetErrorCallback(reportGlfwError);
@@ -855,10 +861,6 @@ int runViewer(const ViewerOptions& requested) {
         if (!input && scope.refusedFiles().empty()) return kExitBadInput;
     }
     if (from) applyRecipe(from->recipe, options);
-    // Checked before the session compiles anything: bad input leaves with the message and exit 2.
-    const std::optional<std::shared_ptr<const OcioView>> ocio =
-        resolveOcioView(requested.ocio, from ? &from->recipe : nullptr, options.scenePath, options.display.toneMapper);
-    if (!ocio) return kExitBadInput;
 
     // Loop, until the user or the script quits.
     try {
