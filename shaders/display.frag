@@ -11,6 +11,7 @@ uniform sampler2D uOtherImage;  // the reference or comparison image (linear, sa
 uniform float uInvSampleCount;
 uniform float uExposureScale; // 2^exposure
 uniform uint uToneMapper;
+uniform uint uDisplayTransfer; // DisplayTransfer: sRGB, or gamma 2.2 for older files
 uniform bool uHighlightNonFinite; // a debug view: NaN or infinite means in magenta
 uniform uint uDisplayView;
 uniform vec2 uErrorLog10Range; // the error views' colour map: log10 of its first and last colour's error
@@ -30,7 +31,7 @@ void main() {
         return;
     }
     if (uDisplayView == kDisplayViewImage) {
-        outColor = vec4(displayTransform(mean, uExposureScale, uToneMapper), 1.0);
+        outColor = vec4(displayTransform(mean, uExposureScale, uToneMapper, uDisplayTransfer), 1.0);
         return;
     }
     vec3 other = texture(uOtherImage, texCoord).rgb;
@@ -43,9 +44,9 @@ void main() {
     } else if (uDisplayView == kDisplayViewDifference) {
         shown = differenceColor(mean - other, uDifferenceRange);
     } else if (uDisplayView == kDisplayViewAbsDifference) {
-        shown = displayTransform(abs(mean - other), uExposureScale, uToneMapper);
+        shown = displayTransform(abs(mean - other), uExposureScale, uToneMapper, uDisplayTransfer);
     } else {
-        shown = displayTransform(other, uExposureScale, uToneMapper);
+        shown = displayTransform(other, uExposureScale, uToneMapper, uDisplayTransfer);
     }
     outColor = vec4(shown, 1.0);
 }

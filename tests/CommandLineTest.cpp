@@ -1,6 +1,7 @@
 // End-to-end tests of the real `ptview` binary: bad input is refused with exit code 2 and a one-line
 // message naming the file and place, and nothing is written; good input renders what it should.
 #include <ptview/io/ImageIO.h>
+#include "DisplayTransformReference.h"
 #include "LimitedChild.h"
 #include "RunCommand.h"
 #include "TestFiles.h"
@@ -254,7 +255,7 @@ TEST_F(CommandLineTest, PfmHoldsLinearRadianceAtTheRequestedSize) {
         }
 }
 
-TEST_F(CommandLineTest, PngIsExposedReinhardGamma22) {
+TEST_F(CommandLineTest, PngIsExposedReinhardSrgb) {
     std::string scene = write("env.json", environmentOnlyScene("[0.1, 1.0, 4.0]"));
     testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(scene) + " --out " +
                                                shellQuoted(path("env.png")) + " --spp 2 --exposure 1");
@@ -267,11 +268,80 @@ TEST_F(CommandLineTest, PngIsExposedReinhardGamma22) {
     const double radiance[3] = {0.1, 1.0, 4.0};
     for (int c = 0; c < 3; ++c) {
         double exposed = radiance[c] * 2.0; // +1 stop
-        double expected = 255.0 * std::pow(exposed / (1.0 + exposed), 1.0 / 2.2);
+        double expected = 255.0 * testing::srgbEncode(exposed / (1.0 + exposed)); // IEC 61966-2-1
         EXPECT_NEAR(pixels[c], expected, 1.0) << "channel " << c;
     }
     EXPECT_EQ(pixels[3], 255);
     stbi_image_free(pixels);
+}
+
+TEST_F(CommandLineTest, PngThroughAgxMatchesTheReference) {
+    std::string scene = write("env.json", environmentOnlyScene("[0.1, 1.0, 4.0]"));
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(scene) + " --out " +
+                                               shellQuoted(path("agx.png")) + " --spp 2 --tone-mapper agx");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(path("agx.png").c_str(), &width, &height, &channels, 4);
+    ASSERT_NE(pixels, nullptr);
+    const glm::dvec3 expected = testing::agx(glm::dvec3(0.1, 1.0, 4.0));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixels[c], 255.0 * testing::srgbEncode(expected[c]), 1.0) << "channel " << c;
+    stbi_image_free(pixels);
+}
+
+// The square-root view of tests/data/ocio/config.ocio: 0.25 -> 0.5, 0.04 -> 0.2, 0.81 -> 0.9.
+TEST_F(CommandLineTest, PngThroughAnOcioViewHasTheViewsValuesAndRendersAgainFromItsFile) {
+    const std::string config = PTVIEW_TEST_DATA_DIR "/ocio/config.ocio";
+    std::string scene = write("env.json", environmentOnlyScene("[0.25, 0.04, 0.81]"));
+    testing::CommandResult result = runCommand(kBinary + " render " + shellQuoted(scene) + " --out " + shellQuoted(path("ocio.png")) +
+                                               " --spp 2 --ocio-config " + shellQuoted(config) + " --ocio-view 'square root'");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    auto firstPixel = [](const std::string& file) {
+        int width = 0, height = 0, channels = 0;
+        unsigned char* pixels = stbi_load(file.c_str(), &width, &height, &channels, 4);
+        std::vector<int> rgb = pixels ? std::vector<int>{pixels[0], pixels[1], pixels[2]} : std::vector<int>{};
+        stbi_image_free(pixels);
+        return rgb;
+    };
+    const std::vector<int> rgb = firstPixel(path("ocio.png"));
+    ASSERT_EQ(rgb.size(), 3u);
+    EXPECT_NEAR(rgb[0], 127.5, 1.0);
+    EXPECT_NEAR(rgb[1], 51.0, 1.0);
+    EXPECT_NEAR(rgb[2], 229.5, 1.0);
+    // --from needs the config again (a file never names one to load), and then keeps the view.
+    result = runCommand(kBinary + " render --from " + shellQuoted(path("ocio.png")) + " --out " + shellQuoted(path("again.png")));
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("\"test / square root\""), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("give --ocio-config FILE"), std::string::npos) << result.output;
+    result = runCommand(kBinary + " render --from " + shellQuoted(path("ocio.png")) + " --out " + shellQuoted(path("again.png")) +
+                        " --ocio-config " + shellQuoted(config));
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(firstPixel(path("again.png")), rgb);
+}
+
+TEST_F(CommandLineTest, BadOcioInputExitsTwoNamingTheFileAndTheName) {
+    const std::string config = PTVIEW_TEST_DATA_DIR "/ocio/config.ocio";
+    const std::string broken = PTVIEW_TEST_DATA_DIR "/ocio/broken.ocio";
+    std::string scene = write("env.json", environmentOnlyScene("[0.25, 0.04, 0.81]"));
+    const std::string render = kBinary + " render " + shellQuoted(scene) + " --spp 1 --out " + shellQuoted(path("bad.png"));
+    const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+        {" --ocio-config " + shellQuoted(path("missing.ocio")), {path("missing.ocio"), "not a usable OpenColorIO config"}},
+        {" --ocio-config " + shellQuoted(broken), {broken, "not a usable OpenColorIO config"}},
+        {" --ocio-config " + shellQuoted(config) + " --ocio-display sRGB", {config, "no display \"sRGB\""}},
+        {" --ocio-config " + shellQuoted(config) + " --ocio-view Filmic", {config, "no view \"Filmic\""}},
+        {" --tone-mapper ocio", {"--tone-mapper ocio needs --ocio-config FILE"}},
+        {" --ocio-view Filmic", {"--ocio-display and --ocio-view need --ocio-config FILE"}},
+    };
+    for (const auto& [arguments, expected] : cases) {
+        testing::CommandResult result = runCommand(render + arguments);
+        EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.output;
+        for (const std::string& text : expected) EXPECT_NE(result.output.find(text), std::string::npos) << text << "\n" << result.output;
+        EXPECT_FALSE(fs::exists(path("bad.png"))) << arguments;
+    }
+    // The viewer refuses the same before it opens a window (none is needed to see it).
+    testing::CommandResult viewer = runCommand(kBinary + " " + shellQuoted(scene) + " --ocio-config " + shellQuoted(config) +
+                                               " --ocio-display sRGB");
+    EXPECT_EQ(viewer.exitCode, 2) << viewer.output;
+    EXPECT_NE(viewer.output.find("no display \"sRGB\""), std::string::npos) << viewer.output;
 }
 
 TEST_F(CommandLineTest, RenderReportsWhatItWrote) {

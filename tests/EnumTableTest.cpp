@@ -42,6 +42,7 @@ TEST(EnumTables, NamesAndValuesAreUniqueAndRoundTrip) {
     expectConsistent(samplerModeNames());
     expectConsistent(debugViewNames());
     expectConsistent(toneMapperNames());
+    expectConsistent(displayTransferNames());
     expectConsistent(alphaModeNames());
     expectConsistent(textureWrapNames());
     expectConsistent(backendNames());
@@ -54,7 +55,8 @@ TEST(EnumTables, NamesAreTheOnesUsersType) {
     EXPECT_EQ(integratorNames().names(), (Names{"naive", "direct", "mis", "full"}));
     EXPECT_EQ(samplerModeNames().names(), (Names{"random", "grid", "stratified", "sobol"}));
     EXPECT_EQ(debugViewNames().names(), (Names{"radiance", "normals", "albedo", "depth"}));
-    EXPECT_EQ(toneMapperNames().names(), (Names{"reinhard", "aces", "clamp"}));
+    EXPECT_EQ(toneMapperNames().names(), (Names{"reinhard", "aces", "clamp", "agx", "ocio"}));
+    EXPECT_EQ(displayTransferNames().names(), (Names{"srgb", "gamma-2.2"})); // "gamma-2.2" is read from older files too
     EXPECT_EQ(backendNames().names(), (Names{"fragment", "compute"}));
     EXPECT_EQ(alphaModeNames().names(), (Names{"opaque", "mask", "blend"})); // glTF's, in lower case
     EXPECT_EQ(textureWrapNames().names(), (Names{"repeat", "clamp", "mirror"}));
@@ -110,8 +112,9 @@ TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
     const std::string enums = glslEnumConstants();
     static const std::regex enumDefinition(R"(const uint k\w+ = \d+u;)");
     EXPECT_EQ(std::distance(std::sregex_iterator(enums.begin(), enums.end(), enumDefinition), std::sregex_iterator()),
-              4 + 4 + 4 + 3 + 8 + 9 + 6 + 3 + 3); // integrators, samplers, views, tone mappers, light kinds, materials,
-                                              // light paths, alpha modes, wrap modes
+              4 + 4 + 4 + 5 + 2 + 8 + 9 + 6 + 3 + 3); // integrators, samplers, views, tone mappers, display
+                                                  // transfers, light kinds, materials, light paths,
+                                                  // alpha modes, wrap modes
     EXPECT_GT(constants, 60); // and the layouts' numbers
 }
 

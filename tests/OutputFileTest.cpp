@@ -211,6 +211,32 @@ TEST_F(OutputFileTest, RenderFromItsOwnFileGivesTheSameImageBitForBit) {
     EXPECT_EQ(pixels(path("first.png")).size(), 16u * 12u * 4u);
 }
 
+// PNGs written before ptview used the sRGB curve were encoded with gamma 2.2 and their settings
+// have no "display_transfer": `render --from` makes them again as they were, not with sRGB.
+TEST_F(OutputFileTest, OldPngsWithoutADisplayTransferRenderAgainWithGamma22) {
+    render(shellQuoted(kCornell) + kRenderArguments + " --display-transfer gamma-2.2 --out " + shellQuoted(path("gamma.png")));
+    render(shellQuoted(kCornell) + kRenderArguments + " --out " + shellQuoted(path("srgb.png")));
+    ImageMetadata old = readPngTextFile(path("srgb.png"));
+    std::string settings = *old.find("ptview.settings");
+    const std::string field = "\"display_transfer\": \"srgb\",";
+    ASSERT_NE(settings.find(field), std::string::npos) << settings;
+    settings.erase(settings.find(field), field.size());
+    old.set("ptview.settings", settings);
+    writePng(path("old.png"), ImageRgba8{2, 2, std::vector<std::uint8_t>(16, 128)}, old);
+    render("--from " + shellQuoted(path("old.png")) + " --out " + shellQuoted(path("again.png")));
+    auto pixels = [](const std::string& file) {
+        int w = 0, h = 0, n = 0;
+        stbi_uc* data = stbi_load(file.c_str(), &w, &h, &n, 4);
+        std::vector<std::uint8_t> bytes(data, data + (data ? w * h * 4 : 0));
+        stbi_image_free(data);
+        return bytes;
+    };
+    EXPECT_EQ(pixels(path("again.png")), pixels(path("gamma.png")));
+    EXPECT_NE(pixels(path("again.png")), pixels(path("srgb.png"))) << "the two encodings differ in the dark";
+    EXPECT_NE(readPngTextFile(path("again.png")).find("ptview.settings")->find("\"display_transfer\": \"gamma-2.2\""),
+              std::string::npos);
+}
+
 TEST_F(OutputFileTest, InfoPrintsTheProvenanceReadably) {
     render(shellQuoted(kCornell) + kRenderArguments + " --aovs depth --out " + shellQuoted(path("shot.exr")));
     const testing::CommandResult result = runCommand(kBinary + " info " + shellQuoted(path("shot.exr")));

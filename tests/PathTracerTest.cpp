@@ -1,4 +1,5 @@
 // Behaviour of the progressive renderer on the real GLSL, headless.
+#include "DisplayTransformReference.h"
 #include "GlTestContext.h"
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/scene/Scene.h>
@@ -227,19 +228,54 @@ TEST(PathTracer, ToneMappersMatchTheirFormulas) {
     tracer.setImageSize({8, 8});
     tracer.setSettings(testing::naiveSettings(0, 1));
     tracer.renderSample();
-    auto encode = [](double linear) { return std::pow(std::min(std::max(linear, 0.0), 1.0), 1.0 / 2.2) * 255.0; };
+    auto encode = [](double linear) { return testing::srgbEncode(linear) * 255.0; };
     auto reinhard = [](double x) { return x / (1.0 + x); };
     auto aces = [](double x) { return (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14); };
     const float exposureStops = 1.0f; // doubles the radiance first
+    const glm::dvec3 agx = testing::agx(2.0 * glm::dvec3(scene.environment));
     for (const EnumEntry<ToneMapper>& entry : toneMapperNames()) {
         ImageRgba8 image = tracer.readToneMapped(DisplaySettings{exposureStops, entry.value});
         for (int c = 0; c < 3; ++c) {
             double x = 2.0 * scene.environment[c];
             double expected = entry.value == ToneMapper::Reinhard ? encode(reinhard(x))
                             : entry.value == ToneMapper::Aces     ? encode(aces(x))
-                                                                       : encode(x);
+                            : entry.value == ToneMapper::Agx      ? encode(agx[c])
+                            // Without an OpenColorIO view (OcioViewTest has them) the values are only clamped.
+                            : entry.value == ToneMapper::Ocio     ? 255.0 * std::min(x, 1.0)
+                                                                  : encode(x);
             EXPECT_NEAR(image.rgba[static_cast<size_t>(c)], expected, 1.0) << entry.name << " channel " << c;
         }
+    }
+    // Images whose provenance predates the sRGB curve are encoded with gamma 2.2 again.
+    DisplaySettings old{exposureStops, ToneMapper::Reinhard};
+    old.transfer = DisplayTransfer::Gamma22;
+    ImageRgba8 image = tracer.readToneMapped(old);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(image.rgba[static_cast<size_t>(c)], 255.0 * testing::gamma22Encode(reinhard(2.0 * scene.environment[c])), 1.0);
+}
+
+// The PNG (readToneMapped), the window and the pixel inspector (readDisplayed, the magnifier and
+// the "displayed" numbers) all come from the one display pass, so a pixel reads the same in each.
+TEST(PathTracer, SavedImageAndDisplayedPixelsAgree) {
+    testing::glContext();
+    Scene scene;
+    scene.camera.resolution = {8, 8};
+    scene.environment = glm::vec3(0.002f, 0.3f, 2.0f); // one channel on sRGB's linear segment
+    PathTracer tracer;
+    tracer.setScene(scene);
+    tracer.setImageSize({8, 8});
+    tracer.setSettings(testing::naiveSettings(0, 1));
+    tracer.renderSample();
+    for (ToneMapper toneMapper : {ToneMapper::Reinhard, ToneMapper::Agx}) {
+        const DisplaySettings display{0.0f, toneMapper};
+        ImageRgba8 saved = tracer.readToneMapped(display);
+        ImageRgba8 shown = tracer.readDisplayed({3, 4}, {1, 1}, display);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(shown.rgba[static_cast<size_t>(c)], saved.rgba[static_cast<size_t>((4 * 8 + 3) * 4 + c)]) << c;
+        }
+        const double linear = toneMapper == ToneMapper::Agx ? testing::agx(glm::dvec3(scene.environment)).x
+                                                            : 0.002 / 1.002;
+        EXPECT_NEAR(saved.rgba[0], 255.0 * testing::srgbEncode(linear), 1.0) << toneMapperName(toneMapper);
     }
 }
 

@@ -29,6 +29,7 @@ RenderRecipe unusualRecipe() {
     recipe.display.exposureStops = 0.1f + 1e-7f;
     recipe.display.toneMapper = ToneMapper::Aces;
     recipe.display.highlightNonFinite = true;
+    recipe.display.transfer = DisplayTransfer::Gamma22;
     recipe.samplesPerPixel = 33;
     recipe.size = {17, 9};
     recipe.backend = Backend::Compute;
@@ -41,6 +42,7 @@ void expectSameRecipe(const RenderRecipe& a, const RenderRecipe& b) {
     EXPECT_EQ(a.display.exposureStops, b.display.exposureStops);
     EXPECT_EQ(a.display.toneMapper, b.display.toneMapper);
     EXPECT_EQ(a.display.highlightNonFinite, b.display.highlightNonFinite);
+    EXPECT_EQ(a.display.transfer, b.display.transfer);
     EXPECT_EQ(a.samplesPerPixel, b.samplesPerPixel);
     EXPECT_EQ(a.size, b.size);
     EXPECT_EQ(a.backend, b.backend);
@@ -59,6 +61,7 @@ TEST(RenderRecipe, MissingKeysKeepTheDefaultsAndBadValuesNameTheKey) {
     RenderRecipe sized;
     sized.samplesPerPixel = 2;
     sized.size = {8, 4};
+    sized.display.transfer = DisplayTransfer::Gamma22; // a file without the key was encoded with gamma 2.2
     expectSameRecipe(recipeFromJson(R"({"spp": 2, "width": 8, "height": 4, "unknown_future_key": 1})", "f.png"), sized);
     // Every ptview that wrote settings wrote these; without them there is no image to render again.
     for (const char* json : {R"({"width": 8, "height": 4})", R"({"spp": 2, "height": 4})", R"({"spp": 2, "width": 8})"})
@@ -71,6 +74,20 @@ TEST(RenderRecipe, MissingKeysKeepTheDefaultsAndBadValuesNameTheKey) {
     }
     EXPECT_THROW(recipeFromJson("{\"max_depth\": \"deep\"}", "f.png"), RecipeError);
     EXPECT_THROW(recipeFromJson("[1, 2]", "f.png"), RecipeError);
+}
+
+// PNGs written before the sRGB curve have no "display_transfer"; they were encoded with gamma 2.2
+// and `render --from` must make them again bit for bit. New files name their transfer.
+TEST(RenderRecipe, FilesWithoutADisplayTransferWereGamma22AndNewOnesSayTheirs) {
+    EXPECT_EQ(recipeFromJson(R"({"spp": 2, "width": 8, "height": 4})", "old.png").display.transfer, DisplayTransfer::Gamma22);
+    RenderRecipe current;
+    current.samplesPerPixel = 2;
+    current.size = {8, 4};
+    EXPECT_EQ(current.display.transfer, DisplayTransfer::Srgb) << "new renders use the sRGB curve";
+    const std::string json = recipeToJson(current);
+    EXPECT_NE(json.find("\"display_transfer\": \"srgb\""), std::string::npos) << json;
+    EXPECT_EQ(recipeFromJson(json, "new.png").display.transfer, DisplayTransfer::Srgb);
+    EXPECT_THROW(recipeFromJson(R"({"spp": 2, "width": 8, "height": 4, "display_transfer": "gamma-9"})", "f.png"), RecipeError);
 }
 
 class ProvenanceTest : public ::testing::Test {

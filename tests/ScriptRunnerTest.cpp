@@ -104,6 +104,34 @@ TEST(ScriptRunner, SetMaterialEditsPrincipledFactorsAndTextures) {
     EXPECT_EQ(base.image->rgba, (std::vector<std::uint8_t>{10, 20, 30, 255, 40, 50, 60, 255}));
 }
 
+// The Render panel's OpenColorIO controls by script: a config's default view, then another view;
+// a view the display lacks ends the script (exit code 2) and the view shown stays.
+TEST(ScriptRunner, OcioCommandsPickAConfigsViewsAndABadOneKeepsTheViewShown) {
+    const std::string config = PTVIEW_TEST_DATA_DIR "/ocio/config.ocio";
+    ScriptedSession run(PTVIEW_ASSETS_DIR "/scenes/cornell.json", "ocio-config " + config + "\nocio-view matrix\n");
+    EXPECT_EQ(run.runner.exitCode(), 0);
+    const ViewerModel& model = run.session->model();
+    EXPECT_EQ(model.display.toneMapper, ToneMapper::Ocio);
+    EXPECT_EQ(model.ocio.config, config);
+    EXPECT_EQ(model.ocio.display, "test");
+    EXPECT_EQ(model.ocio.view, "matrix");
+    ASSERT_EQ(run.session->ocioDisplays().size(), 1u);
+    EXPECT_EQ(run.session->ocioDisplays()[0].views.size(), 3u);
+    ASSERT_NE(run.session->tracer(ViewerSession::Side::Left).ocioView(), nullptr);
+    EXPECT_EQ(run.session->tracer(ViewerSession::Side::Left).ocioView()->view(), "matrix");
+
+    ScriptedSession bad(PTVIEW_ASSETS_DIR "/scenes/cornell.json", "ocio-config " + config + "\nocio-view Filmic\n");
+    EXPECT_EQ(bad.runner.exitCode(), 2);
+    EXPECT_NE(bad.session->model().ocioError.find("has no view \"Filmic\""), std::string::npos) << bad.session->model().ocioError;
+    EXPECT_EQ(bad.session->model().ocio.view, "square root") << "the view shown stays";
+    EXPECT_EQ(bad.session->tracer(ViewerSession::Side::Left).ocioView()->view(), "square root");
+
+    ScriptedSession missing(PTVIEW_ASSETS_DIR "/scenes/cornell.json", "ocio-config /nonexistent/config.ocio\n");
+    EXPECT_EQ(missing.runner.exitCode(), 2);
+    EXPECT_NE(missing.session->model().ocioError.find("/nonexistent/config.ocio: "), std::string::npos);
+    EXPECT_EQ(missing.session->model().display.toneMapper, ToneMapper::Reinhard) << "the transform shown stays";
+}
+
 // A texture file that does not load ends the script naming the file (exit code 2, as every failing
 // command), and the material keeps the texture it had.
 TEST(ScriptRunner, ATextureThatDoesNotLoadFailsNamingItAndKeepsTheMaterial) {

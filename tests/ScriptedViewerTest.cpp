@@ -4,6 +4,7 @@
 // the Materials panel loads, refuses and removes a texture by mouse.
 #include <ptview/io/ExrIO.h>
 #include <ptview/io/ImageIO.h>
+#include <ptview/io/PngText.h>
 #include <ptview/provenance/Provenance.h>
 #include "RunCommand.h"
 #include <ptview/scene/Scene.h>
@@ -222,6 +223,45 @@ quit
     EXPECT_EQ(notice.rfind("\"saved screenshots/", 0), 0u) << notice;
     EXPECT_NE(notice.find(".png, "), std::string::npos) << notice;
     EXPECT_NE(notice.find(".exr"), std::string::npos) << notice;
+    fs::remove_all(directory);
+}
+
+// The real viewer started with --ocio-config shows the view, a script switches views, and the
+// screenshots (the display pass read back) have each view's values and record it.
+TEST_F(ScriptedViewer, OcioViewsFromTheCommandLineAndTheScriptReachTheScreenshots) {
+    fs::path directory = freshDirectory("ocio");
+    std::ofstream(directory / "env.json") << R"({"camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40,
+        "resolution": [64, 64]}, "environment": {"color": [0.8, 0.8, 0.4]}, "materials": {}, "shapes": []})";
+    const std::string config = PTVIEW_TEST_DATA_DIR "/ocio/config.ocio";
+    testing::CommandResult result = runViewer(directory, (directory / "env.json").string(), R"(resolution-scale 0.125
+wait-spp 1
+screenshot matrix.png
+ocio-view lut
+wait-spp 1
+screenshot lut.png
+quit
+)", "--ocio-config " + testing::shellQuoted(config) + " --ocio-view matrix");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    auto firstPixel = [&directory](const char* name) {
+        int width = 0, height = 0, channels = 0;
+        unsigned char* pixels = stbi_load((directory / name).string().c_str(), &width, &height, &channels, 4);
+        std::vector<double> rgb = pixels ? std::vector<double>{double(pixels[0]), double(pixels[1]), double(pixels[2])}
+                                         : std::vector<double>{};
+        stbi_image_free(pixels);
+        return rgb;
+    };
+    const std::vector<double> matrix = firstPixel("matrix.png"), lut = firstPixel("lut.png");
+    ASSERT_EQ(matrix.size(), 3u);
+    ASSERT_EQ(lut.size(), 3u);
+    const double matrixExpected[3] = {0.4, 0.2, 0.4};  // (0.5 r, 0.25 g, b)
+    const double lutExpected[3] = {0.65, 0.65, 0.175}; // x^2 between quarters: 0.5625 + 0.2 * 0.4375, 0.0625 + 0.6 * 0.1875
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(matrix[c], 255.0 * matrixExpected[c], 1.0) << c;
+        EXPECT_NEAR(lut[c], 255.0 * lutExpected[c], 1.0) << c;
+    }
+    const std::string settings = *readPngTextFile(directory / "lut.png").find("ptview.settings");
+    EXPECT_NE(settings.find("\"ocio_view\": \"lut\""), std::string::npos) << settings;
+    EXPECT_NE(settings.find("\"tone_mapper\": \"ocio\""), std::string::npos) << settings;
     fs::remove_all(directory);
 }
 

@@ -189,7 +189,8 @@ TEST_F(StrangerFiles, RenderFromAppliesOrRefusesEachOtherOption) {
     const fs::path out = dir_ / "out.png";
     for (const std::string option : {"--integrator naive", "--size 8x8", "--depth 2", "--seed 3", "--exposure 1",
                                      "--aperture-radius 0.1", "--focus-distance 2", "--backend compute", "--all-features",
-                                     "--clamp 5", "--sampler random", "--view albedo", "--tone-mapper aces"}) {
+                                     "--clamp 5", "--sampler random", "--view albedo", "--tone-mapper aces",
+                                     "--display-transfer gamma-2.2", "--ocio-view Filmic"}) {
         const testing::CommandResult result = run("render --from " + quoted(image) + " --out " + quoted(out) + " " + option);
         EXPECT_EQ(result.exitCode, 2) << option << "\n" << result.output;
         EXPECT_NE(result.output.find(option.substr(0, option.find(' ')) + " cannot go with --from"), std::string::npos)

@@ -115,13 +115,17 @@ zoom 4
 zoom fit
 pan 12 -3.5
 compare-sides image-view
+display-transfer gamma-2.2
+ocio-config looks/config.ocio
+ocio-display sRGB
+ocio-view Filmic Log
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 74u);
+    ASSERT_EQ(script.commands.size(), 78u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -129,6 +133,8 @@ TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     EXPECT_EQ(std::set<std::string>(verbs.begin(), verbs.end()), referenceVerbs());
 
     for (std::size_t i = 0; i < script.commands.size(); ++i) EXPECT_EQ(script.commands[i].line, int(i) + 1);
+    // An OpenColorIO view's name is the rest of the line, spaces included.
+    EXPECT_EQ(script.commands.back().words, std::vector<std::string>{"Filmic Log"});
 
     const auto& c = script.commands;
     EXPECT_EQ(c[0].verb, "integrator");
@@ -216,7 +222,7 @@ TEST(ViewerScript, UnknownNamesListTheValidOnes) {
     EXPECT_EQ(errorOf("sampler halton"),
               "s.txt:1: sampler: unknown sampler \"halton\" (valid: random, grid, stratified, sobol)");
     EXPECT_EQ(errorOf("tone-mapper filmic"),
-              "s.txt:1: tone-mapper: unknown tone mapper \"filmic\" (valid: reinhard, aces, clamp)");
+              "s.txt:1: tone-mapper: unknown tone mapper \"filmic\" (valid: reinhard, aces, clamp, agx, ocio)");
     EXPECT_EQ(errorOf("compare yes"), "s.txt:1: compare: unknown value \"yes\" (valid: on, off)");
     std::string type = errorOf("set-material m.type velvet");
     EXPECT_NE(type.find("s.txt:1: set-material: type: unknown material type \"velvet\" (valid: diffuse, emitter,"),
@@ -382,7 +388,7 @@ TEST(ViewerScript, ViewAndZoomCommandsParseWithinTheirRanges) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 69u);
+    EXPECT_EQ(referenceVerbs().size(), 73u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

@@ -99,6 +99,12 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
         ->check(kFiniteNumber)->check(inRange(settingRanges::kExposure))->capture_default_str();
     addNamedOption(app, "--tone-mapper", display.toneMapper, "tone mapper", toneMapperNames().namesAndValues())
         ->default_str(toneMapperName(display.toneMapper));
+    std::string transfers = "display encoding after the tone mapper:";
+    for (const EnumEntry<DisplayTransfer>& entry : displayTransferNames())
+        transfers += std::string("\n  ") + entry.name + ": " + entry.description;
+    addNamedOption(app, "--display-transfer", display.transfer, "display transfer", displayTransferNames().namesAndValues())
+        ->description(transfers)
+        ->default_str(displayTransferNames().name(display.transfer));
     addNamedOption(app, "--view", settings.debugView, "view", debugViewNames().namesAndValues())
         ->description("view: radiance (the render), normals, albedo or depth (of the first surface seen)")
         ->default_str("radiance");
@@ -208,6 +214,16 @@ void addAllowDirOption(CLI::App& app, std::vector<std::filesystem::path>& direct
         ->check(CLI::ExistingDirectory)->type_name("DIR");
 }
 
+// --ocio-config and its display and view (docs/colour.md). The config is loaded after parsing
+// (OcioView), which names the file and the missing display or view.
+void addOcioOptions(CLI::App& app, OcioRequest& ocio) {
+    app.add_option("--ocio-config", ocio.config,
+                   "show the image through a display and view of this OpenColorIO config (sets --tone-mapper ocio); "
+                   "the OCIO environment variable is not read");
+    app.add_option("--ocio-display", ocio.display, "the OpenColorIO display (default: the config's default display)");
+    app.add_option("--ocio-view", ocio.view, "the OpenColorIO view of that display (default: the display's default view)");
+}
+
 // ---- the viewer (no subcommand) and each subcommand: its options, then what is decided once they
 // are parsed, which returns the exit code when they do not go together.
 
@@ -215,6 +231,7 @@ void addViewerOptions(CLI::App& app, ViewerOptions& viewer) {
     viewer.scenePath = PTVIEW_DEFAULT_SCENE;
     app.add_option("scene", viewer.scenePath, "scene JSON to open, or a .png/.exr ptview wrote (its scene and settings)")->capture_default_str();
     addRenderSettings(app, viewer.settings, viewer.display);
+    addOcioOptions(app, viewer.ocio);
     addDenoiseOptions(app, viewer.denoise);
     addProgramOptions(app, viewer.program);
     app.add_option("--frames", viewer.frames, "render this many frames (at least until the first sample is complete), save --screenshot and exit")
@@ -278,6 +295,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
         ->each([&render](const std::string&) { render.samplesPerPixelGiven = true; });
     addSizeOption(*command, render.size, "image size WxH (default: the scene's resolution)");
     addRenderSettings(*command, render.settings, render.display);
+    addOcioOptions(*command, render.ocio);
     addDenoiseOptions(*command, render.denoise);
     addProgramOptions(*command, render.program);
     command->add_option("--dump-shader", render.dumpShaderPath, "write the exact GLSL of the path-tracing program to FILE");
@@ -296,8 +314,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
 // What `render --from FILE` does with the other options: these apply (docs/output.md), and are
 // recorded in the new file's provenance where they change it (--spp); every other option would
 // render something else than FILE records, so it is refused rather than ignored or half applied.
-const std::vector<std::string> kOptionsThatApplyWithFrom = {"--out",  "--exr-type",    "--aovs",           "--spp",
-                                                            "--time", "--dump-shader", "--print-features", "--allow-dir"};
+// --ocio-config names the config file of the OpenColorIO view FILE records (a file never names
+// one to load itself).
+const std::vector<std::string> kOptionsThatApplyWithFrom = {"--out",         "--exr-type",       "--aovs",      "--spp",
+                                                            "--time",        "--dump-shader",    "--print-features",
+                                                            "--allow-dir",   "--ocio-config"};
 
 std::optional<int> finishRenderOptions(const CLI::App& command, const RenderOptions& render) {
     if (render.scenePath.empty() == render.fromPath.empty()) {

@@ -2,6 +2,7 @@
 // What the user asked for on the command line.
 
 #include <ptview/settings/Backend.h>
+#include <ptview/settings/OcioRequest.h>
 #include <ptview/io/ExrIO.h>
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/probes/WarpProbe.h>
@@ -28,7 +29,7 @@ enum class Aov { Albedo, Normal, Depth, Variance };
 
 struct RenderOptions {
     std::string scenePath;
-    std::string outPath;            // .png (tone mapped, 8-bit sRGB-like gamma 2.2), .pfm or .exr (linear)
+    std::string outPath;            // .png (tone mapped, 8-bit sRGB), .pfm or .exr (linear)
     std::string fromPath;           // --from: a .png or .exr whose metadata gives the scene and settings
     ExrPixelType exrType = ExrPixelType::Float; // --exr-type
     std::vector<Aov> aovs;          // --aovs (EXR only)
@@ -37,6 +38,7 @@ struct RenderOptions {
     std::optional<glm::ivec2> size; // default: the scene camera's resolution
     RenderSettings settings;
     DisplaySettings display;
+    OcioRequest ocio;               // --ocio-config, --ocio-display, --ocio-view
     DenoiseSettings denoise;        // --denoise: the image written is the denoised mean
     ProgramOptions program;
     std::string dumpShaderPath; // --dump-shader: the exact GLSL compiled
@@ -51,6 +53,7 @@ struct ViewerOptions {
     std::string scenePath;
     RenderSettings settings;
     DisplaySettings display;
+    OcioRequest ocio;            // --ocio-config, --ocio-display, --ocio-view
     DenoiseSettings denoise;     // --denoise: the viewer starts with the denoiser on
     ProgramOptions program;
     int frames = 0;              // > 0: render this many frames, save the screenshot, exit

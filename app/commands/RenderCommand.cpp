@@ -1,4 +1,5 @@
 #include <ptview/commands/RenderCommand.h>
+#include <ptview/commands/OcioOption.h>
 
 #include <ptview/commands/CommandErrors.h>
 #include <ptview/scene/EnvironmentMap.h>
@@ -135,6 +136,9 @@ int runRenderCommand(const RenderOptions& requested) {
         options.scenePath = options.fromPath; // what the progress and error messages name
     }
     if (!input) return kExitBadInput;
+    const std::optional<std::shared_ptr<const OcioView>> ocio =
+        resolveOcioView(requested.ocio, from ? &from->recipe : nullptr, options.fromPath, options.display.toneMapper);
+    if (!ocio) return kExitBadInput;
     Scene scene = std::move(input->scene);
     glm::ivec2 size = options.size.value_or(scene.camera.resolution);
     if (options.apertureRadius) scene.camera.apertureRadius = *options.apertureRadius;
@@ -215,8 +219,12 @@ int runRenderCommand(const RenderOptions& requested) {
             denoiseSeconds = secondsSince(denoiseStart);
             display.denoised = true;
         }
-        const RenderRecipe recipe{settings, display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures,
-                                  options.denoise};
+        RenderRecipe recipe{settings, display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures,
+                            options.denoise, {}};
+        if (*ocio) {
+            tracer.setOcioView(*ocio);
+            recipe.ocio = {(*ocio)->configPath().string(), (*ocio)->display(), (*ocio)->view()};
+        }
         if (from && from->device != context.description())
             printMessage("warning: " + options.fromPath + " was rendered on " + from->device + ", this is " +
                              context.description() + ": the pixels may differ");

@@ -5,6 +5,7 @@
 
 #include <ptview/settings/Backend.h>
 #include <ptview/settings/DenoiseSettings.h>
+#include <ptview/settings/OcioRequest.h>
 #include <ptview/scene/EnvironmentMap.h>
 #include <ptview/model/ImageZoom.h>
 #include <ptview/io/Image.h>
@@ -87,10 +88,14 @@ struct ViewerModel {
         kRestart = 8u,          // nothing changed, but the user asked to start over
     };
     unsigned pendingChanges = 0;
+    // The OpenColorIO view ToneMapper::Ocio shows (ViewerSession::setOcioView; empty config: none),
+    // with the display and view named even where the config's defaults chose them.
+    OcioRequest ocio;
 
     // Shown in the UI until the next success of the same kind.
     std::string sceneError;  // the last scene or environment map that could not be read
     std::string shaderError; // the last shader reload that did not compile
+    std::string ocioError;   // the last OpenColorIO config, display or view that could not be used
     std::string notice;      // the outcome of the last action (a saved screenshot, a reload)
 };
 

@@ -106,6 +106,13 @@ ArgSpec pathArg(std::vector<const char*> extensions = {}, const char* keyword = 
     return arg;
 }
 
+// A name that may hold spaces (an OpenColorIO display or view): the rest of the line, as a path is.
+ArgSpec restOfLineArg(const char* meta) {
+    ArgSpec arg = pathArg();
+    arg.meta = meta;
+    return arg;
+}
+
 ArgSpec tokenArg(const char* meta) {
     ArgSpec arg;
     arg.meta = meta, arg.type = ArgType::Token;
@@ -121,6 +128,7 @@ std::vector<std::string> integratorChoices() { return integratorNames().names();
 std::vector<std::string> samplerChoices() { return samplerModeNames().names(); }
 std::vector<std::string> lightPathsChoices() { return lightPathsNames().names(); }
 std::vector<std::string> toneMapperChoices() { return toneMapperNames().names(); }
+std::vector<std::string> displayTransferChoices() { return displayTransferNames().names(); }
 std::vector<std::string> materialTypeChoices() {
     std::vector<std::string> names;
     for (const MaterialSchema& schema : kMaterialSchemas) names.emplace_back(schema.name);
@@ -215,6 +223,12 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"seed", {settingArg("N", settingRanges::kSeed)}, nullptr, "random seed (decorrelates renders of the same scene)"},
         {"exposure", {settingArg("F", settingRanges::kExposure)}, nullptr, "exposure in stops"},
         {"tone-mapper", {choiceArg("NAME", "tone mapper", toneMapperChoices)}, nullptr, "the display transform"},
+        {"display-transfer", {choiceArg("NAME", "display transfer", displayTransferChoices)}, nullptr,
+         "the display encoding: srgb, or gamma-2.2 as older files"},
+        {"ocio-config", {pathArg({".ocio"}, "none")}, nullptr,
+         "show the image through this OpenColorIO config's default display and view (tone mapper ocio), or none"},
+        {"ocio-display", {restOfLineArg("NAME")}, nullptr, "the OpenColorIO display (its default view)"},
+        {"ocio-view", {restOfLineArg("NAME")}, nullptr, "the OpenColorIO view of the display shown"},
         {"resolution-scale", {settingArg("F", settingRanges::kResolutionScale)}, nullptr, "render resolution relative to the window"},
         {"samples-per-frame", {settingArg("N", settingRanges::kSamplesPerFrame, "auto")}, nullptr,
          "samples per pixel each frame, or auto (keep the frame rate interactive)"},

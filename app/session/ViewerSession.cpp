@@ -453,8 +453,9 @@ ImageMetadata ViewerSession::provenance(Side side) const {
     denoise.enabled = showsDenoised(side) && tracer.hasDenoised();
     DisplaySettings display = displaySettings(side);
     display.denoised = denoise.enabled;
-    const RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                              programOptions_.allFeatures, denoise};
+    RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
+                        programOptions_.allFeatures, denoise, {}};
+    if (display.toneMapper == ToneMapper::Ocio) recipe.ocio = model_.ocio;
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
 
@@ -521,6 +522,37 @@ void ViewerSession::reloadShaders() {
     } catch (const ShaderError& e) {
         model_.shaderError = e.what();
     }
+}
+
+bool ViewerSession::setOcioView(const OcioRequest& request) {
+    try {
+        std::shared_ptr<const OcioView> view;
+        std::vector<OcioDisplayViews> displays;
+        if (!request.config.empty()) {
+            view = std::make_shared<const OcioView>(request.config, request.display, request.view);
+            displays = OcioView::displaysAndViews(request.config);
+        }
+        left_.tracer->setOcioView(view);
+        if (right_) right_->tracer->setOcioView(view);
+        ocioView_ = view;
+        ocioDisplays_ = std::move(displays);
+        model_.ocioError.clear();
+        if (view) {
+            model_.ocio = {request.config, view->display(), view->view()};
+            model_.display.toneMapper = ToneMapper::Ocio;
+            model_.notice = "showing the OpenColorIO view " + view->label();
+        } else {
+            model_.ocio = {};
+            if (model_.display.toneMapper == ToneMapper::Ocio) model_.display.toneMapper = ToneMapper::Reinhard;
+        }
+        return true;
+    } catch (const OcioError& e) {
+        model_.ocioError = e.what();
+    } catch (const ShaderError& e) {
+        model_.ocioError = request.config + ": OpenColorIO's shader for this view does not compile: " + e.what();
+        left_.tracer->setOcioView(ocioView_); // the left may have taken it before the right refused
+    }
+    return false;
 }
 
 void ViewerSession::setImageArea(PixelRect area) {
@@ -616,6 +648,7 @@ void ViewerSession::update() {
                                                                      PathTracerOptions{programOptions_.allFeatures, model_.backend},
                                                                      RenderSettings{}, shaderDir_));
         right_->tracer->setPreviewEnabled(true);
+        if (ocioView_) right_->tracer->setOcioView(ocioView_); // compiled once already, on the left
     }
     try {
         syncView(left_, effectiveSettings(model_.settings), changes);

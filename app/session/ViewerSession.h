@@ -85,6 +85,12 @@ public:
     std::shared_ptr<const ImageRgbF> otherImageFor(DisplayView view) const;
     // Why a side cannot show the view asked for (it shows the image instead), or "" when it can.
     std::string viewProblem(Side side) const;
+    // Shows the image through an OpenColorIO display and view (empty: the config's defaults) and
+    // picks ToneMapper::Ocio; an empty config removes the view. A config that does not load, or
+    // lacks the display or view, sets model().ocioError and keeps the transform shown.
+    bool setOcioView(const OcioRequest& request);
+    // The loaded config's displays and their views (empty without one): what the Render panel offers.
+    const std::vector<OcioDisplayViews>& ocioDisplays() const { return ocioDisplays_; }
     void resetCamera();                                          // to the scene file's camera
     // Click-to-focus: sets the camera's focus distance to the distance along the view direction of
     // the surface seen at `imageFraction` of the image (x right, y down from its top-left corner,
@@ -270,6 +276,8 @@ private:
     PathTracerOptions programOptions_;
     View left_;
     std::unique_ptr<View> right_; // created the first time compare mode is turned on
+    std::shared_ptr<const OcioView> ocioView_; // on every tracer (PathTracer::setOcioView)
+    std::vector<OcioDisplayViews> ocioDisplays_;
     PixelRect imageArea_;
     glm::ivec2 renderSize_{0, 0};
     glm::ivec2 wantedSize_{0, 0};                 // wantedRenderSize() as last seen

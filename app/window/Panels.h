@@ -24,6 +24,7 @@ struct PanelState {
     std::string environmentPathInput; // Environment panel: likewise, for an .hdr
     std::string referencePathInput;   // Stats panel: a reference image (.pfm, .exr)
     std::string compareImagePathInput; // Render panel's view controls: the difference views' image
+    std::string ocioConfigInput;      // Render panel: an OpenColorIO config.ocio
     std::string screenshotMessage;    // Render panel: where the last screenshot went (or why not)
     bool screenshotFailed = false;
     // The same, briefly on the image (kImageNoticeSeconds), where it is seen with the sidebar
@@ -77,8 +78,8 @@ void drawPathsSection(ViewerSession& session, PanelState& state, glm::ivec2 pixe
 // The pinned pixel's traced paths and the selected one's vertex table: in the Pixel panel, or in
 // its own window (ownWindow, popped out: the table then shows every column without scrolling sideways).
 void drawTracedPathsTable(ViewerSession& session, PanelState& state, bool ownWindow);
-// The Render panel's view, NaN highlight and light-path explorer controls (also in their own window).
-void drawViewControls(ViewerModel& model);
+// The Render panel's debug view, NaN highlight and light-path explorer controls (also in their own window).
+void drawLightPathControls(ViewerModel& model);
 // The Render panel's split-view controls (also in their own window).
 void drawCompareControls(ViewerModel& model);
 // The modal "Unsaved edits" question while state.unsavedEdits has an action waiting: Save,

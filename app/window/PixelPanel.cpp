@@ -107,7 +107,7 @@ void drawPixelPanel(ViewerSession& session, PanelState& state) {
     ImGui::SameLine();
     ImGui::ColorButton("##shown", ImVec4(reading.displayed.x / 255.0f, reading.displayed.y / 255.0f, reading.displayed.z / 255.0f, 1.0f),
                        ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFontSize(), ImGui::GetFontSize()));
-    itemTooltip("8-bit sRGB as the display pass shows it: exposure, tone mapper and gamma applied\n"
+    itemTooltip("8-bit sRGB as the display pass shows it: exposure, tone mapper and display encoding applied\n"
                 "(of the denoised value where the image shown is denoised)");
     const char* status = finiteStatus(reading.mean);
     if (std::string(status) == "finite") ImGui::TextUnformatted("mean is finite");

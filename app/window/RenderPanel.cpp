@@ -84,6 +84,35 @@ void compareSidesControls(ViewerModel& model) {
     model.compare.sides = static_cast<CompareSides>(sides);
 }
 
+// An OpenColorIO config typed or loaded with --ocio-config, its displays and their views.
+void ocioControls(ViewerSession& session, PanelState& state) {
+    ViewerModel& model = session.model();
+    ImGui::PushID("ocio");
+    ImGui::TextUnformatted("OpenColorIO config");
+    itemTooltip("a config.ocio (Blender's, ACES, your own): its displays and views become the tone mapper \"ocio\"");
+    if (pathField("Load", state.ocioConfigInput)) session.setOcioView({state.ocioConfigInput, "", ""});
+    if (!model.ocio.config.empty()) {
+        ImGui::TextWrapped("%s", printableText(model.ocio.config).c_str());
+        const OcioRequest current = model.ocio;
+        if (ImGui::BeginCombo("display", current.display.c_str())) {
+            for (const OcioDisplayViews& display : session.ocioDisplays())
+                if (ImGui::Selectable(display.display.c_str(), display.display == current.display))
+                    session.setOcioView({current.config, display.display, ""});
+            ImGui::EndCombo();
+        }
+        if (ImGui::BeginCombo("view", current.view.c_str())) {
+            for (const OcioDisplayViews& display : session.ocioDisplays())
+                if (display.display == current.display)
+                    for (const std::string& view : display.views)
+                        if (ImGui::Selectable(view.c_str(), view == current.view)) session.setOcioView({current.config, current.display, view});
+            ImGui::EndCombo();
+        }
+        if (ImGui::Button("Remove config")) session.setOcioView({});
+    }
+    if (!model.ocioError.empty()) errorText(model.ocioError);
+    ImGui::PopID();
+}
+
 } // namespace
 
 void saveScreenshots(ViewerSession& session, PanelState& state) {
@@ -103,7 +132,7 @@ void saveScreenshots(ViewerSession& session, PanelState& state) {
     state.imageNoticeSince = std::chrono::steady_clock::now();
 }
 
-void drawViewControls(ViewerModel& model) {
+void drawLightPathControls(ViewerModel& model) {
     RenderSettings& settings = model.settings;
     enumCombo("view", debugViewNames(), settings.debugView);
     itemTooltip("radiance: the render; normals and albedo: the first surface the camera sees (debug views)");
@@ -172,12 +201,23 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
                        settingRanges::kResolutionScale.panelHi, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
 
-    if (state.detached.drawInSidebar(DetachableSection::LightPaths)) drawViewControls(model);
+    if (state.detached.drawInSidebar(DetachableSection::LightPaths)) drawLightPathControls(model);
 
     ImGui::Separator();
     ImGui::SliderFloat("exposure", &model.display.exposureStops, settingRanges::kExposure.panelLo, settingRanges::kExposure.panelHi,
                        "%+.1f stops", ImGuiSliderFlags_AlwaysClamp);
-    enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper);
+    if (enumCombo("tone mapper", toneMapperNames(), model.display.toneMapper) && model.display.toneMapper == ToneMapper::Ocio &&
+        model.ocio.config.empty()) {
+        model.display.toneMapper = ToneMapper::Reinhard; // nothing to show yet
+        model.ocioError = "load an OpenColorIO config first (below)";
+    }
+    ImGui::BeginDisabled(model.display.toneMapper == ToneMapper::Ocio);
+    enumCombo("display transfer", displayTransferNames(), model.display.transfer);
+    ImGui::EndDisabled();
+    itemTooltip("how the tone-mapped values are encoded for the screen and a saved PNG: the exact sRGB curve,\n"
+                "or gamma 2.2 as ptview wrote images before (a file opened with --from keeps its own);\n"
+                "an OpenColorIO view encodes for its display itself");
+    ocioControls(session, state);
     drawViewControls(session, state);
 
     ImGui::Separator();

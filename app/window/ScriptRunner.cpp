@@ -32,6 +32,9 @@ using Clock = std::chrono::steady_clock;
 // The parser checked the names: the fallbacks are unreachable.
 Integrator integratorNamed(const std::string& name) { return integratorNames().parse(name).value_or(Integrator::Naive); }
 ToneMapper toneMapperNamed(const std::string& name) { return toneMapperNames().parse(name).value_or(ToneMapper::Reinhard); }
+DisplayTransfer displayTransferNamed(const std::string& name) {
+    return displayTransferNames().parse(name).value_or(DisplayTransfer::Srgb);
+}
 
 // Quoted for the status line: one line, quotes and backslashes escaped. Scene paths and errors
 // may come from a file someone sent: its control characters are shown as escapes (PrintableText.h).
@@ -494,6 +497,16 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"seed", [](Step& s) { s.model.settings.seed = s.command.unsignedInteger(0); }},
         {"exposure", [](Step& s) { s.model.display.exposureStops = s.command.number(0); }},
         {"tone-mapper", [](Step& s) { s.model.display.toneMapper = toneMapperNamed(s.word); }},
+        {"display-transfer", [](Step& s) { s.model.display.transfer = displayTransferNamed(s.word); }},
+        {"ocio-config", [](Step& s) {
+             if (!s.session.setOcioView({pathOrNone(s).string(), "", ""})) s.fail(s.model.ocioError);
+         }},
+        {"ocio-display", [](Step& s) {
+             if (!s.session.setOcioView({s.model.ocio.config, s.word, ""})) s.fail(s.model.ocioError);
+         }},
+        {"ocio-view", [](Step& s) {
+             if (!s.session.setOcioView({s.model.ocio.config, s.model.ocio.display, s.word})) s.fail(s.model.ocioError);
+         }},
         {"resolution-scale", [](Step& s) { s.model.resolutionScale = s.command.number(0); }},
         {"samples-per-frame",
          [](Step& s) { s.model.maxSamplesPerFrame = s.command.isWord(0, "auto") ? 0 : s.command.integer(0); }},

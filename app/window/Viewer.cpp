@@ -5,6 +5,7 @@
 #include <ptview/model/CameraController.h>
 #include <ptview/io/ImageIO.h>
 #include <ptview/window/MaterialsPanel.h>
+#include <ptview/commands/OcioOption.h>
 #include <ptview/commands/OutputPath.h>
 #include <ptview/window/PanelText.h>
 #include <ptview/window/PanelWidgets.h>
@@ -596,7 +597,7 @@ void ViewerWindow::drawDetachedWindows() {
                         [&] { drawTracedPathsTable(session_, panelState_, true); });
     detached.drawWindow(DetachableSection::LightPaths, ImVec2(26.0f * em, 0.0f), ImVec2(1.0f, 0.0f), [&] {
         ImGui::PushItemWidth(-ImGui::CalcTextSize("bounces k").x - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x);
-        drawViewControls(session_.model());
+        drawLightPathControls(session_.model());
         ImGui::PopItemWidth();
     });
     detached.drawWindow(DetachableSection::Compare, ImVec2(26.0f * em, 0.0f), ImVec2(1.0f, 0.3f), [&] {
@@ -1003,6 +1004,12 @@ int runViewer(const ViewerOptions& requested) {
     // A file outside the folders a sent file may read is a question for the user; anything else
     // wrong is bad input, reported before any window opens.
     if (!input && scope.refusedFiles().empty()) return kExitBadInput;
+    // Checked before any window opens: bad input leaves with the message and exit 2. An image's
+    // recorded display and view are in `from` once it loaded.
+    ToneMapper toneMapper = from ? from->recipe.display.toneMapper : options.display.toneMapper;
+    const std::optional<std::shared_ptr<const OcioView>> ocio =
+        resolveOcioView(requested.ocio, from ? &from->recipe : nullptr, options.scenePath, toneMapper);
+    if (!ocio) return kExitBadInput;
 
     // Init the window. Destroyed in the reverse order: ImGui, the window, GLFW.
     glfwSetErrorCallback(reportGlfwError);
@@ -1044,6 +1051,10 @@ int runViewer(const ViewerOptions& requested) {
         ViewerSession session(std::move(*input), options.settings, options.display, options.shaderDir,
                               options.program);
         session.model().denoise = options.denoise; // --denoise, or the denoiser an opened image was made with
+        if (*ocio && !session.setOcioView({(*ocio)->configPath().string(), (*ocio)->display(), (*ocio)->view()})) {
+            printMessage(session.model().ocioError);
+            return kExitBadInput;
+        }
         if (!options.referencePath.empty() && !session.setReference(options.referencePath)) {
             printMessage(session.model().sceneError);
             return kExitBadInput;

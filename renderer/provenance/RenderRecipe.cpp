@@ -17,6 +17,9 @@ struct RecipeField {
     const char* key;
     std::function<Json(const RenderRecipe&)> write;
     std::function<void(const Json&, RenderRecipe&)> read; // throws nlohmann's or RecipeError
+    // What a file without the key meant, where that is not RenderRecipe's default (a default that
+    // changed); empty: the default.
+    std::function<void(RenderRecipe&)> absent = {};
 };
 
 // A value of the file as a message quotes it: JSON (so controls are escaped), cut at 40 characters
@@ -72,6 +75,17 @@ RecipeField enumField(const char* key, const Table& (*table)(), Member member) {
             }};
 }
 
+// A string of at most 4096 bytes (a path or a name).
+template <typename Member>
+RecipeField stringField(const char* key, Member member) {
+    return {key, [member](const RenderRecipe& r) { return Json(member(const_cast<RenderRecipe&>(r))); },
+            [member](const Json& j, RenderRecipe& r) {
+                std::string value = j.get<std::string>();
+                if (value.size() > 4096) throw RecipeError("a string of " + std::to_string(value.size()) + " bytes, more than 4096");
+                member(r) = std::move(value);
+            }};
+}
+
 // An optional number in its range: null when absent (e.g. no --clamp).
 template <typename Member>
 RecipeField optionalNumberField(const char* key, const NumberRange& range, Member member) {
@@ -85,6 +99,11 @@ RecipeField optionalNumberField(const char* key, const NumberRange& range, Membe
                 if (j.is_null()) value.reset();
                 else value = numberInRange<typename std::decay_t<decltype(value)>::value_type>(j, range);
             }};
+}
+
+RecipeField withAbsent(RecipeField field, std::function<void(RenderRecipe&)> absent) {
+    field.absent = std::move(absent);
+    return field;
 }
 
 const std::vector<RecipeField>& recipeFields() {
@@ -104,6 +123,12 @@ const std::vector<RecipeField>& recipeFields() {
         boolField("all_features", [](RenderRecipe& r) -> auto& { return r.allFeatures; }),
         numberField("exposure_stops", settingRanges::kExposure, [](RenderRecipe& r) -> auto& { return r.display.exposureStops; }),
         enumField("tone_mapper", toneMapperNames, [](RenderRecipe& r) -> auto& { return r.display.toneMapper; }),
+        withAbsent(enumField("display_transfer", displayTransferNames, [](RenderRecipe& r) -> auto& { return r.display.transfer; }),
+                   // Files from before the sRGB curve were encoded with gamma 2.2.
+                   [](RenderRecipe& r) { r.display.transfer = DisplayTransfer::Gamma22; }),
+        stringField("ocio_config", [](RenderRecipe& r) -> auto& { return r.ocio.config; }),
+        stringField("ocio_display", [](RenderRecipe& r) -> auto& { return r.ocio.display; }),
+        stringField("ocio_view", [](RenderRecipe& r) -> auto& { return r.ocio.view; }),
         boolField("highlight_non_finite", [](RenderRecipe& r) -> auto& { return r.display.highlightNonFinite; }),
         boolField("denoise", [](RenderRecipe& r) -> auto& { return r.denoise.enabled; }),
         numberField("denoise_iterations", settingRanges::kDenoiseIterations, [](RenderRecipe& r) -> auto& { return r.denoise.iterations; }),
@@ -142,7 +167,10 @@ RenderRecipe recipeFromJson(const std::string& text, const std::string& where) {
     RenderRecipe recipe;
     for (const RecipeField& field : recipeFields()) {
         auto it = json.find(field.key);
-        if (it == json.end()) continue;
+        if (it == json.end()) {
+            if (field.absent) field.absent(recipe);
+            continue;
+        }
         try {
             field.read(*it, recipe);
         } catch (const Json::exception& e) {

@@ -4,6 +4,7 @@
 
 #include <ptview/settings/Backend.h>
 #include <ptview/settings/DenoiseSettings.h>
+#include <ptview/settings/OcioRequest.h>
 #include <ptview/settings/RenderSettings.h>
 #include <ptview/settings/ToneMapper.h>
 
@@ -22,6 +23,10 @@ struct RenderRecipe {
     Backend backend = Backend::Fragment; // the program that ran (auto already decided)
     bool allFeatures = false;     // the uber-shader instead of the specialized program
     DenoiseSettings denoise;      // enabled: the image is the denoised mean (the raw one beside it in an EXR)
+    // With ToneMapper::Ocio: the config as it was given, and the display and view used. A file
+    // read back never loads `config` itself (it may come from anyone); `render --from` asks for
+    // --ocio-config again.
+    OcioRequest ocio;
 };
 
 class RecipeError : public std::runtime_error {
@@ -33,7 +38,8 @@ public:
 // that they read back bit for bit.
 std::string recipeToJson(const RenderRecipe& recipe);
 // Keys the table does not know are ignored and keys missing keep RenderRecipe's defaults (a file
-// from before a field existed reads as that field's default). Throws RecipeError naming `where`
+// from before a field existed reads as that field's default), except "display_transfer": a file
+// without it was written with gamma 2.2 and reads as DisplayTransfer::Gamma22. Throws RecipeError naming `where`
 // and the key for a value of the wrong type or an unknown name.
 RenderRecipe recipeFromJson(const std::string& json, const std::string& where);
 

@@ -26,7 +26,7 @@ static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture
 static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
 // The display program's own: the sums (0, 1), the sum of squares (2) and the other image (3).
 constexpr int kDisplaySumSquaresUnit = 2;
-constexpr int kDisplayOtherImageUnit = 3;
+constexpr int kDisplayOtherImageUnit = 3; // OcioLuts::kFirstUnit follows these
 
 // Our passes own all of this state; ImGui or a caller may have changed it.
 void resetPassState() {
@@ -45,10 +45,15 @@ bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
            std::tie(other.integrator, other.sampler, other.debugView, other.lightPaths, other.backend);
 }
 
-PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
+PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio) const {
     ShaderAssembler assembler(shaderDir_);
     addGeneratedGlsl(assembler);    // the tone mappers
     addDisplayViewGlsl(assembler);  // the views and the colour maps
+    if (ocio)
+        assembler.replaceWithText("view_transform_ocio.glsl",
+                                  "// OpenColorIO " + ocio->label() + "\n" + ocio->shader().glsl +
+                                      "\nvec3 ocioView(vec3 sceneLinear) {\n"
+                                      "    return clamp(ocioDisplayView(vec4(sceneLinear, 1.0)).rgb, 0.0, 1.0);\n}\n");
     DisplayProgram display;
     display.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("display.frag"));
     const GlProgram& show = *display.program;
@@ -59,6 +64,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
     display.invSampleCount = show.uniformLocation("uInvSampleCount");
     display.exposureScale = show.uniformLocation("uExposureScale");
     display.toneMapper = show.uniformLocation("uToneMapper");
+    display.displayTransfer = show.uniformLocation("uDisplayTransfer");
     display.highlightNonFinite = show.uniformLocation("uHighlightNonFinite");
     display.displayView = show.uniformLocation("uDisplayView");
     display.errorLog10Range = show.uniformLocation("uErrorLog10Range");
@@ -198,7 +204,7 @@ std::vector<BackendTiming> PathTracer::timeBackends() {
 
 PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions options)
     : shaderDir_(shaderDir), options_(options) {
-    display_ = buildDisplayProgram();
+    display_ = buildDisplayProgram(nullptr);
     if (options_.backend) setBackend(*options_.backend);
     emptyVertexArray_ = createVertexArray();
     frameUniformBuffer_ = createBuffer();
@@ -208,11 +214,21 @@ PathTracer::PathTracer(const std::filesystem::path& shaderDir, PathTracerOptions
     updateProgramKey();
 }
 
+void PathTracer::setOcioView(std::shared_ptr<const OcioView> view) {
+    DisplayProgram display = buildDisplayProgram(view.get()); // throws before anything changes
+    OcioLuts luts = view ? OcioLuts(view->shader()) : OcioLuts();
+    luts.attach(*display.program);
+    display_ = std::move(display);
+    ocioLuts_ = std::move(luts);
+    ocioView_ = std::move(view);
+}
+
 void PathTracer::reloadShaders() {
     // Everything is built before anything is replaced: a failure leaves the old programs running.
-    DisplayProgram display = buildDisplayProgram();
+    DisplayProgram display = buildDisplayProgram(ocioView_.get());
     TraceProgram trace = buildTraceProgram(programKey_);
     display_ = std::move(display);
+    ocioLuts_.attach(*display_.program);
     tracePrograms_.clear();
     surfaceProbe_.reset(); // built again from the new files when next asked
     attached_ = nullptr;
@@ -569,6 +585,7 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
+    glUniform1ui(display_.displayTransfer, static_cast<GLuint>(settings.transfer));
     glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
     // A view whose other image is missing, or of another size, shows the image instead.
     const bool otherFits = otherImage_ && otherImage_->width == accumulator_.size().x && otherImage_->height == accumulator_.size().y;
@@ -582,6 +599,7 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     glUniform1f(display_.differenceRange, std::max(settings.mapRange.differenceRange, kDifferenceRangeMin));
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
+    ocioLuts_.bind();
     if (denoised) {
         denoiser_->bindResult(0, 1);
     } else {

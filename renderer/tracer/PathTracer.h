@@ -20,6 +20,7 @@
 #include <ptview/gpudata/SurfaceHit.h>
 #include <ptview/gpu/ShaderFeatures.h>
 #include <ptview/settings/ToneMapper.h>
+#include <ptview/tracer/OcioLuts.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -46,6 +47,11 @@ public:
     // Recompiles the programs from shaderDir (after the files changed). Throws ShaderError and
     // keeps the current programs when the new ones do not build; restarts accumulation when they do.
     void reloadShaders();
+    // The OpenColorIO view that ToneMapper::Ocio shows (nullptr: none, and Ocio shows the values
+    // clamped). Rebuilds the display program with the view's GLSL and uploads its tables; throws
+    // ShaderError and keeps the current view when the program does not build.
+    void setOcioView(std::shared_ptr<const OcioView> view);
+    const OcioView* ocioView() const { return ocioView_.get(); }
     const std::filesystem::path& shaderDir() const { return shaderDir_; }
 
     // The program in use is specialized to the scene's features, the integrator, the sampler, the
@@ -206,6 +212,7 @@ private:
         GLint invSampleCount = -1;
         GLint exposureScale = -1;
         GLint toneMapper = -1;
+        GLint displayTransfer = -1;
         GLint highlightNonFinite = -1;
         GLint displayView = -1;
         GLint errorLog10Range = -1;
@@ -234,7 +241,7 @@ private:
         GLint tileEnd = -1;
     };
 
-    DisplayProgram buildDisplayProgram() const;
+    DisplayProgram buildDisplayProgram(const OcioView* ocio) const;
     TraceProgram buildTraceProgram(const ProgramKey& key) const;
     TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
     // The scene's and the environment map's samplers and uniform locations, looked up in program.
@@ -254,6 +261,8 @@ private:
     std::filesystem::path shaderDir_;
     PathTracerOptions options_;
     DisplayProgram display_;
+    std::shared_ptr<const OcioView> ocioView_;
+    OcioLuts ocioLuts_; // ocioView_'s tables, on the display program's units from OcioLuts::kFirstUnit
     std::map<ProgramKey, TraceProgram> tracePrograms_;
     ProgramKey programKey_;
     const TraceProgram* attached_ = nullptr; // the program the scene's uniforms were last found in
