@@ -104,13 +104,15 @@ denoise-strength 6
 denoise-iterations 4
 compare-sides raw-denoised
 compare-denoise on
+undo
+redo
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 63u);
+    ASSERT_EQ(script.commands.size(), 65u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -355,7 +357,7 @@ TEST(ViewerScript, LoadReadsTheFileAndReportsItsName) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 60u);
+    EXPECT_EQ(referenceVerbs().size(), 62u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
@@ -371,6 +373,16 @@ TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     EXPECT_NE(reference.find("camera-focus-at X Y"), std::string::npos);
     EXPECT_NE(reference.find("denoise-strength F"), std::string::npos);
     EXPECT_NE(reference.find("F: number in [0.25, 64]"), std::string::npos) << reference;
+}
+
+// undo and redo take no arguments; a stray one is a parse error before any window opens.
+TEST(ViewerScript, UndoAndRedoTakeNoArguments) {
+    EXPECT_EQ(verbsOf(parse("undo\nredo\nundo\n")), (std::vector<std::string>{"undo", "redo", "undo"}));
+    EXPECT_EQ(errorOf("undo 2"), "s.txt:1: undo: expected no arguments (undo), got 1");
+    EXPECT_EQ(errorOf("redo all"), "s.txt:1: redo: expected no arguments (redo), got 1");
+    EXPECT_NE(errorOf("undoo").find("did you mean \"undo\"?"), std::string::npos);
+    EXPECT_NE(std::string(viewerScriptReference()).find("undo                              undo the last scene edit"), std::string::npos)
+        << viewerScriptReference();
 }
 
 // The denoiser's commands take their ranges from SettingRanges.h, as --denoise-* and the panel do.
