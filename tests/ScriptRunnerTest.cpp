@@ -163,5 +163,60 @@ TEST(ScriptRunner, DenoiseCommandsSetTheModelsDenoiserAndSplit) {
     EXPECT_EQ(pushed.iterations, 3);
 }
 
+// `undo` and `redo` by script: each command's edit is one step; undo restores the value and the
+// render starts again for what changed (a material alone: no scene upload); redo brings it back.
+TEST(ScriptRunner, UndoAndRedoWalkTheScriptsEditsOneCommandAtATime) {
+    const std::filesystem::path cornell = PTVIEW_ASSETS_DIR "/scenes/cornell.json";
+    const Scene file = loadScene(cornell);
+    ScriptedSession run(cornell, "set-material red.color 0.1 0.1 0.9\ncamera-orbit 10 0\nenvironment-color 0.2 0.2 0.2\n");
+    ASSERT_EQ(run.runner.exitCode(), 0);
+    ViewerSession& session = *run.session;
+    EXPECT_EQ(session.history().undoSteps(), 3u);
+    EXPECT_EQ(session.history().undoLabel(), "environment colour");
+    while (session.stats(ViewerSession::Side::Left).samples < 1) session.renderFrame();
+
+    auto runScript = [&](const std::string& text) {
+        ScriptRunner runner(parseViewerScript(text, "u.txt"));
+        runner.step(session, run.panels);
+        return runner.exitCode();
+    };
+    EXPECT_EQ(runScript("undo\nundo\n"), 0);
+    EXPECT_EQ(run.panels.imageNotice, "undid camera");
+    EXPECT_EQ(session.model().scene.camera.eye, file.camera.eye);
+    EXPECT_EQ(session.model().scene.environment, file.environment);
+    EXPECT_EQ(session.model().pendingChanges, unsigned(ViewerModel::kSceneChanged | ViewerModel::kCameraChanged));
+    session.update();
+    EXPECT_EQ(session.stats(ViewerSession::Side::Left).samples, 0) << "the render restarted";
+    while (session.stats(ViewerSession::Side::Left).samples < 1) session.renderFrame();
+
+    EXPECT_EQ(runScript("undo\n"), 0);
+    EXPECT_EQ(run.panels.imageNotice, "undid albedo of 'red'");
+    EXPECT_EQ(run.material("red").color, glm::vec3(0.63f, 0.065f, 0.05f)) << "the file's";
+    EXPECT_EQ(session.model().pendingChanges, unsigned(ViewerModel::kMaterialsChanged)) << "materials only";
+    session.update();
+    EXPECT_EQ(session.stats(ViewerSession::Side::Left).samples, 0);
+
+    EXPECT_EQ(runScript("redo\n"), 0);
+    EXPECT_EQ(run.material("red").color, glm::vec3(0.1f, 0.1f, 0.9f));
+    EXPECT_EQ(run.panels.imageNotice, "redid albedo of 'red'");
+    // A new edit drops what was left to redo.
+    EXPECT_EQ(runScript("set-material white.color 0.5 0.5 0.5\n"), 0);
+    EXPECT_FALSE(session.history().canRedo());
+    EXPECT_EQ(session.history().undoSteps(), 2u);
+}
+
+// Nothing to undo or redo is a clear failure of the command (exit code 2, as any command that
+// cannot be carried out), not a crash; the scene stays as it was.
+TEST(ScriptRunner, UndoWithNothingToUndoFailsWithAMessage) {
+    ScriptedSession undo(PTVIEW_ASSETS_DIR "/scenes/cornell.json", "undo\nset-material red.color 0 0 1\n");
+    EXPECT_EQ(undo.runner.exitCode(), 2);
+    EXPECT_EQ(undo.panels.imageNotice, "nothing to undo");
+    EXPECT_EQ(undo.material("red").color, glm::vec3(0.63f, 0.065f, 0.05f)) << "the script ended at the undo";
+    ScriptedSession redo(PTVIEW_ASSETS_DIR "/scenes/cornell.json", "set-material red.color 0 0 1\nredo\n");
+    EXPECT_EQ(redo.runner.exitCode(), 2);
+    EXPECT_EQ(redo.panels.imageNotice, "nothing to redo");
+    EXPECT_EQ(redo.material("red").color, glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
 } // namespace
 } // namespace ptview

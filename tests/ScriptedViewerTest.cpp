@@ -993,6 +993,58 @@ quit
     fs::remove_all(directory);
 }
 
+// Undo and redo by the keys, in the real window: an orbit dragged over many frames is one step
+// (Ctrl+Z puts the eye back exactly), Ctrl+Shift+Z redoes it, a burst of wheel notches is one step
+// too, Ctrl+Y redoes; the status line names the steps (the Edit section's buttons say the same).
+TEST_F(ScriptedViewer, CtrlZUndoesAWholeDragAndAWheelBurstAndCtrlShiftZRedoes) {
+    fs::path directory = freshDirectory("undo");
+    fs::copy_file(kCornell, directory / "scene.json");
+    std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
+wait-spp 1
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+wait-reload
+frames 2
+status
+quit
+)";
+    testing::CommandResult result = runWindowDriver(directory, "window_undo.sh");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 5u) << result.output;
+    EXPECT_EQ(field(status[0], "undo"), "\"\"");
+
+    EXPECT_EQ(field(status[1], "eye"), field(status[0], "eye")) << "one Ctrl+Z undid the whole drag";
+    EXPECT_EQ(field(status[1], "undo-steps"), "0") << result.output;
+    EXPECT_EQ(field(status[1], "redo-steps"), "1");
+    EXPECT_EQ(field(status[1], "redo"), "\"camera\"");
+    EXPECT_EQ(field(status[1], "edits"), "none") << "back to the file's camera";
+
+    EXPECT_NE(field(status[2], "eye"), field(status[0], "eye")) << "Ctrl+Shift+Z orbited again";
+    EXPECT_EQ(field(status[2], "undo"), "\"camera\"");
+    EXPECT_EQ(field(status[2], "redo-steps"), "0");
+    EXPECT_EQ(field(status[2], "edits"), "camera");
+
+    EXPECT_EQ(field(status[3], "eye"), field(status[2], "eye")) << "one Ctrl+Z undid the three notches";
+    EXPECT_EQ(field(status[3], "undo-steps"), "1");
+    EXPECT_EQ(field(status[3], "redo-steps"), "1");
+
+    const glm::vec3 target = loadScene(kCornell).camera.target;
+    EXPECT_LT(glm::length(eyeOf(status[4]) - target), glm::length(eyeOf(status[3]) - target) - 0.05f) << "Ctrl+Y zoomed in again";
+    EXPECT_EQ(field(status[4], "undo-steps"), "2");
+    EXPECT_EQ(field(status[4], "redo-steps"), "0");
+    EXPECT_NE(field(status[4], "notice").find("redid camera"), std::string::npos) << status[4];
+    fs::remove_all(directory);
+}
+
 // A reference loaded into the viewer gives the true error: present, small, not zero (another
 // seed), and absent for a reference of another size.
 TEST_F(ScriptedViewer, ReferenceImageGivesTheTrueErrorInStatus) {

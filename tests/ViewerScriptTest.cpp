@@ -119,13 +119,15 @@ display-transfer gamma-2.2
 ocio-config looks/config.ocio
 ocio-display sRGB
 ocio-view Filmic Log
+undo
+redo
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 78u);
+    ASSERT_EQ(script.commands.size(), 80u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -388,7 +390,7 @@ TEST(ViewerScript, ViewAndZoomCommandsParseWithinTheirRanges) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 73u);
+    EXPECT_EQ(referenceVerbs().size(), 75u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);
@@ -404,6 +406,16 @@ TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     EXPECT_NE(reference.find("camera-focus-at X Y"), std::string::npos);
     EXPECT_NE(reference.find("denoise-strength F"), std::string::npos);
     EXPECT_NE(reference.find("F: number in [0.25, 64]"), std::string::npos) << reference;
+}
+
+// undo and redo take no arguments; a stray one is a parse error before any window opens.
+TEST(ViewerScript, UndoAndRedoTakeNoArguments) {
+    EXPECT_EQ(verbsOf(parse("undo\nredo\nundo\n")), (std::vector<std::string>{"undo", "redo", "undo"}));
+    EXPECT_EQ(errorOf("undo 2"), "s.txt:1: undo: expected no arguments (undo), got 1");
+    EXPECT_EQ(errorOf("redo all"), "s.txt:1: redo: expected no arguments (redo), got 1");
+    EXPECT_NE(errorOf("undoo").find("did you mean \"undo\"?"), std::string::npos);
+    EXPECT_NE(std::string(viewerScriptReference()).find("undo                              undo the last scene edit"), std::string::npos)
+        << viewerScriptReference();
 }
 
 // The denoiser's commands take their ranges from SettingRanges.h, as --denoise-* and the panel do.

@@ -7,6 +7,7 @@
 #include <ptview/provenance/Provenance.h>
 #include <ptview/io/ImageIO.h>
 #include <ptview/model/SceneInput.h>
+#include <ptview/scene/MaterialTextures.h>
 #include <ptview/scene/SceneLoader.h>
 #include "TestFiles.h"
 #include <ptview/session/UnsavedEditsPrompt.h>
@@ -936,6 +937,227 @@ TEST_F(ViewerSessionTest, ZoomedPixelAtFramebufferIsThePixelDrawnThere) {
             }
         EXPECT_GT(drawn, 24 * 10);
     }
+// ---- undo and redo (EditHistory.h; the window calls recordEdits every frame, scripts after every command)
+
+const Material& named(const std::vector<Material>& materials, const std::string& name) {
+    for (const Material& m : materials)
+        if (m.name == name) return m;
+    throw std::runtime_error("no material " + name);
+}
+
+Material& editable(ViewerSession& session, const std::string& name) {
+    for (Material& m : session.model().scene.materials)
+        if (m.name == name) return m;
+    throw std::runtime_error("no material " + name);
+}
+
+// An undo restores the scene's value and flags only what changed for the renderer, which starts
+// the image again; a redo does the same the other way; nothing to undo says so and changes nothing.
+TEST_F(ViewerSessionTest, UndoAndRedoRestoreAnEditAndRestartTheRenderForWhatChangedOnly) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    const glm::vec3 fileColor = material(*session, "white").color;
+    EXPECT_FALSE(session->undo());
+    EXPECT_EQ(model.notice, "nothing to undo");
+    EXPECT_EQ(model.pendingChanges, 0u);
+
+    editable(*session, "white").color = glm::vec3(0.2f, 0.7f, 0.2f);
+    model.pendingChanges |= ViewerModel::kMaterialsChanged;
+    session->recordEdits();
+    EXPECT_EQ(session->history().undoLabel(), "albedo of 'white'");
+    renderSamples(*session, 2);
+
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(model.notice, "undid albedo of 'white'");
+    EXPECT_EQ(material(*session, "white").color, fileColor);
+    EXPECT_EQ(model.pendingChanges, unsigned(ViewerModel::kMaterialsChanged)) << "a material: no scene upload, no camera";
+    session->update();
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0) << "the render starts again";
+    renderSamples(*session, 1);
+
+    ASSERT_TRUE(session->redo());
+    EXPECT_EQ(model.notice, "redid albedo of 'white'");
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f));
+    EXPECT_EQ(model.pendingChanges, unsigned(ViewerModel::kMaterialsChanged));
+    session->update();
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0);
+    EXPECT_FALSE(session->redo());
+    EXPECT_EQ(model.notice, "nothing to redo");
+
+    const CameraDesc camera = model.scene.camera;
+    model.scene.camera.eye.x += 0.5f; // an orbit, a pan, a key
+    model.pendingChanges |= ViewerModel::kCameraChanged;
+    session->update();
+    ASSERT_TRUE(session->undo()); // recorded first: the edit not yet recorded is the one undone
+    EXPECT_EQ(model.scene.camera.eye, camera.eye);
+    EXPECT_EQ(model.pendingChanges, unsigned(ViewerModel::kCameraChanged));
+    EXPECT_EQ(session->history().redoLabel(), "camera");
+
+    // An emitter's radiance is a material parameter too; a new edit drops the camera's redo.
+    session->update();
+    editable(*session, "light").radiance = glm::vec3(1.0f);
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(model.pendingChanges, unsigned(ViewerModel::kMaterialsChanged));
+    EXPECT_EQ(session->history().redoLabel(), "radiance of 'light'");
+    EXPECT_EQ(session->history().redoSteps(), 1u);
+}
+
+// An environment map chosen and then undone: the map goes, with a scene upload; redone, it is
+// the map decoded before, not read again.
+TEST_F(ViewerSessionTest, UndoingAnEnvironmentMapChoiceKeepsItsDecodedMapForRedo) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    const fs::path hdr = fs::path(PTVIEW_ASSETS_DIR) / "hdr/studio_small_03_1k.hdr";
+    ASSERT_TRUE(session->setEnvironmentMap(hdr));
+    session->recordEdits();
+    const std::shared_ptr<const EnvironmentMap> map = model.environmentMap;
+    ASSERT_TRUE(map);
+    model.scene.environmentIntensity = 2.5f;
+    model.pendingChanges |= ViewerModel::kSceneChanged;
+    session->recordEdits();
+    session->update();
+    EXPECT_EQ(session->history().undoLabel(), "environment intensity");
+
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(model.scene.environmentIntensity, 1.0f);
+    EXPECT_EQ(model.environmentMap, map);
+    session->update();
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(model.notice, "undid environment map");
+    EXPECT_TRUE(model.scene.environmentMap.empty());
+    EXPECT_EQ(model.environmentMap, nullptr);
+    EXPECT_EQ(model.pendingChanges, unsigned(ViewerModel::kSceneChanged));
+    session->update();
+    ASSERT_TRUE(session->redo());
+    EXPECT_EQ(model.scene.environmentMap, hdr);
+    EXPECT_EQ(model.environmentMap, map) << "the same decoded map";
+    session->update();
+    EXPECT_EQ(model.sceneError, "");
+}
+
+// A texture given to a material (the Materials panel's Load, the script's -texture field) is a
+// step: undone, the material has no texture again and the scene is uploaded again.
+TEST_F(ViewerSessionTest, UndoTakesBackATextureAssignment) {
+    testing::ScratchFiles files("undo_texture");
+    const fs::path png = files.write("t.png", "");
+    writePng(png, ImageRgba8{1, 1, {10, 20, 200, 255}});
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    const std::size_t textures = model.scene.textures.size();
+    Material& white = editable(*session, "white");
+    white.type = MaterialType::Principled; // as the panel's type combo does first
+    session->recordEdits();
+    setMaterialTexture(model.scene, white, kMaterialTextureInputs[0], png);
+    model.pendingChanges |= ViewerModel::kSceneChanged;
+    session->recordEdits();
+    session->update();
+    EXPECT_EQ(session->history().undoLabel(), "base color texture of 'white'");
+
+    ASSERT_TRUE(session->undo());
+    EXPECT_FALSE(material(*session, "white").baseColorTexture.used());
+    EXPECT_EQ(material(*session, "white").type, MaterialType::Principled);
+    EXPECT_EQ(model.scene.textures.size(), textures);
+    EXPECT_EQ(model.pendingChanges, unsigned(ViewerModel::kSceneChanged));
+    session->update();
+    ASSERT_TRUE(session->redo());
+    ASSERT_TRUE(material(*session, "white").baseColorTexture.used());
+    EXPECT_EQ(model.scene.textures.back().file, png);
+    session->update();
+    renderSamples(*session, 1);
+}
+
+// The rule: the history never holds a state the scene format would refuse, and an undo
+// after a failed reload restores the last good scene with the edits before the undone one kept.
+// A good reload then rebases the history: undo walks the user's edits on top of the new file.
+TEST_F(ViewerSessionTest, UndoAfterAFailedReloadRestoresTheLastGoodSceneWithItsEditsKept) {
+    fs::path directory = freshDirectory("undo_reload");
+    fs::path scenePath = directory / "cornell.json";
+    const std::string original = testing::readFileBytes(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
+    writeText(scenePath, original);
+    auto session = openSession(scenePath);
+    ViewerModel& model = session->model();
+    const Scene file = model.fileScene;
+    editable(*session, "white").color = glm::vec3(0.2f, 0.7f, 0.2f);
+    session->recordEdits();
+    editable(*session, "red").color = glm::vec3(0.1f, 0.1f, 0.9f);
+    session->recordEdits();
+    session->update();
+
+    waitForWatcher();
+    writeText(scenePath, original.substr(0, original.size() / 2));
+    session->pollFiles();
+    ASSERT_NE(model.sceneError, "");
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(material(*session, "red").color, named(file.materials, "red").color) << "the last edit undone";
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f)) << "the one before kept";
+    EXPECT_EQ(model.scene.shapes.size(), file.shapes.size()) << "the last good scene";
+    EXPECT_TRUE(sameEdits(session->history().current(), model.scene));
+    session->update();
+    renderSamples(*session, 1);
+
+    // A state no file could hold is never recorded: the eye beyond the format's 1e9 m. Undo takes it back.
+    model.scene.camera.eye.x = 2e9f;
+    session->recordEdits();
+    EXPECT_NE(session->history().refused().find("camera"), std::string::npos) << session->history().refused();
+    EXPECT_EQ(session->history().undoSteps(), 1u);
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(model.scene.camera.eye, file.camera.eye);
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f)) << "only the refused edit went";
+    EXPECT_EQ(session->history().undoSteps(), 1u);
+    session->update();
+
+    // The file fixed, with a brighter light: the reload keeps the edit, and undo goes back to the new file.
+    ASSERT_TRUE(session->redo()) << "the red wall again";
+    waitForWatcher();
+    writeText(scenePath, replaced(original, "[17.0, 12.0, 4.0]", "[34.0, 24.0, 8.0]"));
+    session->pollFiles();
+    ASSERT_EQ(model.sceneError, "");
+    EXPECT_EQ(session->history().undoSteps(), 2u);
+    EXPECT_EQ(session->history().undoLabel(), "albedo of 'red'");
+    ASSERT_TRUE(session->undo());
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(material(*session, "white").color, named(file.materials, "white").color);
+    EXPECT_EQ(material(*session, "light").radiance, glm::vec3(34.0f, 24.0f, 8.0f)) << "the file's change stays";
+    EXPECT_FALSE(session->hasUnsavedEdits()) << "back to the file as it is now";
+    fs::remove_all(directory);
+}
+
+// Save moves the "saved" mark, not the history: the title's star follows undo and redo back to
+// the saved state. Reload with the edits discarded is a step undo takes back; opening another
+// scene starts afresh.
+TEST_F(ViewerSessionTest, SaveKeepsTheHistoryAndTheStarFollowsUndoBackToTheSavedState) {
+    fs::path directory = freshDirectory("undo_save");
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    const glm::vec3 fileColor = material(*session, "white").color;
+    editable(*session, "white").color = glm::vec3(0.2f, 0.7f, 0.2f);
+    session->recordEdits();
+    EXPECT_TRUE(session->hasUnsavedEdits());
+    session->saveSceneAs(directory / "mine.json");
+    EXPECT_FALSE(session->hasUnsavedEdits());
+    EXPECT_EQ(session->history().undoSteps(), 1u) << "Save keeps the history";
+    ASSERT_TRUE(session->undo());
+    EXPECT_TRUE(session->hasUnsavedEdits()) << "the saved file has the edit";
+    ASSERT_TRUE(session->redo());
+    EXPECT_FALSE(session->hasUnsavedEdits()) << "the saved state again: no star";
+
+    // Reload, discarding an edit: undoable.
+    editable(*session, "white").color = glm::vec3(0.9f, 0.1f, 0.1f);
+    UnsavedEditsPrompt prompt;
+    prompt.request(*session, UnsavedEditsPrompt::Action::Reload);
+    prompt.answer(*session, UnsavedEditsPrompt::Answer::Discard);
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f)) << "the saved file as it is";
+    EXPECT_NE(session->history().undoLabel().find("discarding the edits"), std::string::npos) << session->history().undoLabel();
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(material(*session, "white").color, glm::vec3(0.9f, 0.1f, 0.1f)) << "the discarded edit back";
+    ASSERT_TRUE(session->undo());
+    ASSERT_TRUE(session->undo());
+    EXPECT_EQ(material(*session, "white").color, fileColor);
+
+    ASSERT_TRUE(session->openScene(fs::path(PTVIEW_ASSETS_DIR) / "scenes/materials.json"));
+    EXPECT_FALSE(session->history().canUndo());
+    EXPECT_FALSE(session->history().canRedo());
+    EXPECT_FALSE(session->undo());
+    fs::remove_all(directory);
 }
 
 } // namespace

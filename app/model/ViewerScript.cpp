@@ -265,6 +265,9 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"camera-focus-at", {numberArg("X", 0.0, 1.0), numberArg("Y", 0.0, 1.0)}, nullptr,
          "focus on the surface seen there (fractions of the image from its top-left corner), as Ctrl+click does"},
         {"camera-reset", {}, nullptr, "back to the scene file's camera"},
+        // Undo and redo of the scene edits (materials, textures, lights, camera, environment)
+        {"undo", {}, nullptr, "undo the last scene edit, as Ctrl+Z does (nothing to undo ends the script)"},
+        {"redo", {}, nullptr, "redo the last undone edit, as Ctrl+Shift+Z does (nothing to redo ends the script)"},
         // Scene files
         {"load-scene", {pathArg()}, nullptr, "open another scene file"},
         {"reload", {}, nullptr, "read the scene file again"},

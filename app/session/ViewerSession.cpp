@@ -86,6 +86,7 @@ ViewerSession::ViewerSession(SceneInput input, const RenderSettings& settings, c
         model_.backendChoice = choice.describe();
     }
     saveTarget_ = model_.fileScene.path.string();
+    history_.reset(SceneEdits::of(model_.scene, model_.environmentMap));
     watchFiles();
 }
 
@@ -105,14 +106,27 @@ bool ViewerSession::openScene(const std::filesystem::path& path) {
     ++reloadCount_;
     try {
         Scene scene = loadScene(path, ReadScope::anywhere(allowedDirectories_));
-        std::optional<EnvironmentMap> map;
-        if (!scene.environmentMap.empty()) map = loadEnvironmentMap(scene.environmentMap);
+        std::optional<EnvironmentMap> loaded;
+        if (!scene.environmentMap.empty()) loaded = loadEnvironmentMap(scene.environmentMap);
+        std::shared_ptr<const EnvironmentMap> map = shareMap(loaded);
+        // The open scene's file again (Reload, its edits discarded): the history goes on, rebased
+        // onto the file as a reload would, and the discard is a step that undo takes back.
+        std::error_code error;
+        const bool sameFile = !model_.fileScene.path.empty() && std::filesystem::equivalent(path, model_.fileScene.path, error);
+        if (sameFile) {
+            recordEdits();
+            history_.rebase(model_.fileScene, scene, SceneEdits::of(scene, map));
+        }
         model_.fileScene = scene;
         carriedSceneUnsaved_ = false;
         saveTarget_ = path.string(); // Save must not write the new scene over the last one's file
         model_.notice = "opened " + path.string();
         for (const std::string& warning : scene.warnings) model_.notice += "\nwarning: " + warning;
-        applyScene(std::move(scene), shareMap(map));
+        applyScene(std::move(scene), std::move(map));
+        if (sameFile)
+            history_.record(model_.scene, model_.environmentMap, false, "discarding the edits (" + path.filename().string() + " read again)");
+        else
+            history_.reset(SceneEdits::of(model_.scene, model_.environmentMap));
         return true;
     } catch (const std::exception& e) { // SceneError, EnvironmentMapError: both name the file
         model_.sceneError = e.what();
@@ -131,6 +145,9 @@ bool ViewerSession::reloadScene() {
             if (!merged.scene.environmentMap.empty()) loaded = loadEnvironmentMap(merged.scene.environmentMap);
             map = shareMap(loaded);
         }
+        // The edits so far are steps of their own, each now on top of the new file.
+        recordEdits();
+        history_.rebase(model_.fileScene, reloaded, SceneEdits::of(merged.scene, map));
         model_.fileScene = std::move(reloaded);
         applyScene(std::move(merged.scene), std::move(map));
         model_.notice = "reloaded " + model_.fileScene.path.string();
@@ -150,6 +167,7 @@ bool ViewerSession::setEnvironmentMap(const std::filesystem::path& path) {
         model_.environmentMap = std::move(map);
         model_.pendingChanges |= ViewerModel::kSceneChanged;
         model_.sceneError.clear();
+        if (!path.empty()) history_.shareEnvironmentMap(path, model_.environmentMap); // read again: its file changed
         watchFiles();
         return true;
     } catch (const std::exception& e) {
@@ -264,6 +282,69 @@ void ViewerSession::zoomImageBySteps(int steps, std::optional<glm::vec2> aboutFr
 
 void ViewerSession::panImage(glm::vec2 framebufferDelta) {
     model_.zoom = pannedBy(model_.zoom, framebufferDelta, displayArea(), renderSize_);
+// ---- undo and redo ---------------------------------------------------------------------------
+
+void ViewerSession::recordEdits(bool inProgress) {
+    history_.record(model_.scene, model_.environmentMap, inProgress);
+}
+
+// The scene's edits as `state` has them, and the flags of what that changes. The map is the
+// state's own decoded one where it names another; read again only when no state held it.
+bool ViewerSession::restoreEdits(const SceneEdits& state) {
+    std::shared_ptr<const EnvironmentMap> map = model_.environmentMap;
+    const bool mapChanged = state.environmentMap != model_.scene.environmentMap;
+    if (mapChanged) {
+        map = state.environmentMapData;
+        if (!map && !state.environmentMap.empty()) {
+            try {
+                map = std::make_shared<const EnvironmentMap>(loadEnvironmentMap(state.environmentMap));
+            } catch (const std::exception& e) { // names the file
+                model_.sceneError = e.what();
+                return false;
+            }
+        }
+    }
+    model_.pendingChanges |= changesBetween(SceneEdits::of(model_.scene), state);
+    state.applyTo(model_.scene);
+    model_.environmentMap = std::move(map);
+    if (mapChanged) watchFiles();
+    return true;
+}
+
+bool ViewerSession::undo() {
+    recordEdits();
+    const SceneEdits& last = history_.current();
+    if (!sameEdits(last, model_.scene)) {
+        // An edit the history refused: undoing it goes back to the last good state.
+        const std::string label = describeEdit(last, SceneEdits::of(model_.scene));
+        if (!restoreEdits(last)) return false;
+        model_.notice = "undid " + label;
+        return true;
+    }
+    const SceneEdits* target = history_.undoTarget();
+    if (!target) {
+        model_.notice = "nothing to undo";
+        return false;
+    }
+    const std::string label = history_.undoLabel();
+    if (!restoreEdits(*target)) return false;
+    history_.undo();
+    model_.notice = "undid " + label;
+    return true;
+}
+
+bool ViewerSession::redo() {
+    recordEdits();
+    const SceneEdits* target = history_.redoTarget();
+    if (!target) {
+        model_.notice = "nothing to redo";
+        return false;
+    }
+    const std::string label = history_.redoLabel();
+    if (!restoreEdits(*target)) return false;
+    history_.redo();
+    model_.notice = "redid " + label;
+    return true;
 }
 
 void ViewerSession::resetCamera() {

@@ -4,6 +4,7 @@
 // window calls pollFiles, update, renderFrame and display. It needs a current OpenGL context but
 // knows nothing about GLFW or ImGui, so tests can drive it headless.
 
+#include <ptview/model/EditHistory.h>
 #include <ptview/metrics/ErrorEstimate.h>
 #include <ptview/metrics/ErrorMetrics.h>
 #include <ptview/model/FileWatcher.h>
@@ -70,8 +71,12 @@ public:
     const ViewerModel& model() const { return model_; }
 
     // Actions. A file that cannot be read sets model().sceneError and changes nothing else.
+    // Opening another scene starts the undo history afresh; opening the open scene's own file
+    // again (Reload, discarding the edits) is a step that undo takes back.
     bool openScene(const std::filesystem::path& path);
-    bool reloadScene(); // merges the file's changes with the user's edits (SceneMerge.h)
+    // Merges the file's changes with the user's edits (SceneMerge.h), and the undo history's
+    // states the same way (EditHistory::rebase).
+    bool reloadScene();
     bool setEnvironmentMap(const std::filesystem::path& path); // empty: none (the constant colour)
     // Loads a reference image (.pfm or .exr) for the true error; empty: none. A file that cannot be read
     // sets model().sceneError.
@@ -163,6 +168,21 @@ public:
     // What a PNG or EXR of a view carries to be rendered again (Provenance.h); the window's
     // screenshots carry the left view's.
     ImageMetadata provenance(Side side) const;
+
+    // Undo and redo of the scene edits (docs/viewer.md, "Undo and redo"; EditHistory.h).
+    // recordEdits makes what changed since the last step one step: the window calls it every
+    // frame, with inProgress while a slider is held, a drag or a burst of wheel notches goes on or
+    // a fly key is down, so that such an edit is one step; a script after every command. undo and
+    // redo record first, then restore the scene's edits as they were before (after) the step and
+    // flag what the renderer must redo (materials alone: kMaterialsChanged; the camera:
+    // kCameraChanged; ...). An edit the history refused (one the scene format would not hold) is
+    // what undo takes back first. They return false when there is nothing to do, or when the map
+    // of the state cannot be read again (model().sceneError says so); model().notice says what
+    // they did ("undid roughness of 'floor'", "nothing to undo").
+    void recordEdits(bool inProgress = false);
+    bool undo();
+    bool redo();
+    const EditHistory& history() const { return history_; }
 
     // Per frame, in this order.
     void pollFiles();                   // hot reload of the scene, its environment map and the shaders
@@ -268,6 +288,7 @@ private:
     void watchFiles();
     void reloadShaders();
     void applyScene(Scene scene, std::shared_ptr<const EnvironmentMap> map);
+    bool restoreEdits(const SceneEdits& state);
     void setPatternTarget();
     unsigned restartOnCompare();
 
@@ -305,6 +326,7 @@ private:
     PixelProbe pixelProbe_;
     std::unique_ptr<PathRecorder> pathRecorder_; // built on the first tracePaths
     std::optional<TracedPaths> tracedPaths_;
+    EditHistory history_;
 };
 
 } // namespace ptview

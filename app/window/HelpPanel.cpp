@@ -25,6 +25,8 @@ constexpr Shortcut kShortcuts[] = {
     {"W A S D", "fly (Shift: faster)"},
     {"Q E", "down / up (Shift: faster)"},
     {"F", "reset camera"},
+    {"Ctrl+Z", "undo the last edit of a material, texture, light, the camera or the environment (the Edit section names it)"},
+    {"Ctrl+Shift+Z, Ctrl+Y", "redo the undone edit"},
     {"Space", "pause / resume"},
     {"R", "restart accumulation"},
     {"C", "toggle the compare split view; drag the white divider to move it"},

@@ -30,6 +30,7 @@ struct PanelState {
     // The same, briefly on the image (kImageNoticeSeconds), where it is seen with the sidebar
     // hidden or the Render panel closed.
     std::string imageNotice;
+    bool imageNoticeFailed = false; // shown in red
     std::chrono::steady_clock::time_point imageNoticeSince{};
     // Pixel panel: the material its "open in Materials" button asked for (-1: none); the window
     // hands it to the Materials panel and opens that panel.
@@ -45,6 +46,13 @@ struct PanelState {
     float uiScaleDragged = 0.0f; // the Interface panel's slider value while it is dragged (0: not dragged)
 };
 
+// Undo and Redo, each naming its step ("Undo: roughness of 'floor'"), and how many there are.
+void drawEditPanel(ViewerSession& session, PanelState& state);
+// What Undo and Redo, Ctrl+Z and Ctrl+Shift+Z (Ctrl+Y) and the script's undo and redo do: the
+// session's undo or redo, its outcome ("undid roughness of 'floor'", "nothing to undo") shown on
+// the image. False when there was nothing to do or it failed.
+bool undoEdit(ViewerSession& session, PanelState& state);
+bool redoEdit(ViewerSession& session, PanelState& state);
 // Integrator, depth, sampler, samples per frame, pause, target spp, resolution scale, exposure,
 // tone mapper, compare mode, screenshot button.
 void drawRenderPanel(ViewerSession& session, PanelState& state);

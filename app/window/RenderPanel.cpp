@@ -124,10 +124,12 @@ void saveScreenshots(ViewerSession& session, PanelState& state) {
         for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + printableText(file.string());
         state.screenshotFailed = false;
         state.imageNotice = printableText(screenshotNotice(files));
+        state.imageNoticeFailed = false;
     } catch (const std::exception& e) {
         state.screenshotMessage = printableText(std::string("screenshot not saved: ") + e.what());
         state.screenshotFailed = true;
         state.imageNotice = state.screenshotMessage;
+        state.imageNoticeFailed = true;
     }
     state.imageNoticeSince = std::chrono::steady_clock::now();
 }

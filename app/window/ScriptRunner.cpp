@@ -125,6 +125,10 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
     std::optional<UnsavedEditsPrompt::Action> asking = panels.unsavedEdits.pending();
     line += " edits=" + (edits.empty() ? std::string("none") : joined(edits, ",")) +
             " prompt=" + (asking ? actionName(*asking) : "none") + " save-target=" + quoted(session.saveTarget());
+    // What Undo and Redo would do (the Edit section's buttons), and how many steps each way.
+    const EditHistory& history = session.history();
+    line += " undo=" + quoted(history.undoLabel()) + " redo=" + quoted(history.redoLabel()) +
+            " undo-steps=" + std::to_string(history.undoSteps()) + " redo-steps=" + std::to_string(history.redoSteps());
     line += " scene=" + quoted(model.scene.path.string()) + " scene-error=" + quoted(model.sceneError) +
             " shader-error=" + quoted(model.shaderError);
     // What the window says beyond the sidebar: its title, the label on the image (empty for the
@@ -163,6 +167,7 @@ void ScriptRunner::step(ViewerSession& session, PanelState& panels) {
     while (!quit_ && next_ < script_.commands.size() && !windowScreenshot_) {
         const ScriptCommand& command = script_.commands[next_];
         if (!run(command, session, panels)) return;
+        session.recordEdits(); // each command's edit is one undo step
         waiting_ = false;
         ++next_;
     }
@@ -533,6 +538,13 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"camera-focus", [](Step& s) { moveCamera(s, withFocus(s.scene.camera, s.command.number(0))); }},
         {"camera-focus-at", focusAt},
         {"camera-reset", resetCamera},
+        // ---- undo and redo
+        {"undo", [](Step& s) {
+             if (!undoEdit(s.session, s.panels)) s.fail(s.panels.imageNotice);
+         }},
+        {"redo", [](Step& s) {
+             if (!redoEdit(s.session, s.panels)) s.fail(s.panels.imageNotice);
+         }},
         // ---- files
         {"load-scene", [](Step& s) {
              std::vector<std::string> edits = s.session.unsavedEdits();

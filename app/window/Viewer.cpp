@@ -50,18 +50,32 @@ constexpr float kFastFlyFactor = 4.0f;         // with Shift held
 constexpr double kFrameSeconds = 0.033;
 constexpr double kMinTracingSeconds = 0.004;
 constexpr std::chrono::milliseconds kTitleInterval{250}; // how soon the title's star follows an edit
+// Wheel notches closer together than this are one zoom, and so one undo step.
+constexpr std::chrono::milliseconds kWheelBurst{500};
+
+// A key press as the key callback saw it: the key, the modifiers held, and the letter it types in
+// the keyboard's layout (0 for none), so that Ctrl+Z is the key labelled Z on a QWERTZ or AZERTY
+// keyboard too, not the one where a US keyboard has it.
+struct KeyPress {
+    int key = GLFW_KEY_UNKNOWN;
+    int mods = 0;
+    char letter = 0;
+
+    bool is(char wanted, int wantedMods) const {
+        const bool sameLetter = letter ? letter == wanted : key == GLFW_KEY_A + (wanted - 'a');
+        return sameLetter && (mods & (GLFW_MOD_CONTROL | GLFW_MOD_SHIFT | GLFW_MOD_ALT)) == wantedMods;
+    }
+};
 
 // What the window's callbacks saw since the last frame. Keys that trigger an action are queued
-// from the key callback, so a press shorter than a (slow) frame is never lost.
-struct KeyPress {
-    int key;
-    int mods; // GLFW_MOD_CONTROL ...: as held at the press (a fast Ctrl+= is released before the frame reads it)
-};
+// from the key callback (with the modifiers held then: a fast Ctrl+= is released before the frame
+// reads ImGui's), so a press shorter than a (slow) frame is never lost.
 
 struct InputEvents {
     std::vector<KeyPress> pressedKeys;
     double scrollSteps = 0.0; // of the wheel turned over the image area only
     double zoomSteps = 0.0;   // the same with Ctrl held: the image's pixel zoom, not the camera's
+    Clock::time_point lastScroll{}; // when the wheel last turned over the image area
     // The image area in window coordinates (top-left origin), as the last layout placed it: a
     // wheel turned anywhere else (over the sidebar) is the sidebar's, and never zooms.
     glm::dvec2 imageTopLeft{0.0};
@@ -75,8 +89,11 @@ InputEvents& events(GLFWwindow* window) {
 }
 
 // Installed before ImGui's own callbacks, which chain to them.
-void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
-    if (action == GLFW_PRESS) events(window).pressedKeys.push_back(KeyPress{key, mods});
+void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    if (action != GLFW_PRESS) return;
+    const char* name = glfwGetKeyName(key, scancode); // the layout's, for printable keys
+    const char letter = name && name[0] >= 'a' && name[0] <= 'z' && name[1] == '\0' ? name[0] : 0;
+    events(window).pressedKeys.push_back(KeyPress{key, mods, letter});
 }
 
 // Judged by where the pointer is when the wheel turns, not by ImGui's WantCaptureMouse alone:
@@ -87,8 +104,11 @@ void onScroll(GLFWwindow* window, double /*x*/, double y) {
     glm::dvec2 cursor;
     glfwGetCursorPos(window, &cursor.x, &cursor.y);
     bool overImage = glm::all(glm::greaterThanEqual(cursor, input.imageTopLeft)) && glm::all(glm::lessThan(cursor, input.imageBottomRight));
-    bool control = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
-    if (overImage) (control ? input.zoomSteps : input.scrollSteps) += y;
+    if (overImage) {
+        bool control = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+        (control ? input.zoomSteps : input.scrollSteps) += y;
+        input.lastScroll = Clock::now();
+    }
 }
 
 void onContentScale(GLFWwindow* window, float xScale, float /*yScale*/) {
@@ -194,6 +214,7 @@ private:
     void handleControlKey(int key);
     void scaleInterface(float factor);
     void answerUnsavedEdits(const std::vector<KeyPress>& keys);
+    bool editInProgress() const;
     void updateTitle();
     void handleMouseAndFlight(double seconds);
     std::optional<glm::vec2> imageFractionAtCursor(glm::dvec2 cursor) const;
@@ -242,10 +263,18 @@ void ViewerWindow::handleKeys() {
     std::vector<KeyPress> keys;
     std::swap(keys, events(window_).pressedKeys);
     if (panelState_.unsavedEdits.pending()) return answerUnsavedEdits(keys);
-    if (ImGui::GetIO().WantCaptureKeyboard) return; // typing into a field
+    if (ImGui::GetIO().WantCaptureKeyboard) return; // typing into a field (which has its own Ctrl+Z)
     ViewerModel& model = session_.model();
-    for (KeyPress press : keys) {
+    for (const KeyPress& press : keys) {
         if (panelState_.unsavedEdits.pending()) break; // keys typed after Esc are no answer to an unseen question
+        if (press.is('z', GLFW_MOD_CONTROL)) {
+            undoEdit(session_, panelState_);
+            continue;
+        }
+        if (press.is('z', GLFW_MOD_CONTROL | GLFW_MOD_SHIFT) || press.is('y', GLFW_MOD_CONTROL)) {
+            redoEdit(session_, panelState_);
+            continue;
+        }
         if (press.mods & GLFW_MOD_CONTROL) {
             handleControlKey(press.key);
             continue;
@@ -295,19 +324,32 @@ void ViewerWindow::scaleInterface(float factor) {
     if (std::abs(panelState_.preferences.uiScale - 1.0f) < 1e-4f) panelState_.preferences.uiScale = 1.0f; // back to exactly 1
     if (message.empty()) return;
     panelState_.imageNotice = message;
-    panelState_.screenshotFailed = false; // (the notice's colour: not an error)
+    panelState_.imageNoticeFailed = false;
     panelState_.imageNoticeSince = Clock::now();
 }
 
 // While the "Unsaved edits" question is open, the keys answer it (the dialog has buttons too).
 void ViewerWindow::answerUnsavedEdits(const std::vector<KeyPress>& keys) {
     for (const KeyPress& press : keys) {
-        const int key = press.key;
         if (!panelState_.unsavedEdits.pending()) break;
+        const int key = press.key;
         if (key == GLFW_KEY_ESCAPE) panelState_.unsavedEdits.answer(session_, UnsavedEditsPrompt::Answer::Cancel);
         if (key == GLFW_KEY_S) panelState_.unsavedEdits.answer(session_, UnsavedEditsPrompt::Answer::Save);
         if (key == GLFW_KEY_D) panelState_.unsavedEdits.answer(session_, UnsavedEditsPrompt::Answer::Discard);
     }
+}
+
+// Whether an edit is still going on, to be one undo step when it ends (ViewerSession::recordEdits):
+// a widget held (a slider or drag being dragged, a field being typed into), a mouse button down
+// (a drag over the image, a click not yet released), the wheel turned within a burst, a fly key held.
+bool ViewerWindow::editInProgress() const {
+    if (ImGui::IsAnyItemActive()) return true;
+    for (int button : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE})
+        if (glfwGetMouseButton(window_, button) == GLFW_PRESS) return true;
+    if (Clock::now() - events(window_).lastScroll < kWheelBurst) return true;
+    for (int key : {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E})
+        if (glfwGetKey(window_, key) == GLFW_PRESS) return true;
+    return false;
 }
 
 // A few times a second: comparing the scene with its file serializes both, too much for every
@@ -554,6 +596,7 @@ void ViewerWindow::drawSidebar() {
         // its settings and scene) would describe a picture that is not on the screen.
         bool rendering = !warpVisualizer_.active();
         if (!rendering) noteText("The path tracer pauses while the warp visualizer is shown.");
+        if (rendering && header("Edit", ImGuiTreeNodeFlags_DefaultOpen)) drawEditPanel(session_, panelState_);
         if (rendering && header("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(session_, panelState_);
         if (rendering && header("Stats", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(session_, panelState_, frameSeconds_);
         bool pixelAsked = std::find(toOpen.begin(), toOpen.end(), "pixel") != toOpen.end();
@@ -685,7 +728,7 @@ void ViewerWindow::drawImageNotes() {
     if (!panelState_.imageNotice.empty() && noticeShown) {
         float above = failure.empty() ? 0.0f : ImGui::CalcTextSize(failure.c_str()).y + 10.0f;
         drawImageNote(panelState_.imageNotice, ImVec2(right, bottom - above), true, true,
-                      panelState_.screenshotFailed ? IM_COL32(255, 120, 110, 255) : IM_COL32(140, 235, 140, 255));
+                      panelState_.imageNoticeFailed ? IM_COL32(255, 120, 110, 255) : IM_COL32(140, 235, 140, 255));
     }
 }
 
@@ -873,6 +916,8 @@ int ViewerWindow::run(std::optional<ScriptRunner>& script) {
 
         drawImage();
         drawUi();
+        // After the panels, so that this frame's edits are in; one step once the edit ends.
+        session_.recordEdits(editInProgress());
         updateTitle();
 
         if (script) {
