@@ -937,6 +937,8 @@ TEST_F(ViewerSessionTest, ZoomedPixelAtFramebufferIsThePixelDrawnThere) {
             }
         EXPECT_GT(drawn, 24 * 10);
     }
+}
+
 // ---- undo and redo (EditHistory.h; the window calls recordEdits every frame, scripts after every command)
 
 const Material& named(const std::vector<Material>& materials, const std::string& name) {

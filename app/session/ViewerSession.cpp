@@ -282,6 +282,8 @@ void ViewerSession::zoomImageBySteps(int steps, std::optional<glm::vec2> aboutFr
 
 void ViewerSession::panImage(glm::vec2 framebufferDelta) {
     model_.zoom = pannedBy(model_.zoom, framebufferDelta, displayArea(), renderSize_);
+}
+
 // ---- undo and redo ---------------------------------------------------------------------------
 
 void ViewerSession::recordEdits(bool inProgress) {
