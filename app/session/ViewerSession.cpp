@@ -367,7 +367,7 @@ ImageMetadata ViewerSession::provenance(Side side) const {
     DisplaySettings display = displaySettings(side);
     display.denoised = denoise.enabled;
     const RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                              programOptions_.allFeatures, denoise};
+                              programOptions_.allFeatures, denoise, std::nullopt}; // the viewer samples uniformly
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
 

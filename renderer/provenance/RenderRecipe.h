@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +23,9 @@ struct RenderRecipe {
     Backend backend = Backend::Fragment; // the program that ran (auto already decided)
     bool allFeatures = false;     // the uber-shader instead of the specialized program
     DenoiseSettings denoise;      // enabled: the image is the denoised mean (the raw one beside it in an EXR)
+    // Adaptive sampling (render --noise-threshold): the threshold its pixels stopped at; samplesPerPixel
+    // is then the most any pixel has. nullopt: every pixel has samplesPerPixel.
+    std::optional<float> noiseThreshold;
 };
 
 class RecipeError : public std::runtime_error {

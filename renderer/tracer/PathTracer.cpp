@@ -49,6 +49,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram() const {
     show.bindSamplerUnit("uSum", 0);
     show.bindSamplerUnit("uCompensation", 1);
     display.invSampleCount = show.uniformLocation("uInvSampleCount");
+    display.perPixelSampleCount = show.uniformLocation("uPerPixelSampleCount");
     display.exposureScale = show.uniformLocation("uExposureScale");
     display.toneMapper = show.uniformLocation("uToneMapper");
     display.highlightNonFinite = show.uniformLocation("uHighlightNonFinite");
@@ -552,6 +553,7 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     const bool denoised = settings.denoised && &shown == &accumulator_ && hasDenoised();
     int samples = denoised ? 1 : shown.displayedSampleCount();
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
+    glUniform1i(display_.perPixelSampleCount, !denoised && shown.hasStoppedPixels() ? 1 : 0);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
     glUniform1i(display_.highlightNonFinite, settings.highlightNonFinite ? 1 : 0);
