@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Adaptive against uniform sampling on shipped scenes (docs/sampling.md, "Adaptive sampling").
 
-For each scene: a reference (4096 spp, random sampler, seed 1000) and a second one (seed 1001)
+For each scene: a reference (16384 spp, sobol sampler, seed 1000) and a second one (seed 1001)
 whose difference gives the references' own noise, subtracted from every error; adaptive renders
 (`render --noise-threshold E`) for each E, and uniform renders at doubling spp. The true error of
 each is against the reference; the uniform time and spp to reach each adaptive render's true
@@ -52,16 +52,17 @@ def main():
     ptview, outdir, size, scenes = args[0], args[1], args[2], args[3:]
     os.makedirs(outdir, exist_ok=True)
     print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
-    print('|---|---:|---|---|---:|')
+    print('|---|---:|---|---|---:|', flush=True)
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
         refs = []
         for seed in (1000, 1001):
             path = f'{outdir}/{name}-ref{seed}.pfm'
             if not os.path.exists(path):
-                render(ptview, scene, size, path, '--spp', '4096', '--sampler', 'random', '--seed', str(seed))
+                render(ptview, scene, size, path, '--spp', '16384', '--sampler', 'sobol', '--seed', str(seed))
             refs.append(pfm(path))
         floor = rel_mse(refs[1], refs[0]) / 2  # each reference's own noise
+        print(f'<!-- {name}: reference noise relMSE {floor:.3g} -->', flush=True)
         true = lambda image: rel_mse(image, refs[0]) - floor
         adaptive = []
         for e in thresholds:

@@ -17,7 +17,7 @@ namespace ptview {
 // No pixel stops before this many samples: the estimate of a pixel rests on the change of its
 // mean since half its samples, and at fewer a dark pixel that has not yet met a rare bright path
 // would look converged (the bias docs/sampling.md bounds).
-inline constexpr int kAdaptiveMinSamples = 16;
+inline constexpr int kAdaptiveMinSamples = 64;
 // Pixels stop in tiles of this side (AdaptiveStopRule.h): llvmpipe shades 4x2 blocks of pixels
 // together with AVX2 (4x4 with AVX-512), a GPU 8x4 or so, and a block is as slow as its slowest pixel.
 inline constexpr int kAdaptiveTileSide = 4;
