@@ -97,6 +97,38 @@ TEST_P(StoppedPixels, TakeNoFurtherSamplesAndKeepTheirBits) {
 INSTANTIATE_TEST_SUITE_P(Backends, StoppedPixels, ::testing::Values(Backend::Fragment, Backend::Compute),
                          [](const ::testing::TestParamInfo<Backend>& info) { return std::string(backendName(info.param)); });
 
+// The denoiser's first pass divides each pixel by its own count: under a constant sky every
+// sample is the same, so with half the pixels stopped at 8 samples and the rest at 16 the
+// denoised image is still that constant everywhere (dividing the stopped pixels' sums by 16 would
+// halve them).
+TEST(AdaptiveDenoise, TheDenoiserUsesEachPixelsOwnCount) {
+    testing::glContext();
+    const Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [16, 16]},
+      "environment": {"color": [0.3, 0.5, 0.7]}, "materials": {}, "shapes": []})", "sky.json");
+    PathTracer tracer = makePathTracer(scene, nullptr);
+    tracer.setImageSize({16, 16});
+    tracer.renderSamples(8);
+    std::vector<std::uint8_t> stopped(16 * 16, 0);
+    for (size_t i = 0; i < stopped.size(); i += 2) stopped[i] = 1;
+    tracer.stopPixels(stopped);
+    tracer.renderSamples(8);
+    DenoiseSettings denoise;
+    denoise.enabled = true;
+    tracer.setDenoise(denoise);
+    tracer.updateDenoised();
+    const ImageRgbF denoised = tracer.readDenoised();
+    const PixelStatistics stats = tracer.readStatistics();
+    EXPECT_EQ(stats.pixelSampleCounts[0], 8);
+    EXPECT_EQ(stats.pixelSampleCounts[1], 16);
+    const glm::vec3 sky(0.3f, 0.5f, 0.7f);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c) {
+                ASSERT_NEAR(stats.mean.at(x, y)[c], sky[c], 1e-5f) << x << " " << y;
+                ASSERT_NEAR(denoised.at(x, y)[c], sky[c], 1e-5f) << x << " " << y;
+            }
+}
+
 // A converged reference of the scene (another seed) and the relative MSE its own noise adds to any
 // comparison with it (its variance of the mean, relative as compareToReference weighs it).
 struct Reference {
