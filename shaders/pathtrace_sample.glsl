@@ -9,8 +9,8 @@
 #include "debug_view.glsl"
 
 // uSamplesPerPass samples, numbered on from the pixel's own count (uFrameIndex unless adaptive
-// sampling stopped the pixel, and then it takes none: accumulate_sum.glsl). One loop extends whichever path a pixel is on
-// and starts the pixel's next sample as soon as one ends. The pixels of a SIMD group (8 on
+// sampling stopped the pixel, and then it takes none: accumulate_sum.glsl). One loop extends
+// whichever path a pixel is on and starts the pixel's next sample as soon as one ends. The pixels of a SIMD group (8 on
 // llvmpipe's AVX2, 32 on a GPU warp) run the loop together until the last of them is done, so
 // nesting a loop over bounces inside one over samples would keep each group waiting for its
 // longest path at every sample; this way a group waits once, for its longest total.
