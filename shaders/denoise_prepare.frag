@@ -9,7 +9,6 @@
 uniform sampler2D uSum;
 uniform sampler2D uCompensation;
 uniform sampler2D uSumSquares;
-uniform float uSampleCount;
 uniform sampler2D uFeatureAlbedoDepth;
 uniform sampler2D uFeatureNormal;
 uniform float uInvFeatureCount;
@@ -33,8 +32,12 @@ vec3 albedoAt(ivec2 p) {
     return max(texelFetch(uFeatureAlbedoDepth, p, 0).rgb * uInvFeatureCount, vec3(kSmallestAlbedo));
 }
 
+// The pixel's own sample count, the sum's alpha (accumulate_sum.glsl): adaptive sampling stops
+// pixels at different counts.
+float sampleCountAt(ivec2 p) { return max(texelFetch(uSum, p, 0).a, 1.0); }
+
 vec3 meanAt(ivec2 p) {
-    return (texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb) / uSampleCount;
+    return (texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb) / sampleCountAt(p);
 }
 
 // Mean depth of the samples that met a surface, or -1 when none did.
@@ -74,13 +77,14 @@ void main() {
     float neighbourSpread = sqrt(max(neighbourSquares / 8.0 - neighbourMean * neighbourMean, 0.0));
 
     float variance;
-    if (uSampleCount >= kSamplesForOwnVariance) {
+    float sampleCount = sampleCountAt(p);
+    if (sampleCount >= kSamplesForOwnVariance) {
         // The variance of each channel's mean from the sums (n (n - 1) in the denominator), over
         // the albedo squared, weighed as luminance weighs the channels.
         vec3 sum = texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb;
         vec3 sumSquares = texelFetch(uSumSquares, p, 0).rgb;
-        vec3 channelVariance = max(sumSquares - sum * sum / uSampleCount, vec3(0.0)) /
-                               (uSampleCount * (uSampleCount - 1.0));
+        vec3 channelVariance = max(sumSquares - sum * sum / sampleCount, vec3(0.0)) /
+                               (sampleCount * (sampleCount - 1.0));
         vec3 w = vec3(0.2126, 0.7152, 0.0722);
         variance = dot(w * w, channelVariance / (albedo * albedo));
     } else {

@@ -9,6 +9,7 @@ uniform sampler2D uCompensation;
 uniform sampler2D uSumSquares;  // the estimated-error view's
 uniform sampler2D uOtherImage;  // the reference or comparison image (linear, same size), for the other views
 uniform float uInvSampleCount;
+uniform bool uPerPixelSampleCount; // adaptive sampling stopped pixels: each divides by its own count, the sum's alpha
 uniform float uExposureScale; // 2^exposure
 uniform uint uToneMapper;
 uniform uint uDisplayTransfer; // DisplayTransfer: sRGB, or gamma 2.2 for older files
@@ -23,9 +24,10 @@ out vec4 outColor;
 
 void main() {
     vec2 texCoord = (gl_FragCoord.xy - uOutputOrigin) / uOutputSize;
-    vec3 sum = texture(uSum, texCoord).rgb;
+    vec4 sum = texture(uSum, texCoord);
     vec3 compensation = texture(uCompensation, texCoord).rgb;
-    vec3 mean = (sum - compensation) * uInvSampleCount;
+    float invSampleCount = uPerPixelSampleCount ? 1.0 / max(sum.a, 1.0) : uInvSampleCount;
+    vec3 mean = (sum.rgb - compensation) * invSampleCount;
     if (uHighlightNonFinite && (any(isnan(mean)) || any(isinf(mean)))) {
         outColor = vec4(1.0, 0.0, 1.0, 1.0);
         return;
@@ -39,7 +41,7 @@ void main() {
     if (uDisplayView == kDisplayViewError) {
         shown = errorColor(relativeErrorAgainst(mean, other), uErrorLog10Range);
     } else if (uDisplayView == kDisplayViewEstimatedError) {
-        float sampleCount = uInvSampleCount > 0.0 ? 1.0 / uInvSampleCount : 0.0;
+        float sampleCount = invSampleCount > 0.0 ? 1.0 / invSampleCount : 0.0;
         shown = errorColor(estimatedRelativeError(mean, texture(uSumSquares, texCoord).rgb, sampleCount), uErrorLog10Range);
     } else if (uDisplayView == kDisplayViewDifference) {
         shown = differenceColor(mean - other, uDifferenceRange);

@@ -197,6 +197,37 @@ TEST(Converge, DenoiseSuffixParsesAloneAndWithAClamp) {
     EXPECT_EQ(rows.size(), 2u);
 }
 
+// "/adaptive=E" takes E in (0, 1], once, and not with the grid sampler (exit 2 before rendering);
+// it runs the adaptive sampler with a checkpoint at each of its checks, the mean spp its spp, on
+// the same time axis as the uniform configuration beside it.
+TEST(Converge, AdaptiveSuffixIsCheckedAndMeasuredBesideTheUniformOne) {
+    testing::ScratchFiles files("converge_adaptive");
+    const fs::path out = files.directory() / "out";
+    const std::string converge = std::string(PTVIEW_BINARY) + " converge " +
+                                 testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") + " --out " +
+                                 testing::shellQuoted(out.string());
+    for (const std::string config : {"full/sobol/8/adaptive=0", "full/sobol/8/adaptive=1.5", "full/sobol/8/adaptive=nan",
+                                     "full/sobol/8/adaptive=", "full/sobol/8/adaptive=-0.1", "full/grid/8/adaptive=0.05",
+                                     "full/sobol/8/adaptive=0.05/adaptive=0.05"}) {
+        testing::CommandResult result = testing::runCommand(converge + " --size 8x8 --configs full/sobol/8," + config);
+        EXPECT_EQ(result.exitCode, 2) << config << ": " << result.output;
+        EXPECT_NE(result.output.find("bad configuration \"" + config + "\""), std::string::npos) << result.output;
+        EXPECT_EQ(result.output.find("rendering the reference"), std::string::npos) << result.output;
+    }
+    testing::CommandResult result = testing::runCommand(
+        converge + " --size 16x16 --reference-spp 256 --max-spp 256 --configs full/sobol/4,full/sobol/4/adaptive=0.1");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::map<std::string, std::vector<Row>> rows = readCsv(out / "convergence.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    const std::vector<Row>& adaptive = rows["full/sobol/4/adaptive=0.1"];
+    ASSERT_GE(adaptive.size(), 2u) << result.output;
+    for (size_t i = 1; i < adaptive.size(); ++i) {
+        EXPECT_GT(adaptive[i].seconds, adaptive[i - 1].seconds);
+        EXPECT_GE(adaptive[i].spp, adaptive[i - 1].spp);
+        EXPECT_LE(adaptive[i].spp, 256);
+    }
+}
+
 // A /denoise configuration renders like the one without it and measures the denoised image at
 // each checkpoint, the denoising counted in its time: its curve lies beside the raw one in the
 // CSV and the plot, and the summary calls it biased whatever its error does (a filter converges

@@ -34,6 +34,7 @@ RenderRecipe unusualRecipe() {
     recipe.size = {17, 9};
     recipe.backend = Backend::Compute;
     recipe.allFeatures = true;
+    recipe.noiseThreshold = 0.02f + 1e-9f;
     return recipe;
 }
 
@@ -47,6 +48,7 @@ void expectSameRecipe(const RenderRecipe& a, const RenderRecipe& b) {
     EXPECT_EQ(a.size, b.size);
     EXPECT_EQ(a.backend, b.backend);
     EXPECT_EQ(a.allFeatures, b.allFeatures);
+    EXPECT_EQ(a.noiseThreshold, b.noiseThreshold);
 }
 
 TEST(RenderRecipe, JsonKeepsEveryFieldExactly) {

@@ -303,6 +303,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& render) {
     command->add_option("--time", render.timeLimitSeconds,
                         "stop at the first whole pass after SECONDS of rendering (--spp is still the most)")
         ->check(kFiniteNumber)->check(inRange(settingRanges::kTimeLimit));
+    command->add_option("--noise-threshold", render.noiseThreshold,
+                        "adaptive sampling: render until the estimated RMS relative error is at most E (0.02: 2%); "
+                        "--spp and --time cap it (without either, at most " + std::to_string(kNoiseThresholdSampleCap) + " spp)")
+        ->check(kFiniteNumber)->check(inRange(settingRanges::kNoiseThreshold));
     command->add_option("--aperture-radius", render.apertureRadius, "thin-lens aperture radius in metres (0: a pinhole); overrides the scene's")
         ->check(kFiniteNumber)->check(inRange(ranges::kApertureRadius));
     command->add_option("--focus-distance", render.focusDistance, "distance along the view direction to the plane in focus, metres; overrides the scene's")
@@ -349,6 +353,11 @@ std::optional<int> finishRenderOptions(const CLI::App& command, const RenderOpti
         return kExitBadInput;
     }
     if (std::optional<int> exit = checkDenoiseOptions(command, render.denoise, render.settings)) return exit;
+    if (render.noiseThreshold && render.settings.sampler == SamplerMode::Grid) {
+        std::cerr << "ptview: render: --noise-threshold cannot go with --sampler grid: the grid repeats one pattern in "
+                     "every pixel, so its error is bias that no estimate from the render can see (use stratified or sobol)\n";
+        return kExitBadInput;
+    }
     if (render.outPath.empty() && render.dumpShaderPath.empty() && !render.printFeatures) {
         std::cerr << "ptview: render: --out is required (see ptview render --help)\n";
         return kExitBadInput;
@@ -398,7 +407,7 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeT
     command->add_option("--reference-depth", converge.referenceDepth,
                         "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
         ->transform(kDecimalInteger)->check(inRange(settingRanges::kMaxDepth));
-    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise], comma-separated (clamp: biased firefly control, as --clamp; denoise: measure the denoised image, as --denoise, its time included; both biased)")->capture_default_str();
+    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise][/adaptive=E], comma-separated (clamp: biased firefly control, as --clamp; denoise: measure the denoised image, as --denoise, its time included; both biased; adaptive: adaptive sampling, pixels stop at RMS relative error E, as render --noise-threshold)")->capture_default_str();
     command->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
     command->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")

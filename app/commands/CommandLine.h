@@ -27,6 +27,10 @@ using ProgramOptions = PathTracerOptions;
 // The layers `render --aovs` adds to an EXR, each a debug view (DebugView.h) or the accumulator's variance.
 enum class Aov { Albedo, Normal, Depth, Variance };
 
+// The most samples per pixel `render --noise-threshold` takes without --spp or --time: a scene
+// whose estimate never falls to the threshold (or never forms) still ends (docs/output.md).
+inline constexpr int kNoiseThresholdSampleCap = 4096;
+
 struct RenderOptions {
     std::string scenePath;
     std::string outPath;            // .png (tone mapped, 8-bit sRGB), .pfm or .exr (linear)
@@ -44,6 +48,10 @@ struct RenderOptions {
     std::string dumpShaderPath; // --dump-shader: the exact GLSL compiled
     bool printFeatures = false; // --print-features
     std::optional<double> timeLimitSeconds;  // --time: stop at the first whole pass after it (--spp still bounds)
+    // --noise-threshold: adaptive sampling until the estimated RMS relative error is at most this
+    // (--spp and --time cap it; without either, kNoiseThresholdSampleCap). A float: the provenance
+    // records it as one, and --from must render with the same bits.
+    std::optional<float> noiseThreshold;
     std::optional<float> apertureRadius;     // --aperture-radius: overrides the scene camera's
     std::optional<float> focusDistance;      // --focus-distance: overrides the scene camera's
     std::vector<std::filesystem::path> allowedDirectories; // --allow-dir: folders files from strangers may read (ReadScope.h)
@@ -82,6 +90,7 @@ struct ConvergeConfig {
     int maxDepth = 8;
     std::optional<float> radianceClamp; // "/clamp=VALUE" after the depth: biased firefly control
     bool denoise = false;               // "/denoise" after the depth: measure the denoised image (biased)
+    std::optional<float> adaptiveThreshold; // "/adaptive=E": adaptive sampling, pixels stop at RMS relative error E
 };
 
 struct ConvergeOptions {

@@ -5,6 +5,8 @@
 #include <ptview/gl/HeadlessContext.h>
 #include <ptview/io/ImageIO.h>
 #include <ptview/commands/OutputPath.h>
+#include <ptview/settings/SettingRanges.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/io/PrintableText.h>
 #include <ptview/model/SceneInput.h>
@@ -53,6 +55,11 @@ std::string configName(const ConvergeConfig& config) {
         name += std::string("/clamp=") + value;
     }
     if (config.denoise) name += "/denoise";
+    if (config.adaptiveThreshold) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", static_cast<double>(*config.adaptiveThreshold));
+        name += std::string("/adaptive=") + value;
+    }
     return name;
 }
 
@@ -108,6 +115,26 @@ ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const Co
     }
     tracer.warmUp(); // not timed, not kept
     double seconds = 0.0;
+    if (config.adaptiveThreshold) {
+        // A checkpoint at each of the sampler's checks; its time includes the checks' read-backs
+        // and estimates, the adaptive overhead. The spp is the mean over the pixels.
+        AdaptiveSampler adaptive(tracer, *config.adaptiveThreshold);
+        while (tracer.sampleCount() < options.maxSpp && !adaptive.allStopped()) {
+            Clock::time_point start = Clock::now();
+            adaptive.renderToNextCheck(options.maxSpp);
+            if (config.denoise) tracer.updateDenoised();
+            glFinish();
+            seconds += std::chrono::duration<double>(Clock::now() - start).count();
+            const ImageRgbF image = config.denoise ? tracer.readDenoised() : tracer.readMean();
+            const int meanSpp = std::max(1, static_cast<int>(std::lround(adaptive.sampleCounts().mean)));
+            result.checkpoints.push_back(Checkpoint{meanSpp, seconds, compareToReference(image, reference)});
+            std::fprintf(stderr, "ptview: %s: %d spp (mean; most %d, %.0f%% of pixels stopped), %.2f s, relMSE %.3g\n",
+                         configName(config).c_str(), meanSpp, tracer.sampleCount(), 100.0 * adaptive.sampleCounts().stoppedShare,
+                         seconds, result.checkpoints.back().error.relativeMse);
+            if (seconds >= options.timeBudgetSeconds) break;
+        }
+        return result;
+    }
     for (int target = 1; target <= options.maxSpp; target *= 2) {
         Clock::time_point start = Clock::now();
         tracer.renderSamples(target - tracer.sampleCount());
@@ -303,9 +330,20 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
                 config.radianceClamp = static_cast<float>(clamp);
             } else if (part == "denoise" && !config.denoise) {
                 config.denoise = true;
+            } else if (part.rfind("adaptive=", 0) == 0 && !config.adaptiveThreshold) {
+                const std::string value = part.substr(std::string("adaptive=").size());
+                char* valueEnd = nullptr;
+                double threshold = value.empty() || value.find_first_not_of("0123456789.eE+-") != std::string::npos
+                                       ? 0.0 : std::strtod(value.c_str(), &valueEnd);
+                if (!settingRanges::kNoiseThreshold.contains(threshold) || *valueEnd != '\0') {
+                    error = "bad configuration \"" + item + "\": adaptive=E needs E in (0, 1] (an RMS relative error), e.g. "
+                            "full/sobol/8/adaptive=0.05";
+                    return std::nullopt;
+                }
+                config.adaptiveThreshold = static_cast<float>(threshold);
             } else {
-                error = "bad configuration \"" + item + "\": after the depth only /clamp=VALUE and /denoise may follow, each once, "
-                        "e.g. full/sobol/8/clamp=10 or full/sobol/8/denoise";
+                error = "bad configuration \"" + item + "\": after the depth only /clamp=VALUE, /denoise and /adaptive=E may "
+                        "follow, each once, e.g. full/sobol/8/clamp=10 or full/sobol/8/adaptive=0.05";
                 return std::nullopt;
             }
         }
@@ -315,7 +353,12 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         char* end = nullptr;
         long maxDepth = depth.empty() ? -1 : std::strtol(depth.c_str(), &end, 10);
         if (!knownIntegrator || !mode || depth.empty() || *end != '\0' || maxDepth < 0 || maxDepth > 1024) {
-            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise], e.g. mis/sobol/8";
+            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise][/adaptive=E], e.g. mis/sobol/8";
+            return std::nullopt;
+        }
+        if (config.adaptiveThreshold && *mode == SamplerMode::Grid) {
+            error = "bad configuration \"" + item + "\": adaptive=E cannot go with the grid sampler (its error is bias that "
+                    "no estimate from the render can see)";
             return std::nullopt;
         }
         config.sampler = *mode;

@@ -8,6 +8,7 @@
 #include <ptview/io/ImageIO.h>
 #include <ptview/metrics/NonFinitePixels.h>
 #include <ptview/commands/OutputPath.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/io/PrintableText.h>
 #include <ptview/provenance/Provenance.h>
@@ -152,7 +153,11 @@ int runRenderCommand(const RenderOptions& requested) {
     try {
         HeadlessContext context;
         // --time alone has no bound but the largest --spp; --spp with it is the most to render.
-        const int maxSamples = options.timeLimitSeconds && !options.samplesPerPixelGiven ? kMaxSamplesPerPixel : options.samplesPerPixel;
+        // --noise-threshold alone stops at kNoiseThresholdSampleCap, should the estimate never fall.
+        const int maxSamples = options.samplesPerPixelGiven ? options.samplesPerPixel
+                               : options.timeLimitSeconds   ? kMaxSamplesPerPixel
+                               : options.noiseThreshold     ? kNoiseThresholdSampleCap
+                                                            : options.samplesPerPixel;
         RenderSettings settings = options.settings;
         if (!from) settings.sampleBudget = static_cast<std::uint32_t>(maxSamples); // fully stratified at the end
         PathTracer tracer = makePathTracer(scene, input->environmentMapOrNull(),
@@ -184,7 +189,19 @@ int runRenderCommand(const RenderOptions& requested) {
             int passes = static_cast<int>(std::clamp(secondsLeft / (secondsPerSample * perPass), 1.0, 1024.0));
             return passes * perPass;
         };
-        while (tracer.sampleCount() < maxSamples && !outOfTime) {
+        std::optional<AdaptiveSampler> adaptive;
+        if (options.noiseThreshold) {
+            // Checks at fixed sample counts, so that --from renders the same pixels: only how many
+            // checks run depends on --time.
+            adaptive.emplace(tracer, *options.noiseThreshold);
+            while (tracer.sampleCount() < maxSamples && !outOfTime && !adaptive->reachedThreshold() && !adaptive->allStopped()) {
+                adaptive->renderToNextCheck(maxSamples);
+                glFinish();
+                progress.update(tracer.sampleCount());
+                outOfTime = options.timeLimitSeconds && progress.elapsed() >= *options.timeLimitSeconds;
+            }
+        }
+        while (!adaptive && tracer.sampleCount() < maxSamples && !outOfTime) {
             Clock::time_point batchStart = Clock::now();
             int count = std::min(batch, maxSamples - tracer.sampleCount());
             if (options.timeLimitSeconds) count = std::min(count, samplesBefore(*options.timeLimitSeconds - progress.elapsed()));
@@ -199,7 +216,22 @@ int runRenderCommand(const RenderOptions& requested) {
         progress.finish();
         double seconds = progress.elapsed();
         const int samplesPerPixel = tracer.sampleCount();
-        if (options.timeLimitSeconds) {
+        if (adaptive) {
+            const ErrorEstimate& estimate = adaptive->estimate();
+            const SampleCountSummary& counts = adaptive->sampleCounts();
+            const std::string threshold = secondsText(*options.noiseThreshold);
+            const std::string stop = adaptive->reachedThreshold() ? "the estimate reached --noise-threshold " + threshold
+                                     : adaptive->allStopped()     ? "every pixel stopped (each neighbourhood reached " + threshold + ")"
+                                     : outOfTime ? "--time " + secondsText(*options.timeLimitSeconds) + " s passed during the last check"
+                                                 : "the cap of " + std::to_string(maxSamples) + " spp came first";
+            char error[64];
+            if (estimate.reliable) std::snprintf(error, sizeof error, "%.3g%%", 100.0 * relativeError(estimate.relativeMse));
+            else std::snprintf(error, sizeof error, "unknown");
+            std::fprintf(stderr, "ptview: adaptive: estimated error %s (threshold %s%%) after %.2f s; spp min/mean/max %d/%.1f/%d, %.1f%% of pixels stopped; stopped: %s\n",
+                         error, secondsText(100.0 * *options.noiseThreshold).c_str(), seconds, counts.min, counts.mean,
+                         counts.max, 100.0 * counts.stoppedShare, stop.c_str());
+            if (!estimate.reliable) printMessage(std::string("the error estimate is unknown: ") + estimate.unreliableReason);
+        } else if (options.timeLimitSeconds) {
             const std::string stop = outOfTime ? "--time " + secondsText(*options.timeLimitSeconds) + " s passed during the last pass"
                                                : "--spp " + std::to_string(maxSamples) + " came first";
             std::fprintf(stderr, "ptview: stopped at %d spp after %.2f s: %s\n", samplesPerPixel, seconds, stop.c_str());
@@ -220,7 +252,7 @@ int runRenderCommand(const RenderOptions& requested) {
             display.denoised = true;
         }
         RenderRecipe recipe{settings, display, tracer.sampleCount(), size, tracer.backend(), options.program.allFeatures,
-                            options.denoise, {}};
+                            options.denoise, {}, options.noiseThreshold};
         if (*ocio) {
             tracer.setOcioView(*ocio);
             recipe.ocio = {(*ocio)->configPath().string(), (*ocio)->display(), (*ocio)->view()};
@@ -241,7 +273,7 @@ int runRenderCommand(const RenderOptions& requested) {
         // Every render says whether it produced non-finite pixels: one is a bug to report.
         const long long nonFinite = countNonFinitePixels(mean);
 
-        double samples = static_cast<double>(size.x) * size.y * samplesPerPixel;
+        double samples = static_cast<double>(size.x) * size.y * (adaptive ? adaptive->sampleCounts().mean : samplesPerPixel);
         std::fprintf(stderr, "ptview: wrote %s (%dx%d, %d spp, depth %d, %s sampler, %s integrator, %.2f s, %.1f M samples/s, %s backend, %lld NaN/Inf pixels) on %s\n",
                      options.outPath.c_str(), size.x, size.y, samplesPerPixel, options.settings.maxDepth,
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),

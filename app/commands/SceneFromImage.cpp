@@ -61,6 +61,7 @@ void applyRecipe(const RenderRecipe& recipe, RenderOptions& options) {
     options.program.backend = recipe.backend;
     options.program.allFeatures = recipe.allFeatures;
     options.denoise = recipe.denoise;
+    options.noiseThreshold = recipe.noiseThreshold;
 }
 
 void applyRecipe(const RenderRecipe& recipe, ViewerOptions& options) {

@@ -537,7 +537,7 @@ ImageMetadata ViewerSession::provenance(Side side) const {
     DisplaySettings display = displaySettings(side);
     display.denoised = denoise.enabled;
     RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                        programOptions_.allFeatures, denoise, {}};
+                        programOptions_.allFeatures, denoise, {}, std::nullopt}; // the viewer samples uniformly
     if (display.toneMapper == ToneMapper::Ocio) recipe.ocio = model_.ocio;
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }

@@ -165,4 +165,65 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
     return estimate;
 }
 
+std::vector<PixelErrorTerms> pixelErrorTerms(const PixelStatistics& statistics, const ImageRgbF& earlierMean,
+                                             int earlierSamples) {
+    const ImageRgbF& mean = statistics.mean;
+    const int n = statistics.sampleCount;
+    if (earlierSamples < 1 || 2 * earlierSamples > n || earlierMean.width != mean.width || earlierMean.height != mean.height)
+        return {};
+    const double varianceScale = 1.0 / (double(n) / double(earlierSamples) - 1.0); // as in estimateError
+    const NeighbourhoodSums sums(mean, statistics.varianceOfMean);
+    std::vector<PixelErrorTerms> terms(size_t(mean.width) * size_t(mean.height));
+    for (int y = 0; y < mean.height; ++y)
+        for (int x = 0; x < mean.width; ++x) {
+            if (!isFinitePixel(mean.at(x, y)) || !isFinitePixel(statistics.varianceOfMean.at(x, y)) ||
+                !isFinitePixel(earlierMean.at(x, y)))
+                continue;
+            glm::vec3 now = mean.at(x, y), before = earlierMean.at(x, y), variance = statistics.varianceOfMean.at(x, y);
+            ConvergedBrightness brightness = convergedBrightness(sums, x, y, now, variance);
+            PixelErrorTerms& pixel = terms[size_t(y) * size_t(mean.width) + size_t(x)];
+            for (int c = 0; c < 3; ++c) {
+                double change = double(now[c]) - double(before[c]);
+                double squaredError = change * change * varianceScale;
+                double term = squaredError / brightness.ownAsFloor[c];
+                pixel.ownAsFloor += term;
+                pixel.ownAsFloorSquares += term * term;
+                pixel.ownOnceKnown += squaredError / brightness.ownOnceKnown[c];
+            }
+            pixel.channels = 3;
+        }
+    return terms;
+}
+
+ErrorEstimate estimateFromPixelTerms(const std::vector<PixelErrorTerms>& pixels) {
+    ErrorEstimate estimate;
+    double sum = 0.0, sumSquares = 0.0, sumOwnOnceKnown = 0.0;
+    long long terms = 0;
+    for (const PixelErrorTerms& pixel : pixels) {
+        sum += pixel.ownAsFloor;
+        sumSquares += pixel.ownAsFloorSquares;
+        sumOwnOnceKnown += pixel.ownOnceKnown;
+        terms += pixel.channels;
+    }
+    if (terms == 0) return estimate;
+    if (sum <= 0.0) {
+        estimate.unreliableReason = "nothing has changed yet (no light found, or a black image)";
+        return estimate;
+    }
+    // The same rules as estimateError's.
+    estimate.relativeMse = std::sqrt(sum * sumOwnOnceKnown) / double(terms);
+    estimate.effectivePixels = sum * sum / sumSquares;
+    if (estimate.effectivePixels < kMinEffectivePixels) {
+        estimate.unreliableReason = "too few pixels carry the estimate yet (a few bright samples dominate it)";
+        return estimate;
+    }
+    if (sumOwnOnceKnown > kMaxDenominatorDisagreement * sum) {
+        estimate.unreliableReason = "pixels whose mean rests on a few bright samples decide it: a firefly or a light "
+                                    "smaller than a pixel, which the render cannot tell apart yet";
+        return estimate;
+    }
+    estimate.reliable = true;
+    return estimate;
+}
+
 } // namespace ptview

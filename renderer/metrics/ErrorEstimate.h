@@ -50,6 +50,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ptview {
 
@@ -71,5 +72,29 @@ inline double relativeError(double relativeMse) { return std::sqrt(std::max(rela
 // statistics.sampleCount / 2, the same size); without one (earlierSamples 0) nothing is estimated.
 ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& earlierMean, int earlierSamples,
                             SamplerMode sampler);
+
+// The estimate pixel by pixel, for adaptive sampling (renderer/tracer/AdaptiveSampler.h): a
+// pixel's terms summed over its finite channels under each denominator of the comment above, and
+// the sum of the squared "own as floor" terms that effectivePixels needs. A pixel with a non-finite
+// mean, variance or earlier mean has no channels.
+struct PixelErrorTerms {
+    double ownAsFloor = 0.0;
+    double ownOnceKnown = 0.0;
+    double ownAsFloorSquares = 0.0;
+    int channels = 0;
+    // The pixel's own relative MSE as adaptive sampling judges it: the larger, "own once known"
+    // reading (a firefly is judged against its neighbourhood, so it is not taken for converged).
+    double relativeMse() const { return channels > 0 ? ownOnceKnown / channels : 0.0; }
+};
+
+// Rows top first; every pixel is taken to have statistics.sampleCount samples now and
+// earlierSamples in earlierMean (adaptive sampling evaluates only pixels still sampled, which do).
+// Empty where estimateError would not estimate (no earlier mean at half the samples or fewer).
+std::vector<PixelErrorTerms> pixelErrorTerms(const PixelStatistics& statistics, const ImageRgbF& earlierMean,
+                                             int earlierSamples);
+
+// The image's estimate from per-pixel terms (adaptive sampling keeps a stopped pixel's last ones),
+// with estimateError's rules for when it is reliable. nonFinitePixels is left 0.
+ErrorEstimate estimateFromPixelTerms(const std::vector<PixelErrorTerms>& terms);
 
 } // namespace ptview

@@ -133,6 +133,7 @@ const std::vector<RecipeField>& recipeFields() {
         boolField("denoise", [](RenderRecipe& r) -> auto& { return r.denoise.enabled; }),
         numberField("denoise_iterations", settingRanges::kDenoiseIterations, [](RenderRecipe& r) -> auto& { return r.denoise.iterations; }),
         numberField("denoise_strength", settingRanges::kDenoiseStrength, [](RenderRecipe& r) -> auto& { return r.denoise.strength; }),
+        optionalNumberField("noise_threshold", settingRanges::kNoiseThreshold, [](RenderRecipe& r) -> auto& { return r.noiseThreshold; }),
     };
     return fields;
 }

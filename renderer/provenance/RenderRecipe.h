@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +28,9 @@ struct RenderRecipe {
     // read back never loads `config` itself (it may come from anyone); `render --from` asks for
     // --ocio-config again.
     OcioRequest ocio;
+    // Adaptive sampling (render --noise-threshold): the threshold its pixels stopped at; samplesPerPixel
+    // is then the most any pixel has. nullopt: every pixel has samplesPerPixel.
+    std::optional<float> noiseThreshold;
 };
 
 class RecipeError : public std::runtime_error {

@@ -43,6 +43,9 @@ inline const NumberRange kImageSide{
     "image side", 1.0, double(kMaxResolution), false, false, "px", "width or height of the image", 1.0f, 4096.0f, true};
 inline const NumberRange kTimeLimit{
     "time limit", 0.0, 1e7, false, false, "s", "seconds of rendering after which the render stops", 0.0f, 600.0f};
+inline const NumberRange kNoiseThreshold{
+    "noise threshold", 0.0, 1.0, true, false, "", "the estimated RMS relative error at which adaptive sampling stops (0.02: 2%)",
+    0.001f, 0.2f};
 inline const NumberRange kDenoiseIterations{
     "denoise iterations", 1.0, 8.0, false, false, "", "a-trous iterations of the denoiser (each doubles its reach)",
     1.0f, 8.0f, true};

@@ -135,16 +135,23 @@ PixelStatistics Accumulator::readStatistics() const {
     readAttachment(0, sum);
     readAttachment(1, compensation);
     readAttachment(2, sumSquares);
-    const double n = sampleCount_;
+    const size_t pixels = static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y);
+    stats.pixelSampleCounts.resize(pixels);
+    stats.pixelTakesSamples.resize(pixels);
     for (int y = 0; y < size_.y; ++y) {
         for (int x = 0; x < size_.x; ++x) {
             size_t i = (static_cast<size_t>(y) * static_cast<size_t>(size_.x) + static_cast<size_t>(x)) * 4;
+            // The pixel's own count (accumulate_sum.glsl): sampleCount_ unless adaptive sampling stopped it.
+            const double n = sum[i + 3];
             glm::vec3 mean, varianceOfMean;
             for (int c = 0; c < 3; ++c)
                 meanAndVarianceOfMean(sum[i + c], compensation[i + c], sumSquares[i + c], n, mean[c], varianceOfMean[c]);
             int row = size_.y - 1 - y; // GL rows run bottom-up
             stats.mean.set(x, row, mean);
             stats.varianceOfMean.set(x, row, varianceOfMean);
+            const size_t at = static_cast<size_t>(row) * static_cast<size_t>(size_.x) + static_cast<size_t>(x);
+            stats.pixelSampleCounts[at] = static_cast<int>(n);
+            stats.pixelTakesSamples[at] = sumSquares[i + 3] > 0.0f ? 1 : 0;
         }
     }
     return stats;
@@ -164,9 +171,30 @@ PixelReading Accumulator::readPixel(glm::ivec2 glPixel) const {
         glReadPixels(glPixel.x, glPixel.y, 1, 1, GL_RGBA, GL_FLOAT, &texels[i]);
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    reading.sampleCount = static_cast<int>(texels[0].a); // the pixel's own (accumulate_sum.glsl)
     for (int c = 0; c < 3; ++c)
-        meanAndVarianceOfMean(texels[0][c], texels[1][c], texels[2][c], sampleCount_, reading.mean[c], reading.varianceOfMean[c]);
+        meanAndVarianceOfMean(texels[0][c], texels[1][c], texels[2][c], texels[0].a, reading.mean[c], reading.varianceOfMean[c]);
     return reading;
+}
+
+void Accumulator::stopPixels(const std::vector<std::uint8_t>& stopped) {
+    const size_t pixels = static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y);
+    if (stopped.size() != pixels) throw std::invalid_argument("Accumulator::stopPixels: one flag per pixel expected");
+    if (sampleCount_ == 0) return; // the next pass starts afresh, every pixel taking samples
+    std::vector<float> sumSquares;
+    readAttachment(2, sumSquares);
+    for (int y = 0; y < size_.y; ++y)
+        for (int x = 0; x < size_.x; ++x) {
+            const size_t row = static_cast<size_t>(size_.y - 1 - y); // GL rows run bottom-up
+            const bool stop = stopped[row * static_cast<size_t>(size_.x) + static_cast<size_t>(x)] != 0;
+            float& takesSamples = sumSquares[(static_cast<size_t>(y) * static_cast<size_t>(size_.x) + static_cast<size_t>(x)) * 4 + 3];
+            if (stop) takesSamples = 0.0f;
+            hasStoppedPixels_ = hasStoppedPixels_ || stop;
+        }
+    glBindTexture(GL_TEXTURE_2D, latest().textures[2].id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, sumSquares.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 } // namespace ptview

@@ -10,6 +10,9 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+#include <vector>
+
 namespace ptview {
 
 class Accumulator {
@@ -27,6 +30,7 @@ public:
     void restart() {
         if (sampleCount_ > 0) staleSampleCount_ = sampleCount_;
         sampleCount_ = 0;
+        hasStoppedPixels_ = false;
     }
 
     // Points a compute program's accumulate_image.glsl images at image units firstImageUnit .. + 2.
@@ -44,6 +48,14 @@ public:
     void bindLatest(int sumUnit, int compensationUnit) const;
     // And the sum of squares (the denoiser's variance).
     void bindLatest(int sumUnit, int compensationUnit, int sumSquaresUnit) const;
+
+    // Adaptive sampling: the pixels flagged (rows top first, size().x * size().y of them) take no
+    // more samples until the next restart; the others go on. Writes the flag into the latest sum
+    // of squares' alpha (accumulate_sum.glsl), rewriting its colour channels bit for bit.
+    void stopPixels(const std::vector<std::uint8_t>& stopped);
+    // Whether stopPixels stopped any pixel since the last restart: the display then divides each
+    // pixel by its own count.
+    bool hasStoppedPixels() const { return hasStoppedPixels_ && sampleCount_ > 0; }
 
     PixelStatistics readStatistics() const;
     // One pixel of readStatistics (glPixel counts rows from the bottom, as GL does), read back
@@ -68,6 +80,7 @@ private:
     int writeIndex_ = 0;
     int sampleCount_ = 0;
     int staleSampleCount_ = 0;
+    bool hasStoppedPixels_ = false;
     glm::ivec2 size_{0, 0};
 };
 

@@ -210,8 +210,7 @@ void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     bindTexture(kFeatureAlbedoDepthUnit, features.albedoDepth.id());
     bindTexture(kFeatureNormalUnit, features.normal.id());
     glActiveTexture(GL_TEXTURE0);
-    // The sums bound are those of sampleCount() samples, whenever this band runs.
-    glUniform1f(prepare_->uniformLocation("uSampleCount"), static_cast<float>(std::max(tracer.sampleCount(), 1)));
+    // Each pixel's sample count comes with its sums (the sum's alpha), whenever this band runs.
     glUniform1f(prepare_->uniformLocation("uInvFeatureCount"), featureSamples_ > 0 ? 1.0f / static_cast<float>(featureSamples_) : 0.0f);
     glBindFramebuffer(GL_FRAMEBUFFER, prepareFramebuffer_.id());
     drawRows(rowBegin, rowEnd);

@@ -62,6 +62,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio)
     show.bindSamplerUnit("uSumSquares", kDisplaySumSquaresUnit);
     show.bindSamplerUnit("uOtherImage", kDisplayOtherImageUnit);
     display.invSampleCount = show.uniformLocation("uInvSampleCount");
+    display.perPixelSampleCount = show.uniformLocation("uPerPixelSampleCount");
     display.exposureScale = show.uniformLocation("uExposureScale");
     display.toneMapper = show.uniformLocation("uToneMapper");
     display.displayTransfer = show.uniformLocation("uDisplayTransfer");
@@ -583,6 +584,7 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
                           hasDenoised();
     int samples = denoised ? 1 : shown.displayedSampleCount();
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
+    glUniform1i(display_.perPixelSampleCount, !denoised && shown.hasStoppedPixels() ? 1 : 0);
     glUniform1f(display_.exposureScale, std::exp2(settings.exposureStops));
     glUniform1ui(display_.toneMapper, static_cast<GLuint>(settings.toneMapper));
     glUniform1ui(display_.displayTransfer, static_cast<GLuint>(settings.transfer));

@@ -187,6 +187,9 @@ public:
 
     ImageRgbF readMean() const;
     PixelStatistics readStatistics() const { return accumulator_.readStatistics(); }
+    // Adaptive sampling (AdaptiveSampler.h): the flagged pixels (rows top first) take no more
+    // samples until the next restart; every read-back and the display then use each pixel's own count.
+    void stopPixels(const std::vector<std::uint8_t>& stopped) { accumulator_.stopPixels(stopped); }
 
     // The first surface that the pinhole ray through filmPos (pixels of the image from its
     // bottom-left corner, as the camera counts them; a pixel's centre is its index + 0.5) meets,
@@ -210,6 +213,7 @@ private:
     struct DisplayProgram {
         std::unique_ptr<GlProgram> program;
         GLint invSampleCount = -1;
+        GLint perPixelSampleCount = -1;
         GLint exposureScale = -1;
         GLint toneMapper = -1;
         GLint displayTransfer = -1;

@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Adaptive against uniform sampling on shipped scenes (docs/sampling.md, "Adaptive sampling").
+
+For each scene: a reference (16384 spp, sobol sampler, seed 1000) and a second one (seed 1001)
+whose difference gives the references' own noise, subtracted from every error; adaptive renders
+(`render --noise-threshold E`) for each E, and uniform renders at doubling spp. The true error of
+each is against the reference; the uniform time and spp to reach each adaptive render's true
+error are interpolated (log-log) between the uniform renders. Times are the renders' own
+("after T s" / the written line), so they include no compilation. Not a test: times depend on
+the machine and its load.
+
+usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.05,0.02,0.01]
+"""
+import math, os, re, subprocess, sys
+import numpy as np
+
+def pfm(path):
+    with open(path, 'rb') as f:
+        assert f.readline().strip() == b'PF'
+        w, h = map(int, f.readline().split())
+        scale = float(f.readline())
+        data = np.frombuffer(f.read(), dtype='<f4' if scale < 0 else '>f4').reshape(h, w, 3)
+    return data.astype(np.float64)
+
+def rel_mse(x, ref):
+    return float(np.mean((x - ref) ** 2 / (ref ** 2 + 1e-2)))
+
+def render(ptview, scene, size, out, *args):
+    result = subprocess.run([ptview, 'render', scene, '--size', size, '--out', out, '--backend', 'fragment', *args],
+                            capture_output=True, text=True, check=True)
+    return result.stderr
+
+def seconds_of(log):
+    adaptive = re.search(r'adaptive: .* after ([0-9.]+) s', log)
+    if adaptive: return float(adaptive.group(1))
+    return float(re.search(r'spp, depth \d+, \w+ sampler, \w+ integrator, ([0-9.]+) s', log).group(1))
+
+def interpolate(points, error):  # (seconds or spp, error) pairs, errors falling: x at which error is reached
+    for (x0, e0), (x1, e1) in zip(points, points[1:]):
+        if e0 >= error >= e1 and e0 > 0 and e1 > 0:
+            w = (math.log(e0) - math.log(error)) / (math.log(e0) - math.log(e1))
+            return math.exp((1 - w) * math.log(x0) + w * math.log(x1))
+    return float('nan')
+
+def main():
+    args = sys.argv[1:]
+    thresholds = [0.05, 0.02, 0.01]
+    if '--thresholds' in args:
+        i = args.index('--thresholds')
+        thresholds = [float(t) for t in args[i + 1].split(',')]
+        del args[i:i + 2]
+    ptview, outdir, size, scenes = args[0], args[1], args[2], args[3:]
+    os.makedirs(outdir, exist_ok=True)
+    print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
+    print('|---|---:|---|---|---:|', flush=True)
+    for scene in scenes:
+        name = os.path.splitext(os.path.basename(scene))[0]
+        refs = []
+        for seed in (1000, 1001):
+            path = f'{outdir}/{name}-ref{seed}.pfm'
+            if not os.path.exists(path):
+                render(ptview, scene, size, path, '--spp', '16384', '--sampler', 'sobol', '--seed', str(seed))
+            refs.append(pfm(path))
+        floor = rel_mse(refs[1], refs[0]) / 2  # each reference's own noise
+        print(f'<!-- {name}: reference noise relMSE {floor:.3g} -->', flush=True)
+        true = lambda image: rel_mse(image, refs[0]) - floor
+        adaptive = []
+        for e in thresholds:
+            log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', '2')
+            mean_spp = float(re.search(r'spp min/mean/max \d+/([0-9.]+)/\d+', log).group(1))
+            adaptive.append((e, seconds_of(log), mean_spp, true(pfm(f'{outdir}/{name}-adaptive.pfm'))))
+        smallest = min(a[3] for a in adaptive)
+        uniform, spp = [], 16
+        while spp <= 65536:
+            log = render(ptview, scene, size, f'{outdir}/{name}-uniform.pfm', '--spp', str(spp), '--seed', '2')
+            uniform.append((spp, seconds_of(log), true(pfm(f'{outdir}/{name}-uniform.pfm'))))
+            if uniform[-1][2] < smallest / 1.5: break
+            spp *= 2
+        for e, seconds, mean_spp, error in adaptive:
+            u_seconds = interpolate([(s, r) for _, s, r in uniform], error)
+            u_spp = interpolate([(n, r) for n, _, r in uniform], error)
+            print(f'| {name} | {e:g} | {seconds:.2f} s, {mean_spp:.0f}, {math.sqrt(max(error, 0)):.4f} | '
+                  f'{u_seconds:.2f} s, {u_spp:.0f} | {u_seconds / seconds:.2f}x, {u_spp / mean_spp:.2f}x |', flush=True)
+
+main()

@@ -1,0 +1,73 @@
+#pragma once
+// Adaptive sampling (docs/sampling.md, "Adaptive sampling"): renders in whole passes between
+// checks; at each check it reads the accumulation back, estimates each pixel's relative error
+// (pixelErrorTerms, ErrorEstimate.h) from the change of its mean since a check at half its samples
+// or fewer, and stops the pixels pixelsToStop (AdaptiveStopRule.h) names; they take no more
+// samples. The checks fall at fixed sample counts (a sequence from minSamples, in whole passes),
+// never at times, so the same scene, settings and cap give the same pixels bit for bit.
+
+#include <ptview/metrics/ErrorEstimate.h>
+#include <ptview/tracer/PathTracer.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace ptview {
+
+// No pixel stops before this many samples: the estimate of a pixel rests on the change of its
+// mean since half its samples, and at fewer a dark pixel that has not yet met a rare bright path
+// would look converged (the bias docs/sampling.md bounds).
+inline constexpr int kAdaptiveMinSamples = 64;
+// Pixels stop in tiles of this side (AdaptiveStopRule.h): llvmpipe shades 4x2 blocks of pixels
+// together with AVX2 (4x4 with AVX-512), a GPU 8x4 or so, and a block is as slow as its slowest pixel.
+inline constexpr int kAdaptiveTileSide = 4;
+// Each check after the first comes at this many times the samples of the one before (rounded up
+// to whole passes, at least one pass later).
+inline constexpr double kAdaptiveCheckGrowth = 1.25;
+
+struct SampleCountSummary {
+    int min = 0, max = 0;
+    double mean = 0.0;
+    double stoppedShare = 0.0; // of the pixels, those adaptive sampling stopped
+};
+
+class AdaptiveSampler {
+public:
+    // noiseThreshold: the RMS relative error (in (0, 1]) a pixel's neighbourhood must reach to
+    // stop. Restarts the tracer's accumulation.
+    AdaptiveSampler(PathTracer& tracer, double noiseThreshold, int minSamples = kAdaptiveMinSamples);
+
+    // Renders up to the next check, or up to maxSamples if that comes first, then checks there.
+    // Does nothing once every pixel stopped or maxSamples is reached.
+    void renderToNextCheck(int maxSamples);
+
+    // The image's estimated error at the last check: the pixels still sampled as they are now,
+    // the stopped ones as they were when they stopped. Not reliable before the second check.
+    const ErrorEstimate& estimate() const { return estimate_; }
+    // The estimate is reliable and at most the threshold.
+    bool reachedThreshold() const;
+    bool allStopped() const { return summary_.stoppedShare >= 1.0; }
+    const SampleCountSummary& sampleCounts() const { return summary_; }
+    // The sample count (of the pixels still sampled) of the next check.
+    int nextCheck() const { return nextCheck_; }
+    double noiseThreshold() const { return noiseThreshold_; }
+
+private:
+    void check();
+
+    PathTracer& tracer_;
+    double noiseThreshold_;
+    int minSamples_;
+    int nextCheck_;
+    struct Snapshot {
+        int samples;
+        ImageRgbF mean;
+    };
+    std::vector<Snapshot> snapshots_; // the means at earlier checks, fewest samples first
+    std::vector<PixelErrorTerms> terms_; // each pixel's latest (a stopped pixel's last)
+    std::vector<double> pixelRelativeMse_;
+    ErrorEstimate estimate_;
+    SampleCountSummary summary_;
+};
+
+} // namespace ptview
