@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -136,7 +137,10 @@ TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
 
     for (std::size_t i = 0; i < script.commands.size(); ++i) EXPECT_EQ(script.commands[i].line, int(i) + 1);
     // An OpenColorIO view's name is the rest of the line, spaces included.
-    EXPECT_EQ(script.commands.back().words, std::vector<std::string>{"Filmic Log"});
+    auto ocioView = std::find_if(script.commands.begin(), script.commands.end(),
+                                 [](const ScriptCommand& command) { return command.verb == "ocio-view"; });
+    ASSERT_NE(ocioView, script.commands.end());
+    EXPECT_EQ(ocioView->words, std::vector<std::string>{"Filmic Log"});
 
     const auto& c = script.commands;
     EXPECT_EQ(c[0].verb, "integrator");

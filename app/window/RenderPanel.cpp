@@ -214,7 +214,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
         model.ocioError = "load an OpenColorIO config first (below)";
     }
     ImGui::BeginDisabled(model.display.toneMapper == ToneMapper::Ocio);
-    enumCombo("display transfer", displayTransferNames(), model.display.transfer);
+    enumCombo("encoding", displayTransferNames(), model.display.transfer); // the display transfer curve
     ImGui::EndDisabled();
     itemTooltip("how the tone-mapped values are encoded for the screen and a saved PNG: the exact sRGB curve,\n"
                 "or gamma 2.2 as ptview wrote images before (a file opened with --from keeps its own);\n"
