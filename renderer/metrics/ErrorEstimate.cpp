@@ -117,52 +117,11 @@ ErrorEstimate estimateError(const PixelStatistics& statistics, const ImageRgbF& 
                                     "noise, and its error is bias, which no estimate from the render can see";
         return estimate;
     }
-    int n = statistics.sampleCount;
-    if (earlierSamples < 1 || 2 * earlierSamples > n || earlierMean.width != mean.width ||
-        earlierMean.height != mean.height)
-        return estimate;
-    // E[(x_n - x_m)^2] = Var[x_m] - Var[x_n] = Var[x_n] (n/m - 1) for independent samples.
-    const double varianceScale = 1.0 / (double(n) / double(earlierSamples) - 1.0);
-    const NeighbourhoodSums sums(mean, statistics.varianceOfMean);
-    double sum = 0.0, sumSquares = 0.0, sumOwnOnceKnown = 0.0;
-    long long terms = 0;
-    for (int y = 0; y < mean.height; ++y) {
-        for (int x = 0; x < mean.width; ++x) {
-            if (!isFinitePixel(mean.at(x, y)) || !isFinitePixel(statistics.varianceOfMean.at(x, y)) ||
-                !isFinitePixel(earlierMean.at(x, y)))
-                continue;
-            glm::vec3 now = mean.at(x, y), before = earlierMean.at(x, y), variance = statistics.varianceOfMean.at(x, y);
-            ConvergedBrightness brightness = convergedBrightness(sums, x, y, now, variance);
-            for (int c = 0; c < 3; ++c) {
-                double change = double(now[c]) - double(before[c]);
-                double squaredError = change * change * varianceScale;
-                double term = squaredError / brightness.ownAsFloor[c];
-                sum += term;
-                sumSquares += term * term;
-                sumOwnOnceKnown += squaredError / brightness.ownOnceKnown[c];
-                ++terms;
-            }
-        }
-    }
-    if (terms == 0) return estimate;
-    if (sum <= 0.0) {
-        estimate.unreliableReason = "nothing has changed yet (no light found, or a black image)";
-        return estimate;
-    }
-    // ownOnceKnown's denominators are never larger than ownAsFloor's, so its sum is never smaller.
-    estimate.relativeMse = std::sqrt(sum * sumOwnOnceKnown) / double(terms);
-    estimate.effectivePixels = sum * sum / sumSquares;
-    if (estimate.effectivePixels < kMinEffectivePixels) {
-        estimate.unreliableReason = "too few pixels carry the estimate yet (a few bright samples dominate it)";
-        return estimate;
-    }
-    if (sumOwnOnceKnown > kMaxDenominatorDisagreement * sum) {
-        estimate.unreliableReason = "pixels whose mean rests on a few bright samples decide it: a firefly or a light "
-                                    "smaller than a pixel, which the render cannot tell apart yet";
-        return estimate;
-    }
-    estimate.reliable = true;
-    return estimate;
+    // The image's estimate is the sum of its pixels' terms: the same sums adaptive sampling stops
+    // pixels by (pixelErrorTerms, estimateFromPixelTerms).
+    ErrorEstimate fromPixels = estimateFromPixelTerms(pixelErrorTerms(statistics, earlierMean, earlierSamples));
+    fromPixels.nonFinitePixels = estimate.nonFinitePixels;
+    return fromPixels;
 }
 
 std::vector<PixelErrorTerms> pixelErrorTerms(const PixelStatistics& statistics, const ImageRgbF& earlierMean,
@@ -171,7 +130,8 @@ std::vector<PixelErrorTerms> pixelErrorTerms(const PixelStatistics& statistics, 
     const int n = statistics.sampleCount;
     if (earlierSamples < 1 || 2 * earlierSamples > n || earlierMean.width != mean.width || earlierMean.height != mean.height)
         return {};
-    const double varianceScale = 1.0 / (double(n) / double(earlierSamples) - 1.0); // as in estimateError
+    // E[(x_n - x_m)^2] = Var[x_m] - Var[x_n] = Var[x_n] (n/m - 1) for independent samples.
+    const double varianceScale = 1.0 / (double(n) / double(earlierSamples) - 1.0);
     const NeighbourhoodSums sums(mean, statistics.varianceOfMean);
     std::vector<PixelErrorTerms> terms(size_t(mean.width) * size_t(mean.height));
     for (int y = 0; y < mean.height; ++y)
@@ -210,7 +170,7 @@ ErrorEstimate estimateFromPixelTerms(const std::vector<PixelErrorTerms>& pixels)
         estimate.unreliableReason = "nothing has changed yet (no light found, or a black image)";
         return estimate;
     }
-    // The same rules as estimateError's.
+    // ownOnceKnown's denominators are never larger than ownAsFloor's, so its sum is never smaller.
     estimate.relativeMse = std::sqrt(sum * sumOwnOnceKnown) / double(terms);
     estimate.effectivePixels = sum * sum / sumSquares;
     if (estimate.effectivePixels < kMinEffectivePixels) {
