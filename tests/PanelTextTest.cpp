@@ -28,6 +28,22 @@ TEST(PanelText, AViewNamesItsSideOnlyInTheSplitView) {
 
 // The sidebar's label column is as wide as "samples/frame" (Viewer.cpp), in ImGui's monospaced
 // default font: a longer label beside a slider or a combo is cut ("aperture radiu", issue 37).
+// ImGui does not wrap a tooltip: every one goes through wrappedTooltip (PanelWidgets.h), which
+// does, so none is cut at the window's edge (the Trace paths button's was, issue 37).
+TEST(PanelText, EveryTooltipWraps) {
+    int wrapped = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(PTVIEW_ASSETS_DIR "/../app/window")) {
+        std::ifstream in(entry.path());
+        std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const bool widgets = entry.path().filename() == "PanelWidgets.h";
+        for (size_t at = source.find("SetTooltip("); at != std::string::npos; at = source.find("SetTooltip(", at + 1))
+            ADD_FAILURE() << entry.path().filename() << ": an unwrapped ImGui::SetTooltip; use wrappedTooltip or itemTooltip";
+        for (size_t at = source.find("Tooltip("); at != std::string::npos; at = source.find("Tooltip(", at + 1))
+            wrapped += widgets ? 0 : 1;
+    }
+    EXPECT_GT(wrapped, 50) << "the tooltips were found";
+}
+
 TEST(PanelText, EveryWidgetLabelFitsTheSidebarsLabelColumn) {
     const std::size_t column = std::string("samples/frame").size();
     const std::regex widget(R"((?:Slider\w*|Drag\w*|Combo|Input\w*|ColorEdit\d|enumCombo)\(\s*"([^"#]*)(?:##[^"]*)?")");

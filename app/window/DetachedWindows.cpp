@@ -1,5 +1,7 @@
 #include <ptview/window/DetachedWindows.h>
 
+#include <ptview/window/PanelWidgets.h>
+
 #include <cstdio>
 
 namespace ptview {
@@ -11,8 +13,8 @@ bool DetachedWindows::drawInSidebar(DetachableSection section) {
         // At the right end of the line above the section, where it takes no row of its own.
         if (ImGui::SmallButton("pop out")) setOut(section, true);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("show \"%s\" in its own window (move and resize it; close it to put it back here)",
-                              info(section).title);
+            wrappedTooltip(std::string("show \"") + info(section).title +
+                           "\" in its own window (move and resize it; close it to put it back here)");
     } else {
         ImGui::TextDisabled("(in its own window)");
         ImGui::SameLine();

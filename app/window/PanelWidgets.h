@@ -20,9 +20,20 @@ namespace ptview {
 // The texts these widgets show may quote names, paths and errors from a file someone sent: each
 // shows its text through printableLines (PrintableText.h), so a control character reads as an
 // escape and a line break stays one.
+// Every tooltip wraps at kTooltipWrapEm font sizes: ImGui does not wrap one by itself, and a long
+// line wider than the window was cut at its edge (the Trace paths button's, issue 37).
+constexpr float kTooltipWrapEm = 36.0f;
+inline void wrappedTooltip(const std::string& text) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * kTooltipWrapEm);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 // Escaped only when shown (hovered): the panels call this for every widget every frame.
 inline void itemTooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", printableLines(text).c_str());
+    if (ImGui::IsItemHovered()) wrappedTooltip(printableLines(text));
 }
 
 // A combo over an enum's table: each entry's label, with its description (where it has one) on

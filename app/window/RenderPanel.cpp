@@ -198,7 +198,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
     if (!model.backendChoice.empty()) noteText("auto: " + model.backendChoice);
     const PathTracer& tracer = session.tracer(ViewerSession::Side::Left);
     ImGui::TextDisabled("%s compiled (hover: this scene's features)", countOf(tracer.programsCompiled(), "program").c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tracer.features().describe().c_str());
+    if (ImGui::IsItemHovered()) wrappedTooltip(tracer.features().describe());
     ImGui::SliderFloat("resolution", &model.resolutionScale, settingRanges::kResolutionScale.panelLo,
                        settingRanges::kResolutionScale.panelHi, "%.3f x");
     itemTooltip("render at this multiple of the window's pixels: below 1 faster and coarser, above 1 supersampled");
