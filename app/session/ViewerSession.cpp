@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <stdexcept>
 
@@ -740,8 +741,28 @@ void ViewerSession::update() {
         setEnvironmentMap({}); // the constant colour instead, and say why
         model_.sceneError = e.what();
     }
+    syncAdaptive();
     syncDenoise();
     syncOtherImages();
+}
+
+// A new target (or none) restarts: pixels stopped for one threshold are not those another would
+// stop, and turning it off lets every pixel sample again. Any other restart (an edit, a camera
+// move, a resize) starts the checks over too.
+void ViewerSession::syncAdaptive() {
+    const float wanted = model_.targetErrorOn ? model_.targetError : 0.0f;
+    PathTracer& tracer = *left_.tracer;
+    if (wanted != seenTargetError_) {
+        seenTargetError_ = wanted;
+        left_.adaptive.reset();
+        tracer.restart();
+    }
+    if (wanted > 0.0f && (!left_.adaptive || left_.adaptiveRestartCount != tracer.restartCount())) {
+        left_.adaptive = std::make_unique<AdaptiveSampler>(tracer, wanted); // restarts the tracer
+        left_.adaptiveRestartCount = tracer.restartCount();
+        left_.adaptiveChecks = 0;
+    }
+    trackRestart(left_);
 }
 
 bool ViewerSession::showsDenoised(Side side) const {
@@ -813,6 +834,7 @@ void ViewerSession::trackRestart(View& view) {
 bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
     if (model_.paused) return false;
     if (model_.targetSamples > 0 && view.tracer->sampleCount() >= model_.targetSamples) return false;
+    if (view.adaptive && view.adaptive->finished()) return false;
     return model_.maxSamplesPerFrame <= 0 || passesThisFrame < model_.maxSamplesPerFrame;
 }
 
@@ -870,7 +892,11 @@ double ViewerSession::renderFrame(double budgetSeconds) {
         cost.record(rows, seconds);
         chosen.renderSeconds += seconds;
         worked = true;
-        if (passDone && !preview) ++passes[next];
+        if (passDone && !preview) {
+            ++passes[next];
+            // Only the frame whose pass reaches a check reads the image back.
+            if (chosen.adaptive && chosen.adaptive->checkIfDue()) ++chosen.adaptiveChecks;
+        }
     }
     for (int i = 0; i < 2; ++i)
         if (denoiseSeconds[i] > 0.0) denoise(*views[i], denoiseSeconds[i]);
@@ -912,6 +938,25 @@ void ViewerSession::denoise(View& view, double seconds) {
         if (splitsRawAndDenoised()) model_.compare.enabled = false;
         syncDenoise();
     }
+}
+
+namespace {
+
+// "percent" with up to three significant digits: 0.0098 -> "0.98%".
+std::string percentText(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g%%", 100.0 * fraction);
+    return text;
+}
+
+} // namespace
+
+std::string adaptiveStopNote(const AdaptiveSampler& sampler) {
+    if (sampler.reachedThreshold())
+        return "stopped: estimated error " + percentText(relativeError(sampler.estimate().relativeMse)) + " <= " +
+               percentText(sampler.noiseThreshold());
+    if (sampler.allStopped()) return "stopped: every pixel stopped";
+    return "";
 }
 
 void ViewerSession::updateErrorEstimate(View& view) {
@@ -1006,6 +1051,17 @@ ViewerSession::ViewStats ViewerSession::stats(Side side) const {
     if (stats.denoised) {
         stats.denoisedSamples = v.tracer->denoisedSampleCount();
         stats.denoisedTrueError = v.denoisedTrueError;
+    }
+    if (v.adaptive) {
+        const AdaptiveSampler& sampler = *v.adaptive;
+        ViewStats::Adaptive adaptive;
+        adaptive.targetError = sampler.noiseThreshold();
+        adaptive.checks = v.adaptiveChecks;
+        adaptive.estimate = sampler.estimate();
+        adaptive.samples = sampler.sampleCounts();
+        adaptive.finished = sampler.finished();
+        adaptive.note = adaptiveStopNote(sampler);
+        stats.adaptive = adaptive;
     }
     return stats;
 }
