@@ -391,6 +391,33 @@ TEST_F(ViewerSessionTest, TargetErrorStopsAdaptivelyAndStoppedPixelsTakeNoMoreSa
     for (std::size_t i = 0; i < statistics.pixelTakesSamples.size(); ++i) ASSERT_TRUE(statistics.pixelTakesSamples[i]);
 }
 
+// Adaptive against uniform at equal time: two renders with the same settings, the left with a
+// target error; when the left stops, the right (uniform: no pixel stops) stops at the same GPU
+// time, within the last tile.
+TEST_F(ViewerSessionTest, WithATargetErrorTheSplitViewsUniformSideStopsAtTheAdaptiveSidesTime) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    model.compare.enabled = true;
+    session->update();
+    model.compare.right = model.settings; // the first comparison chose another integrator
+    model.compare.equalTime = true;
+    model.targetErrorOn = true;
+    model.targetError = 0.1f;
+    session->update();
+    ASSERT_TRUE(session->comparesTwoRenders());
+    for (int frame = 0; frame < 20000 && session->accumulating(); ++frame) session->renderFrame();
+    ASSERT_FALSE(session->accumulating());
+    ViewerSession::ViewStats left = session->stats(ViewerSession::Side::Left), right = session->stats(ViewerSession::Side::Right);
+    ASSERT_TRUE(left.adaptive);
+    EXPECT_TRUE(left.adaptive->finished);
+    EXPECT_FALSE(right.adaptive) << "the right side samples uniformly";
+    EXPECT_GT(right.samples, 0);
+    EXPECT_GE(right.renderSeconds, left.renderSeconds);
+    EXPECT_LT(right.renderSeconds, left.renderSeconds + 0.25) << "it stops within a tile of the left's time";
+    PixelStatistics statistics = session->tracer(ViewerSession::Side::Right).readStatistics();
+    for (std::uint8_t takes : statistics.pixelTakesSamples) ASSERT_TRUE(takes);
+}
+
 // The error (estimate and true error) is measured about once a second, not every frame: the
 // Stats panel printed a 2-spp figure beside "16 spp". Each figure carries the count and the
 // seconds it was measured at, which the panels print beside it.

@@ -835,6 +835,11 @@ bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
     if (model_.paused) return false;
     if (model_.targetSamples > 0 && view.tracer->sampleCount() >= model_.targetSamples) return false;
     if (view.adaptive && view.adaptive->finished()) return false;
+    // Adaptive against uniform at equal time: once the main view's adaptive sampling stopped, the
+    // split view's other render stops at the same GPU time, so the two show what equal cost buys.
+    if (&view != &left_ && model_.compare.equalTime && left_.adaptive && left_.adaptive->finished() &&
+        view.renderSeconds >= left_.renderSeconds)
+        return false;
     return model_.maxSamplesPerFrame <= 0 || passesThisFrame < model_.maxSamplesPerFrame;
 }
 
