@@ -538,7 +538,9 @@ ImageMetadata ViewerSession::provenance(Side side) const {
     DisplaySettings display = displaySettings(side);
     display.denoised = denoise.enabled;
     RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                        programOptions_.allFeatures, denoise, {}, std::nullopt}; // the viewer samples uniformly
+                        programOptions_.allFeatures, denoise, {}, std::nullopt};
+    // An adaptive image says so: `render --from` it samples adaptively to the same threshold, capped at its spp.
+    if (const View& v = view(side); v.adaptive) recipe.noiseThreshold = static_cast<float>(v.adaptive->noiseThreshold());
     if (display.toneMapper == ToneMapper::Ocio) recipe.ocio = model_.ocio;
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
