@@ -411,9 +411,11 @@ TEST_F(ViewerSessionTest, WithATargetErrorTheSplitViewsUniformSideStopsAtTheAdap
     model.compare.right = model.settings; // the first comparison chose another integrator
     model.compare.equalTime = true;
     model.targetErrorOn = true;
+    renderSamples(*session, 2);
     model.targetError = 0.1f;
     session->update();
     ASSERT_TRUE(session->comparesTwoRenders());
+    EXPECT_EQ(session->stats(ViewerSession::Side::Right).samples, 0) << "a new target starts both sides together";
     for (int frame = 0; frame < 20000 && session->accumulating(); ++frame) session->renderFrame();
     ASSERT_FALSE(session->accumulating());
     ViewerSession::ViewStats left = session->stats(ViewerSession::Side::Left), right = session->stats(ViewerSession::Side::Right);

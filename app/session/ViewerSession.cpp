@@ -758,6 +758,11 @@ void ViewerSession::syncAdaptive() {
         seenTargetError_ = wanted;
         left_.adaptive.reset();
         tracer.restart();
+        // Adaptive against uniform at equal time starts both sides together.
+        if (comparesTwoRenders()) {
+            right_->tracer->restart();
+            trackRestart(*right_);
+        }
     }
     if (wanted > 0.0f && (!left_.adaptive || left_.adaptiveRestartCount != tracer.restartCount())) {
         left_.adaptive = std::make_unique<AdaptiveSampler>(tracer, wanted); // restarts the tracer
