@@ -17,6 +17,7 @@ uniform bool uHighlightNonFinite; // a debug view: NaN or infinite means in mage
 uniform uint uDisplayView;
 uniform vec2 uErrorLog10Range; // the error views' colour map: log10 of its first and last colour's error
 uniform float uDifferenceRange; // the difference view's: the radiance difference of its ends
+uniform vec2 uSampleCountLog2Range; // the samples-per-pixel view's: log2 of its first and last colour's count
 uniform vec2 uOutputOrigin;   // lower-left corner of the output rectangle, in framebuffer pixels
 uniform vec2 uOutputSize;     // its size in pixels
 
@@ -43,6 +44,8 @@ void main() {
     } else if (uDisplayView == kDisplayViewEstimatedError) {
         float sampleCount = invSampleCount > 0.0 ? 1.0 / invSampleCount : 0.0;
         shown = errorColor(estimatedRelativeError(mean, texture(uSumSquares, texCoord).rgb, sampleCount), uErrorLog10Range);
+    } else if (uDisplayView == kDisplayViewSamplesPerPixel) {
+        shown = sampleCountColor(invSampleCount > 0.0 ? 1.0 / invSampleCount : 0.0, uSampleCountLog2Range);
     } else if (uDisplayView == kDisplayViewDifference) {
         shown = differenceColor(mean - other, uDifferenceRange);
     } else if (uDisplayView == kDisplayViewAbsDifference) {

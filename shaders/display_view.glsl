@@ -40,3 +40,9 @@ vec3 differenceColor(vec3 difference, float range) {
     float mean = (difference.r + difference.g + difference.b) / 3.0;
     return colorMapBlueWhiteRed(0.5 + 0.5 * mean / range);
 }
+
+// A pixel's own sample count on the log-scaled map (SampleCountMapRange, DisplayView.h):
+// log2Range.x (and below) is the map's first colour, log2Range.y (and above) its last.
+vec3 sampleCountColor(float sampleCount, vec2 log2Range) {
+    return colorMapViridis((log2(max(sampleCount, 1.0)) - log2Range.x) / (log2Range.y - log2Range.x));
+}

@@ -6,4 +6,5 @@ const uint kDisplayViewEstimatedError = 2u; // estimated-error
 const uint kDisplayViewDifference = 3u; // difference
 const uint kDisplayViewAbsDifference = 4u; // abs-difference
 const uint kDisplayViewOtherImage = 5u; // other-image
+const uint kDisplayViewSamplesPerPixel = 6u; // samples-per-pixel
 const float kRelativeErrorEpsilon = 0.01;

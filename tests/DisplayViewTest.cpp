@@ -8,6 +8,7 @@
 #include <ptview/metrics/ErrorMetrics.h>
 #include <ptview/scene/SceneLoader.h>
 #include <ptview/settings/ColorMap.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/window/ErrorLegend.h>
 
@@ -195,6 +196,61 @@ TEST_F(DisplayViews, AViewWithoutAnImageOfTheRendersSizeShowsTheImage) {
     EXPECT_EQ(tracer_->readToneMapped(display).rgba, image.rgba) << "no reference";
     tracer_->setOtherImage(std::make_shared<const ImageRgbF>(kSize.x + 1, kSize.y));
     EXPECT_EQ(tracer_->readToneMapped(display).rgba, image.rgba) << "a reference of another size";
+}
+
+// The samples-per-pixel view under adaptive sampling: pixels stopped at 64 and at 96 samples in
+// stripes (Accumulator::stopPixels, as AdaptiveSampler stops them), the rest going on to 160;
+// every pixel is viridis at log2 of its own count on SampleCountMapRange (64 .. 160), and the
+// denoised image, which has no counts, does not replace it.
+TEST_F(DisplayViews, SamplesPerPixelIsTheColourMapAtEachPixelsOwnSampleCount) {
+    PathTracer tracer;
+    tracer.setScene(loadScene(kCornell));
+    tracer.setImageSize(kSize);
+    tracer.setSettings(testing::naiveSettings(2, 5));
+    const size_t pixels = static_cast<size_t>(kSize.x) * kSize.y;
+    auto stopEvery = [&](int column) {
+        std::vector<std::uint8_t> stop(pixels, 0);
+        for (int y = 0; y < kSize.y; ++y)
+            for (int x = column; x < kSize.x; x += 3) stop[static_cast<size_t>(y) * kSize.x + x] = 1;
+        tracer.stopPixels(stop);
+    };
+    tracer.renderSamples(64);
+    stopEvery(0);
+    tracer.renderSamples(32);
+    stopEvery(1);
+    tracer.renderSamples(64);
+    PixelStatistics statistics = tracer.readStatistics();
+    ASSERT_EQ(tracer.sampleCount(), 160);
+    const SampleCountMapRange range = sampleCountMapRange(160, kAdaptiveMinSamples);
+    EXPECT_FLOAT_EQ(range.log2Min, 6.0f);
+    DisplaySettings display;
+    display.view = DisplayView::SamplesPerPixel;
+    std::set<int> counts;
+    for (bool denoised : {false, true}) {
+        SCOPED_TRACE(denoised ? "denoise on" : "raw");
+        display.denoised = denoised;
+        if (denoised) tracer.setDenoise(DenoiseSettings{true});
+        if (denoised) tracer.updateDenoised();
+        ImageRgba8 shown = tracer.readToneMapped(display);
+        for (int y = 0; y < kSize.y; ++y)
+            for (int x = 0; x < kSize.x; ++x) {
+                const int count = statistics.pixelSampleCounts[static_cast<size_t>(y) * kSize.x + x];
+                ASSERT_EQ(count, x % 3 == 0 ? 64 : x % 3 == 1 ? 96 : 160) << "pixel " << x << " " << y;
+                counts.insert(count);
+                const float t = (std::log2(float(count)) - range.log2Min) / (range.log2Max - range.log2Min);
+                ASSERT_LE(largestChannelDifference(shownAt(shown, x, y), bytesOf(evaluateColorMap(kViridisPoints, t))), 1)
+                    << "pixel " << x << " " << y << " count " << count;
+            }
+    }
+    EXPECT_EQ(counts.size(), 3u);
+
+    // The legend: its ends are the map's ends, 64 and 160, and 128 stands where 128's colour is.
+    std::vector<LegendTick> ticks = legendTicks(display, 160);
+    ASSERT_EQ(ticks.size(), 3u);
+    EXPECT_EQ(ticks[0].label, "64");
+    EXPECT_EQ(ticks[1].label, "128");
+    EXPECT_NEAR(ticks[1].position, 1.0f / (std::log2(160.0f) - 6.0f), 1e-5f);
+    EXPECT_EQ(ticks[2].label, "160");
 }
 
 // The pixel zoom: drawn at 4 screen pixels per render pixel, every 4x4 block is one render

@@ -163,6 +163,23 @@ TEST(ScriptRunner, DenoiseCommandsSetTheModelsDenoiserAndSplit) {
     EXPECT_EQ(pushed.iterations, 3);
 }
 
+// `target-error E` turns adaptive sampling of the main view on at E, `target-error off` turns it
+// off; each change restarts the accumulation (ViewerSession::syncAdaptive).
+TEST(ScriptRunner, TargetErrorTurnsAdaptiveSamplingOnAndOff) {
+    ScriptedSession scripted(std::filesystem::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json", "target-error 0.03\n");
+    ViewerSession& session = *scripted.session;
+    EXPECT_TRUE(session.model().targetErrorOn);
+    EXPECT_FLOAT_EQ(session.model().targetError, 0.03f);
+    ViewerSession::ViewStats stats = session.stats(ViewerSession::Side::Left);
+    ASSERT_TRUE(stats.adaptive);
+    EXPECT_NEAR(stats.adaptive->targetError, 0.03, 1e-6);
+
+    ScriptedSession off(std::filesystem::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json", "target-error 0.03\ntarget-error off\n");
+    EXPECT_FALSE(off.session->model().targetErrorOn);
+    EXPECT_FLOAT_EQ(off.session->model().targetError, 0.03f) << "kept for the Render panel's checkbox";
+    EXPECT_FALSE(off.session->stats(ViewerSession::Side::Left).adaptive);
+}
+
 // `undo` and `redo` by script: each command's edit is one step; undo restores the value and the
 // render starts again for what changed (a material alone: no scene upload); redo brings it back.
 TEST(ScriptRunner, UndoAndRedoWalkTheScriptsEditsOneCommandAtATime) {

@@ -291,6 +291,42 @@ quit
     fs::remove_all(directory);
 }
 
+// The target error in the real viewer: `target-error` turns adaptive sampling on, the status
+// reports the checks' sample counts and the share of pixels stopped, the samples-per-pixel view
+// shows, and `target-error off` restarts with every pixel sampled again.
+TEST_F(ScriptedViewer, TargetErrorSamplesAdaptivelyAndTheStatusSaysHowFar) {
+    fs::path directory = freshDirectory("target_error");
+    testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
+depth 3
+target-error 0.01
+status
+wait-spp 80
+view samples-per-pixel
+status
+target-error off
+status
+quit
+)");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    std::vector<std::string> status = statusLines(result.output);
+    ASSERT_EQ(status.size(), 3u) << result.output;
+    EXPECT_EQ(field(status[0], "target-error"), "0.01");
+    EXPECT_EQ(field(status[1], "view"), "samples-per-pixel");
+    EXPECT_GE(std::stoi(field(status[1], "adaptive-checks")), 2) << "checks at 32, 48, 64 and 80 spp";
+    const int sppMin = std::stoi(field(status[1], "spp-min")), sppMax = std::stoi(field(status[1], "spp-max"));
+    EXPECT_GE(sppMax, 64);
+    EXPECT_LE(sppMin, sppMax);
+    EXPECT_LE(sppMax, std::stoi(field(status[1], "spp")));
+    const double stopped = std::stod(field(status[1], "stopped-share"));
+    EXPECT_GE(stopped, 0.0);
+    EXPECT_LE(stopped, 1.0);
+    EXPECT_EQ(field(status[1], "adaptive-stop"), "\"\"") << "1% takes far more than 80 spp";
+    EXPECT_EQ(field(status[2], "target-error"), "off");
+    EXPECT_EQ(field(status[2], "spp"), "0") << "turning it off restarts";
+    EXPECT_EQ(field(status[2], "stopped-share"), "<missing stopped-share>") << "no adaptive fields without a target";
+    fs::remove_all(directory);
+}
+
 // Grid without a target gets one (the status says which); a spot cone the file format cannot
 // hold is refused at the command that makes it, naming the line, not found out at Save. The
 // default integrator is full.

@@ -117,18 +117,20 @@ zoom fit
 pan 12 -3.5
 compare-sides image-view
 display-transfer gamma-2.2
+undo
+redo
+target-error 0.02
+target-error off
 ocio-config looks/config.ocio
 ocio-display sRGB
 ocio-view Filmic Log
-undo
-redo
 )";
 
 } // namespace
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 80u);
+    ASSERT_EQ(script.commands.size(), 82u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -267,6 +269,8 @@ TEST(ViewerScript, OutOfRangeValuesSayTheRange) {
     EXPECT_EQ(errorOf("camera-zoom 0"), "s.txt:1: camera-zoom: FACTOR must be > 0, got 0");
     EXPECT_EQ(errorOf("frames 0"), "s.txt:1: frames: N must be >= 1, got 0");
     EXPECT_EQ(errorOf("target-spp -4"), "s.txt:1: target-spp: N must be >= 0, got -4");
+    EXPECT_EQ(errorOf("target-error 0"), "s.txt:1: target-error: E must be in (0, 1], got 0");
+    EXPECT_EQ(errorOf("target-error 2"), "s.txt:1: target-error: E must be in (0, 1], got 2");
     EXPECT_EQ(errorOf("samples-per-frame 0"), "s.txt:1: samples-per-frame: N must be in 1..1024, got 0");
     EXPECT_EQ(errorOf("divider 1.01"), "s.txt:1: divider: F must be in [0, 1], got 1.01");
     EXPECT_EQ(errorOf("environment-color 0 -1 0"), "s.txt:1: environment-color: G must be in [0, 1000000000], got -1");
@@ -385,7 +389,7 @@ TEST(ViewerScript, ViewAndZoomCommandsParseWithinTheirRanges) {
     EXPECT_TRUE(script.commands[1].isWord(0, "fit"));
     EXPECT_FLOAT_EQ(script.commands[2].number(0), 0.0625f);
     EXPECT_EQ(errorOf("view errors"), "s.txt:1: view: unknown view \"errors\" (valid: image, error-map, estimated-error, "
-                                      "difference, abs-difference, other-image)");
+                                      "difference, abs-difference, other-image, samples-per-pixel)");
     EXPECT_EQ(errorOf("zoom 128"), "s.txt:1: zoom: N must be in [0.0625, 64], got 128");
     EXPECT_EQ(errorOf("zoom"), "s.txt:1: zoom: expected 1 argument (zoom N|fit), got 0");
     EXPECT_EQ(errorOf("pan 3"), "s.txt:1: pan: expected 2 arguments (pan DX DY), got 1");
@@ -394,7 +398,7 @@ TEST(ViewerScript, ViewAndZoomCommandsParseWithinTheirRanges) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 75u);
+    EXPECT_EQ(referenceVerbs().size(), 76u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

@@ -328,6 +328,107 @@ TEST_F(ViewerSessionTest, TargetSamplesStopsAccumulationAtExactlyTheTarget) {
     EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 5);
 }
 
+// A target error makes the main view sample adaptively, as `render --noise-threshold` does: it
+// stops with the estimate at or below the target (or with every pixel stopped), a pixel stopped
+// at a check takes no more samples, none stops before kAdaptiveMinSamples, and a new target
+// starts the accumulation and its checks over.
+TEST_F(ViewerSessionTest, TargetErrorStopsAdaptivelyAndStoppedPixelsTakeNoMoreSamples) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    const double target = 0.05;
+    session->model().targetErrorOn = true;
+    session->model().targetError = static_cast<float>(target);
+    session->update();
+    const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
+    std::vector<int> countWhenStopped(24 * 24, -1);
+    int framesWithStoppedPixels = 0;
+    for (int frame = 0; frame < 20000 && session->accumulating(); ++frame) {
+        session->renderFrame();
+        PixelStatistics statistics = tracer.readStatistics();
+        if (tracer.sampleCount() == 0) continue; // a loaded machine may spread the first pass over frames
+        ASSERT_EQ(statistics.pixelSampleCounts.size(), countWhenStopped.size());
+        bool anyStopped = false;
+        for (std::size_t i = 0; i < countWhenStopped.size(); ++i) {
+            if (statistics.pixelTakesSamples[i]) {
+                EXPECT_EQ(countWhenStopped[i], -1) << "pixel " << i << " took samples again after it stopped";
+                continue;
+            }
+            anyStopped = true;
+            EXPECT_GE(statistics.pixelSampleCounts[i], kAdaptiveMinSamples) << "pixel " << i;
+            if (countWhenStopped[i] < 0) countWhenStopped[i] = statistics.pixelSampleCounts[i];
+            EXPECT_EQ(statistics.pixelSampleCounts[i], countWhenStopped[i]) << "stopped pixel " << i << " took more samples";
+        }
+        framesWithStoppedPixels += anyStopped ? 1 : 0;
+    }
+    ASSERT_FALSE(session->accumulating()) << "adaptive sampling never stopped";
+    ViewerSession::ViewStats stats = session->stats(ViewerSession::Side::Left);
+    ASSERT_TRUE(stats.adaptive);
+    const ViewerSession::ViewStats::Adaptive& adaptive = *stats.adaptive;
+    EXPECT_TRUE(adaptive.finished);
+    const bool reached = adaptive.estimate.reliable && relativeError(adaptive.estimate.relativeMse) <= target;
+    EXPECT_TRUE(reached || adaptive.samples.stoppedShare >= 1.0)
+        << "estimate " << relativeError(adaptive.estimate.relativeMse) << ", stopped share " << adaptive.samples.stoppedShare;
+    EXPECT_GE(adaptive.checks, 2);
+    EXPECT_EQ(adaptive.samples.max, tracer.sampleCount());
+    EXPECT_LE(adaptive.samples.min, adaptive.samples.max);
+    EXPECT_NE(adaptive.note.find("stopped: "), std::string::npos) << adaptive.note;
+    if (reached) EXPECT_NE(adaptive.note.find("<= 5%"), std::string::npos) << adaptive.note;
+    // Finished means finished: further frames add nothing.
+    const int samples = tracer.sampleCount();
+    session->renderFrame();
+    EXPECT_EQ(tracer.sampleCount(), samples);
+    // A screenshot of it carries the threshold, so `render --from` samples it adaptively too.
+    fs::path directory = freshDirectory("adaptive");
+    std::vector<fs::path> files = session->saveScreenshots(directory);
+    ASSERT_EQ(files.size(), 3u);
+    const RenderRecipe recipe = readProvenance(files[2]).recipe;
+    ASSERT_TRUE(recipe.noiseThreshold);
+    EXPECT_FLOAT_EQ(*recipe.noiseThreshold, 0.05f);
+    EXPECT_EQ(recipe.samplesPerPixel, samples);
+
+    // A new target restarts, with the checks from the start.
+    session->model().targetError = 0.2f;
+    session->update();
+    EXPECT_EQ(tracer.sampleCount(), 0);
+    EXPECT_EQ(session->stats(ViewerSession::Side::Left).adaptive->checks, 0);
+    EXPECT_TRUE(session->accumulating());
+    // Off: every pixel samples again, without a target.
+    session->model().targetErrorOn = false;
+    session->update();
+    EXPECT_FALSE(session->stats(ViewerSession::Side::Left).adaptive);
+    renderSamples(*session, 70);
+    PixelStatistics statistics = tracer.readStatistics();
+    for (std::size_t i = 0; i < statistics.pixelTakesSamples.size(); ++i) ASSERT_TRUE(statistics.pixelTakesSamples[i]);
+}
+
+// Adaptive against uniform at equal time: two renders with the same settings, the left with a
+// target error; when the left stops, the right (uniform: no pixel stops) stops at the same GPU
+// time, within the last tile.
+TEST_F(ViewerSessionTest, WithATargetErrorTheSplitViewsUniformSideStopsAtTheAdaptiveSidesTime) {
+    auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
+    ViewerModel& model = session->model();
+    model.compare.enabled = true;
+    session->update();
+    model.compare.right = model.settings; // the first comparison chose another integrator
+    model.compare.equalTime = true;
+    model.targetErrorOn = true;
+    renderSamples(*session, 2);
+    model.targetError = 0.1f;
+    session->update();
+    ASSERT_TRUE(session->comparesTwoRenders());
+    EXPECT_EQ(session->stats(ViewerSession::Side::Right).samples, 0) << "a new target starts both sides together";
+    for (int frame = 0; frame < 20000 && session->accumulating(); ++frame) session->renderFrame();
+    ASSERT_FALSE(session->accumulating());
+    ViewerSession::ViewStats left = session->stats(ViewerSession::Side::Left), right = session->stats(ViewerSession::Side::Right);
+    ASSERT_TRUE(left.adaptive);
+    EXPECT_TRUE(left.adaptive->finished);
+    EXPECT_FALSE(right.adaptive) << "the right side samples uniformly";
+    EXPECT_GT(right.samples, 0);
+    EXPECT_GE(right.renderSeconds, left.renderSeconds);
+    EXPECT_LT(right.renderSeconds, left.renderSeconds + 0.25) << "it stops within a tile of the left's time";
+    PixelStatistics statistics = session->tracer(ViewerSession::Side::Right).readStatistics();
+    for (std::uint8_t takes : statistics.pixelTakesSamples) ASSERT_TRUE(takes);
+}
+
 // The error (estimate and true error) is measured about once a second, not every frame: the
 // Stats panel printed a 2-spp figure beside "16 spp". Each figure carries the count and the
 // seconds it was measured at, which the panels print beside it.

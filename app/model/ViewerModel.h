@@ -61,6 +61,12 @@ struct ViewerModel {
     int maxSamplesPerFrame = 0;   // 0: as many as fit the frame's time budget
     bool paused = false;
     int targetSamples = 0;        // stop accumulating at this many samples per pixel; 0: never
+    // Adaptive sampling of the main view (docs/viewer.md, "Target error"): while targetErrorOn,
+    // pixels stop as `render --noise-threshold targetError` stops them, and the accumulation stops
+    // when the estimated RMS relative error reaches targetError (0.01: 1%) or every pixel stopped.
+    // The value is kept while off, so the Render panel's checkbox brings it back.
+    bool targetErrorOn = false;
+    float targetError = 0.01f;
     CompareSettings compare;
     // The pixel inspector's pixel: one pixel of the full-size render, x from the left and y from
     // the top, as in a saved PNG and every pixel coordinate the user sees (the Pixel panel,

@@ -235,6 +235,8 @@ const std::vector<CommandSpec>& commandSpecs() {
         {"pause", {}, nullptr, "stop accumulating samples"},
         {"resume", {}, nullptr, "accumulate samples again"},
         {"target-spp", {settingArg("N", settingRanges::kTargetSamples)}, nullptr, "stop accumulating at N samples per pixel (0: never)"},
+        {"target-error", {settingArg("E", settingRanges::kNoiseThreshold, "off")}, nullptr,
+         "adaptive sampling: stop at an estimated RMS relative error of E (0.01: 1%), or off"},
         // The denoiser (docs/denoising.md): none of these restarts the accumulation
         {"denoise", {choiceArg("on|off", "value", onOffChoices)}, nullptr,
          "show the denoised image (biased; the samples go on accumulating raw)"},

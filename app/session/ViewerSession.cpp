@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <stdexcept>
 
@@ -537,7 +538,9 @@ ImageMetadata ViewerSession::provenance(Side side) const {
     DisplaySettings display = displaySettings(side);
     display.denoised = denoise.enabled;
     RenderRecipe recipe{tracer.settings(), display, tracer.sampleCount(), tracer.imageSize(), tracer.backend(),
-                        programOptions_.allFeatures, denoise, {}, std::nullopt}; // the viewer samples uniformly
+                        programOptions_.allFeatures, denoise, {}, std::nullopt};
+    // An adaptive image says so: `render --from` it samples adaptively to the same threshold, capped at its spp.
+    if (const View& v = view(side); v.adaptive) recipe.noiseThreshold = static_cast<float>(v.adaptive->noiseThreshold());
     if (display.toneMapper == ToneMapper::Ocio) recipe.ocio = model_.ocio;
     return provenanceMetadata(model_.scene, recipe, glDeviceDescription());
 }
@@ -740,8 +743,33 @@ void ViewerSession::update() {
         setEnvironmentMap({}); // the constant colour instead, and say why
         model_.sceneError = e.what();
     }
+    syncAdaptive();
     syncDenoise();
     syncOtherImages();
+}
+
+// A new target (or none) restarts: pixels stopped for one threshold are not those another would
+// stop, and turning it off lets every pixel sample again. Any other restart (an edit, a camera
+// move, a resize) starts the checks over too.
+void ViewerSession::syncAdaptive() {
+    const float wanted = model_.targetErrorOn ? model_.targetError : 0.0f;
+    PathTracer& tracer = *left_.tracer;
+    if (wanted != seenTargetError_) {
+        seenTargetError_ = wanted;
+        left_.adaptive.reset();
+        tracer.restart();
+        // Adaptive against uniform at equal time starts both sides together.
+        if (comparesTwoRenders()) {
+            right_->tracer->restart();
+            trackRestart(*right_);
+        }
+    }
+    if (wanted > 0.0f && (!left_.adaptive || left_.adaptiveRestartCount != tracer.restartCount())) {
+        left_.adaptive = std::make_unique<AdaptiveSampler>(tracer, wanted); // restarts the tracer
+        left_.adaptiveRestartCount = tracer.restartCount();
+        left_.adaptiveChecks = 0;
+    }
+    trackRestart(left_);
 }
 
 bool ViewerSession::showsDenoised(Side side) const {
@@ -813,6 +841,12 @@ void ViewerSession::trackRestart(View& view) {
 bool ViewerSession::wantsSamples(const View& view, int passesThisFrame) const {
     if (model_.paused) return false;
     if (model_.targetSamples > 0 && view.tracer->sampleCount() >= model_.targetSamples) return false;
+    if (view.adaptive && view.adaptive->finished()) return false;
+    // Adaptive against uniform at equal time: once the main view's adaptive sampling stopped, the
+    // split view's other render stops at the same GPU time, so the two show what equal cost buys.
+    if (&view != &left_ && model_.compare.equalTime && left_.adaptive && left_.adaptive->finished() &&
+        view.renderSeconds >= left_.renderSeconds)
+        return false;
     return model_.maxSamplesPerFrame <= 0 || passesThisFrame < model_.maxSamplesPerFrame;
 }
 
@@ -870,7 +904,11 @@ double ViewerSession::renderFrame(double budgetSeconds) {
         cost.record(rows, seconds);
         chosen.renderSeconds += seconds;
         worked = true;
-        if (passDone && !preview) ++passes[next];
+        if (passDone && !preview) {
+            ++passes[next];
+            // Only the frame whose pass reaches a check reads the image back.
+            if (chosen.adaptive && chosen.adaptive->checkIfDue()) ++chosen.adaptiveChecks;
+        }
     }
     for (int i = 0; i < 2; ++i)
         if (denoiseSeconds[i] > 0.0) denoise(*views[i], denoiseSeconds[i]);
@@ -912,6 +950,25 @@ void ViewerSession::denoise(View& view, double seconds) {
         if (splitsRawAndDenoised()) model_.compare.enabled = false;
         syncDenoise();
     }
+}
+
+namespace {
+
+// "percent" with up to three significant digits: 0.0098 -> "0.98%".
+std::string percentText(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g%%", 100.0 * fraction);
+    return text;
+}
+
+} // namespace
+
+std::string adaptiveStopNote(const AdaptiveSampler& sampler) {
+    if (sampler.reachedThreshold())
+        return "stopped: estimated error " + percentText(relativeError(sampler.estimate().relativeMse)) + " <= " +
+               percentText(sampler.noiseThreshold());
+    if (sampler.allStopped()) return "stopped: every pixel stopped";
+    return "";
 }
 
 void ViewerSession::updateErrorEstimate(View& view) {
@@ -1006,6 +1063,17 @@ ViewerSession::ViewStats ViewerSession::stats(Side side) const {
     if (stats.denoised) {
         stats.denoisedSamples = v.tracer->denoisedSampleCount();
         stats.denoisedTrueError = v.denoisedTrueError;
+    }
+    if (v.adaptive) {
+        const AdaptiveSampler& sampler = *v.adaptive;
+        ViewStats::Adaptive adaptive;
+        adaptive.targetError = sampler.noiseThreshold();
+        adaptive.checks = v.adaptiveChecks;
+        adaptive.estimate = sampler.estimate();
+        adaptive.samples = sampler.sampleCounts();
+        adaptive.finished = sampler.finished();
+        adaptive.note = adaptiveStopNote(sampler);
+        stats.adaptive = adaptive;
     }
     return stats;
 }

@@ -14,6 +14,7 @@
 #include <ptview/session/PixelInspection.h>
 #include <ptview/model/SceneInput.h>
 #include <ptview/session/TileCost.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 #include <ptview/model/ViewerModel.h>
 
 #include <chrono>
@@ -24,6 +25,10 @@
 #include <vector>
 
 namespace ptview {
+
+// Why adaptive sampling stopped, for the Render and Stats panels: "stopped: estimated error 0.98%
+// <= 1%", "stopped: every pixel stopped", or "" while it goes on.
+std::string adaptiveStopNote(const AdaptiveSampler& sampler);
 
 class ViewerSession {
 public:
@@ -59,6 +64,17 @@ public:
         bool denoised = false;
         int denoisedSamples = 0;
         std::optional<ErrorMetrics> denoisedTrueError;
+        // Adaptive sampling (ViewerModel::targetErrorOn; the main view only): the state at its
+        // last check. `adaptiveNote` says why it stopped ("" while it goes on).
+        struct Adaptive {
+            double targetError = 0.0;
+            int checks = 0;
+            ErrorEstimate estimate;     // at the last check (AdaptiveSampler::estimate)
+            SampleCountSummary samples; // each pixel's own count at the last check
+            bool finished = false;
+            std::string note;
+        };
+        std::optional<Adaptive> adaptive;
     };
 
     // Compiles the programs from shaderDir (throws ShaderError). Without a backend in `program`,
@@ -267,6 +283,12 @@ private:
         std::vector<std::pair<int, ImageRgbF>> earlierMeans;
         TileCost denoiseCost; // of a row of the denoiser's passes (PathTracer::advanceDenoised)
         std::optional<ErrorMetrics> denoisedTrueError;       // of the denoised image, with a reference
+        // While the model's target error is on (the main view only): AdaptiveSampler stops pixels
+        // at its checks, which renderFrame runs after the pass that reaches one. Made afresh at
+        // every restart (adaptiveRestartCount tells), since a new accumulation starts its checks over.
+        std::unique_ptr<AdaptiveSampler> adaptive;
+        int adaptiveRestartCount = -1;
+        int adaptiveChecks = 0;
     };
 
     View& view(Side side) { return side == Side::Left || !comparesTwoRenders() ? left_ : *right_; }
@@ -275,6 +297,7 @@ private:
         return model_.compare.enabled && model_.compare.sides == CompareSides::TwoRenders;
     }
     void syncDenoise();
+    void syncAdaptive();
     void syncOtherImages();
     bool denoiseStale(const View& view) const;
     void denoise(View& view, double seconds); // bands of the view's denoise for about `seconds`
@@ -310,6 +333,7 @@ private:
     // target (setPatternTarget), and the split view newly turned on restarts both sides.
     SamplerMode seenSampler_[2] = {SamplerMode::Random, SamplerMode::Random};
     bool seenCompare_ = false;
+    float seenTargetError_ = 0.0f; // the target error as update() last applied it; 0: off
     std::string saveTarget_;
     // The open scene came from an image and no file holds it (SceneInput::carriedSceneIsInItsFile
     // false): unsaved until Save writes it or another scene is opened.

@@ -1,10 +1,12 @@
 #include <ptview/window/ErrorLegend.h>
 
 #include <ptview/settings/ColorMap.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace ptview {
 namespace {
@@ -30,9 +32,21 @@ ImU32 toImColor(glm::vec3 rgb) {
 
 } // namespace
 
-std::vector<LegendTick> legendTicks(const DisplaySettings& display) {
+std::vector<LegendTick> legendTicks(const DisplaySettings& display, int sampleCount) {
     std::vector<LegendTick> ticks;
     const ErrorMapRange& range = display.mapRange;
+    if (display.view == DisplayView::SamplesPerPixel) {
+        const SampleCountMapRange counts = sampleCountMapRange(sampleCount, kAdaptiveMinSamples);
+        const float lo = counts.log2Min, hi = counts.log2Max;
+        auto label = [](float log2Count) { return std::to_string(std::lround(std::exp2(log2Count))); };
+        // About six numbers at most: every octave, or every few on a wide range.
+        const float step = std::max(1.0f, std::ceil((hi - lo) / 6.0f));
+        ticks.push_back({0.0f, label(lo)});
+        for (float octave = std::floor(lo) + step; octave < hi - 0.25f; octave += step)
+            if (octave > lo + 0.25f) ticks.push_back({(octave - lo) / (hi - lo), label(octave)});
+        ticks.push_back({1.0f, label(hi)});
+        return ticks;
+    }
     if (display.view == DisplayView::Difference) {
         ticks.push_back({0.0f, signedText(-range.differenceRange)});
         ticks.push_back({0.5f, "0"});
@@ -48,8 +62,8 @@ std::vector<LegendTick> legendTicks(const DisplaySettings& display) {
     return ticks;
 }
 
-void drawErrorLegend(ImDrawList& draw, const DisplaySettings& display, ScreenRect view) {
-    std::vector<LegendTick> ticks = legendTicks(display);
+void drawErrorLegend(ImDrawList& draw, const DisplaySettings& display, ScreenRect view, int sampleCount) {
+    std::vector<LegendTick> ticks = legendTicks(display, sampleCount);
     if (ticks.empty()) return;
     const float fontSize = ImGui::GetFontSize();
     const float width = std::min(view.size.x - 2.0f * fontSize, 18.0f * fontSize), height = 0.9f * fontSize;
@@ -57,8 +71,9 @@ void drawErrorLegend(ImDrawList& draw, const DisplaySettings& display, ScreenRec
     const glm::vec2 barMin(view.topLeft.x + view.size.x - width - fontSize, view.topLeft.y + view.size.y - 3.2f * fontSize);
     const bool difference = display.view == DisplayView::Difference;
     const char* title = difference ? "render - other (mean of RGB)"
-                        : display.view == DisplayView::Error ? "relative error vs reference"
-                                                             : "estimated relative error";
+                        : display.view == DisplayView::Error           ? "relative error vs reference"
+                        : display.view == DisplayView::SamplesPerPixel ? "samples per pixel"
+                                                                       : "estimated relative error";
     // A dark plate under it all, so it reads on any image.
     draw.AddRectFilled(ImVec2(barMin.x - 0.6f * fontSize, barMin.y - 1.5f * fontSize),
                        ImVec2(barMin.x + width + 0.6f * fontSize, barMin.y + height + 1.4f * fontSize), IM_COL32(0, 0, 0, 170),

@@ -19,11 +19,12 @@ struct LegendTick {
 };
 
 // The ticks of a view's bar: every power of ten within the error range ("0.1%", "1%", ...; the
-// range's ends too when they are not one), or -R, 0, +R for the difference. Empty for a view
-// without a colour map.
-std::vector<LegendTick> legendTicks(const DisplaySettings& display);
+// range's ends too when they are not one), or -R, 0, +R for the difference, or for the samples per
+// pixel powers of two between its ends (SampleCountMapRange of sampleCount, the accumulation's
+// count), the ends included. Empty for a view without a colour map.
+std::vector<LegendTick> legendTicks(const DisplaySettings& display, int sampleCount = 0);
 
 // Draws the bar, its ticks and a title in the bottom-right corner of `view` (window coordinates).
-void drawErrorLegend(ImDrawList& draw, const DisplaySettings& display, ScreenRect view);
+void drawErrorLegend(ImDrawList& draw, const DisplaySettings& display, ScreenRect view, int sampleCount = 0);
 
 } // namespace ptview

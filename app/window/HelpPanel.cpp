@@ -19,7 +19,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Ctrl+wheel", "pixel zoom of the image about the pointer (1:1, 2:1, 4:1 ...; nearest pixels)"},
     {"Ctrl+right or middle drag", "pan the zoomed image"},
     {"0 / 1 / + / -", "image fit / 1:1 / zoom in / zoom out"},
-    {"V", "next view: image, error map, estimated error, difference, absolute difference, other image"},
+    {"V", "next view: image, error map, estimated error, difference, absolute difference, other image, samples per pixel"},
     {"Alt+click", "pin the pixel under the cursor in the Pixel panel (again: unpin)"},
     {"Ctrl+click", "focus the lens on the surface under the cursor (Camera panel's aperture)"},
     {"W A S D", "fly (Shift: faster)"},

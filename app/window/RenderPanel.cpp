@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <exception>
 #include <optional>
 
@@ -113,6 +114,27 @@ void ocioControls(ViewerSession& session, PanelState& state) {
     ImGui::PopID();
 }
 
+// Adaptive sampling of the main view (ViewerModel::targetErrorOn): a checkbox, the target in
+// percent, and why it stopped once it has.
+void targetErrorControls(ViewerSession& session) {
+    ViewerModel& model = session.model();
+    ImGui::Checkbox("stop at error", &model.targetErrorOn);
+    itemTooltip("adaptive sampling: each pixel stops once the estimated error of its neighbourhood reaches the target,\n"
+                "and the render stops when the image's estimate does (or every pixel stopped), as\n"
+                "`ptview render --noise-threshold` does. The checks read the image back at fixed sample counts\n"
+                "(64 spp, then each 1.25x the last); changing the target restarts. The \"samples per pixel\" view\n"
+                "shows where the samples went");
+    if (!model.targetErrorOn) return;
+    ImGui::SameLine();
+    float percent = 100.0f * model.targetError;
+    const NumberRange& range = settingRanges::kNoiseThreshold;
+    // 0.5% .. 20%: below, a viewer waits minutes for the checks; above, the image is plainly noisy.
+    if (ImGui::SliderFloat("##target error", &percent, 0.5f, 100.0f * range.panelHi, "%.2g%%", ImGuiSliderFlags_Logarithmic))
+        model.targetError = std::clamp(percent / 100.0f, 0.005f, range.panelHi);
+    ViewerSession::ViewStats stats = session.stats(ViewerSession::Side::Left);
+    if (stats.adaptive && !stats.adaptive->note.empty()) noteText(stats.adaptive->note);
+}
+
 } // namespace
 
 void saveScreenshots(ViewerSession& session, PanelState& state) {
@@ -185,6 +207,7 @@ void drawRenderPanel(ViewerSession& session, PanelState& state) {
                      ImGuiSliderFlags_Logarithmic);
     itemTooltip("stop accumulating at this many samples per pixel (grid and stratified samplers are fully\n"
             "stratified there); 0: never stop");
+    targetErrorControls(session);
     if (ImGui::Button(model.paused ? "Resume" : "Pause")) model.paused = !model.paused;
     ImGui::SameLine();
     if (ImGui::Button("Restart")) model.pendingChanges |= ViewerModel::kRestart;

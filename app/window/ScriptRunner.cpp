@@ -113,6 +113,20 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
     line += std::string(" denoise=") + (denoise.enabled ? "on" : "off") + " denoise-strength=" +
             numberText(denoise.strength) + " denoise-iterations=" + std::to_string(denoise.iterations) +
             " denoised-spp=" + std::to_string(left.denoised ? left.denoisedSamples : 0);
+    // Adaptive sampling (docs/viewer.md, "Target error"): the target, then at the last check the
+    // share of pixels stopped, each pixel's own sample counts and why it stopped ("" while it goes on).
+    line += " target-error=" + (model.targetErrorOn ? numberText(model.targetError) : std::string("off"));
+    if (left.adaptive) {
+        const ViewerSession::ViewStats::Adaptive& adaptive = *left.adaptive;
+        char text[160];
+        std::snprintf(text, sizeof text, " adaptive-checks=%d stopped-share=%.6g spp-min=%d spp-mean=%.6g spp-max=%d",
+                      adaptive.checks, adaptive.samples.stoppedShare, adaptive.samples.min, adaptive.samples.mean,
+                      adaptive.samples.max);
+        line += text;
+        line += " adaptive-error=" + (adaptive.estimate.reliable ? numberText(float(relativeError(adaptive.estimate.relativeMse)))
+                                                                  : std::string("unknown")) +
+                " adaptive-stop=" + quoted(adaptive.note);
+    }
     // The view, what it compares with and the zoom (docs/viewer.md, "Error and difference views").
     const PixelRect image = session.imageRect();
     line += std::string(" view=") + displayViewName(model.display.view) +
@@ -518,6 +532,10 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"pause", [](Step& s) { s.model.paused = true; }},
         {"resume", [](Step& s) { s.model.paused = false; }},
         {"target-spp", [](Step& s) { s.model.targetSamples = s.command.integer(0); }},
+        {"target-error", [](Step& s) {
+             s.model.targetErrorOn = !s.command.isWord(0, "off");
+             if (s.model.targetErrorOn) s.model.targetError = static_cast<float>(s.command.number(0));
+         }},
         // ---- the denoiser
         {"denoise", [](Step& s) { s.model.denoise.enabled = s.command.isWord(0, "on"); }},
         {"denoise-strength", [](Step& s) { s.model.denoise.strength = s.command.number(0); }},

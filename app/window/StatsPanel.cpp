@@ -48,6 +48,16 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     }
     glm::ivec2 size = session.renderSize();
     ImGui::Text("%d x %d pixels, %.1f ms/frame", size.x, size.y, frameSeconds * 1e3);
+    // Adaptive sampling: at its last check, the share of pixels done and each pixel's own count.
+    if (stats.adaptive) {
+        const ViewerSession::ViewStats::Adaptive& adaptive = *stats.adaptive;
+        ImGui::Text("adaptive (target %.3g%%): %.1f%% of pixels done", 100.0 * adaptive.targetError,
+                    100.0 * adaptive.samples.stoppedShare);
+        ImGui::Text("spp min / mean / max: %d / %.1f / %d", adaptive.samples.min, adaptive.samples.mean, adaptive.samples.max);
+        itemTooltip("each pixel's own sample count at the last check (the checks come at 64 spp and then each 1.25x\n"
+                    "the last); a pixel done takes no more samples until the render restarts");
+        if (!adaptive.note.empty()) noteText(adaptive.note);
+    }
     ImGui::Text("%.2f M samples/s, %.1f s rendering", stats.samplesPerSecond * 1e-6, stats.renderSeconds);
     // The estimate and the true error are the same quantity (relative MSE as ErrorMetrics.h defines
     // it), shown the same way, so with a reference loaded the two lines can be compared directly.

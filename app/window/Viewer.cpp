@@ -748,7 +748,7 @@ void ViewerWindow::drawLegend() {
                       IM_COL32(255, 200, 80, 255));
         return;
     }
-    drawErrorLegend(*ImGui::GetForegroundDrawList(), session_.displaySettings(side), view);
+    drawErrorLegend(*ImGui::GetForegroundDrawList(), session_.displaySettings(side), view, session_.tracer(side).sampleCount());
 }
 
 void ViewerWindow::drawImageNote(const std::string& text, ImVec2 anchor, bool alignRight, bool alignBottom, ImU32 colour) {

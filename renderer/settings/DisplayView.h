@@ -5,6 +5,8 @@
 
 #include <ptview/settings/EnumTable.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace ptview {
@@ -16,6 +18,7 @@ enum class DisplayView : std::uint32_t {
     Difference = 3,     // render - other image, signed, in a diverging colour map
     AbsDifference = 4,  // |render - other image| per channel, displayed like the image
     OtherImage = 5,     // the other image itself, displayed like the render (A/B flipping)
+    SamplesPerPixel = 6, // each pixel's own sample count (adaptive sampling stops pixels), a heat map
 };
 
 inline const EnumTable<DisplayView>& displayViewNames() {
@@ -37,6 +40,9 @@ inline const EnumTable<DisplayView>& displayViewNames() {
          "|render - other image| per channel, with the image's exposure and tone mapper", "kDisplayViewAbsDifference"},
         {DisplayView::OtherImage, "other-image", "Other image",
          "the comparison image (else the reference) itself, displayed like the render: flip A/B", "kDisplayViewOtherImage"},
+        {DisplayView::SamplesPerPixel, "samples-per-pixel", "Samples per pixel",
+         "each pixel's own sample count, log-scaled colours: where adaptive sampling (target error) spent its samples",
+         "kDisplayViewSamplesPerPixel"},
     };
     return table;
 }
@@ -51,7 +57,26 @@ inline bool viewNeedsOtherImage(DisplayView view) {
 }
 // Whether a view is coloured by a colour map with a legend (ColorMap.h).
 inline bool viewHasLegend(DisplayView view) {
-    return view == DisplayView::Error || view == DisplayView::EstimatedError || view == DisplayView::Difference;
+    return view == DisplayView::Error || view == DisplayView::EstimatedError || view == DisplayView::Difference ||
+           view == DisplayView::SamplesPerPixel;
+}
+// Whether a view is of the raw accumulation's own sums, which the denoised image does not have.
+inline bool viewOfRawSums(DisplayView view) {
+    return view == DisplayView::EstimatedError || view == DisplayView::SamplesPerPixel;
+}
+
+// The samples-per-pixel view's colour map: log2 of a pixel's sample count, linearly from log2Min
+// (the map's first colour) to log2Max (its last). log2Max is the accumulation's sample count, the
+// most any pixel has; log2Min the fewest a stopped pixel can have (minSamples: adaptive sampling's
+// kAdaptiveMinSamples), or one octave below log2Max when that is not below it.
+struct SampleCountMapRange {
+    float log2Min = 0.0f, log2Max = 1.0f;
+};
+inline SampleCountMapRange sampleCountMapRange(int sampleCount, int minSamples) {
+    SampleCountMapRange range;
+    range.log2Max = std::log2(static_cast<float>(std::max(sampleCount, 1)));
+    range.log2Min = std::min(std::log2(static_cast<float>(std::max(minSamples, 1))), range.log2Max - 1.0f);
+    return range;
 }
 
 // The colour maps' ranges. The error views map log10(relative error) linearly from

@@ -27,6 +27,17 @@ void AdaptiveSampler::renderToNextCheck(int maxSamples) {
     // Whole passes from where the last check left: where passes end decides the sums' rounding.
     tracer_.renderSamples(target - tracer_.sampleCount());
     check();
+    scheduleNextCheck();
+}
+
+bool AdaptiveSampler::checkIfDue() {
+    if (finished() || tracer_.sampleCount() < nextCheck_) return false;
+    check();
+    scheduleNextCheck();
+    return true;
+}
+
+void AdaptiveSampler::scheduleNextCheck() {
     const int perPass = tracer_.samplesPerPass();
     nextCheck_ = std::max(nextCheck_ + perPass, roundUpToPasses(nextCheck_ * kAdaptiveCheckGrowth, perPass));
 }

@@ -40,6 +40,13 @@ public:
     // Renders up to the next check, or up to maxSamples if that comes first, then checks there.
     // Does nothing once every pixel stopped or maxSamples is reached.
     void renderToNextCheck(int maxSamples);
+    // For a caller that renders the passes itself (the viewer: a sample a pass, a pass spread over
+    // frames): checks when the tracer holds the next check's samples, so the checks fall at the
+    // same sample counts as renderToNextCheck's; returns whether it checked (a read-back of the
+    // whole image). Does nothing once finished().
+    bool checkIfDue();
+    // Every pixel stopped, or the estimate reached the threshold: no more samples are worth taking.
+    bool finished() const { return allStopped() || reachedThreshold(); }
 
     // The image's estimated error at the last check: the pixels still sampled as they are now,
     // the stopped ones as they were when they stopped. Not reliable before the second check.
@@ -54,6 +61,7 @@ public:
 
 private:
     void check();
+    void scheduleNextCheck();
 
     PathTracer& tracer_;
     double noiseThreshold_;

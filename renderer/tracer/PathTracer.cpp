@@ -2,6 +2,7 @@
 
 #include <ptview/gl/FloatTexture.h>
 #include <ptview/gl/FullScreenRows.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 #include <ptview/tracer/DisplayViewGlsl.h>
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/gpudata/GpuLayout.h>
@@ -70,6 +71,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio)
     display.displayView = show.uniformLocation("uDisplayView");
     display.errorLog10Range = show.uniformLocation("uErrorLog10Range");
     display.differenceRange = show.uniformLocation("uDifferenceRange");
+    display.sampleCountLog2Range = show.uniformLocation("uSampleCountLog2Range");
     display.outputOrigin = show.uniformLocation("uOutputOrigin");
     display.outputSize = show.uniformLocation("uOutputSize");
     return display;
@@ -580,8 +582,7 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     glUseProgram(display_.program->id());
     // The denoised image is a mean already, without a compensation term. The estimated error
     // needs the sums of squares, which only the raw accumulation has.
-    const bool denoised = settings.denoised && settings.view != DisplayView::EstimatedError && &shown == &accumulator_ &&
-                          hasDenoised();
+    const bool denoised = settings.denoised && !viewOfRawSums(settings.view) && &shown == &accumulator_ && hasDenoised();
     int samples = denoised ? 1 : shown.displayedSampleCount();
     glUniform1f(display_.invSampleCount, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f);
     glUniform1i(display_.perPixelSampleCount, !denoised && shown.hasStoppedPixels() ? 1 : 0);
@@ -592,13 +593,14 @@ void PathTracer::drawMean(const Accumulator& shown, PixelRect target, const Disp
     // A view whose other image is missing, or of another size, shows the image instead.
     const bool otherFits = otherImage_ && otherImage_->width == accumulator_.size().x && otherImage_->height == accumulator_.size().y;
     const DisplayView view =
-        settings.view == DisplayView::Image || settings.view == DisplayView::EstimatedError || otherFits ? settings.view
-                                                                                                         : DisplayView::Image;
+        settings.view == DisplayView::Image || viewOfRawSums(settings.view) || otherFits ? settings.view : DisplayView::Image;
     glUniform1ui(display_.displayView, static_cast<GLuint>(view));
     float log10Min = settings.mapRange.errorLog10Min;
     float log10Max = std::max(settings.mapRange.errorLog10Max, log10Min + 1e-3f); // a range, never a division by 0
     glUniform2f(display_.errorLog10Range, log10Min, log10Max);
     glUniform1f(display_.differenceRange, std::max(settings.mapRange.differenceRange, kDifferenceRangeMin));
+    const SampleCountMapRange sampleRange = sampleCountMapRange(shown.displayedSampleCount(), kAdaptiveMinSamples);
+    glUniform2f(display_.sampleCountLog2Range, sampleRange.log2Min, sampleRange.log2Max);
     glUniform2f(display_.outputOrigin, static_cast<float>(target.origin.x), static_cast<float>(target.origin.y));
     glUniform2f(display_.outputSize, static_cast<float>(target.size.x), static_cast<float>(target.size.y));
     ocioLuts_.bind();

@@ -221,6 +221,7 @@ private:
         GLint displayView = -1;
         GLint errorLog10Range = -1;
         GLint differenceRange = -1;
+        GLint sampleCountLog2Range = -1;
         GLint outputOrigin = -1;
         GLint outputSize = -1;
     };

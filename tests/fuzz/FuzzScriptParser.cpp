@@ -98,6 +98,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["pause"] = {};
         t["resume"] = {};
         t["target-spp"] = {integer(0)};
+        t["target-error"] = {Arg{Kind::Number, 0.0, 1.0, true, {}, "off"}}; // the noise threshold's range: (0, 1]
         t["set-material"] = {}; // NAME.FIELD: fields below
         t["set-light"] = {};
         t["environment"] = {path({}, "none")};
