@@ -22,9 +22,7 @@ std::string buttonText(const std::string& text) {
 
 bool showOutcome(ViewerSession& session, PanelState& state, bool done) {
     const ViewerModel& model = session.model();
-    state.imageNotice = printableText(done || model.sceneError.empty() ? model.notice : model.sceneError);
-    state.imageNoticeFailed = !done;
-    state.imageNoticeSince = std::chrono::steady_clock::now();
+    state.showImageNotice(printableText(done || model.sceneError.empty() ? model.notice : model.sceneError), !done);
     return done;
 }
 

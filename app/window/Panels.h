@@ -32,6 +32,12 @@ struct PanelState {
     std::string imageNotice;
     bool imageNoticeFailed = false; // shown in red
     std::chrono::steady_clock::time_point imageNoticeSince{};
+    // Shows `text` on the image from now on, in red when `failed`: every notice sets all three.
+    void showImageNotice(std::string text, bool failed) {
+        imageNotice = std::move(text);
+        imageNoticeFailed = failed;
+        imageNoticeSince = std::chrono::steady_clock::now();
+    }
     // Pixel panel: the material its "open in Materials" button asked for (-1: none); the window
     // hands it to the Materials panel and opens that panel.
     int materialToOpen = -1;

@@ -145,15 +145,12 @@ void saveScreenshots(ViewerSession& session, PanelState& state) {
         state.screenshotMessage = "saved";
         for (const std::filesystem::path& file : files) state.screenshotMessage += "\n" + printableText(file.string());
         state.screenshotFailed = false;
-        state.imageNotice = printableText(screenshotNotice(files));
-        state.imageNoticeFailed = false;
+        state.showImageNotice(printableText(screenshotNotice(files)), false);
     } catch (const std::exception& e) {
         state.screenshotMessage = printableText(std::string("screenshot not saved: ") + e.what());
         state.screenshotFailed = true;
-        state.imageNotice = state.screenshotMessage;
-        state.imageNoticeFailed = true;
+        state.showImageNotice(state.screenshotMessage, true);
     }
-    state.imageNoticeSince = std::chrono::steady_clock::now();
 }
 
 void drawLightPathControls(ViewerModel& model) {

@@ -35,10 +35,8 @@ void drawViewControls(ViewerSession& session, PanelState& state) {
     }
     if (viewNeedsOtherImage(display.view)) {
         ImGui::PushID("compare image");
-        if (pathField("Load image", state.compareImagePathInput) && !session.setCompareImage(state.compareImagePathInput)) {
-            state.imageNotice = printableText(model.sceneError); // said on the image too; the image before is kept
-            state.imageNoticeSince = std::chrono::steady_clock::now();
-        }
+        if (pathField("Load image", state.compareImagePathInput) && !session.setCompareImage(state.compareImagePathInput))
+            state.showImageNotice(printableText(model.sceneError), true); // said on the image too; the image before is kept
         itemTooltip("a .pfm or .exr of the render's size to compare with (without one: the reference of the Stats panel)");
         if (model.compareImage) {
             ImGui::TextDisabled("compared with %s", printableText(model.compareImagePath.filename().string()).c_str());

@@ -322,10 +322,7 @@ void ViewerWindow::scaleInterface(float factor) {
     std::string message;
     panelState_.preferences.uiScale = clampedUiScale(panelState_.preferences.uiScale * factor, &message);
     if (std::abs(panelState_.preferences.uiScale - 1.0f) < 1e-4f) panelState_.preferences.uiScale = 1.0f; // back to exactly 1
-    if (message.empty()) return;
-    panelState_.imageNotice = message;
-    panelState_.imageNoticeFailed = false;
-    panelState_.imageNoticeSince = Clock::now();
+    if (!message.empty()) panelState_.showImageNotice(message, false);
 }
 
 // While the "Unsaved edits" question is open, the keys answer it (the dialog has buttons too).
