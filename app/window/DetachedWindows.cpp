@@ -7,13 +7,13 @@
 namespace ptview {
 
 bool DetachedWindows::drawInSidebar(DetachableSection section) {
-    ImGui::PushID(info(section).name);
+    ImGui::PushID(detachableSectionInfo(section).name);
     bool here = !isOut(section);
     if (here) {
         // At the right end of the line above the section, where it takes no row of its own.
         if (ImGui::SmallButton("pop out")) setOut(section, true);
         if (ImGui::IsItemHovered())
-            wrappedTooltip(std::string("show \"") + info(section).title +
+            wrappedTooltip(std::string("show \"") + detachableSectionInfo(section).title +
                            "\" in its own window (move and resize it; close it to put it back here)");
     } else {
         ImGui::TextDisabled("(in its own window)");

@@ -37,7 +37,7 @@ public:
                                 ImGuiCond_FirstUseEver, corner);
         ImGui::SetNextWindowSize(firstSize, ImGuiCond_FirstUseEver);
         bool open = true;
-        if (ImGui::Begin(info(section).title, &open, ImGuiWindowFlags_NoCollapse)) {
+        if (ImGui::Begin(detachableSectionInfo(section).title, &open, ImGuiWindowFlags_NoCollapse)) {
             drawContent();
             Window& window = state(section);
             window.position = ImGui::GetWindowPos();
@@ -49,8 +49,6 @@ public:
     // "paths-table@X,Y,WxH ..." of the windows drawn out (window coordinates), "none" when none:
     // for the status line of scripts and the window tests.
     std::string describe() const;
-
-    static const DetachableSectionInfo& info(DetachableSection section) { return detachableSectionInfo(section); }
 
 private:
     struct Window {
