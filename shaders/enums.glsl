@@ -38,6 +38,7 @@ const uint kMaterialGlass = 5u; // glass
 const uint kMaterialMetal = 6u; // metal
 const uint kMaterialPlastic = 7u; // plastic
 const uint kMaterialPrincipled = 8u; // principled
+const uint kMaterialMedium = 9u; // medium
 const uint kLightPathsAll = 0u; // all
 const uint kLightPathsExactly = 1u; // exactly
 const uint kLightPathsAtMost = 2u; // at-most

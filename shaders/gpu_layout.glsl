@@ -3,7 +3,7 @@
 // Texels (RGBA32F) per record: record i of its buffer starts at texel kQuadTexels * i.
 const int kQuadTexels = 6; // GpuQuad
 const int kDiskTexels = 2; // GpuDisk
-const int kMaterialTexels = 10; // GpuMaterial
+const int kMaterialTexels = 12; // GpuMaterial
 const int kTextureRecordTexels = 2; // GpuTextureRecord, after the materials
 const int kLightTexels = 4; // GpuLight
 const int kBvhNodeTexels = 4; // GpuBvhNode

@@ -21,6 +21,8 @@
 #include "emission.glsl"
 #include "lights.glsl"
 #include "environment.glsl"
+#include "media.glsl"
+#include "warps.glsl"
 #include "light_paths.glsl"
 #include "path_recorder.glsl"
 // kIntegratorNaive, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
@@ -49,9 +51,9 @@ float powerHeuristic(float pdfChosen, float pdfOther) {
 }
 
 // One light sample from the shading point: f * Le * |cos| / pdf, weighted against BSDF sampling
-// when useMis (the BSDF has a non-delta part there).
+// when useMis (the BSDF has a non-delta part there); times the media's transmittance on the way.
 vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3 woLocal, Sampler sampler,
-                            int bounce, bool useMis) {
+                            int bounce, bool useMis, MediumStack media) {
     if (uLightCount == 0) return vec3(0.0);
     int light = chooseLight(samplerGet1D(sampler, lightChoiceDimension(bounce)));
     float selection = lightSelectionProbability(light);
@@ -62,14 +64,43 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     if (!consistentSides(toWorld(frame, woLocal), ls.wi, hit)) return vec3(0.0);
     vec3 f = bsdfF(material, woLocal, wiLocal);
     if (all(equal(f, vec3(0.0)))) return vec3(0.0);
-    bool blocked = occluded(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), ls.distance, light);
+    Ray shadowRay = spawnRay(hit.posWorld, hit.normalGeom, ls.wi);
+    vec3 transmittance = vec3(1.0);
+    bool blocked;
+    if (mediaInScene()) {
+        transmittance = shadowTransmittance(shadowRay, ls.distance, light,
+                                            mediaToward(media, hit.material, hit.normalGeom, toWorld(frame, woLocal), ls.wi));
+        blocked = all(equal(transmittance, vec3(0.0)));
+    } else {
+        blocked = occluded(shadowRay, ls.distance, light);
+    }
     recordShadowRay(bounce, blocked);
     if (blocked) return vec3(0.0);
     float pdfLight = selection * ls.pdfSolidAngle;
     // A delta light has no density to weigh against: only light sampling can find it.
     float weight = useMis && !ls.isDelta ? powerHeuristic(pdfLight, bsdfPdf(material, woLocal, wiLocal)) : 1.0;
     recordLightWeight(bounce, weight);
-    return f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
+    vec3 estimate = f * ls.radiance * (absCosTheta(wiLocal) * weight / pdfLight);
+    return mediaInScene() ? estimate * transmittance : estimate;
+}
+
+// The same from a point where a medium scatters: the phase function in place of f |cos|.
+vec3 estimateMediumDirectLighting(MediumVertex vertex, vec3 directionIn, MediumStack media, Sampler sampler,
+                                  int bounce, bool useMis) {
+    if (uLightCount == 0) return vec3(0.0);
+    int light = chooseLight(samplerGet1D(sampler, lightChoiceDimension(bounce)));
+    float selection = lightSelectionProbability(light);
+    LightSample ls = sampleLight(light, vertex.posWorld, samplerGet2D(sampler, lightPositionDimension(bounce)));
+    if (ls.pdfSolidAngle <= 0.0 || selection <= 0.0 || all(equal(ls.radiance, vec3(0.0)))) return vec3(0.0);
+    vec3 transmittance = shadowTransmittance(Ray(vertex.posWorld, ls.wi), ls.distance, light, media);
+    bool blocked = all(equal(transmittance, vec3(0.0)));
+    recordShadowRay(bounce, blocked);
+    if (blocked) return vec3(0.0);
+    float phase = henyeyGreensteinPdf(dot(directionIn, ls.wi), vertex.medium.g);
+    float pdfLight = selection * ls.pdfSolidAngle;
+    float weight = useMis && !ls.isDelta ? powerHeuristic(pdfLight, phase) : 1.0;
+    recordLightWeight(bounce, weight);
+    return transmittance * ls.radiance * (phase * weight / pdfLight);
 }
 
 // Firefly control: a contribution to the pixel (throughput x emission, or throughput x one light
@@ -99,10 +130,12 @@ struct PathState {
     float previousPdf;        // solid-angle density of the BSDF sample that made this ray
     bool previousDelta;       // the camera ray counts as delta: nothing else could find it
     PathHistory history;      // for the light-path views (light_paths.glsl)
+    MediumStack media;        // the media the ray is in (media.glsl)
 };
 
 PathState startPath(Ray cameraRay) {
-    return PathState(cameraRay, 0, vec3(0.0), vec3(1.0), cameraRay.origin, 0.0, true, startPathHistory());
+    return PathState(cameraRay, 0, vec3(0.0), vec3(1.0), cameraRay.origin, 0.0, true, startPathHistory(),
+                     cameraMediumStack());
 }
 
 // ---- What each integrator does ------------------------------------------------------------------
@@ -153,7 +186,8 @@ void addEmissionFound(inout PathState path, vec3 emitted, int light, float hitDi
 void addDirectLighting(inout PathState path, Material material, ShadingFrame frame, Hit hit, vec3 woLocal,
                        Sampler sampler) {
     int bounce = path.bounce;
-    vec3 added = clampContribution(path.throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce, weighsByMis())) *
+    vec3 added = clampContribution(path.throughput * estimateDirectLighting(material, frame, hit, woLocal, sampler, bounce,
+                                                                            weighsByMis(), path.media)) *
                  lightPathWeight(bounce + 1, path.history, false);
     recordDirectLighting(bounce, added);
     path.radiance += added;
@@ -171,6 +205,7 @@ bool scatter(inout PathState path, Material material, ShadingFrame frame, Hit hi
     if (!consistentSides(-path.ray.direction, wiWorld, hit)) return false;
     path.throughput *= bs.weight; // weight already holds f*|cos|/pdf
     if (all(equal(path.throughput, vec3(0.0)))) return false;
+    if (mediaInScene()) path.media = mediaToward(path.media, hit.material, hit.normalGeom, -path.ray.direction, wiWorld);
     path.previousPos = hit.posWorld;
     path.previousPdf = bs.pdfSolidAngle;
     path.previousDelta = bs.isDelta;
@@ -190,13 +225,52 @@ bool survivesRoulette(inout PathState path, Sampler sampler, int bounce) {
     return true;
 }
 
-// Follows the path one bounce: the surface the ray finds, its emission, next-event estimation and
-// the BSDF sample that makes the next ray. Returns false once the path has ended, with its
-// estimate in path.radiance.
+// A medium scattered the path at `vertex`: next-event estimation with the phase function, and a
+// phase-function sample for the next ray (its weight, phase / pdf, is 1). A scattering event is a
+// bounce like a surface's: it counts towards uMaxDepth, roulette and the light-path filters.
+bool scatterInMedium(inout PathState path, MediumVertex vertex, Sampler sampler) {
+    int bounce = path.bounce;
+    if (bounce >= lastBounce()) return false;
+    if (samplesLights())
+        path.radiance += clampContribution(path.throughput * estimateMediumDirectLighting(vertex, path.ray.direction, path.media,
+                                                                                          sampler, bounce, weighsByMis())) *
+                         lightPathWeight(bounce + 1, path.history, false);
+    if (!samplesBsdf()) return false;
+    // g > 0 scatters forward: the phase function's z is the direction the light travelled.
+    vec3 wiLocal = sampleHenyeyGreenstein(samplerGet2D(sampler, bsdfDimension(bounce)), vertex.medium.g);
+    path.previousPos = vertex.posWorld;
+    path.previousPdf = henyeyGreensteinPdf(wiLocal.z, vertex.medium.g);
+    path.previousDelta = false;
+    recordScattering(path.history, false);
+    path.ray = Ray(vertex.posWorld, normalize(toWorld(makeShadingFrame(path.ray.direction), wiLocal)));
+    path.bounce = bounce + 1;
+    if (playsRoulette(bounce) && !survivesRoulette(path, sampler, bounce)) return false;
+    recordThroughput(bounce, path.throughput);
+    return true;
+}
+
+// The next vertex along path.ray: in scenes with media the free flight through them decides
+// between a surface and a point in a medium (which scatterInMedium handles); else the nearest
+// surface.
+int findNextVertex(inout PathState path, Sampler sampler, out Hit hit, out MediumVertex scattering) {
+    if (mediaInScene())
+        return flyToNextVertex(path.ray, path.media, path.throughput, samplerGet2D(sampler, freeFlightDimension(path.bounce)),
+                               hit, scattering);
+    scattering = MediumVertex(vec3(0.0), Medium(vec3(0.0), vec3(0.0), 0.0));
+    return intersectScene(path.ray, hit) ? kFlightSurface : kFlightEscaped;
+}
+
+// Follows the path one bounce: the surface the ray finds (or the point where a medium scatters
+// it), its emission, next-event estimation and the BSDF sample that makes the next ray. Returns
+// false once the path has ended, with its estimate in path.radiance.
 bool extendPath(inout PathState path, Sampler sampler) {
     int bounce = path.bounce;
     Hit hit;
-    bool found = intersectScene(path.ray, hit);
+    MediumVertex scattering;
+    int flight = findNextVertex(path, sampler, hit, scattering);
+    if (flight == kFlightLost) return false;
+    if (flight == kFlightScattered) return scatterInMedium(path, scattering, sampler);
+    bool found = flight == kFlightSurface;
     recordSurface(bounce, found, hit, path.ray, path.throughput);
     if (!found) {
         if (countsEmissionFoundAt(bounce))

@@ -25,6 +25,9 @@ uint bsdfLobeDimension(int bounce)          { return 1u + uint(bounce) * kDimens
 uint lightChoiceDimension(int bounce)       { return 1u + uint(bounce) * kDimensionsPerBounce + 2u; } // 1D
 uint lightPositionDimension(int bounce)     { return 1u + uint(bounce) * kDimensionsPerBounce + 3u; } // 2D
 uint russianRouletteDimension(int bounce)   { return 1u + uint(bounce) * kDimensionsPerBounce + 4u; } // 1D
+// Free flight through media (media.glsl), beyond the lens: scenes without media keep their bits.
+const uint kDimensionFreeFlight = 65536u;
+uint freeFlightDimension(int bounce)        { return kDimensionFreeFlight + uint(bounce); }           // 2D
 
 struct Sampler {
     uint mode;

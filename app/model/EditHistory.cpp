@@ -87,6 +87,10 @@ std::vector<std::string> materialChanges(const Material& a, const Material& b) {
         if (input.value == InputValue::Number && a.*input.number != b.*input.number)
             fields.push_back(input.panelLabel ? input.panelLabel : withSpaces(input.key));
     if (a.alphaMode != b.alphaMode) fields.emplace_back("alpha mode");
+    if (a.hasInterior != b.hasInterior) fields.emplace_back("interior");
+    if (a.sigmaA != b.sigmaA) fields.emplace_back("absorption");
+    if (a.sigmaS != b.sigmaS) fields.emplace_back("scattering");
+    if (a.g != b.g && b.type != MaterialType::Medium) fields.emplace_back("g"); // a medium's is a Number input above
     for (const MaterialTextureInput& input : kMaterialTextureInputs)
         if (!sameSlot(a.*input.slot, b.*input.slot)) fields.push_back(withSpaces(input.name) + " texture");
     return fields;
@@ -170,6 +174,12 @@ std::string materialProblem(const Material& material, std::size_t textures) {
         else if (input.value == InputValue::Number)
             problem = outOfRange(*input.range, material.*input.number, what + input.range->quantity);
         if (!problem.empty()) return problem;
+    }
+    if (material.hasInterior) {
+        const std::string interior = what + "interior ";
+        if (std::string p = vectorOutOfRange(ranges::kMediumCoefficient, material.sigmaA, interior + "sigma_a"); !p.empty()) return p;
+        if (std::string p = vectorOutOfRange(ranges::kMediumCoefficient, material.sigmaS, interior + "sigma_s"); !p.empty()) return p;
+        if (std::string p = outOfRange(ranges::kPhaseAsymmetry, material.g, interior + "g"); !p.empty()) return p;
     }
     for (const MaterialTextureInput& input : kMaterialTextureInputs) {
         const TextureSlot& slot = material.*input.slot;

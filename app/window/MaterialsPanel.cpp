@@ -83,7 +83,8 @@ const char* colorTooltip(MaterialType type) {
     case MaterialType::Metal: return "reflectance at normal incidence (Schlick Fresnel)";
     case MaterialType::Plastic: return "albedo of the Lambertian base under the coat";
     case MaterialType::Principled: return "base colour: the diffuse albedo of the dielectric part, the metal's F0";
-    case MaterialType::Emitter: break;
+    case MaterialType::Emitter:
+    case MaterialType::Medium: break; // no colour
     }
     return "";
 }

@@ -10,7 +10,7 @@
 namespace ptview {
 const char* const GpuScene::kIntUniformNames[kIntUniformCount] = {
     GpuTextures::kRecordStartName, "uSphereCount", "uQuadCount", "uDiskCount", "uLightCount", "uEnvironmentLight",
-    "uMeshInstanceCount", "uTopLevelRoot", "uMeshAttributeStart"};
+    "uMeshInstanceCount", "uTopLevelRoot", "uMeshAttributeStart", "uMediaInScene", "uCameraMediumDepth"};
 
 const char* const GpuScene::kSamplerNames[kTextureCount] = {
     "uSpheres", "uQuads", "uDisks", "uPrimitiveIds", "uMaterials", "uLights",
@@ -35,6 +35,7 @@ void GpuScene::uploadMeshTangentsIfChanged(const Scene& scene) {
 void GpuScene::uploadMaterials(const std::vector<Material>& materials) {
     ScenePrimitives primitives;
     flattenMaterials(materials, primitives);
+    mediaInScene_ = std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.boundsMedium(); });
     // The texture records follow the materials in one buffer (textures.glsl), which saves a unit.
     std::vector<glm::vec4> texels(primitives.materials.size() * kMaterialTexels +
                                   atlas_.records().size() * kTextureRecordTexels);
@@ -59,6 +60,15 @@ void GpuScene::attach(const GlProgram& program, int firstUnit) {
     firstUnit_ = firstUnit;
     for (int i = 0; i < kTextureCount; ++i) program.bindSamplerUnit(kSamplerNames[i], firstUnit + i);
     for (int i = 0; i < kIntUniformCount; ++i) intUniformLocations_[i] = program.uniformLocation(kIntUniformNames[i]);
+    cameraMediaLocation_ = program.uniformLocation("uCameraMedia");
+}
+
+void GpuScene::setMediaAroundCamera(const std::vector<int>& materials) {
+    const int kept = std::min(static_cast<int>(materials.size()), kMaxMediumDepth);
+    const int first = static_cast<int>(materials.size()) - kept;
+    cameraMedia_ = glm::ivec4(0);
+    for (int i = 0; i < kept; ++i) cameraMedia_[i] = materials[static_cast<std::size_t>(first + i)];
+    cameraMediumDepth_ = kept;
 }
 
 void GpuScene::bind() const {
@@ -67,8 +77,9 @@ void GpuScene::bind() const {
     atlas_.bind(firstUnit_ + kOwnTextureCount + GpuMeshes::kTextureCount);
     const int values[kIntUniformCount] = {textureRecordStart_, sphereCount(), quadCount(), diskCount(), lightCount(),
                                           environmentLight(), meshes_.instanceCount(), meshes_.topLevelRoot(),
-                                          meshes_.attributeStart()};
+                                          meshes_.attributeStart(), mediaInScene_ ? 1 : 0, cameraMediumDepth_};
     for (int i = 0; i < kIntUniformCount; ++i) glUniform1i(intUniformLocations_[i], values[i]);
+    glUniform4i(cameraMediaLocation_, cameraMedia_.x, cameraMedia_.y, cameraMedia_.z, cameraMedia_.w);
 }
 
 } // namespace ptview

@@ -40,6 +40,9 @@ public:
     // Before uploadMaterials, for an edit that adds or removes a normal map on a mesh: re-sends
     // the meshes when the set of those that need tangents changed (scene: with the new materials).
     void uploadMeshTangentsIfChanged(const Scene& scene);
+    // The media the camera is in (mediaAroundPoint of its eye, outermost first): where every
+    // camera ray starts (shaders/media.glsl). Only the innermost kMaxMediumDepth are kept.
+    void setMediaAroundCamera(const std::vector<int>& materials);
     // Binds the textures and sets the uniforms of the attached program, which must be in use.
     void bind() const;
 
@@ -60,10 +63,17 @@ private:
     float sceneRadius_ = 1.0f;
     int firstUnit_ = 0;
     // The int uniforms bind() sets, in the order of the values it sets them to: the texture
-    // records' start, the shape and light counts, the environment's light, the meshes' top level.
-    static constexpr int kIntUniformCount = 9;
+    // records' start, the shape and light counts, the environment's light, the meshes' top level,
+    // whether a material bounds a medium and how many media the camera is in.
+    static constexpr int kIntUniformCount = 11;
     static const char* const kIntUniformNames[kIntUniformCount];
-    GLint intUniformLocations_[kIntUniformCount] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};
+    GLint intUniformLocations_[kIntUniformCount] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+    // shaders/media.glsl's kMaxMediumDepth: the media a ray can be in at once.
+    static constexpr int kMaxMediumDepth = 4;
+    GLint cameraMediaLocation_ = -1;
+    bool mediaInScene_ = false;
+    glm::ivec4 cameraMedia_{0};
+    int cameraMediumDepth_ = 0;
     ScenePrimitives geometry_; // kept to rebuild the light table on material edits
     glm::vec3 environmentRadiance_{0.0f};
     LightTable lights_;

@@ -35,6 +35,7 @@ const BsdfCode kBsdfCode[] = {
     {MaterialType::Metal, "kMaterialMetal", "bsdf_metal.glsl", "metal", false},
     {MaterialType::Plastic, "kMaterialPlastic", "bsdf_plastic.glsl", "plastic", false},
     {MaterialType::Principled, "kMaterialPrincipled", "bsdf_principled.glsl", "principled", false},
+    {MaterialType::Medium, "kMaterialMedium", nullptr, nullptr, true}, // a volume's boundary: rays pass it (media.glsl)
 };
 
 // STEP(0) STEP(1) ... STEP(count - 1): a macro that runs STEP for every index, as a loop would.
@@ -146,6 +147,7 @@ const IncludeVariant kIncludeVariants[] = {
     {"camera_thin_lens.glsl", "camera_pinhole.glsl", [](const ProgramChoices& p) { return p.features.thinLens; }},
     {"normal_map.glsl", "normal_map_none.glsl", [](const ProgramChoices& p) { return p.features.normalMaps; }},
     {"surface_alpha.glsl", "surface_alpha_none.glsl", [](const ProgramChoices& p) { return p.features.alpha; }},
+    {"media.glsl", "media_none.glsl", [](const ProgramChoices& p) { return p.features.media; }},
     {"light_paths.glsl", "light_paths_none.glsl", [](const ProgramChoices& p) { return p.lightPaths != LightPaths::All; }},
     {"path_recorder.glsl", "path_recorder_none.glsl", [](const ProgramChoices& p) { return p.recordsPaths; }},
 };

@@ -168,7 +168,7 @@ struct GpuLight {
 static_assert(sizeof(GpuLight) == 64, "four RGBA32F texels");
 constexpr int kLightTexels = sizeof(GpuLight) / 16;
 
-// shaders/scene_data.glsl: ten RGBA32F texels per material. Texture indices are into
+// shaders/scene_data.glsl: twelve RGBA32F texels per material. Texture indices are into
 // Scene::textures, -1 for none; slots (scale.xy, offset.xy) in the order base colour, roughness,
 // metallic, normal, emission. The texture fields are read only by programs with textures.
 struct GpuMaterial {
@@ -186,8 +186,13 @@ struct GpuMaterial {
     float emissionTexture;
     glm::vec4 textures; // base colour, roughness, metallic, normal
     glm::vec4 slots[5];
+    // The medium (shaders/media.glsl): read only by programs of scenes with one.
+    glm::vec3 sigmaA;
+    float g;
+    glm::vec3 sigmaS;
+    float boundsMedium; // 1: crossing the surface changes the medium (Material::boundsMedium)
 };
-static_assert(sizeof(GpuMaterial) == 160, "ten RGBA32F texels");
+static_assert(sizeof(GpuMaterial) == 192, "twelve RGBA32F texels");
 constexpr int kMaterialTexels = sizeof(GpuMaterial) / 16;
 
 // shaders/textures.glsl: two RGBA32F texels per texture, after the materials in their buffer.

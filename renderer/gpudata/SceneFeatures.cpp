@@ -14,7 +14,7 @@ namespace {
 auto tied(const ShaderFeatures& f) {
     ShapeCounts unrolled = f.unrolledShapes.value_or(ShapeCounts{-1, -1, -1});
     return std::make_tuple(f.materialModels, f.lightKinds, f.quadLightsUpClose, f.environmentMap,
-                           f.meshes, f.oneMeshInstance, f.textures, f.thinLens, f.normalMaps, f.alpha, unrolled.spheres, unrolled.quads,
+                           f.meshes, f.oneMeshInstance, f.textures, f.thinLens, f.normalMaps, f.alpha, f.media, unrolled.spheres, unrolled.quads,
                            unrolled.disks);
 }
 
@@ -50,7 +50,7 @@ bool ShaderFeatures::covers(const ShaderFeatures& other) const {
            (environmentMap || !other.environmentMap) && (meshes || !other.meshes) &&
            (!oneMeshInstance || other.oneMeshInstance || !other.meshes) &&
            (textures || !other.textures) && (thinLens || !other.thinLens) &&
-           (normalMaps || !other.normalMaps) && (alpha || !other.alpha) &&
+           (normalMaps || !other.normalMaps) && (alpha || !other.alpha) && (media || !other.media) &&
            (!unrolledShapes || (other.unrolledShapes && *unrolledShapes == *other.unrolledShapes));
 }
 
@@ -75,6 +75,7 @@ std::string ShaderFeatures::describe() const {
            "camera: " + (thinLens ? "thin lens" : "pinhole") + "\n" +
            "normal maps: " + (normalMaps ? "yes" : "no") + "\n" +
            "alpha: " + (alpha ? "mask/blend" : "opaque") + "\n" +
+           "media: " + (media ? "yes" : "no") + "\n" +
            "shape loops: " +
            (unrolledShapes ? "unrolled for " + std::to_string(unrolledShapes->spheres) + " spheres, " +
                                  std::to_string(unrolledShapes->quads) + " quads, " +
@@ -95,6 +96,7 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
         if (material.hasTextures()) features.textures = true;
         if (material.normalTexture.used()) features.normalMaps = true;
         if (material.alphaMode != AlphaMode::Opaque) features.alpha = features.textures = true;
+        if (material.boundsMedium()) features.media = true;
     };
     int meshShapes = 0;
     for (const Shape& shape : scene.shapes) {
@@ -118,7 +120,8 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
     features.environmentMap = !scene.environmentMap.empty();
     if (features.environmentMap || scene.environment != glm::vec3(0.0f)) addLightKind(LightKind::Environment);
     features.thinLens = scene.camera.apertureRadius > 0.0f;
-    features.quadLightsUpClose = features.hasLightKind(LightKind::Quad) && surfaceWithinQuadLightReach(scene);
+    // A point in a medium may come as close to a quad light as any surface.
+    features.quadLightsUpClose = features.hasLightKind(LightKind::Quad) && (features.media || surfaceWithinQuadLightReach(scene));
     ShapeCounts counts = shapeCounts(scene);
     if (counts.total() <= ShaderFeatures::kMaxUnrolledShapes) features.unrolledShapes = counts;
     return features;

@@ -42,6 +42,7 @@ struct ShaderFeatures {
     bool normalMaps = false;          // ... a normal map (normal_map.glsl); implies textures
     bool alpha = false;               // ... alpha mode MASK or BLEND (surface_alpha.glsl); implies
                                       //   textures, since the coverage is read at texture coordinates
+    bool media = false;               // a shape bounds a participating medium (media.glsl)
     // The loops over every sphere, quad and disk unrolled for exactly these counts
     // (shape_loops.glsl), or none: loops over the counts the scene sets at run time (the uber
     // program, and scenes of more than kMaxUnrolledShapes shapes).

@@ -111,6 +111,10 @@ void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& o
                                  float(slots[3]->texture));
         gpu.emissionTexture = float(slots[4]->texture);
         for (int i = 0; i < 5; ++i) gpu.slots[i] = glm::vec4(slots[i]->scale, slots[i]->offset);
+        gpu.sigmaA = material.sigmaA;
+        gpu.g = material.g;
+        gpu.sigmaS = material.sigmaS;
+        gpu.boundsMedium = material.boundsMedium() ? 1.0f : 0.0f;
         out.materials.push_back(gpu);
     }
 }

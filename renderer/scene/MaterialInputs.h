@@ -19,6 +19,7 @@ enum class InputValue {
     Number,   // Material::*number, in range
     AlphaMode, // Material::alphaMode, by alphaModeNames()
     Strength, // a number the emission read before it is multiplied by; stored nowhere else
+    Interior, // {"sigma_a", "sigma_s", "g"}: Material's medium fields, and hasInterior
 };
 
 // When the writer writes an input of a type that takes it.
@@ -47,7 +48,12 @@ struct MaterialInput {
 
 namespace materialInputTakers {
 inline bool emitter(const MaterialSchema& s) { return s.radianceRequired; }
-inline bool surface(const MaterialSchema& s) { return !s.radianceRequired; }
+inline bool surface(const MaterialSchema& s) { return !s.radianceRequired && s.type != MaterialType::Medium; }
+inline bool medium(const MaterialSchema& s) { return s.type == MaterialType::Medium; }
+// The models that refract, whose closed shape may hold a medium.
+inline bool refracting(const MaterialSchema& s) {
+    return s.type == MaterialType::SpecularTransmission || s.type == MaterialType::Glass || s.type == MaterialType::Principled;
+}
 inline bool colored(const MaterialSchema& s) { return s.colorKey != nullptr; }
 inline bool withIor(const MaterialSchema& s) { return s.hasIor; }
 inline bool withRoughness(const MaterialSchema& s) { return s.hasRoughness; }
@@ -81,6 +87,15 @@ inline const MaterialInput kMaterialInputs[] = {
     // glTF's normalTexture.scale is the factor of the normal map.
     {"normal_map", materialInputTakers::principled, InputValue::Number, nullptr, &Material::normalScale,
      &ranges::kNormalScale, &Material::normalTexture, false, InputWrite::WithTexture, 8, "normal scale"},
+    {"sigma_a", materialInputTakers::medium, InputValue::Vector, &Material::sigmaA, nullptr, &ranges::kMediumCoefficient,
+     nullptr, false, InputWrite::Always, 11, nullptr},
+    {"sigma_s", materialInputTakers::medium, InputValue::Vector, &Material::sigmaS, nullptr, &ranges::kMediumCoefficient,
+     nullptr, false, InputWrite::Always, 12, nullptr},
+    {"g", materialInputTakers::medium, InputValue::Number, nullptr, &Material::g, &ranges::kPhaseAsymmetry, nullptr, false,
+     InputWrite::Always, 13, "g"},
+    // The same three of a medium inside the shape (KHR_materials_volume); absent: a thin surface.
+    {"interior", materialInputTakers::refracting, InputValue::Interior, nullptr, nullptr, nullptr, nullptr, false,
+     InputWrite::UnlessDefault, 14, nullptr},
 };
 
 // The input's key in a material of this type.
@@ -136,6 +151,12 @@ inline void copyMaterialInput(const MaterialInput& input, const Material& from, 
     case InputValue::Number: to.*input.number = from.*input.number; break;
     case InputValue::AlphaMode: to.alphaMode = from.alphaMode; break;
     case InputValue::Strength: break;
+    case InputValue::Interior:
+        to.hasInterior = from.hasInterior;
+        to.sigmaA = from.sigmaA;
+        to.sigmaS = from.sigmaS;
+        to.g = from.g;
+        break;
     }
     if (input.slot) to.*input.slot = from.*input.slot;
 }
@@ -163,6 +184,7 @@ inline bool materialInputWritten(const MaterialInput& input, const Material& mat
     case InputValue::Number: return textured || material.*input.number != defaults.*input.number;
     case InputValue::AlphaMode: return material.alphaMode != defaults.alphaMode;
     case InputValue::Strength: break;
+    case InputValue::Interior: return material.hasInterior;
     }
     return false;
 }

@@ -91,6 +91,19 @@ T readTexturedFactor(const MaterialInput& input, const Json& value, const Pointe
     return factor;
 }
 
+// A refracting material's "interior": {"sigma_a": rgb, "sigma_s": rgb, "g": number}, each
+// optional (0 when left out): {} is a clear solid, whose inside holds no medium of its outside.
+void readInterior(const Json& value, const Pointer& at, Material& material) {
+    requireObject(value, at);
+    checkKeys(value, at, {"sigma_a", "sigma_s", "g"});
+    material.hasInterior = true;
+    material.sigmaA = material.sigmaS = glm::vec3(0.0f);
+    material.g = 0.0f;
+    if (const Json* a = optionalKey(value, "sigma_a")) material.sigmaA = readVec3InRange(*a, at / "sigma_a", ranges::kMediumCoefficient);
+    if (const Json* s = optionalKey(value, "sigma_s")) material.sigmaS = readVec3InRange(*s, at / "sigma_s", ranges::kMediumCoefficient);
+    if (const Json* g = optionalKey(value, "g")) material.g = readInRange(*g, at / "g", ranges::kPhaseAsymmetry);
+}
+
 } // namespace
 
 // A material of the "materials" section, or with `base` an override of a material a glTF file
@@ -159,6 +172,7 @@ Material readMaterial(const std::string& name, const Json& value, const Pointer&
         case InputValue::AlphaMode:
             material.alphaMode = readEnum(*json, inputAt, alphaModeNames(), "alpha mode");
             break;
+        case InputValue::Interior: readInterior(*json, inputAt, material); break;
         case InputValue::Strength: {
             material.radiance *= readInRange(*json, inputAt, *input->range);
             const SceneRange& radiance = ranges::kRadiance;

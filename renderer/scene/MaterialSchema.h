@@ -13,8 +13,8 @@
 
 namespace ptview {
 
-// Every type but emitter has one colour, under the name users know for that model (it is also
-// the panel's label); ior and roughness only where the model has them; every type may emit.
+// Every type but emitter and medium has one colour, under the name users know for that model (it is also
+// the panel's label); ior and roughness only where the model has them; every surface type may emit.
 struct MaterialSchema {
     const char* name; // the JSON "type"
     MaterialType type;
@@ -38,6 +38,8 @@ inline const MaterialSchema kMaterialSchemas[] = {
     {"metal", MaterialType::Metal, "reflectance", std::nullopt, false, true, false},
     {"plastic", MaterialType::Plastic, "albedo", std::nullopt, true, true, false},
     {"principled", MaterialType::Principled, "base_color", glm::vec3(1.0f), true, true, false},
+    // A volume, not a surface: no colour, no emission (docs/volumes.md).
+    {"medium", MaterialType::Medium, nullptr, std::nullopt, false, false, false},
 };
 
 inline const MaterialSchema& materialSchema(MaterialType type) {

@@ -24,6 +24,7 @@ bool sameMaterial(const Material& a, const Material& b) {
            a.normalScale == b.normalScale && sameSlot(a.baseColorTexture, b.baseColorTexture) &&
            sameSlot(a.roughnessTexture, b.roughnessTexture) && sameSlot(a.metallicTexture, b.metallicTexture) &&
            sameSlot(a.normalTexture, b.normalTexture) && sameSlot(a.emissionTexture, b.emissionTexture) &&
+           a.sigmaA == b.sigmaA && a.sigmaS == b.sigmaS && a.g == b.g && a.hasInterior == b.hasInterior &&
            a.importedFrom == b.importedFrom;
 }
 

@@ -46,7 +46,7 @@ struct CameraFrame {
 CameraFrame cameraFrame(const CameraDesc& camera);
 
 // The order is the GPU's: shaders/material.glsl numbers the types the same way.
-enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic, Principled };
+enum class MaterialType { Diffuse, Emitter, DiffuseTransmission, Mirror, SpecularTransmission, Glass, Metal, Plastic, Principled, Medium };
 
 // Principled: how the base colour's alpha cuts the surface (glTF's alphaMode, whose names are
 // these in capitals; shaders/surface_alpha.glsl reads the constants).
@@ -88,8 +88,18 @@ struct Material {
     TextureSlot metallicTexture;  // B x metallic; linear (glTF: the same texture)
     TextureSlot normalTexture;    // tangent-space normal, RGB; linear
     TextureSlot emissionTexture;  // RGB x radiance; sRGB
+    // A homogeneous participating medium (docs/volumes.md): Medium fills the closed shape it is on,
+    // whose surface neither bends nor attenuates rays; SpecularTransmission, Glass and Principled
+    // with hasInterior hold it inside their closed shape (KHR_materials_volume). Per metre.
+    glm::vec3 sigmaA{0.0f};   // absorption coefficient, each component >= 0
+    glm::vec3 sigmaS{0.0f};   // scattering coefficient, each component >= 0
+    float g = 0.0f;           // Henyey-Greenstein asymmetry in (-1, 1): > 0 scatters forward
+    bool hasInterior = false; // transmissive types: the medium above is inside (else the surface is
+                              //   a thin sheet between two sides of the same medium)
     int importedFrom = -1; // into Scene::imports when a glTF file made it (the writer skips it)
 
+    // Whether crossing this material's surface changes the medium a ray is in.
+    bool boundsMedium() const { return type == MaterialType::Medium || hasInterior; }
     bool hasTextures() const {
         return baseColorTexture.used() || roughnessTexture.used() || metallicTexture.used() || normalTexture.used() ||
                emissionTexture.used();

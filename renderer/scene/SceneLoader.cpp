@@ -13,6 +13,7 @@
 
 #include <ptview/scene/GltfLoader.h>
 #include <ptview/io/InputFile.h>
+#include <ptview/scene/MediumBoundaries.h>
 #include <ptview/scene/SceneFileResolve.h>
 #include <ptview/scene/ScenePartsReader.h>
 
@@ -59,6 +60,12 @@ Scene parseScene(const std::string& jsonText, const std::filesystem::path& sourc
         resolveMeshes(draft, sourceName, scope);
         resolveTextures(draft.textureRequests, sourceName, scope, draft.scene);
         resolveImports(draft, sourceName, scope);
+        if (std::optional<OpenMediumBoundary> open = findOpenMediumBoundary(draft.scene)) {
+            const Shape& shape = draft.scene.shapes[open->shape];
+            const Pointer at = shape.importedFrom < 0 ? Pointer("/shapes") / open->shape
+                                                      : Pointer("/gltf") / static_cast<std::size_t>(shape.importedFrom);
+            fail(at, "shape '" + shape.name + "': " + open->what);
+        }
         Scene scene = std::move(draft.scene);
         scene.path = sourceName;
         // Relative to the scene file, as people write them; not normalised, so that ".." means

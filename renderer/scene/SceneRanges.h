@@ -74,6 +74,16 @@ inline const SceneRange kEnvironmentRotation{
     "environment rotation", -kUnbounded, kUnbounded, false, false, "deg", "turn of the environment map about +Y",
     0.0f, 360.0f};
 
+// A homogeneous medium's absorption and scattering coefficients (per metre, per channel): 1e6 is a
+// mean free path of a micrometre, far beyond any fog or glass; the panel spans thin fog to milk.
+inline const SceneRange kMediumCoefficient{
+    "medium coefficient", 0.0, 1e6, false, false, "m^-1", "absorption or scattering per metre of path", 0.0f, 100.0f};
+// The Henyey-Greenstein phase function's mean cosine: at +-1 it would be a delta (a ray that goes
+// on, or comes back, unchanged), which its density cannot hold.
+inline const SceneRange kPhaseAsymmetry{
+    "phase asymmetry g", -1.0, 1.0, true, true, "", "Henyey-Greenstein g: > 0 scatters forward, < 0 back, 0 evenly",
+    -0.99f, 0.99f};
+
 // A position's coordinate, as the loader bounds eyes, centres and vertices (kMaxSceneExtent); the
 // command line's --view-from.
 inline const SceneRange kCoordinate{
@@ -90,6 +100,7 @@ inline const SceneRange* const kSceneRanges[] = {
     &ranges::kSpotConeAngle, &ranges::kVerticalFov, &ranges::kApertureRadius, &ranges::kFocusDistance, &ranges::kIor, &ranges::kRoughness, &ranges::kColor,
     &ranges::kMetallic, &ranges::kTransmission, &ranges::kAlpha, &ranges::kAlphaCutoff, &ranges::kNormalScale,
     &ranges::kRadiance, &ranges::kIntensity, &ranges::kEnvironmentIntensity, &ranges::kEnvironmentRotation,
+    &ranges::kMediumCoefficient, &ranges::kPhaseAsymmetry,
 };
 
 } // namespace ptview

@@ -221,6 +221,10 @@ Json inputFactorJson(const MaterialInput& input, const Material& material, const
     case InputValue::Vector: return vec3InRange(material.*input.vector, *input.range, pointer);
     case InputValue::Number: return numberInRange(material.*input.number, *input.range, pointer);
     case InputValue::AlphaMode: return alphaModeNames().name(material.alphaMode);
+    case InputValue::Interior:
+        return Json{{"sigma_a", vec3InRange(material.sigmaA, ranges::kMediumCoefficient, pointer + "/sigma_a")},
+                    {"sigma_s", vec3InRange(material.sigmaS, ranges::kMediumCoefficient, pointer + "/sigma_s")},
+                    {"g", numberInRange(material.g, ranges::kPhaseAsymmetry, pointer + "/g")}};
     case InputValue::Strength: break;
     }
     fail(pointer, "no value is written for this key"); // emission_strength: the emission holds it

@@ -1,5 +1,7 @@
 #include <ptview/tracer/PathTracer.h>
 
+#include <ptview/scene/MediaAroundPoint.h>
+
 #include <ptview/gl/FloatTexture.h>
 #include <ptview/gl/FullScreenRows.h>
 #include <ptview/tracer/AdaptiveSampler.h>
@@ -247,6 +249,7 @@ void PathTracer::setScene(const Scene& scene, const EnvironmentMap* environmentM
                            scene.environmentRotationDeg);
     gpuScene_.upload(scene, environmentMap_.hasMap() ? std::optional<glm::vec3>(environmentMap_.meanRadiance()) : std::nullopt);
     scene_ = scene;
+    gpuScene_.setMediaAroundCamera(mediaAroundPoint(scene_, scene_.camera.eye));
     updateProgramKey();
     camera_ = scene.camera;
     environmentRadiance_ = scene.environment;
@@ -257,6 +260,7 @@ void PathTracer::setMaterials(const std::vector<Material>& materials) {
     scene_.materials = materials;
     gpuScene_.uploadMeshTangentsIfChanged(scene_); // a normal map added to or taken from a mesh
     gpuScene_.uploadMaterials(materials);
+    gpuScene_.setMediaAroundCamera(mediaAroundPoint(scene_, scene_.camera.eye)); // a material may now bound a medium
     updateProgramKey(); // a model the scene did not use before needs a program that has it
     restart();
 }
@@ -266,6 +270,7 @@ void PathTracer::setCamera(const CameraDesc& camera) {
     camera_ = camera;
     camera_.resolution = resolution;
     scene_.camera = camera_;
+    gpuScene_.setMediaAroundCamera(mediaAroundPoint(scene_, camera_.eye));
     updateProgramKey(); // opening the lens from 0 (or closing it) needs the program with (or without) it
     restart();
 }
