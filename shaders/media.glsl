@@ -99,16 +99,18 @@ vec3 opticalDepth(Medium medium, float lengthMetres) {
 // boundaries; 0 when any other surface but `light`'s own is in the way. Analytic: no sampling.
 vec3 shadowTransmittance(Ray ray, float maxDistance, int light, MediumStack stack) {
     vec3 depth = vec3(0.0);
+    float lead = 0.0; // from the boundary last crossed to ray.origin, which spawnRay pushed past it
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         Hit hit;
         bool blocked = intersectScene(ray, hit) && hit.t < maxDistance;
         float segment = blocked ? hit.t : maxDistance;
-        if (inMedium(stack)) depth += opticalDepth(innermostMedium(stack), segment);
+        if (inMedium(stack)) depth += opticalDepth(innermostMedium(stack), lead + segment);
         if (!blocked || (light >= 0 && hit.light == light)) return exp(-depth);
         if (!isNullBoundary(hit.material)) return vec3(0.0);
         crossMediumBoundary(stack, hit.material);
         ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction);
-        maxDistance -= hit.t;
+        lead = dot(ray.origin - hit.posWorld, ray.direction);
+        maxDistance -= hit.t + lead;
     }
     return vec3(0.0); // more boundaries than a path may cross: counted as blocked
 }
@@ -132,10 +134,11 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
     float depthToScatter = -log(1.0 - u.y);
     vec3 scatteringDepth = vec3(0.0); // through media that scatter: the sampled part
     vec3 absorbingDepth = vec3(0.0);  // through media that only absorb: taken as it is
-    float travelled = 0.0;
+    float travelled = 0.0; // from the vertex to the boundary last crossed
+    float lead = 0.0;      // from that boundary to ray.origin, which spawnRay pushed past it
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         bool found = intersectScene(ray, hit);
-        float segment = found ? hit.t : kInfinity;
+        float segment = lead + (found ? hit.t : kInfinity); // from the boundary
         if (inMedium(stack)) {
             Medium medium = innermostMedium(stack);
             vec3 segmentDepth = opticalDepth(medium, segment);
@@ -148,7 +151,7 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
                     float pdf = dot(channelProbability, sigmaT * exp(-depth));
                     if (!(pdf > 0.0)) return kFlightLost;
                     throughput *= medium.sigmaS * exp(-depth - absorbingDepth) / pdf;
-                    scattering = MediumVertex(ray.origin + t * ray.direction, medium);
+                    scattering = MediumVertex(ray.origin + (t - lead) * ray.direction, medium);
                     return kFlightScattered;
                 }
                 scatteringDepth += segmentDepth;
@@ -156,7 +159,7 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
                 absorbingDepth += segmentDepth;
             }
         }
-        if (found) travelled += hit.t;
+        if (found) travelled += segment;
         if (!found || !isNullBoundary(hit.material)) {
             float reach = dot(channelProbability, exp(-scatteringDepth));
             if (!(reach > 0.0)) return kFlightLost;
@@ -166,6 +169,7 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
         }
         crossMediumBoundary(stack, hit.material);
         ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction);
+        lead = dot(ray.origin - hit.posWorld, ray.direction);
     }
     return kFlightLost;
 }
