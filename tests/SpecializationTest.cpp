@@ -43,6 +43,7 @@ const char* const kTextureCode = "vec4 sampleTexture(";
 const char* const kPrincipledCode = "BsdfSample samplePrincipled(";
 const char* const kNormalMapCode = "vec3 decodeNormalTexel(";
 const char* const kAlphaCode = "float alphaBlendRandom(";
+const char* const kMediaCode = "vec3 channelProbability = throughput /";
 
 TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode) {
     Scene cornell = shippedScene("cornell");
@@ -157,6 +158,20 @@ TEST(Specialization, EachFeatureBringsItsCode) {
     std::string mirror = programSource(mirrorOnly);
     EXPECT_TRUE(contains(mirror, "BsdfSample sampleMirror("));
     EXPECT_FALSE(contains(mirror, kDielectricCode));
+}
+
+// Media code (media.glsl) only where a material bounds a medium: a medium material, or a
+// refracting one with an interior; the fog's program has it, the Cornell box's the empty variant.
+TEST(Specialization, MediaCodeOnlyInScenesWithAMedium) {
+    EXPECT_FALSE(contains(programSource(shippedScene("cornell")), kMediaCode));
+    EXPECT_FALSE(contains(programSource(shippedScene("materials")), kMediaCode)) << "glass without an interior";
+    EXPECT_TRUE(contains(programSource(shippedScene("fog")), kMediaCode));
+    EXPECT_TRUE(contains(programSource(shippedScene("coloured_glass")), kMediaCode));
+    Scene interior = shippedScene("materials");
+    for (Material& material : interior.materials)
+        if (material.type == MaterialType::Glass) material.hasInterior = true;
+    EXPECT_TRUE(sceneFeatures(interior).media);
+    EXPECT_TRUE(contains(programSource(interior), kMediaCode));
 }
 
 // A program samples only the kinds of light its scene has (light_kinds.glsl), and a material or
@@ -300,7 +315,7 @@ void expectSameImage(const PixelStatistics& a, const PixelStatistics& b, float p
 // and whether quad lights are sampled by solid angle: not in cornell, but with its light lowered
 // to 0.3 above the tall box.
 TEST(Specialization, SpecializedAndUberProgramsRenderTheSameImage) {
-    for (const char* name : {"cornell", "materials", "lights", "meshes", "cornell, light lowered"}) {
+    for (const char* name : {"cornell", "materials", "lights", "meshes", "cornell, light lowered", "fog"}) {
         SCOPED_TRACE(name);
         const bool lowered = std::string(name) == "cornell, light lowered";
         Scene scene = shippedScene(lowered ? "cornell" : name);

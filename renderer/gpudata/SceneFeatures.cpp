@@ -35,7 +35,7 @@ ShaderFeatures ShaderFeatures::all() {
     for (const MaterialSchema& schema : kMaterialSchemas) features.materialModels |= 1u << static_cast<int>(schema.type);
     for (const auto& entry : lightKindNames()) features.lightKinds |= 1u << static_cast<int>(entry.value);
     features.quadLightsUpClose = features.environmentMap = features.meshes = features.textures = features.thinLens = true;
-    features.normalMaps = features.alpha = true;
+    features.normalMaps = features.alpha = features.media = true;
     return features;
 }
 
