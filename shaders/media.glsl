@@ -91,6 +91,26 @@ MediumStack mediaToward(MediumStack stack, int material, vec3 normalGeom, vec3 w
     return stack;
 }
 
+// Past a null boundary the ray goes on from just beyond it: a hundredth of spawnRay's push, so
+// that a wall in the boundary's plane (a fog box the size of its room), which the boundary's
+// record is drawn a little inside of (renderer/gpudata/SceneRecords.cpp insetNullBoundary), is
+// not skipped with it. Meeting the same medium's boundary again within a few such pushes is the
+// same crossing (rounding; a ray through the edge between two faces of a box, or two triangles of
+// a mesh), not a second one.
+const float kNullBoundaryPush = 1e-6;
+
+// crossedAt: where the ray met the boundary, o + t d (not Hit::posWorld, which a quad's edge
+// moves inwards: the ray must go on along its own line).
+Ray continuePastBoundary(vec3 crossedAt, vec3 normalGeom, vec3 direction) {
+    vec3 side = dot(direction, normalGeom) >= 0.0 ? normalGeom : -normalGeom;
+    return Ray(crossedAt + side * (kNullBoundaryPush * maxMagnitude(crossedAt) + 1e-8 * uSceneRadius), direction);
+}
+
+bool sameCrossing(int material, vec3 at, int crossedMaterial, vec3 crossedAt) {
+    return material == crossedMaterial &&
+           distance(at, crossedAt) < 8.0 * (kNullBoundaryPush * maxMagnitude(crossedAt) + 1e-8 * uSceneRadius);
+}
+
 vec3 opticalDepth(Medium medium, float lengthMetres) {
     return (medium.sigmaA + medium.sigmaS) * min(lengthMetres, kLongestSegment);
 }
@@ -99,7 +119,9 @@ vec3 opticalDepth(Medium medium, float lengthMetres) {
 // boundaries; 0 when any other surface but `light`'s own is in the way. Analytic: no sampling.
 vec3 shadowTransmittance(Ray ray, float maxDistance, int light, MediumStack stack) {
     vec3 depth = vec3(0.0);
-    float lead = 0.0; // from the boundary last crossed to ray.origin, which spawnRay pushed past it
+    float lead = 0.0; // from the boundary last crossed to ray.origin, pushed past it
+    int crossedMaterial = -1;
+    vec3 crossedAt = ray.origin;
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         Hit hit;
         bool blocked = intersectScene(ray, hit) && hit.t < maxDistance;
@@ -107,9 +129,12 @@ vec3 shadowTransmittance(Ray ray, float maxDistance, int light, MediumStack stac
         if (inMedium(stack)) depth += opticalDepth(innermostMedium(stack), lead + segment);
         if (!blocked || (light >= 0 && hit.light == light)) return exp(-depth);
         if (!isNullBoundary(hit.material)) return vec3(0.0);
-        crossMediumBoundary(stack, hit.material);
-        ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction);
-        lead = dot(ray.origin - hit.posWorld, ray.direction);
+        vec3 at = ray.origin + hit.t * ray.direction;
+        if (!sameCrossing(hit.material, at, crossedMaterial, crossedAt)) crossMediumBoundary(stack, hit.material);
+        crossedMaterial = hit.material;
+        crossedAt = at;
+        ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
+        lead = dot(ray.origin - at, ray.direction);
         maxDistance -= hit.t + lead;
     }
     return vec3(0.0); // more boundaries than a path may cross: counted as blocked
@@ -135,7 +160,9 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
     vec3 scatteringDepth = vec3(0.0); // through media that scatter: the sampled part
     vec3 absorbingDepth = vec3(0.0);  // through media that only absorb: taken as it is
     float travelled = 0.0; // from the vertex to the boundary last crossed
-    float lead = 0.0;      // from that boundary to ray.origin, which spawnRay pushed past it
+    float lead = 0.0;      // from that boundary to ray.origin, pushed past it
+    int crossedMaterial = -1;
+    vec3 crossedAt = ray.origin;
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         bool found = intersectScene(ray, hit);
         float segment = lead + (found ? hit.t : kInfinity); // from the boundary
@@ -167,9 +194,12 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
             hit.t = travelled;
             return found ? kFlightSurface : kFlightEscaped;
         }
-        crossMediumBoundary(stack, hit.material);
-        ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction);
-        lead = dot(ray.origin - hit.posWorld, ray.direction);
+        vec3 at = ray.origin + hit.t * ray.direction;
+        if (!sameCrossing(hit.material, at, crossedMaterial, crossedAt)) crossMediumBoundary(stack, hit.material);
+        crossedMaterial = hit.material;
+        crossedAt = at;
+        ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
+        lead = dot(ray.origin - at, ray.direction);
     }
     return kFlightLost;
 }
@@ -185,7 +215,7 @@ bool intersectSurface(Ray ray, out Hit hit) {
             hit.t = travelled;
             return true;
         }
-        ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction);
+        ray = continuePastBoundary(ray.origin + hit.t * ray.direction, hit.normalGeom, ray.direction);
     }
     return false;
 }

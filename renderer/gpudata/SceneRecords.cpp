@@ -34,6 +34,24 @@ void appendBox(const Shape& box, ScenePrimitives& out) {
     }
 }
 
+// A medium's null boundary drawn a little inside its shape. A fog box is often made the size of
+// the room it fills: its faces then lie in the walls' planes, and a ray that met the boundary
+// before the wall (rounding decides) would go on from beyond both, out of the room. Inset by
+// three times the push a ray gets past a null boundary (shaders/media.glsl continuePastBoundary:
+// 1e-6 of the coordinates' magnitude), the boundary is met before a coplanar wall from inside and
+// after it from outside. 3e-6 of the box's extent from the origin: 30 micrometres in a 5 m room.
+Shape insetNullBoundary(Shape shape) {
+    auto maxMagnitude = [](glm::vec3 v) { return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))); };
+    constexpr float kInset = 3e-6f;
+    if (shape.type == ShapeType::Box) {
+        const float size = std::max(shape.halfSize.x, std::max(shape.halfSize.y, shape.halfSize.z));
+        shape.halfSize = glm::max(shape.halfSize - kInset * (maxMagnitude(shape.center) + size), 0.5f * shape.halfSize);
+    } else if (shape.type == ShapeType::Sphere) {
+        shape.radius = std::max(shape.radius - kInset * (maxMagnitude(shape.center) + shape.radius), 0.5f * shape.radius);
+    }
+    return shape;
+}
+
 // The primitives a shape becomes, after those of the shapes before it.
 void appendShape(const Shape& shape, ScenePrimitives& out) {
     switch (shape.type) {
@@ -71,7 +89,11 @@ std::size_t primitiveCount(const ScenePrimitives& primitives, PrimitiveKind kind
 
 ScenePrimitives flattenScene(const Scene& scene) {
     ScenePrimitives out;
-    for (const Shape& shape : scene.shapes) appendShape(shape, out);
+    for (const Shape& shape : scene.shapes) {
+        const bool nullBoundary = shape.material >= 0 && static_cast<std::size_t>(shape.material) < scene.materials.size() &&
+                                  scene.materials[static_cast<std::size_t>(shape.material)].type == MaterialType::Medium;
+        appendShape(nullBoundary ? insetNullBoundary(shape) : shape, out);
+    }
     out.lights = scene.lights;
     flattenMaterials(scene.materials, out);
     return out;
