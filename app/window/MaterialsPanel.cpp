@@ -194,7 +194,13 @@ void MaterialsPanel::draw(ViewerSession& session) {
         // An edit that would leave a medium in a shape that encloses none (a quad, a disk, an open
         // mesh: the loader refuses it) is taken back at once, with the reason under the material.
         const Material before = material;
-        bool edited = drawMaterial(material, emitters_[i], media_[i]);
+        bool edited = drawMaterial(material, emitters_[i]);
+        // The medium's controls come after a principled material's textures, which so keep their
+        // place in the panel (tests/window_textures.sh clicks them by position).
+        if (material.type == MaterialType::Principled && drawTextures(scene, material, i))
+            session.model().pendingChanges |= ViewerModel::kSceneChanged;
+        if (material.type == MaterialType::Medium || materialInputTakers::refracting(materialSchema(material.type)))
+            edited |= drawMedium(material, media_[i]);
         if (edited && material.boundsMedium() != before.boundsMedium()) {
             if (std::string problem = mediumBoundaryProblem(scene); !problem.empty()) {
                 material = before;
@@ -206,8 +212,6 @@ void MaterialsPanel::draw(ViewerSession& session) {
         if (auto refusal = mediumRefusals_.find(i); refusal != mediumRefusals_.end())
             errorText(printableText(refusal->second));
         changed |= edited;
-        if (material.type == MaterialType::Principled && drawTextures(scene, material, i))
-            session.model().pendingChanges |= ViewerModel::kSceneChanged;
         ImGui::TreePop();
     }
     ImGui::PopItemWidth();
@@ -216,7 +220,7 @@ void MaterialsPanel::draw(ViewerSession& session) {
     save(session);
 }
 
-bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter, MediumControls& medium) {
+bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) {
     bool changed = false;
     if (material.type == MaterialType::Emitter && emitter.color * emitter.strength != material.radiance)
         emitterControlsFrom(material.radiance, emitter.color, emitter.strength);
@@ -281,8 +285,6 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter, 
         if (input.number == &Material::roughness)
             ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
     }
-    if (material.type == MaterialType::Medium || materialInputTakers::refracting(current))
-        changed |= drawMedium(material, medium);
     return changed;
 }
 

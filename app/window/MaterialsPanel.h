@@ -57,7 +57,7 @@ private:
         float scatteringDensity = 0.0f;
     };
 
-    bool drawMaterial(Material& material, EmitterControls& emitter, MediumControls& medium);
+    bool drawMaterial(Material& material, EmitterControls& emitter);
     // The coefficients and g of a medium, or of the one a refracting material holds (with the
     // "holds a medium" checkbox). Returns whether one changed.
     bool drawMedium(Material& material, MediumControls& medium);
