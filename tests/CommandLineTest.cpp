@@ -92,6 +92,24 @@ TEST_F(CommandLineTest, GltfMaterialOverrideOfAnUnknownMaterialNamesItsPlace) {
                   scene + ": /gltf/0/materials/tiny~1blue: no material of tiny.gltf has this name (it has \"tiny/red\")");
 }
 
+// Media (issue 38): a bad coefficient, a medium on a quad and a bad glTF volume are exit 2, naming
+// the file and the place.
+TEST_F(CommandLineTest, BadMediaNameFileAndJsonPointer) {
+    const std::string head = R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
+        "materials": { "fog": { "type": "medium", "sigma_s": )";
+    std::string negative = write("negative.json", head + R"([1, -1, 1] } }, "shapes": [] })");
+    expectRefused("render " + shellQuoted(negative) + " --out " + shellQuoted(path("out.png")),
+                  negative + ": /materials/fog/sigma_s/1: expected a number in [0, 1000000]");
+    std::string quad = write("quad.json", head + R"([1, 1, 1] } },
+        "shapes": [ { "name": "sheet", "type": "quad", "center": [0,0,0], "u": [1,0,0], "v": [0,1,0], "material": "fog" } ] })");
+    expectRefused("render " + shellQuoted(quad) + " --out " + shellQuoted(path("out.png")),
+                  quad + ": /shapes/0: shape 'sheet': a quad encloses no volume");
+    std::string volume = write("volume.gltf", R"({"asset": {"version": "2.0"}, "materials": [{"extensions": {
+        "KHR_materials_transmission": {}, "KHR_materials_volume": {"attenuationDistance": -2}}}]})");
+    expectRefused("render " + shellQuoted(volume) + " --out " + shellQuoted(path("out.png")),
+                  volume + ": /materials/0/extensions/KHR_materials_volume/attenuationDistance: expected a positive number");
+}
+
 TEST_F(CommandLineTest, NegativeRadiusNamesJsonPointer) {
     std::string scene = write("neg.json", R"({ "camera": { "eye": [0,0,3], "target": [0,0,0], "vfov_deg": 40, "resolution": [8,8] },
         "materials": { "white": { "type": "diffuse", "albedo": [0.5,0.5,0.5] } },

@@ -309,5 +309,38 @@ TEST(EditHistory, StatesShareTheDecodedEnvironmentMaps) {
     EXPECT_EQ(history.current().environmentMapData, studio);
 }
 
+// The history refuses a state with a medium in a shape that encloses none, whatever made it (the
+// Materials panel and the script take such an edit back first; this is the net under both).
+TEST(EditHistory, AStateWithAMediumInAQuadIsRefusedNamingTheShape) {
+    Scene scene;
+    Material pane;
+    pane.name = "pane";
+    pane.type = MaterialType::Glass;
+    Material ball = pane;
+    ball.name = "ball";
+    ball.hasInterior = true;
+    scene.materials = {pane, ball};
+    Shape window;
+    window.name = "window";
+    window.type = ShapeType::Quad;
+    window.material = 0;
+    Shape sphere;
+    sphere.name = "sphere";
+    sphere.material = 1;
+    scene.shapes = {window, sphere};
+    EditHistory history;
+    history.reset(SceneEdits::of(scene));
+
+    scene.materials[0].hasInterior = true;
+    EXPECT_FALSE(history.record(scene, nullptr));
+    EXPECT_EQ(history.refused(), "shape 'window': a quad encloses no volume, so it cannot bound the medium of material 'pane'");
+    EXPECT_FALSE(history.canUndo());
+    scene.materials[0].hasInterior = false;
+    scene.materials[1].sigmaA = glm::vec3(1.0f);
+    EXPECT_TRUE(history.record(scene, nullptr));
+    EXPECT_TRUE(history.refused().empty());
+    EXPECT_EQ(history.undoLabel(), "absorption of 'ball'");
+}
+
 } // namespace
 } // namespace ptview

@@ -4,6 +4,7 @@
 #include <ptview/scene/MaterialTextures.h>
 #include <ptview/scene/Scene.h>
 #include <ptview/scene/SceneLoader.h>
+#include <ptview/scene/SceneRanges.h>
 #include <ptview/scene/SceneWriter.h>
 #include "TestFiles.h"
 
@@ -1090,6 +1091,137 @@ TEST(GltfLoader, AModelAtTheEdgesOfTheBoundsWritesBackAndLoadsAgain) {
     ASSERT_NO_THROW(again = parseScene(json, path.parent_path() / "edge.json")) << json;
     EXPECT_EQ(again.camera.eye, scene.camera.eye);
     EXPECT_EQ(again.lights.size(), 1u);
+}
+
+// ---- KHR_materials_volume (issue 38)
+
+// A closed tetrahedron, its four faces wound outward, of the material at index `material`.
+int closedTetrahedron(GltfBuilder& b, int material) {
+    const std::vector<std::uint16_t> indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    const int indexAccessor = b.accessor(b.view(bytesOf(indices)), kUnsignedShort, indices.size(), "SCALAR");
+    return b.mesh({{"attributes", {{"POSITION", b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1})}}},
+                   {"indices", indexAccessor},
+                   {"material", material}});
+}
+
+// A glTF file of one mesh (closed or the unit triangle) of one material with these extensions.
+std::string volumeModel(const Json& extensions, bool closed = true) {
+    GltfBuilder b;
+    b.doc["materials"] = Json::array({{{"name", "amber"}, {"extensions", extensions}}});
+    int mesh = closed ? closedTetrahedron(b, 0) : unitTriangle(b);
+    if (!closed) b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    b.node({{"name", "gem"}, {"mesh", mesh}});
+    return b.gltfWithDataUri();
+}
+
+Json transmissiveVolume(const Json& volume) {
+    return {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}, {"KHR_materials_volume", volume}};
+}
+
+TEST(GltfLoader, AVolumeGivesItsMaterialAnAbsorbingInterior) {
+    ScratchFiles files("gltf_volume");
+    const Scene scene = loadScene(files.write("gem.gltf", volumeModel(transmissiveVolume(
+        {{"attenuationColor", {0.5, 0.25, 1.0}}, {"attenuationDistance", 2.0}, {"thicknessFactor", 0.1}}))));
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_TRUE(m.hasInterior);
+    EXPECT_TRUE(m.boundsMedium());
+    // sigma_a = -ln(colour) / distance: white light is that colour after the distance.
+    EXPECT_FLOAT_EQ(m.sigmaA.r, static_cast<float>(std::log(2.0) / 2.0));
+    EXPECT_FLOAT_EQ(m.sigmaA.g, static_cast<float>(std::log(4.0) / 2.0));
+    EXPECT_EQ(m.sigmaA.b, 0.0f) << "a colour component of 1 is not absorbed";
+    EXPECT_EQ(m.sigmaS, glm::vec3(0.0f)) << "the extension has no scattering";
+    EXPECT_EQ(m.g, 0.0f);
+    EXPECT_TRUE(hasWarning(scene, "gem.gltf: /materials/0/extensions/KHR_materials_volume/thicknessFactor: ignored"));
+
+    // The defaults: colour 1 and distance infinite, a clear solid (an interior holding nothing).
+    const Scene clear = loadScene(files.write("clear.gltf", volumeModel(transmissiveVolume(Json::object()))));
+    EXPECT_TRUE(clear.materials[0].hasInterior);
+    EXPECT_EQ(clear.materials[0].sigmaA, glm::vec3(0.0f));
+    const Scene colourOnly = loadScene(files.write("tinted.gltf", volumeModel(transmissiveVolume({{"attenuationColor", {0.5, 0.5, 0.5}}}))));
+    EXPECT_EQ(colourOnly.materials[0].sigmaA, glm::vec3(0.0f)) << "at an infinite distance nothing is absorbed";
+}
+
+// The extension's spec makes transmission a condition: without it no light enters the volume.
+TEST(GltfLoader, AVolumeWithoutTransmissionIsIgnoredWithAWarning) {
+    ScratchFiles files("gltf_volume");
+    const Scene scene = loadScene(files.write("opaque.gltf", volumeModel(
+        {{"KHR_materials_volume", {{"attenuationColor", {0.5, 0.5, 0.5}}, {"attenuationDistance", 1.0}}}})));
+    EXPECT_FALSE(scene.materials[0].hasInterior);
+    EXPECT_TRUE(hasWarning(scene, "opaque.gltf: /materials/0/extensions/KHR_materials_volume: ignored: without "
+                                  "KHR_materials_transmission"));
+}
+
+// A colour component of 0 (which the extension's schema allows) would be an infinite coefficient:
+// clamped to the scene format's largest, as is one a tiny distance makes too large.
+TEST(GltfLoader, AVolumeThatAbsorbsAChannelWhollyIsClampedToTheLargestCoefficient) {
+    ScratchFiles files("gltf_volume");
+    const Scene scene = loadScene(files.write("black.gltf", volumeModel(transmissiveVolume(
+        {{"attenuationColor", {0.0, 0.5, 1.0}}, {"attenuationDistance", 1e-9}}))));
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.sigmaA.r, static_cast<float>(ranges::kMediumCoefficient.hi));
+    EXPECT_EQ(m.sigmaA.g, static_cast<float>(ranges::kMediumCoefficient.hi)) << "ln 2 / 1e-9 is beyond it too";
+    EXPECT_EQ(m.sigmaA.b, 0.0f);
+    EXPECT_TRUE(hasWarning(scene, "black.gltf: /materials/0/extensions/KHR_materials_volume: an absorption coefficient"));
+}
+
+TEST(GltfLoader, BadVolumesNameFileAndPlace) {
+    ScratchFiles files("gltf_volume");
+    const std::string volumeAt = ": /materials/0/extensions/KHR_materials_volume/";
+    struct Case {
+        const char* name;
+        Json volume;
+        std::string place;
+    };
+    const Case cases[] = {
+        {"zero_distance", {{"attenuationDistance", 0.0}}, "attenuationDistance: expected a positive number (metres)"},
+        {"negative_distance", {{"attenuationDistance", -1.0}}, "attenuationDistance: expected a positive number (metres)"},
+        {"text_distance", {{"attenuationDistance", "far"}}, "attenuationDistance: expected a positive number (metres)"},
+        {"bright_colour", {{"attenuationColor", {0.5, 1.5, 0.5}}}, "attenuationColor/1: expected a number in [0, 1]"},
+        {"negative_colour", {{"attenuationColor", {-0.25, 0.5, 0.5}}}, "attenuationColor/0: expected a number in [0, 1]"},
+        {"short_colour", {{"attenuationColor", {0.5, 0.5}}}, "attenuationColor: expected an array of 3 numbers"},
+    };
+    for (const Case& c : cases) {
+        const std::filesystem::path file = files.write(std::string(c.name) + ".gltf", volumeModel(transmissiveVolume(c.volume)));
+        const std::string error = loadError(file);
+        EXPECT_NE(error.find(file.string() + volumeAt + c.place), std::string::npos) << c.name << ": " << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
+}
+
+// A glTF file opened alone is checked as a scene file's shapes are: a volume's mesh must enclose it.
+TEST(GltfLoader, AVolumeOnAnOpenMeshIsRefusedNamingTheMeshAndItsFirstOpenEdge) {
+    ScratchFiles files("gltf_volume");
+    const std::filesystem::path file = files.write("leaky.gltf", volumeModel(transmissiveVolume(Json::object()), false));
+    const std::string error = loadError(file);
+    EXPECT_NE(error.find(file.string() + ": /meshes/0: node 'leaky/gem': mesh 'leaky/mesh 0' is not closed: the edge "
+                                         "from (0, 0, 0) to (1, 0, 0)"),
+              std::string::npos)
+        << error;
+    // The same open mesh without a volume is an ordinary surface.
+    EXPECT_NO_THROW(loadScene(files.write("sheet.gltf", volumeModel({{"KHR_materials_transmission", Json::object()}}, false))));
+}
+
+// A scene file may give a glTF material an interior, change it, or remove it by a type without one.
+TEST(GltfLoader, OverridesSetTheInteriorOfAGltfMaterial) {
+    ScratchFiles files("gltf_volume");
+    files.write("gem.gltf", volumeModel(transmissiveVolume({{"attenuationColor", {0.5, 0.5, 0.5}}, {"attenuationDistance", 1.0}})));
+    auto sceneWith = [&](const std::string& name, const std::string& overrides) {
+        return files.write(name, R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8]},
+            "materials": {}, "shapes": [], "gltf": [{"file": "gem.gltf", "materials": {"gem/amber": )" + overrides + "}}]}");
+    };
+    const Scene fog = loadScene(sceneWith("fog.json", R"({"interior": {"sigma_s": [2, 2, 2], "g": 0.5}})"));
+    EXPECT_TRUE(fog.materials[0].hasInterior);
+    EXPECT_EQ(fog.materials[0].sigmaA, glm::vec3(0.0f)) << "an interior is whole: what it leaves out is 0";
+    EXPECT_EQ(fog.materials[0].sigmaS, glm::vec3(2.0f));
+    EXPECT_EQ(fog.materials[0].g, 0.5f);
+    const Scene kept = loadScene(sceneWith("kept.json", R"({"roughness": 0.25})"));
+    EXPECT_TRUE(kept.materials[0].hasInterior) << "left out: the file's";
+    EXPECT_FLOAT_EQ(kept.materials[0].sigmaA.r, static_cast<float>(std::log(2.0)));
+    const Scene plastic = loadScene(sceneWith("plastic.json", R"({"type": "plastic"})"));
+    EXPECT_FALSE(plastic.materials[0].boundsMedium());
+    const std::string bad = loadError(sceneWith("bad.json", R"({"interior": {"g": 1}})"));
+    EXPECT_NE(bad.find("bad.json: /gltf/0/materials/gem~1amber/interior/g: expected a number in (-1, 1)"), std::string::npos) << bad;
 }
 
 } // namespace

@@ -497,7 +497,7 @@ TEST(SceneLoader, RejectsUnknownMaterialType) {
     expectPlaceError(errorFrom(validSceneWith("\"type\": \"emitter\"", "\"type\": \"velvet\"")),
                      "/materials/light/type",
                      "unknown material type \"velvet\" (expected one of: diffuse, emitter, diffuse_transmission, "
-                     "mirror, specular_transmission, glass, metal, plastic, principled)");
+                     "mirror, specular_transmission, glass, metal, plastic, principled, medium)");
 }
 
 TEST(SceneLoader, ReadsEveryMaterialTypeWithDefaults) {

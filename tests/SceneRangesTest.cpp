@@ -57,7 +57,12 @@ std::string sceneWith(const std::string& key, const std::string& value) {
     "skin": {"type": "principled", "metallic": )" + field("metallic", "0.5") + R"(, "transmission": )" +
            field("transmission", "0.5") + R"(, "alpha": )" + field("alpha", "0.5") + R"(, "alpha_cutoff": )" +
            field("alpha_cutoff", "0.5") + R"(,
-             "normal_map": {"texture": ")" + normalMapFile() + R"(", "factor": )" + field("normal_map", "1") + R"(}}
+             "normal_map": {"texture": ")" + normalMapFile() + R"(", "factor": )" + field("normal_map", "1") + R"(}},
+    "fog": {"type": "medium", "sigma_a": [0.1, )" + field("sigma_a", "0.1") + R"(, 0.1], "sigma_s": [1, )" +
+           field("sigma_s", "1") + R"(, 1], "g": )" + field("g", "0.3") + R"(},
+    "ball": {"type": "glass", "tint": [1, 1, 1], "ior": 1.5,
+             "interior": {"sigma_a": [0.2, )" + field("interior.sigma_a", "2") + R"(, 4], "sigma_s": [0, )" +
+           field("interior.sigma_s", "0") + R"(, 0], "g": )" + field("interior.g", "0") + R"(}}
   },
   "shapes": [{"type": "sphere", "material": "coat", "center": [0, 0, 0], "radius": 1}],
   "lights": [{"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": [1, )" +
@@ -97,6 +102,14 @@ std::vector<RangeUse> rangeUses() {
          [](const Scene& s) { return s.environmentIntensity; }},
         {&ranges::kEnvironmentRotation, "environment.rotation_deg", "/environment/rotation_deg",
          [](const Scene& s) { return s.environmentRotationDeg; }},
+        {&ranges::kMediumCoefficient, "sigma_a", "/materials/fog/sigma_a/1", [](const Scene& s) { return s.materials[2].sigmaA.g; }},
+        {&ranges::kMediumCoefficient, "sigma_s", "/materials/fog/sigma_s/1", [](const Scene& s) { return s.materials[2].sigmaS.g; }},
+        {&ranges::kPhaseAsymmetry, "g", "/materials/fog/g", [](const Scene& s) { return s.materials[2].g; }},
+        {&ranges::kMediumCoefficient, "interior.sigma_a", "/materials/ball/interior/sigma_a/1",
+         [](const Scene& s) { return s.materials[3].sigmaA.g; }},
+        {&ranges::kMediumCoefficient, "interior.sigma_s", "/materials/ball/interior/sigma_s/1",
+         [](const Scene& s) { return s.materials[3].sigmaS.g; }},
+        {&ranges::kPhaseAsymmetry, "interior.g", "/materials/ball/interior/g", [](const Scene& s) { return s.materials[3].g; }},
     };
 }
 
@@ -203,6 +216,13 @@ TEST(SceneRanges, TheWriterRefusesWhatTheLoaderWouldNaming) {
     Scene negative = scene;
     negative.environmentIntensity = -1.0f;
     EXPECT_EQ(writeError(negative), "/environment/intensity: cannot write -1: the environment intensity must be in [0, 1000000000]");
+    Scene absorbingBelowZero = scene;
+    absorbingBelowZero.materials[2].sigmaA.r = -1.0f;
+    EXPECT_EQ(writeError(absorbingBelowZero),
+              "/materials/fog/sigma_a/0: cannot write -1: the medium coefficient must be in [0, 1000000]");
+    Scene deltaPhase = scene;
+    deltaPhase.materials[3].g = 1.0f;
+    EXPECT_EQ(writeError(deltaPhase), "/materials/ball/interior/g: cannot write 1: the phase asymmetry g must be in (-1, 1)");
     EXPECT_EQ(writeError(scene), "written");
 }
 

@@ -4,6 +4,7 @@
 #include <ptview/io/ImageIO.h>
 #include <ptview/window/MaterialsPanel.h>
 #include <ptview/model/SceneInput.h>
+#include <ptview/scene/MaterialSchema.h>
 #include <ptview/scene/SceneLoader.h>
 #include <ptview/scene/SceneWriter.h>
 #include <ptview/window/ScriptRunner.h>
@@ -233,6 +234,133 @@ TEST(ScriptRunner, UndoWithNothingToUndoFailsWithAMessage) {
     EXPECT_EQ(redo.runner.exitCode(), 2);
     EXPECT_EQ(redo.panels.imageNotice, "nothing to redo");
     EXPECT_EQ(redo.material("red").color, glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
+// ---- Media (issue 38)
+
+// A floor, a box of fog and a glass ball with a clear interior (docs/scene-format.md).
+std::filesystem::path writeMediaScene(const testing::ScratchFiles& files) {
+    return files.write("media.json", R"({"camera": {"eye": [0, 1, 4], "target": [0, 1, 0], "vfov_deg": 40, "resolution": [8, 8]},
+  "materials": {
+    "floor": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]},
+    "fog": {"type": "medium", "sigma_a": [0.05, 0.05, 0.05], "sigma_s": [0.6, 0.6, 0.6], "g": 0.3},
+    "ball": {"type": "glass", "ior": 1.5, "interior": {}},
+    "pane": {"type": "glass"}
+  },
+  "shapes": [
+    {"name": "ground", "type": "quad", "center": [0, 0, 0], "u": [2, 0, 0], "v": [0, 0, -2], "material": "floor"},
+    {"type": "box", "center": [0, 1, 0], "half_size": [1, 1, 1], "material": "fog"},
+    {"type": "sphere", "center": [0, 1, 0], "radius": 0.5, "material": "ball"},
+    {"name": "window", "type": "quad", "center": [0, 1, -1.5], "u": [1, 0, 0], "v": [0, 1, 0], "material": "pane"}
+  ]})");
+}
+
+// The panel's type combo and interior checkbox make materials that save and read back as they
+// are: a medium has no colour or emission to lose, and a medium carries over into an interior.
+TEST(ScriptRunner, TypeChangesToAndFromMediaSaveAndReadBackTheSame) {
+    Scene scene = parseScene(R"({"camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "vfov_deg": 40, "resolution": [8, 8]},
+        "materials": {"fog": {"type": "medium", "sigma_a": [0.5, 0.25, 1], "sigma_s": [2, 2, 2], "g": 0.5},
+                      "amber": {"type": "glass", "tint": [0.9, 0.8, 0.7], "interior": {"sigma_a": [0.2, 2, 4]}},
+                      "wall": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [1, 1, 1]}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "fog"}]})", "s.json");
+    const std::vector<Material> originals = scene.materials;
+    for (const Material& original : originals)
+        for (const MaterialSchema& to : kMaterialSchemas) {
+            SCOPED_TRACE(original.name + " as " + to.name);
+            Material retyped = retypedMaterial(original, to.type);
+            if (to.type != MaterialType::Emitter && (to.type == MaterialType::Medium || original.type == MaterialType::Medium)) {
+                EXPECT_EQ(retyped.radiance, glm::vec3(0.0f)) << "no emission into or out of a medium";
+            }
+            for (bool holds : {false, true}) {
+                const bool refracts = to.type == MaterialType::SpecularTransmission || to.type == MaterialType::Glass ||
+                                      to.type == MaterialType::Principled;
+                Material edited = refracts ? withInterior(retyped, holds) : retyped;
+                edited.name = "edited"; // in the place of the sphere's, beside the originals
+                scene.materials[0] = edited;
+                const Scene again = parseScene(sceneToJson(scene), "again.json");
+                EXPECT_TRUE(sameMaterial(again.materials[0], edited)) << sceneToJson(scene);
+            }
+        }
+    const Material fogAsGlass = retypedMaterial(originals[0], MaterialType::Glass);
+    EXPECT_TRUE(fogAsGlass.hasInterior);
+    EXPECT_EQ(fogAsGlass.sigmaS, glm::vec3(2.0f));
+    const Material amberAsMedium = retypedMaterial(originals[1], MaterialType::Medium);
+    EXPECT_EQ(amberAsMedium.sigmaA, glm::vec3(0.2f, 2.0f, 4.0f));
+    EXPECT_FALSE(amberAsMedium.hasInterior);
+    EXPECT_EQ(retypedMaterial(originals[2], MaterialType::Medium).sigmaS, glm::vec3(1.0f)) << "a fog to see";
+    EXPECT_FALSE(retypedMaterial(originals[1], MaterialType::Diffuse).boundsMedium());
+}
+
+// The script sets a medium's coefficients and g and a glass's interior; undo takes one back; the
+// saved scene reads back as the very materials of the session.
+TEST(ScriptRunner, MediaEditedByScriptAreSavedAndReadBackTheSame) {
+    testing::ScratchFiles files("script_media");
+    const std::filesystem::path saved = files.directory() / "saved.json";
+    ScriptedSession run(writeMediaScene(files),
+                        "set-material fog.sigma-s 2 1 0.5\nset-material fog.g -0.5\nset-material fog.sigma-a 0 0 0\n"
+                        "set-material ball.sigma-a 0.2 2 4\nset-material ball.g 0.25\nundo\nsave-scene " + saved.string() + "\n");
+    ASSERT_EQ(run.runner.exitCode(), 0);
+    const Material& fog = run.material("fog");
+    EXPECT_EQ(fog.sigmaS, glm::vec3(2.0f, 1.0f, 0.5f));
+    EXPECT_EQ(fog.sigmaA, glm::vec3(0.0f));
+    EXPECT_EQ(fog.g, -0.5f);
+    const Material& ball = run.material("ball");
+    EXPECT_TRUE(ball.hasInterior);
+    EXPECT_EQ(ball.sigmaA, glm::vec3(0.2f, 2.0f, 4.0f));
+    EXPECT_EQ(ball.g, 0.0f) << "undone";
+    EXPECT_EQ(run.session->history().undoLabel(), "absorption of 'ball'");
+    EXPECT_EQ(run.session->history().redoLabel(), "g of 'ball'");
+
+    const Scene again = loadScene(saved);
+    const std::vector<Material>& edited = run.session->model().scene.materials;
+    ASSERT_EQ(again.materials.size(), edited.size());
+    for (std::size_t i = 0; i < edited.size(); ++i)
+        EXPECT_TRUE(sameMaterial(again.materials[i], edited[i])) << edited[i].name;
+}
+
+// interior on / off: a clear solid, then a thin surface again, each one undo step; a type that
+// does not refract has no interior, and a medium's fields need a medium.
+TEST(ScriptRunner, InteriorTurnsOnAndOffAndOnlyWhereAMaterialRefracts) {
+    testing::ScratchFiles files("script_media");
+    const std::filesystem::path scene = writeMediaScene(files);
+    ScriptedSession run(scene, "set-material ball.interior off\n");
+    ASSERT_EQ(run.runner.exitCode(), 0);
+    EXPECT_FALSE(run.material("ball").boundsMedium());
+    EXPECT_EQ(run.session->history().undoLabel(), "interior of 'ball'");
+
+    ScriptedSession on(scene, "set-material ball.interior off\nset-material ball.interior on\n");
+    ASSERT_EQ(on.runner.exitCode(), 0);
+    EXPECT_TRUE(on.material("ball").hasInterior);
+    EXPECT_EQ(on.material("ball").sigmaA + on.material("ball").sigmaS, glm::vec3(0.0f)) << "a clear solid";
+
+    ScriptedSession diffuse(scene, "set-material floor.interior on\n");
+    EXPECT_EQ(diffuse.runner.exitCode(), 2);
+    EXPECT_FALSE(diffuse.material("floor").hasInterior);
+    ScriptedSession thin(scene, "set-material ball.interior off\nset-material ball.sigma-a 1 1 1\n");
+    EXPECT_EQ(thin.runner.exitCode(), 2);
+    EXPECT_EQ(thin.material("ball").sigmaA, glm::vec3(0.0f));
+}
+
+// A medium on a quad, by a type change or an interior, is refused at its line (exit 2) with the
+// shape named, and the scene keeps the material as it was; a closed shape takes it.
+TEST(ScriptRunner, AMediumOnAShapeThatEnclosesNoneIsRefusedAndTheSceneStays) {
+    testing::ScratchFiles files("script_media");
+    const std::filesystem::path scene = writeMediaScene(files);
+    for (const char* edit : {"set-material pane.interior on\n", "set-material pane.type medium\n", "set-material floor.type glass\nset-material floor.interior on\n"}) {
+        ScriptedSession run(scene, edit);
+        EXPECT_EQ(run.runner.exitCode(), 2) << edit;
+        for (const Material& material : run.session->model().scene.materials)
+            if (material.name == "pane" || material.name == "floor") {
+                EXPECT_FALSE(material.boundsMedium()) << edit;
+            }
+        EXPECT_TRUE(run.session->history().refused().empty()) << run.session->history().refused();
+    }
+    ScriptedSession fogged(scene, "set-material ball.type medium\nset-material fog.type glass\n");
+    EXPECT_EQ(fogged.runner.exitCode(), 0);
+    EXPECT_EQ(fogged.material("ball").type, MaterialType::Medium);
+    EXPECT_EQ(fogged.material("ball").sigmaS, glm::vec3(0.0f)) << "the ball's clear interior carries over";
+    EXPECT_TRUE(fogged.material("fog").hasInterior) << "the fog carries over into the glass";
+    EXPECT_EQ(fogged.material("fog").sigmaS, glm::vec3(0.6f));
 }
 
 } // namespace

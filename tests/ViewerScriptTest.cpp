@@ -328,13 +328,13 @@ TEST(ViewerScript, OutputPathsNeedTheirExtension) {
 
 TEST(ViewerScript, FieldEditsNeedNameDotKnownField) {
     EXPECT_EQ(errorOf("set-material glass 1.5"),
-              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture), got \"glass\"");
+              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, sigma-a, sigma-s, g, interior, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture), got \"glass\"");
     EXPECT_EQ(errorOf("set-material glass. 1.5"),
-              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture), got \"glass.\"");
+              "s.txt:1: set-material: expected NAME.FIELD (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, sigma-a, sigma-s, g, interior, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture), got \"glass.\"");
     EXPECT_EQ(errorOf("set-material"),
-              "s.txt:1: set-material: expected NAME.FIELD and its values (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture)");
+              "s.txt:1: set-material: expected NAME.FIELD and its values (FIELD: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, sigma-a, sigma-s, g, interior, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture)");
     EXPECT_EQ(errorOf("set-material glass.colour 1 1 1"),
-              "s.txt:1: set-material: unknown field \"colour\" (valid: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture)");
+              "s.txt:1: set-material: unknown field \"colour\" (valid: type, color, emission, ior, roughness, metallic, transmission, alpha, normal-scale, sigma-a, sigma-s, g, interior, base-color-texture, roughness-texture, metallic-texture, normal-texture, emission-texture)");
     EXPECT_EQ(errorOf("set-light key.color 1 1 1"),
               "s.txt:1: set-light: unknown field \"color\" (valid: intensity, position, direction, inner-angle, "
               "outer-angle)");

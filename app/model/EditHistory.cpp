@@ -6,11 +6,13 @@
 #include <ptview/scene/MaterialInputs.h>
 #include <ptview/scene/MaterialSchema.h>
 #include <ptview/scene/MaterialTextures.h>
+#include <ptview/scene/MediumBoundaries.h>
 #include <ptview/scene/SceneRanges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 namespace ptview {
@@ -84,7 +86,7 @@ std::vector<std::string> materialChanges(const Material& a, const Material& b) {
     if (a.color != b.color) fields.push_back(schema.colorKey ? withSpaces(schema.colorKey) : "colour");
     if (a.radiance != b.radiance) fields.push_back(b.type == MaterialType::Emitter ? "radiance" : "emission");
     for (const MaterialInput& input : kMaterialInputs)
-        if (input.value == InputValue::Number && a.*input.number != b.*input.number)
+        if (input.value == InputValue::Number && input.takenBy(schema) && a.*input.number != b.*input.number)
             fields.push_back(input.panelLabel ? input.panelLabel : withSpaces(input.key));
     if (a.alphaMode != b.alphaMode) fields.emplace_back("alpha mode");
     if (a.hasInterior != b.hasInterior) fields.emplace_back("interior");
@@ -291,6 +293,23 @@ std::string editsProblem(const SceneEdits& edits) {
     return {};
 }
 
+std::string mediumBoundaryProblem(const Scene& scene) {
+    const std::optional<OpenMediumBoundary> open = findOpenMediumBoundary(scene);
+    return open ? "shape '" + scene.shapes[open->shape].name + "': " + open->what : std::string();
+}
+
+namespace {
+
+// Whether the same materials bound a medium in both (so the shapes' closure need not be looked at again).
+bool sameMediumBoundaries(const std::vector<Material>& a, const std::vector<Material>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].boundsMedium() != b[i].boundsMedium()) return false;
+    return true;
+}
+
+} // namespace
+
 // ---- the history --------------------------------------------------------------------------------
 
 EditHistory::EditHistory(std::size_t maxSteps) : maxSteps_(std::max<std::size_t>(maxSteps, 1)) {
@@ -315,6 +334,10 @@ bool EditHistory::record(const Scene& scene, const std::shared_ptr<const Environ
     // Only a problem the edit brought: one the file itself has (a loader laxer than these checks)
     // must not stop every later edit from being recorded.
     refused_ = editsProblem(state);
+    // The scene the history started from held its media (the loader checks), so only an edit
+    // that changes which materials bound one can open a boundary.
+    if (refused_.empty() && !sameMediumBoundaries(state.materials, current().materials))
+        refused_ = mediumBoundaryProblem(scene);
     if (!refused_.empty() && refused_ != editsProblem(current())) return false;
     refused_.clear();
     if (label.empty()) label = describeEdit(current(), state);

@@ -68,6 +68,12 @@ std::string describeEdit(const SceneEdits& before, const SceneEdits& after);
 // light), or empty when it would not. The history never holds a state with a problem.
 std::string editsProblem(const SceneEdits& edits);
 
+// Why the scene's shapes could not hold its materials (MediumBoundaries.h: a quad, a disk or an
+// open mesh whose material is a medium or holds one, which the loader refuses), or empty: "shape
+// 'curtain': a quad encloses no volume, so it cannot bound the medium of material 'fog'". Only a
+// change of which materials bound a medium can change it (Material::boundsMedium).
+std::string mediumBoundaryProblem(const Scene& scene);
+
 class EditHistory {
 public:
     // Steps kept: 100 snapshots of a scene's materials and lights are small, and a session of
@@ -82,7 +88,7 @@ public:
     // The scene as it is now. When it differs from current() and no edit is in progress, that
     // difference becomes one step (the steps to redo are dropped, the oldest beyond maxSteps too)
     // and true is returned. While `inProgress` nothing is recorded: the edit is recorded whole
-    // when it ends. A state the scene format would refuse (editsProblem) is not recorded either:
+    // when it ends. A state the scene format would refuse (editsProblem, mediumBoundaryProblem) is not recorded either:
     // refused() says why, and undo goes back to current(), the last good state. The step is
     // named `label`, or when that is empty by what changed (describeEdit).
     bool record(const Scene& scene, const std::shared_ptr<const EnvironmentMap>& map, bool inProgress = false,

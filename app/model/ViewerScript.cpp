@@ -179,6 +179,15 @@ const std::vector<FieldSpec>& materialFields() {
         {"transmission", {rangeArg("F", ranges::kTransmission)}, false, "principled: the glass-like share of the dielectric part"},
         {"alpha", {rangeArg("F", ranges::kAlpha)}, false, "principled: the base colour's alpha factor"},
         {"normal-scale", {rangeArg("F", ranges::kNormalScale)}, false, "principled: scales the normal map's x and y"},
+        // Media (docs/scene-format.md): a medium's, or the one a refracting material holds.
+        {"sigma-a", vec3RangeArgs("R", "G", "B", ranges::kMediumCoefficient), false,
+         "medium or interior: absorption coefficient per metre"},
+        {"sigma-s", vec3RangeArgs("R", "G", "B", ranges::kMediumCoefficient), false,
+         "medium or interior: scattering coefficient per metre"},
+        {"g", {rangeArg("G", ranges::kPhaseAsymmetry)}, false,
+         "medium or interior: Henyey-Greenstein asymmetry (> 0 forward, < 0 back)"},
+        {"interior", {choiceArg("on|off", "value", onOffChoices)}, false,
+         "specular_transmission, glass, principled: whether the closed shape holds a medium (on: a clear one)"},
     };
     static const std::vector<FieldSpec> withTextures = [] {
         static std::vector<std::string> names; // the FieldSpecs point into these

@@ -1,6 +1,7 @@
 #include <ptview/window/MaterialsPanel.h>
 
 #include <ptview/gl/ImageTexture.h>
+#include <ptview/model/EditHistory.h>
 #include <ptview/scene/MaterialInputs.h>
 #include <ptview/scene/MaterialTextures.h>
 #include <ptview/io/PrintableText.h>
@@ -27,6 +28,9 @@ constexpr float kDefaultRoughness = 0.2f; // visibly rough, so metal and plastic
 // What the loader gives a type that does not have the parameter, so that an edited model equals
 // what saving and loading it gives back.
 constexpr float kLoaderIor = 1.5f;
+// A surface turned medium fills its shape with a grey fog of a mean free path of a metre: visible
+// in a room-sized scene without hiding it.
+constexpr float kDefaultFogScattering = 1.0f;
 
 void emitterControlsFrom(const glm::vec3& radiance, glm::vec3& color, float& strength) {
     strength = std::max(radiance.r, std::max(radiance.g, radiance.b));
@@ -50,13 +54,22 @@ Material retyped(const Material& material, MaterialType type, const glm::vec3& s
     result.type = type;
     if (type == MaterialType::Emitter) {
         result.radiance = emitterColor(shownColor) * kDefaultStrength;
-    } else {
+    } else if (type != MaterialType::Medium) { // a medium has neither colour nor emission
         result.color = shownColor;
         // Emission carries over between surface types; an emitter turned surface stops emitting.
         if (material.type != MaterialType::Emitter) result.radiance = material.radiance;
     }
     if (to.hasIor) result.ior = from.hasIor ? material.ior : kLoaderIor;
     if (to.hasRoughness) result.roughness = from.hasRoughness ? material.roughness : kDefaultRoughness;
+    const bool holdsMedium = type == MaterialType::Medium || materialInputTakers::refracting(to);
+    if (holdsMedium && material.boundsMedium()) {
+        result.sigmaA = material.sigmaA;
+        result.sigmaS = material.sigmaS;
+        result.g = material.g;
+        result.hasInterior = type != MaterialType::Medium;
+    } else if (type == MaterialType::Medium) {
+        result.sigmaS = glm::vec3(kDefaultFogScattering);
+    }
     return result;
 }
 
@@ -69,6 +82,16 @@ Material retypedMaterial(const Material& material, MaterialType type) {
         shownColor = strength > 0.0f ? material.radiance / strength : glm::vec3(1.0f);
     }
     return retyped(material, type, shownColor);
+}
+
+Material withInterior(const Material& material, bool holdsMedium) {
+    if (material.hasInterior == holdsMedium) return material;
+    Material result = material;
+    result.hasInterior = holdsMedium;
+    // On: a clear solid ("interior": {}); off: the loader's values for a material without one.
+    result.sigmaA = result.sigmaS = glm::vec3(0.0f);
+    result.g = 0.0f;
+    return result;
 }
 
 namespace {
@@ -101,6 +124,35 @@ int thumbnailChannel(TextureSlot Material::*slot) {
     return -1;
 }
 
+// One coefficient of a medium (per metre, per channel) as colour x density, the colour's largest
+// component 1 (its hue), the density that of its strongest channel. Returns whether it changed.
+bool coefficientControls(const char* name, glm::vec3& coefficient, glm::vec3& color, float& density, const char* colorTooltip,
+                         const char* densityTooltip) {
+    if (color * density != coefficient) {
+        density = std::max(coefficient.r, std::max(coefficient.g, coefficient.b));
+        color = density > 0.0f ? coefficient / density : glm::vec3(1.0f);
+    }
+    const SceneRange& range = ranges::kMediumCoefficient;
+    ImGui::PushID(name);
+    bool colorEdited = ImGui::ColorEdit3(name, &color.x, ImGuiColorEditFlags_Float);
+    itemTooltip(colorTooltip);
+    if (colorEdited) {
+        color = glm::clamp(color, 0.0f, 1.0f);
+        const float largest = std::max(color.r, std::max(color.g, color.b));
+        if (largest > 0.0f) color /= largest; // the hue alone: the density says how much
+    }
+    // Logarithmic: thin fog and milk are orders of magnitude apart. Ctrl+click may type a value
+    // beyond the span, within the scene format's range.
+    bool densityEdited = ImGui::SliderFloat("density", &density, range.panelLo, range.panelHi, "%.3g /m",
+                                            ImGuiSliderFlags_Logarithmic);
+    itemTooltip(densityTooltip);
+    ImGui::PopID();
+    if (!colorEdited && !densityEdited) return false;
+    density = std::clamp(density, static_cast<float>(range.lo), static_cast<float>(range.hi));
+    coefficient = color * density;
+    return true;
+}
+
 std::string fullTextureSource(const std::string& source) {
     return std::filesystem::u8path(source).lexically_normal().u8string();
 }
@@ -122,6 +174,7 @@ void MaterialsPanel::draw(ViewerSession& session) {
     for (auto it = thumbnails_.begin(); it != thumbnails_.end();)
         it = it->second.first.use_count() == 1 ? thumbnails_.erase(it) : std::next(it);
     emitters_.resize(scene.materials.size());
+    media_.resize(scene.materials.size());
     bool changed = false;
     if (scene.materials.empty()) ImGui::TextDisabled("the scene has no materials");
     ImGui::PushItemWidth(-110.0f); // room for the labels
@@ -138,9 +191,27 @@ void MaterialsPanel::draw(ViewerSession& session) {
             ImGui::SetScrollHereY(0.0f);
             materialToOpen_.reset();
         }
-        changed |= drawMaterial(material, emitters_[i]);
+        // An edit that would leave a medium in a shape that encloses none (a quad, a disk, an open
+        // mesh: the loader refuses it) is taken back at once, with the reason under the material.
+        const Material before = material;
+        bool edited = drawMaterial(material, emitters_[i]);
+        // The medium's controls come after a principled material's textures, which so keep their
+        // place in the panel (tests/window_textures.sh clicks them by position).
         if (material.type == MaterialType::Principled && drawTextures(scene, material, i))
             session.model().pendingChanges |= ViewerModel::kSceneChanged;
+        if (material.type == MaterialType::Medium || materialInputTakers::refracting(materialSchema(material.type)))
+            edited |= drawMedium(material, media_[i]);
+        if (edited && material.boundsMedium() != before.boundsMedium()) {
+            if (std::string problem = mediumBoundaryProblem(scene); !problem.empty()) {
+                material = before;
+                edited = false;
+                mediumRefusals_[i] = problem + "; the edit is taken back";
+            }
+        }
+        if (edited) mediumRefusals_.erase(i);
+        if (auto refusal = mediumRefusals_.find(i); refusal != mediumRefusals_.end())
+            errorText(printableText(refusal->second));
+        changed |= edited;
         ImGui::TreePop();
     }
     ImGui::PopItemWidth();
@@ -195,7 +266,7 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
         }
         itemTooltip(colorTooltip(material.type));
     }
-    if (material.type != MaterialType::Emitter) {
+    if (material.type != MaterialType::Emitter && material.type != MaterialType::Medium) {
         if (ImGui::DragFloat3("emission", &material.radiance.x, 0.05f, ranges::kRadiance.panelLo, ranges::kRadiance.panelHi,
                               "%.2f", ImGuiSliderFlags_AlwaysClamp))
             changed = true;
@@ -206,6 +277,7 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
     for (const MaterialInput& input : kMaterialInputs) {
         if (!input.panelLabel || !input.takenBy(current)) continue;
         if (input.write == InputWrite::WithTexture && !(material.*input.slot).used()) continue;
+        if (input.number == &Material::g) continue; // with the medium's coefficients (drawMedium)
         float& value = material.*input.number;
         changed |= ImGui::SliderFloat(input.panelLabel, &value, input.range->panelLo, input.range->panelHi, "%.3f",
                                       ImGuiSliderFlags_AlwaysClamp);
@@ -213,6 +285,37 @@ bool MaterialsPanel::drawMaterial(Material& material, EmitterControls& emitter) 
         if (input.number == &Material::roughness)
             ImGui::TextDisabled("alpha = roughness\xC2\xB2 = %.4f", material.roughness * material.roughness);
     }
+    return changed;
+}
+
+bool MaterialsPanel::drawMedium(Material& material, MediumControls& medium) {
+    bool changed = false;
+    if (material.type != MaterialType::Medium) {
+        bool holds = material.hasInterior;
+        if (ImGui::Checkbox("holds a medium", &holds)) {
+            material = withInterior(material, holds);
+            changed = true;
+        }
+        itemTooltip("on: the closed shape is filled with a medium, entered through this surface (clear at first, as glass "
+                    "is); off: a thin surface with the same medium on both sides");
+        if (!material.hasInterior) return changed;
+    }
+    changed |= coefficientControls("absorption", material.sigmaA, medium.absorptionColor, medium.absorptionDensity,
+                                   "sigma_a = colour x density: the light absorbed per metre of path, per channel; the "
+                                   "colour's largest component is 1",
+                                   "absorption per metre (m^-1) in the colour's strongest channel; the mean free path "
+                                   "between absorptions is 1 / density metres");
+    changed |= coefficientControls("scattering", material.sigmaS, medium.scatteringColor, medium.scatteringDensity,
+                                   "sigma_s = colour x density: the light scattered per metre of path, per channel; the "
+                                   "colour's largest component is 1",
+                                   "scattering per metre (m^-1) in the colour's strongest channel; the mean free path "
+                                   "between scatterings is 1 / density metres");
+    const SceneRange& g = ranges::kPhaseAsymmetry;
+    changed |= ImGui::SliderFloat("g", &material.g, g.panelLo, g.panelHi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    itemTooltip(g.description);
+    const glm::vec3 extinction = material.sigmaA + material.sigmaS;
+    ImGui::TextDisabled("mean free path %.3g %.3g %.3g m", 1.0 / extinction.r, 1.0 / extinction.g, 1.0 / extinction.b);
+    itemTooltip("1 / (sigma_a + sigma_s) per channel: the mean distance light goes before it is absorbed or scattered");
     return changed;
 }
 

@@ -21,7 +21,14 @@ namespace ptview {
 
 // The material as another type, the way the panel's type combo changes it: colour, emission and
 // shared parameters carry over, a parameter new to the type gets a usable value.
+// A medium carries over between types that hold one (medium, and the refracting types with an
+// interior); a material turned medium without one gets a thin grey fog.
 Material retypedMaterial(const Material& material, MaterialType type);
+
+// A refracting material with a medium inside its closed shape (a clear one when it had none), or
+// without (a thin surface): the "holds a medium" checkbox, the script's `interior on|off`. The
+// coefficients of one without are the loader's (0), so the material saves and reads back the same.
+Material withInterior(const Material& material, bool holdsMedium);
 
 class MaterialsPanel {
 public:
@@ -41,7 +48,19 @@ private:
         float strength = 0.0f;
     };
 
+    // A medium's absorption and scattering shown as a colour whose largest component is 1 times
+    // a density (per metre), as the emitter's radiance is; kept between frames for the same reason.
+    struct MediumControls {
+        glm::vec3 absorptionColor{1.0f};
+        float absorptionDensity = 0.0f;
+        glm::vec3 scatteringColor{1.0f};
+        float scatteringDensity = 0.0f;
+    };
+
     bool drawMaterial(Material& material, EmitterControls& emitter);
+    // The coefficients and g of a medium, or of the one a refracting material holds (with the
+    // "holds a medium" checkbox). Returns whether one changed.
+    bool drawMedium(Material& material, MediumControls& medium);
     // A principled material's texture inputs: a thumbnail, the source, size and colour space of
     // each, a path field with Load, and Remove. Returns whether a texture changed (which may need
     // another program: the session uploads the scene again).
@@ -53,6 +72,10 @@ private:
     void saveTo(ViewerSession& session, const std::string& path);
 
     std::vector<EmitterControls> emitters_; // one per material, used by emitters only
+    std::vector<MediumControls> media_;     // one per material, used by those that bound a medium
+    // Why the last edit of a material was taken back (it would leave a medium in a shape that
+    // encloses none), shown under it until its next edit.
+    std::map<std::size_t, std::string> mediumRefusals_;
     // Thumbnails by image and channel; the entry holds the image, so its address is not reused
     // while cached.
     std::map<std::pair<const TextureImage*, int>, std::pair<std::shared_ptr<const TextureImage>, GlTexture>> thumbnails_;

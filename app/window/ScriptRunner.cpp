@@ -1,7 +1,9 @@
 #include <ptview/window/ScriptRunner.h>
 
 #include <ptview/model/CameraController.h>
+#include <ptview/model/EditHistory.h>
 #include <ptview/commands/CommandErrors.h>
+#include <ptview/scene/MaterialInputs.h>
 #include <ptview/scene/MaterialSchema.h>
 #include <ptview/scene/MaterialTextures.h>
 #include <ptview/window/MaterialsPanel.h>
@@ -268,14 +270,35 @@ void setMaterial(Step& s) {
     auto named = [&](const auto& fields) {
         return std::find_if(std::begin(fields), std::end(fields), [&](const auto& field) { return field.first == command.field; });
     };
+    // A medium's fields: the medium's own, or those of the medium a refracting material holds.
+    static const std::pair<std::string_view, glm::vec3 Material::*> kMediumVectorFields[] = {
+        {"sigma-a", &Material::sigmaA}, {"sigma-s", &Material::sigmaS}};
+    const Material before = material;
     if (command.field == "type")
         material = retypedMaterial(material, findMaterialSchema(s.word)->type);
-    else if (auto vector = named(kVectorFields); vector != std::end(kVectorFields))
+    else if (command.field == "interior") {
+        if (!materialInputTakers::refracting(materialSchema(material.type)))
+            return s.fail("material \"" + command.target + "\" is " + materialSchema(material.type).name +
+                          ", which does not refract: only specular_transmission, glass and principled hold a medium");
+        material = withInterior(material, s.command.isWord(0, "on"));
+    }
+    else if (auto medium = named(kMediumVectorFields); medium != std::end(kMediumVectorFields) || command.field == "g") {
+        if (!material.boundsMedium())
+            return s.fail("material \"" + command.target + "\" holds no medium (a medium's type, or interior on, first)");
+        if (command.field == "g") material.g = command.number(0);
+        else material.*(medium->second) = command.vec3(0);
+    } else if (auto vector = named(kVectorFields); vector != std::end(kVectorFields))
         material.*(vector->second) = command.vec3(0);
     else if (auto number = named(kNumberFields); number != std::end(kNumberFields))
         material.*(number->second) = command.number(0);
     else
         return setMaterialTextureField(s, material);
+    // As the loader refuses it: a medium in a shape that does not enclose it. The material stays.
+    if (material.boundsMedium() != before.boundsMedium())
+        if (std::string problem = mediumBoundaryProblem(s.scene); !problem.empty()) {
+            material = before;
+            return s.fail(problem + "; the material is left as it was");
+        }
     s.model.pendingChanges |= ViewerModel::kMaterialsChanged;
 }
 

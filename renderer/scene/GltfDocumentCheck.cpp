@@ -10,7 +10,7 @@ namespace {
 // What we read of an extension, so one marked required is not refused.
 const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
                                                     "KHR_materials_ior", "KHR_materials_transmission",
-                                                    "KHR_texture_transform"};
+                                                    "KHR_materials_volume", "KHR_texture_transform"};
 
 // URIs are percent-encoded ("my%20model.bin"); tinygltf decodes them the same way.
 std::string decodeUri(const std::string& uri) {

@@ -14,6 +14,7 @@
 #include <ptview/scene/GltfFileCallbacks.h>
 #include <ptview/scene/TextureLoader.h>
 #include <ptview/scene/MaterialTextures.h>
+#include <ptview/scene/MediumBoundaries.h>
 #include <ptview/io/InputFile.h>
 #include <ptview/scene/SceneRanges.h>
 
@@ -28,6 +29,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -506,6 +508,7 @@ private:
                 warn(where + "/extensions/KHR_materials_transmission/transmissionTexture",
                      "ignored: transmission is the factor alone");
         }
+        readVolume(source, where, material);
         if (source.alphaMode == "MASK")
             material.alphaMode = AlphaMode::Mask;
         else if (source.alphaMode == "BLEND")
@@ -518,6 +521,67 @@ private:
         int sceneIndex = static_cast<int>(scene_.materials.size());
         scene_.materials.push_back(std::move(material));
         return sceneIndex;
+    }
+
+    // KHR_materials_volume: the material's closed mesh holds an absorbing medium (the extension has
+    // no scattering), sigma_a = -ln(attenuationColor) / attenuationDistance per channel, the
+    // distance in the file's world units, which glTF says are metres. The thickness is a
+    // rasterizer's stand-in for the distance through the mesh, which a path tracer traces. A
+    // colour component of 0 (the schema allows it: that channel never gets through) or a distance
+    // so short that a coefficient passes the scene format's bound is clamped to the bound, whose
+    // mean free path of a micrometre absorbs the channel within any distance one could see.
+    void readVolume(const tinygltf::Material& source, const std::string& where, Material& material) {
+        auto found = source.extensions.find("KHR_materials_volume");
+        if (found == source.extensions.end()) return;
+        const std::string volumeAt = where + "/extensions/KHR_materials_volume";
+        const tinygltf::Value& volume = found->second;
+        if (!volume.IsObject()) fail(volumeAt, "expected an object");
+        for (const char* key : {"thicknessFactor", "thicknessTexture"})
+            if (volume.Has(key))
+                warn(volumeAt + "/" + key, "ignored: a rasterizer's stand-in for the distance through the mesh, which is traced");
+        double distance = std::numeric_limits<double>::infinity(); // the extension's default: no attenuation
+        if (volume.Has("attenuationDistance")) {
+            const tinygltf::Value& d = volume.Get("attenuationDistance");
+            distance = d.IsNumber() ? d.GetNumberAsDouble() : 0.0;
+            if (!(distance > 0.0) || !std::isfinite(distance))
+                fail(volumeAt + "/attenuationDistance", "expected a positive number (metres)");
+        }
+        glm::dvec3 color(1.0);
+        if (volume.Has("attenuationColor")) {
+            const std::string colorAt = volumeAt + "/attenuationColor";
+            const tinygltf::Value& c = volume.Get("attenuationColor");
+            if (!c.IsArray() || c.ArrayLen() != 3) fail(colorAt, "expected an array of 3 numbers");
+            for (int i = 0; i < 3; ++i) {
+                const tinygltf::Value& component = c.Get(i);
+                color[i] = component.IsNumber() ? component.GetNumberAsDouble() : -1.0;
+                if (!(color[i] >= 0.0 && color[i] <= 1.0)) fail(colorAt + "/" + std::to_string(i), "expected a number in [0, 1]");
+            }
+        }
+        // The spec: "the volume extension needs to be combined with an extension which allows
+        // light to transmit through the surface"; without one no light enters the volume.
+        if (!source.extensions.count("KHR_materials_transmission")) {
+            warn(volumeAt, "ignored: without KHR_materials_transmission no light enters the volume");
+            return;
+        }
+        material.hasInterior = true;
+        material.sigmaS = glm::vec3(0.0f);
+        material.g = 0.0f;
+        const double maxCoefficient = ranges::kMediumCoefficient.hi;
+        bool clamped = false;
+        for (int i = 0; i < 3; ++i) {
+            double coefficient = std::isinf(distance) || color[i] == 1.0 ? 0.0 : -std::log(color[i]) / distance;
+            if (coefficient > maxCoefficient) {
+                coefficient = maxCoefficient;
+                clamped = true;
+            }
+            material.sigmaA[i] = static_cast<float>(coefficient);
+        }
+        if (clamped) {
+            char bound[32];
+            std::snprintf(bound, sizeof bound, "%.10g", maxCoefficient);
+            warn(volumeAt, std::string("an absorption coefficient -ln(attenuationColor) / attenuationDistance above the "
+                                       "scene format's largest, ") + bound + " m^-1, is clamped to it");
+        }
     }
 
     // glTF's default material: white, fully metallic, fully rough.
@@ -730,6 +794,7 @@ private:
         sceneMesh.data = std::make_shared<const TriangleMesh>(std::move(mesh));
         sceneMesh.importedFrom = importIndex_;
         meshIndex_[m] = static_cast<int>(scene_.meshes.size());
+        contents_.fileMeshOf[meshIndex_[m]] = m;
         scene_.meshes.push_back(std::move(sceneMesh));
         return meshIndex_[m];
     }
@@ -1030,6 +1095,12 @@ Scene loadGltfScene(const std::filesystem::path& path, const ReadScope& scope) {
     scene.path = path;
     scene.imports.push_back(SceneImport{path, Transform{}, {}, {}});
     GltfContents contents = appendGltf(path, glm::mat4(1.0f), 0, scene, scope);
+    // As a scene file's shapes are checked (SceneLoader.cpp): a volume's mesh must be closed.
+    if (std::optional<OpenMediumBoundary> open = findOpenMediumBoundary(scene)) {
+        const Shape& shape = scene.shapes[open->shape];
+        throw SceneError(oneLine(path.string() + ": " + at("meshes", contents.fileMeshOf.at(shape.mesh)) + ": node '" +
+                                 shape.name + "': " + open->what));
+    }
     scene.imports[0].fileMaterials = scene.materials; // what "Save as" a scene file compares edits to
     scene.imports[0].fileLights = scene.lights;
     scene.environment = glm::vec3(1.0f);

@@ -13,7 +13,9 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 namespace ptview {
@@ -25,6 +27,9 @@ struct GltfContents {
     // World bounds of the triangles added; boundsMin > boundsMax when there are none.
     glm::vec3 boundsMin{1e30f};
     glm::vec3 boundsMax{-1e30f};
+    // The file's mesh (its index in "meshes") that each scene mesh added was read from, by the
+    // scene mesh's index in Scene::meshes: what a message about the mesh points to.
+    std::map<int, std::size_t> fileMeshOf;
 };
 
 // .gltf or .glb, by extension (any case).
@@ -41,7 +46,8 @@ GltfContents appendGltf(const std::filesystem::path& path, const glm::mat4& plac
 
 // A scene of the glTF file alone, as `ptview model.glb` opens it: the file's camera, else one
 // framing its bounds from +Z; a constant white environment of radiance 1 (a "studio" that shows
-// base colours as they are), since a glTF file carries no environment.
+// base colours as they are), since a glTF file carries no environment. A mesh with a volume
+// (KHR_materials_volume) must be closed, as a scene file's shapes bounding a medium must be.
 Scene loadGltfScene(const std::filesystem::path& path, const ReadScope& scope = ReadScope());
 
 } // namespace ptview

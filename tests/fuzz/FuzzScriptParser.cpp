@@ -163,6 +163,10 @@ const std::map<std::string, Field>& fieldsOf(const std::string& verb) {
             {"transmission", {{number(0, 1)}}},
             {"alpha", {{number(0, 1)}}},
             {"normal-scale", {{number(0, 100)}}},
+            {"sigma-a", {vec3(0, 1e6)}},
+            {"sigma-s", {vec3(0, 1e6)}},
+            {"g", {{number(-1, 1, true)}}}, // (-1, 1); this oracle has no open top
+            {"interior", {{choice({"on", "off"})}}},
         };
         for (const ptview::MaterialTextureInput& input : ptview::kMaterialTextureInputs)
             m[std::string(input.name) + "-texture"] = {{path({".png", ".jpg", ".jpeg"}, "none")}};
