@@ -171,16 +171,19 @@ TEST(Denoiser, AShadowEdgeAndItsReflectionInAMirrorStaySharp) {
 })";
     Scene scene = parseScene(text, "edges.json");
     const RenderSettings settings = settingsOf(Integrator::Full, 4, 21);
-    Renders renders = renderAndDenoise(scene, settings, 16);
     Renders reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 22), 1024, DenoiseSettings{false});
     struct Band {
         const char* name;
         int begin, end;
     };
+    for (const DenoiseSettings& filter : everyFilter()) {
+    SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+    Renders renders = renderAndDenoise(scene, settings, 16, filter);
     for (Band band : {Band{"reflected in the mirror", 8, 24}, Band{"on the floor", 50, 62}}) {
         const double referenceWidth = edgeWidth(reference.raw, band.begin, band.end);
         const double denoisedWidth = edgeWidth(renders.denoised, band.begin, band.end);
-        std::printf("%s: edge %.2f px wide at 1024 spp, %.2f px denoised at 16 spp\n", band.name, referenceWidth, denoisedWidth);
+        std::printf("%s, %s: edge %.2f px wide at 1024 spp, %.2f px denoised at 16 spp\n", denoiseAlgorithmName(filter.algorithm),
+                    band.name, referenceWidth, denoisedWidth);
         EXPECT_LE(denoisedWidth, referenceWidth + 1.0) << band.name;
         // Teeth: blurring the reference by two pixels each way widens the edge past the bound.
         EXPECT_GT(edgeWidth(blurred(reference.raw, 2), band.begin, band.end), referenceWidth + 1.0) << band.name;
@@ -192,6 +195,7 @@ TEST(Denoiser, AShadowEdgeAndItsReflectionInAMirrorStaySharp) {
                 denoisedError += std::pow(renders.denoised.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
             }
         EXPECT_LT(denoisedError, 0.5 * rawError) << band.name;
+    }
     }
 }
 
@@ -332,6 +336,15 @@ TEST(Denoiser, ADenoiseSpreadOverBandsOfRowsIsTheDenoiseDoneAtOnce) {
     EXPECT_EQ(tracer.denoiseRowsLeft(), 0);
     EXPECT_EQ(tracer.readDenoised().rgb, atOnce.denoised.rgb);
     EXPECT_FALSE(tracer.advanceDenoised(7)) << "up to date: nothing to do";
+
+    // The regression filter's one pass is banded alike (it reads only the prepare pass's image).
+    DenoiseSettings regression{true};
+    regression.algorithm = DenoiseAlgorithm::Regression;
+    const Renders regressionAtOnce = renderAndDenoise(scene, settings, 8, regression);
+    ASSERT_NE(regressionAtOnce.denoised.rgb, atOnce.denoised.rgb) << "the other filter ran";
+    tracer.setDenoise(regression);
+    while (!tracer.advanceDenoised(7)) ASSERT_LT(++calls, 2000);
+    EXPECT_EQ(tracer.readDenoised().rgb, regressionAtOnce.denoised.rgb);
 
     // A restart in the middle drops the denoise of the old accumulation.
     tracer.renderSamples(1);
