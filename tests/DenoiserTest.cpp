@@ -85,22 +85,22 @@ TEST(Denoiser, ATextureUnderUniformLightStaysAsSharpAsTheRawImage) {
   "shapes": [{"type": "quad", "material": "checker", "center": [0, 0, -2], "u": [1, 0, 0], "v": [0, 1, 0]}]
 })", files.directory() / "checker.json");
     for (const DenoiseSettings& filter : everyFilter()) {
-    SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
-    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 1, 5), 4, filter);
-    int blurredApart = 0;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-            const glm::vec3 raw = renders.raw.at(x, y), denoised = renders.denoised.at(x, y);
-            for (int c = 0; c < 3; ++c) ASSERT_NEAR(denoised[c], raw[c], 0.01f * raw[c] + 1e-6f) << x << " " << y;
-            // The check has teeth: a 3x3 blur, what a filter of the radiance itself would do at
-            // the least, moves texel edges by far more than 1%.
-            if (x == 0 || y == 0 || x == 63 || y == 63) continue;
-            glm::vec3 blurred(0.0f);
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) blurred += renders.raw.at(x + dx, y + dy) / 9.0f;
-            if (std::abs(blurred.g - raw.g) > 0.01f * raw.g) ++blurredApart;
-        }
-    EXPECT_GT(blurredApart, 200);
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 1, 5), 4, filter);
+        int blurredApart = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const glm::vec3 raw = renders.raw.at(x, y), denoised = renders.denoised.at(x, y);
+                for (int c = 0; c < 3; ++c) ASSERT_NEAR(denoised[c], raw[c], 0.01f * raw[c] + 1e-6f) << x << " " << y;
+                // The check has teeth: a 3x3 blur, what a filter of the radiance itself would do at
+                // the least, moves texel edges by far more than 1%.
+                if (x == 0 || y == 0 || x == 63 || y == 63) continue;
+                glm::vec3 blurred(0.0f);
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) blurred += renders.raw.at(x + dx, y + dy) / 9.0f;
+                if (std::abs(blurred.g - raw.g) > 0.01f * raw.g) ++blurredApart;
+            }
+        EXPECT_GT(blurredApart, 200);
     }
 }
 
@@ -177,25 +177,25 @@ TEST(Denoiser, AShadowEdgeAndItsReflectionInAMirrorStaySharp) {
         int begin, end;
     };
     for (const DenoiseSettings& filter : everyFilter()) {
-    SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
-    Renders renders = renderAndDenoise(scene, settings, 16, filter);
-    for (Band band : {Band{"reflected in the mirror", 8, 24}, Band{"on the floor", 50, 62}}) {
-        const double referenceWidth = edgeWidth(reference.raw, band.begin, band.end);
-        const double denoisedWidth = edgeWidth(renders.denoised, band.begin, band.end);
-        std::printf("%s, %s: edge %.2f px wide at 1024 spp, %.2f px denoised at 16 spp\n", denoiseAlgorithmName(filter.algorithm),
-                    band.name, referenceWidth, denoisedWidth);
-        EXPECT_LE(denoisedWidth, referenceWidth + 1.0) << band.name;
-        // Teeth: blurring the reference by two pixels each way widens the edge past the bound.
-        EXPECT_GT(edgeWidth(blurred(reference.raw, 2), band.begin, band.end), referenceWidth + 1.0) << band.name;
-        // And the denoiser did something: the band is closer to the reference than the raw one.
-        double rawError = 0.0, denoisedError = 0.0;
-        for (int y = band.begin; y < band.end; ++y)
-            for (int x = 0; x < 64; ++x) {
-                rawError += std::pow(renders.raw.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
-                denoisedError += std::pow(renders.denoised.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
-            }
-        EXPECT_LT(denoisedError, 0.5 * rawError) << band.name;
-    }
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settings, 16, filter);
+        for (Band band : {Band{"reflected in the mirror", 8, 24}, Band{"on the floor", 50, 62}}) {
+            const double referenceWidth = edgeWidth(reference.raw, band.begin, band.end);
+            const double denoisedWidth = edgeWidth(renders.denoised, band.begin, band.end);
+            std::printf("%s, %s: edge %.2f px wide at 1024 spp, %.2f px denoised at 16 spp\n", denoiseAlgorithmName(filter.algorithm),
+                        band.name, referenceWidth, denoisedWidth);
+            EXPECT_LE(denoisedWidth, referenceWidth + 1.0) << band.name;
+            // Teeth: blurring the reference by two pixels each way widens the edge past the bound.
+            EXPECT_GT(edgeWidth(blurred(reference.raw, 2), band.begin, band.end), referenceWidth + 1.0) << band.name;
+            // And the denoiser did something: the band is closer to the reference than the raw one.
+            double rawError = 0.0, denoisedError = 0.0;
+            for (int y = band.begin; y < band.end; ++y)
+                for (int x = 0; x < 64; ++x) {
+                    rawError += std::pow(renders.raw.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
+                    denoisedError += std::pow(renders.denoised.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
+                }
+            EXPECT_LT(denoisedError, 0.5 * rawError) << band.name;
+        }
     }
 }
 
@@ -228,25 +228,25 @@ TEST(Denoiser, ItsErrorAndItsBiasFallAsSamplesGrow) {
     scene.camera.resolution = glm::ivec2(64, 64);
     const ImageRgbF reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 100), 4096, DenoiseSettings{false}).raw;
     for (const DenoiseSettings& filter : everyFilter()) {
-    SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
-    double previousError = 1e30, previousChange = 1e30;
-    for (int spp : {4, 16, 64, 256}) {
-        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 7), spp, filter);
-        const double raw = compareToReference(renders.raw, reference).relativeMse;
-        const double denoised = compareToReference(renders.denoised, reference).relativeMse;
-        const double change = compareToReference(renders.denoised, renders.raw).relativeMse;
-        std::printf("%s, %d spp: relMSE raw %.6f denoised %.6f, between them %.6f\n", denoiseAlgorithmName(filter.algorithm),
-                    spp, raw, denoised, change);
-        // Where noise dominates, the filter must take most of it out; at 256 spp on a 64x64 image
-        // (its kernel spans a large share of the box) its bias is comparable to the noise left.
-        if (spp <= 64) {
-            EXPECT_LT(denoised, 0.5 * raw) << spp << " spp";
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        double previousError = 1e30, previousChange = 1e30;
+        for (int spp : {4, 16, 64, 256}) {
+            Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 7), spp, filter);
+            const double raw = compareToReference(renders.raw, reference).relativeMse;
+            const double denoised = compareToReference(renders.denoised, reference).relativeMse;
+            const double change = compareToReference(renders.denoised, renders.raw).relativeMse;
+            std::printf("%s, %d spp: relMSE raw %.6f denoised %.6f, between them %.6f\n", denoiseAlgorithmName(filter.algorithm),
+                        spp, raw, denoised, change);
+            // Where noise dominates, the filter must take most of it out; at 256 spp on a 64x64 image
+            // (its kernel spans a large share of the box) its bias is comparable to the noise left.
+            if (spp <= 64) {
+                EXPECT_LT(denoised, 0.5 * raw) << spp << " spp";
+            }
+            EXPECT_LT(denoised, previousError) << spp << " spp";
+            EXPECT_LT(change, 0.5 * previousChange) << spp << " spp";
+            previousError = denoised;
+            previousChange = change;
         }
-        EXPECT_LT(denoised, previousError) << spp << " spp";
-        EXPECT_LT(change, 0.5 * previousChange) << spp << " spp";
-        previousError = denoised;
-        previousChange = change;
-    }
     }
 }
 
@@ -265,19 +265,19 @@ TEST(Denoiser, BlackSurfacesAndHugeSamplesGiveFiniteImages) {
     {"type": "sphere", "material": "hot", "center": [0.5, 1.5, 0], "radius": 0.02}]
 })", "hard.json");
     for (const DenoiseSettings& filter : everyFilter()) {
-    SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
-    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 4, 9), 8, filter);
-    int bright = 0, brightRaw = 0;
-    for (int y = 0; y < 48; ++y)
-        for (int x = 0; x < 48; ++x) {
-            const glm::vec3 value = renders.denoised.at(x, y);
-            for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(value[c])) << x << " " << y;
-            bright += value.g > 1e3f;
-            brightRaw += renders.raw.at(x, y).g > 1e3f;
-        }
-    // Fireflies were there, and the filter did not spread them into blotches.
-    EXPECT_GT(brightRaw, 0);
-    EXPECT_LE(bright, brightRaw);
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 4, 9), 8, filter);
+        int bright = 0, brightRaw = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x) {
+                const glm::vec3 value = renders.denoised.at(x, y);
+                for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(value[c])) << x << " " << y;
+                bright += value.g > 1e3f;
+                brightRaw += renders.raw.at(x, y).g > 1e3f;
+            }
+        // Fireflies were there, and the filter did not spread them into blotches.
+        EXPECT_GT(brightRaw, 0);
+        EXPECT_LE(bright, brightRaw);
     }
 }
 
