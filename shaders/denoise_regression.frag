@@ -27,13 +27,16 @@ uniform float uSigmaDepth;
 layout(location = 0) out vec4 outIllumination;
 
 // The window: (2 kWindowRadius + 1)^2 neighbours. NFOR's is 21x21; 15x15 measured within a few
-// percent of it here at half the cost (docs/denoising.md).
+// percent of it, either way, at about half the cost (docs/denoising.md).
 const int kWindowRadius = 7;
 const int kFeatureCount = 8; // 1, normal (3), depth, screen position (2), albedo luminance
 // Ridge regularization of every coefficient but the intercept, as a share of the weight sum: a
 // feature that does not vary in the window (the normal on a flat wall) gets coefficient 0
 // instead of a singular system, and one that varies little is fitted cautiously.
 const float kRidge = 1e-3;
+// How much more variance than the centre expects a neighbour may have before it counts for less:
+// three standard deviations, squared.
+const float kVarianceTolerance = 9.0;
 
 ivec2 clampToImage(ivec2 p) { return clamp(p, ivec2(0), textureSize(uIllumination, 0) - 1); }
 
@@ -119,7 +122,8 @@ void main() {
             // weighs each point by its inverse variance. The fit stays unbiased for a linear
             // trend whatever the weights, so this costs no bias where the model holds.
             vec4 tapQ = texelFetch(uIllumination, q, 0);
-            w *= (9.0 * expectedVariance + 1e-20) / (max(9.0 * expectedVariance, tapQ.a) + 1e-20);
+            float tolerated = kVarianceTolerance * expectedVariance;
+            w *= (tolerated + 1e-20) / (max(tolerated, tapQ.a) + 1e-20);
             float x[kFeatureCount];
             featuresOf(guideQ, texelFetch(uAlbedo, q, 0).rgb, guideP, albedoP, d, x);
             vec3 y = tapQ.rgb;
