@@ -163,12 +163,13 @@ TEST(Converge, BadConfigurationsAreRefused) {
     EXPECT_FALSE(fs::exists("/tmp/never/convergence.csv"));
 }
 
-// "/denoise" is a word alone, once: a value, another word after the depth, a repeat or a suffix
-// in place of the depth is refused (exit 2) naming the configuration, before any rendering.
+// "/denoise" is the word alone or "denoise=" a filter's name, once: another value, another word
+// after the depth, a repeat or a suffix in place of the depth is refused (exit 2) naming the configuration, before any rendering.
 TEST(Converge, BadDenoiseSuffixesAreRefused) {
     testing::ScratchFiles files("converge_bad_denoise");
     const fs::path out = files.directory() / "out";
-    for (const std::string config : {"full/sobol/8/denoise=x", "full/sobol/8/denoised", "full/sobol/8/fast",
+    for (const std::string config : {"full/sobol/8/denoise=x", "full/sobol/8/denoise=", "full/sobol/8/denoise=atrous/denoise",
+                                     "full/sobol/8/denoised", "full/sobol/8/fast",
                                      "full/sobol/8/denoise/denoise", "full/sobol/denoise", "full/sobol/8/denoise/",
                                      "full/sobol/8/clamp=0/denoise"}) {
         testing::CommandResult result = testing::runCommand(
@@ -182,19 +183,23 @@ TEST(Converge, BadDenoiseSuffixesAreRefused) {
 }
 
 // "/denoise" parses after the depth, with or without a clamp and in either order, and names the
-// configuration the same way whichever order it was given in.
+// configuration the same way whichever order it was given in; "/denoise=regression" picks the
+// other filter, "/denoise=atrous" is "/denoise".
 TEST(Converge, DenoiseSuffixParsesAloneAndWithAClamp) {
     testing::ScratchFiles files("converge_denoise_parse");
     const fs::path out = files.directory() / "out";
     testing::CommandResult result = testing::runCommand(
         std::string(PTVIEW_BINARY) + " converge " + testing::shellQuoted(PTVIEW_ASSETS_DIR "/scenes/cornell.json") +
         " --out " + testing::shellQuoted(out.string()) +
-        " --size 8x8 --reference-spp 4 --max-spp 2 --configs mis/random/2/denoise,full/sobol/4/denoise/clamp=2");
+        " --size 8x8 --reference-spp 4 --max-spp 2 --configs mis/random/2/denoise,full/sobol/4/denoise/clamp=2,"
+        "full/sobol/3/denoise=regression,full/sobol/2/denoise=atrous");
     ASSERT_EQ(result.exitCode, 0) << result.output;
     std::map<std::string, std::vector<Row>> rows = readCsv(out / "convergence.csv");
     EXPECT_EQ(rows["mis/random/2/denoise"].size(), 2u) << "checkpoints at 1 and 2 spp";
     EXPECT_EQ(rows["full/sobol/4/clamp=2/denoise"].size(), 2u);
-    EXPECT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows["full/sobol/3/denoise=regression"].size(), 2u) << "a filter other than the default is named";
+    EXPECT_EQ(rows["full/sobol/2/denoise"].size(), 2u) << "the default filter is named as before";
+    EXPECT_EQ(rows.size(), 4u);
 }
 
 // "/adaptive=E" takes E in (0, 1], once, and not with the grid sampler (exit 2 before rendering);

@@ -1,6 +1,7 @@
 // The denoiser on the real GLSL (docs/denoising.md): what it must keep (textures, shadow edges,
 // what a mirror reflects, an image with no noise), what it must take out (noise, more of it the
-// fewer the samples), and that nothing it does makes a NaN.
+// fewer the samples), and that nothing it does makes a NaN. Each filter of DenoiseAlgorithm.h is
+// held to the same.
 #include "GlTestContext.h"
 #include "TestFiles.h"
 #include <ptview/io/ImageIO.h>
@@ -38,6 +39,18 @@ Renders renderAndDenoise(const Scene& scene, const RenderSettings& settings, int
     return Renders{tracer.readMean(), tracer.readDenoised()};
 }
 
+// Denoising on, with each filter of the table in turn, at its defaults.
+std::vector<DenoiseSettings> everyFilter() {
+    std::vector<DenoiseSettings> filters;
+    for (const EnumEntry<DenoiseAlgorithm>& entry : denoiseAlgorithmNames()) {
+        DenoiseSettings denoise;
+        denoise.enabled = true;
+        denoise.algorithm = entry.value;
+        filters.push_back(denoise);
+    }
+    return filters;
+}
+
 RenderSettings settingsOf(Integrator integrator, int maxDepth, std::uint32_t seed) {
     RenderSettings settings;
     settings.integrator = integrator;
@@ -71,21 +84,24 @@ TEST(Denoiser, ATextureUnderUniformLightStaysAsSharpAsTheRawImage) {
   "materials": {"checker": {"type": "diffuse", "albedo": {"texture": ")" + checker.string() + R"(", "filter": "nearest"}}},
   "shapes": [{"type": "quad", "material": "checker", "center": [0, 0, -2], "u": [1, 0, 0], "v": [0, 1, 0]}]
 })", files.directory() / "checker.json");
-    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 1, 5), 4);
-    int blurredApart = 0;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-            const glm::vec3 raw = renders.raw.at(x, y), denoised = renders.denoised.at(x, y);
-            for (int c = 0; c < 3; ++c) ASSERT_NEAR(denoised[c], raw[c], 0.01f * raw[c] + 1e-6f) << x << " " << y;
-            // The check has teeth: a 3x3 blur, what a filter of the radiance itself would do at
-            // the least, moves texel edges by far more than 1%.
-            if (x == 0 || y == 0 || x == 63 || y == 63) continue;
-            glm::vec3 blurred(0.0f);
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) blurred += renders.raw.at(x + dx, y + dy) / 9.0f;
-            if (std::abs(blurred.g - raw.g) > 0.01f * raw.g) ++blurredApart;
-        }
-    EXPECT_GT(blurredApart, 200);
+    for (const DenoiseSettings& filter : everyFilter()) {
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 1, 5), 4, filter);
+        int blurredApart = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const glm::vec3 raw = renders.raw.at(x, y), denoised = renders.denoised.at(x, y);
+                for (int c = 0; c < 3; ++c) ASSERT_NEAR(denoised[c], raw[c], 0.01f * raw[c] + 1e-6f) << x << " " << y;
+                // The check has teeth: a 3x3 blur, what a filter of the radiance itself would do at
+                // the least, moves texel edges by far more than 1%.
+                if (x == 0 || y == 0 || x == 63 || y == 63) continue;
+                glm::vec3 blurred(0.0f);
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) blurred += renders.raw.at(x + dx, y + dy) / 9.0f;
+                if (std::abs(blurred.g - raw.g) > 0.01f * raw.g) ++blurredApart;
+            }
+        EXPECT_GT(blurredApart, 200);
+    }
 }
 
 // Mean over rows [rowBegin, rowEnd) of each column's luminance.
@@ -155,27 +171,31 @@ TEST(Denoiser, AShadowEdgeAndItsReflectionInAMirrorStaySharp) {
 })";
     Scene scene = parseScene(text, "edges.json");
     const RenderSettings settings = settingsOf(Integrator::Full, 4, 21);
-    Renders renders = renderAndDenoise(scene, settings, 16);
     Renders reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 22), 1024, DenoiseSettings{false});
     struct Band {
         const char* name;
         int begin, end;
     };
-    for (Band band : {Band{"reflected in the mirror", 8, 24}, Band{"on the floor", 50, 62}}) {
-        const double referenceWidth = edgeWidth(reference.raw, band.begin, band.end);
-        const double denoisedWidth = edgeWidth(renders.denoised, band.begin, band.end);
-        std::printf("%s: edge %.2f px wide at 1024 spp, %.2f px denoised at 16 spp\n", band.name, referenceWidth, denoisedWidth);
-        EXPECT_LE(denoisedWidth, referenceWidth + 1.0) << band.name;
-        // Teeth: blurring the reference by two pixels each way widens the edge past the bound.
-        EXPECT_GT(edgeWidth(blurred(reference.raw, 2), band.begin, band.end), referenceWidth + 1.0) << band.name;
-        // And the denoiser did something: the band is closer to the reference than the raw one.
-        double rawError = 0.0, denoisedError = 0.0;
-        for (int y = band.begin; y < band.end; ++y)
-            for (int x = 0; x < 64; ++x) {
-                rawError += std::pow(renders.raw.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
-                denoisedError += std::pow(renders.denoised.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
-            }
-        EXPECT_LT(denoisedError, 0.5 * rawError) << band.name;
+    for (const DenoiseSettings& filter : everyFilter()) {
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settings, 16, filter);
+        for (Band band : {Band{"reflected in the mirror", 8, 24}, Band{"on the floor", 50, 62}}) {
+            const double referenceWidth = edgeWidth(reference.raw, band.begin, band.end);
+            const double denoisedWidth = edgeWidth(renders.denoised, band.begin, band.end);
+            std::printf("%s, %s: edge %.2f px wide at 1024 spp, %.2f px denoised at 16 spp\n", denoiseAlgorithmName(filter.algorithm),
+                        band.name, referenceWidth, denoisedWidth);
+            EXPECT_LE(denoisedWidth, referenceWidth + 1.0) << band.name;
+            // Teeth: blurring the reference by two pixels each way widens the edge past the bound.
+            EXPECT_GT(edgeWidth(blurred(reference.raw, 2), band.begin, band.end), referenceWidth + 1.0) << band.name;
+            // And the denoiser did something: the band is closer to the reference than the raw one.
+            double rawError = 0.0, denoisedError = 0.0;
+            for (int y = band.begin; y < band.end; ++y)
+                for (int x = 0; x < 64; ++x) {
+                    rawError += std::pow(renders.raw.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
+                    denoisedError += std::pow(renders.denoised.at(x, y).g - reference.raw.at(x, y).g, 2.0f);
+                }
+            EXPECT_LT(denoisedError, 0.5 * rawError) << band.name;
+        }
     }
 }
 
@@ -189,12 +209,14 @@ TEST(Denoiser, AnImageWithoutNoiseIsLeftAsItIs) {
     for (const std::string& shapes : {std::string(R"("shapes": [])"),
                                      std::string(R"("shapes": [{"type": "quad", "material": "glow", "center": [0, 0, -2], "u": [5, 0, 0], "v": [0, 5, 0]}])")}) {
         Scene scene = parseScene("{" + camera + shapes + "}", "constant.json");
-        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 3), 8);
-        for (int y = 0; y < 48; ++y)
-            for (int x = 0; x < 48; ++x)
-                for (int c = 0; c < 3; ++c)
-                    ASSERT_NEAR(renders.denoised.at(x, y)[c], renders.raw.at(x, y)[c], 1e-5f * (1.0f + renders.raw.at(x, y)[c]))
-                        << shapes << " at " << x << " " << y;
+        for (const DenoiseSettings& filter : everyFilter()) {
+            Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 3), 8, filter);
+            for (int y = 0; y < 48; ++y)
+                for (int x = 0; x < 48; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        ASSERT_NEAR(renders.denoised.at(x, y)[c], renders.raw.at(x, y)[c], 1e-5f * (1.0f + renders.raw.at(x, y)[c]))
+                            << denoiseAlgorithmName(filter.algorithm) << ", " << shapes << " at " << x << " " << y;
+        }
     }
 }
 
@@ -205,22 +227,26 @@ TEST(Denoiser, ItsErrorAndItsBiasFallAsSamplesGrow) {
     Scene scene = loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
     scene.camera.resolution = glm::ivec2(64, 64);
     const ImageRgbF reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 100), 4096, DenoiseSettings{false}).raw;
-    double previousError = 1e30, previousChange = 1e30;
-    for (int spp : {4, 16, 64, 256}) {
-        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 7), spp);
-        const double raw = compareToReference(renders.raw, reference).relativeMse;
-        const double denoised = compareToReference(renders.denoised, reference).relativeMse;
-        const double change = compareToReference(renders.denoised, renders.raw).relativeMse;
-        std::printf("%d spp: relMSE raw %.6f denoised %.6f, between them %.6f\n", spp, raw, denoised, change);
-        // Where noise dominates, the filter must take most of it out; at 256 spp on a 64x64 image
-        // (its kernel spans a large share of the box) its bias is comparable to the noise left.
-        if (spp <= 64) {
-            EXPECT_LT(denoised, 0.5 * raw) << spp << " spp";
+    for (const DenoiseSettings& filter : everyFilter()) {
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        double previousError = 1e30, previousChange = 1e30;
+        for (int spp : {4, 16, 64, 256}) {
+            Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 7), spp, filter);
+            const double raw = compareToReference(renders.raw, reference).relativeMse;
+            const double denoised = compareToReference(renders.denoised, reference).relativeMse;
+            const double change = compareToReference(renders.denoised, renders.raw).relativeMse;
+            std::printf("%s, %d spp: relMSE raw %.6f denoised %.6f, between them %.6f\n", denoiseAlgorithmName(filter.algorithm),
+                        spp, raw, denoised, change);
+            // Where noise dominates, the filter must take most of it out; at 256 spp on a 64x64 image
+            // (its kernel spans a large share of the box) its bias is comparable to the noise left.
+            if (spp <= 64) {
+                EXPECT_LT(denoised, 0.5 * raw) << spp << " spp";
+            }
+            EXPECT_LT(denoised, previousError) << spp << " spp";
+            EXPECT_LT(change, 0.5 * previousChange) << spp << " spp";
+            previousError = denoised;
+            previousChange = change;
         }
-        EXPECT_LT(denoised, previousError) << spp << " spp";
-        EXPECT_LT(change, 0.5 * previousChange) << spp << " spp";
-        previousError = denoised;
-        previousChange = change;
     }
 }
 
@@ -238,18 +264,21 @@ TEST(Denoiser, BlackSurfacesAndHugeSamplesGiveFiniteImages) {
     {"type": "sphere", "material": "black", "center": [-0.6, 0.4, 0], "radius": 0.4},
     {"type": "sphere", "material": "hot", "center": [0.5, 1.5, 0], "radius": 0.02}]
 })", "hard.json");
-    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 4, 9), 8);
-    int bright = 0, brightRaw = 0;
-    for (int y = 0; y < 48; ++y)
-        for (int x = 0; x < 48; ++x) {
-            const glm::vec3 value = renders.denoised.at(x, y);
-            for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(value[c])) << x << " " << y;
-            bright += value.g > 1e3f;
-            brightRaw += renders.raw.at(x, y).g > 1e3f;
-        }
-    // Fireflies were there, and the filter did not spread them into blotches.
-    EXPECT_GT(brightRaw, 0);
-    EXPECT_LE(bright, brightRaw);
+    for (const DenoiseSettings& filter : everyFilter()) {
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Naive, 4, 9), 8, filter);
+        int bright = 0, brightRaw = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x) {
+                const glm::vec3 value = renders.denoised.at(x, y);
+                for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(value[c])) << x << " " << y;
+                bright += value.g > 1e3f;
+                brightRaw += renders.raw.at(x, y).g > 1e3f;
+            }
+        // Fireflies were there, and the filter did not spread them into blotches.
+        EXPECT_GT(brightRaw, 0);
+        EXPECT_LE(bright, brightRaw);
+    }
 }
 
 TEST(Denoiser, ASceneWithoutLightDenoisesToBlack) {
@@ -259,8 +288,10 @@ TEST(Denoiser, ASceneWithoutLightDenoisesToBlack) {
   "materials": {"white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
   "shapes": [{"type": "sphere", "material": "white", "center": [0, 0, 0], "radius": 1}]
 })", "dark.json");
-    Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 1), 4);
-    for (float value : renders.denoised.rgb) ASSERT_EQ(value, 0.0f);
+    for (const DenoiseSettings& filter : everyFilter()) {
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 8, 1), 4, filter);
+        for (float value : renders.denoised.rgb) ASSERT_EQ(value, 0.0f) << denoiseAlgorithmName(filter.algorithm);
+    }
 }
 
 TEST(Denoiser, TheComputeBackendsSamplesDenoiseAsTheFragmentBackends) {
@@ -305,6 +336,15 @@ TEST(Denoiser, ADenoiseSpreadOverBandsOfRowsIsTheDenoiseDoneAtOnce) {
     EXPECT_EQ(tracer.denoiseRowsLeft(), 0);
     EXPECT_EQ(tracer.readDenoised().rgb, atOnce.denoised.rgb);
     EXPECT_FALSE(tracer.advanceDenoised(7)) << "up to date: nothing to do";
+
+    // The regression filter's one pass is banded alike (it reads only the prepare pass's image).
+    DenoiseSettings regression{true};
+    regression.algorithm = DenoiseAlgorithm::Regression;
+    const Renders regressionAtOnce = renderAndDenoise(scene, settings, 8, regression);
+    ASSERT_NE(regressionAtOnce.denoised.rgb, atOnce.denoised.rgb) << "the other filter ran";
+    tracer.setDenoise(regression);
+    while (!tracer.advanceDenoised(7)) ASSERT_LT(++calls, 2000);
+    EXPECT_EQ(tracer.readDenoised().rgb, regressionAtOnce.denoised.rgb);
 
     // A restart in the middle drops the denoise of the old accumulation.
     tracer.renderSamples(1);

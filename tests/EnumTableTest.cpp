@@ -1,6 +1,7 @@
 // The enum tables: names round-trip, and the GLSL side gets its constants from them only.
 #include <ptview/settings/Backend.h>
 #include <ptview/settings/DebugView.h>
+#include <ptview/settings/DenoiseAlgorithm.h>
 #include "GeneratedGlsl.h"
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/gpu/GpuScene.h>
@@ -47,6 +48,7 @@ TEST(EnumTables, NamesAndValuesAreUniqueAndRoundTrip) {
     expectConsistent(textureWrapNames());
     expectConsistent(backendNames());
     expectConsistent(lightKindNames());
+    expectConsistent(denoiseAlgorithmNames());
 }
 
 // Command lines, scripts and scene files name these values: the words must not change.
@@ -60,6 +62,7 @@ TEST(EnumTables, NamesAreTheOnesUsersType) {
     EXPECT_EQ(backendNames().names(), (Names{"fragment", "compute"}));
     EXPECT_EQ(alphaModeNames().names(), (Names{"opaque", "mask", "blend"})); // glTF's, in lower case
     EXPECT_EQ(textureWrapNames().names(), (Names{"repeat", "clamp", "mirror"}));
+    EXPECT_EQ(denoiseAlgorithmNames().names(), (Names{"atrous", "regression"})); // provenance: absent is the first
     EXPECT_EQ(textureWrapNames().nameList(), "repeat, clamp, mirror"); // the loader's message lists them so
 }
 

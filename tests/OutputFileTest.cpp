@@ -152,6 +152,22 @@ TEST_F(OutputFileTest, DenoisedRendersKeepTheRawMeanAndRenderAgainBitForBit) {
     EXPECT_NE(info.output.find("\"denoise_strength\": 3"), std::string::npos) << info.output;
 }
 
+// --denoise-algorithm regression: another image from the same samples, recorded in the
+// provenance, and made again bit for bit by --from.
+TEST_F(OutputFileTest, TheRegressionFilterIsRecordedAndRendersAgainBitForBit) {
+    const std::string arguments = shellQuoted(kCornell) + " --spp 8 --size 32x24 --seed 5 --backend fragment --denoise";
+    render(arguments + " --out " + shellQuoted(path("atrous.pfm")));
+    render(arguments + " --denoise-algorithm regression --out " + shellQuoted(path("regression.exr")));
+    render(arguments + " --denoise-algorithm regression --out " + shellQuoted(path("regression.pfm")));
+    const ImageRgbF atrous = readPfm(path("atrous.pfm")), regression = readPfm(path("regression.pfm"));
+    EXPECT_FALSE(sameBits(regression.rgb, atrous.rgb)) << "the other filter ran";
+    EXPECT_TRUE(sameBits(exrRgb(readExr(path("regression.exr")), "regression.exr").rgb, regression.rgb));
+    render("--from " + shellQuoted(path("regression.exr")) + " --out " + shellQuoted(path("again.exr")));
+    EXPECT_TRUE(sameBits(exrRgb(readExr(path("again.exr")), "again.exr").rgb, regression.rgb));
+    const testing::CommandResult info = runCommand(kBinary + " info " + shellQuoted(path("regression.exr")));
+    EXPECT_NE(info.output.find("\"denoise_algorithm\": \"regression\""), std::string::npos) << info.output;
+}
+
 TEST_F(OutputFileTest, DenoiseOptionsOutOfPlaceAreRefusedNamingThem) {
     const std::string render = kBinary + " render " + shellQuoted(kCornell) + kRenderArguments;
     for (const auto& [arguments, named] : std::vector<std::pair<std::string, std::string>>{
@@ -161,7 +177,11 @@ TEST_F(OutputFileTest, DenoiseOptionsOutOfPlaceAreRefusedNamingThem) {
              {" --denoise --denoise-strength 100", "--denoise-strength"},
              {" --denoise --denoise-strength nan", "--denoise-strength"},
              {" --denoise --denoise-iterations 0", "--denoise-iterations"},
-             {" --denoise --denoise-iterations 9", "--denoise-iterations"}}) {
+             {" --denoise --denoise-iterations 9", "--denoise-iterations"},
+             {" --denoise-algorithm regression", "--denoise-algorithm needs --denoise"},
+             {" --denoise --denoise-algorithm nfor", "--denoise-algorithm"},
+             {" --denoise --denoise-algorithm", "--denoise-algorithm"},
+             {" --denoise --denoise-algorithm regression --denoise-iterations 3", "--denoise-iterations is the a-trous filter's"}}) {
         const testing::CommandResult result = runCommand(render + arguments + " --out " + shellQuoted(path("no.png")));
         EXPECT_EQ(result.exitCode, 2) << arguments << "\n" << result.output;
         EXPECT_NE(result.output.find(named), std::string::npos) << arguments << "\n" << result.output;

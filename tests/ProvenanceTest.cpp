@@ -35,6 +35,10 @@ RenderRecipe unusualRecipe() {
     recipe.backend = Backend::Compute;
     recipe.allFeatures = true;
     recipe.noiseThreshold = 0.02f + 1e-9f;
+    recipe.denoise.enabled = true;
+    recipe.denoise.algorithm = DenoiseAlgorithm::Regression;
+    recipe.denoise.iterations = 6;
+    recipe.denoise.strength = 2.5f + 1e-6f;
     return recipe;
 }
 
@@ -49,6 +53,7 @@ void expectSameRecipe(const RenderRecipe& a, const RenderRecipe& b) {
     EXPECT_EQ(a.backend, b.backend);
     EXPECT_EQ(a.allFeatures, b.allFeatures);
     EXPECT_EQ(a.noiseThreshold, b.noiseThreshold);
+    EXPECT_TRUE(a.denoise == b.denoise);
 }
 
 TEST(RenderRecipe, JsonKeepsEveryFieldExactly) {
@@ -90,6 +95,23 @@ TEST(RenderRecipe, FilesWithoutADisplayTransferWereGamma22AndNewOnesSayTheirs) {
     EXPECT_NE(json.find("\"display_transfer\": \"srgb\""), std::string::npos) << json;
     EXPECT_EQ(recipeFromJson(json, "new.png").display.transfer, DisplayTransfer::Srgb);
     EXPECT_THROW(recipeFromJson(R"({"spp": 2, "width": 8, "height": 4, "display_transfer": "gamma-9"})", "f.png"), RecipeError);
+}
+
+// Files from before the regression filter name no denoise algorithm: they were denoised by the
+// à-trous filter, and `render --from` must make them again with it. New files name theirs.
+TEST(RenderRecipe, FilesWithoutADenoiseAlgorithmWereAtrousAndNewOnesSayTheirs) {
+    const RenderRecipe old = recipeFromJson(R"({"spp": 2, "width": 8, "height": 4, "denoise": true})", "old.png");
+    EXPECT_TRUE(old.denoise.enabled);
+    EXPECT_EQ(old.denoise.algorithm, DenoiseAlgorithm::Atrous);
+    RenderRecipe current;
+    current.samplesPerPixel = 2;
+    current.size = {8, 4};
+    current.denoise.enabled = true;
+    current.denoise.algorithm = DenoiseAlgorithm::Regression;
+    const std::string json = recipeToJson(current);
+    EXPECT_NE(json.find("\"denoise_algorithm\": \"regression\""), std::string::npos) << json;
+    EXPECT_EQ(recipeFromJson(json, "new.png").denoise.algorithm, DenoiseAlgorithm::Regression);
+    EXPECT_THROW(recipeFromJson(R"({"spp": 2, "width": 8, "height": 4, "denoise_algorithm": "magic"})", "f.png"), RecipeError);
 }
 
 class ProvenanceTest : public ::testing::Test {

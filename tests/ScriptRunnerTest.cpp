@@ -151,17 +151,19 @@ TEST(ScriptRunner, ATextureThatDoesNotLoadFailsNamingItAndKeepsTheMaterial) {
 TEST(ScriptRunner, DenoiseCommandsSetTheModelsDenoiserAndSplit) {
     ScriptedSession scripted(std::filesystem::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json",
                              "denoise on\ndenoise-strength 8\ndenoise-iterations 3\ncompare-sides raw-denoised\n"
-                             "compare-denoise on\n");
+                             "compare-denoise on\ndenoise-algorithm regression\n");
     const ViewerModel& model = scripted.session->model();
     EXPECT_TRUE(model.denoise.enabled);
     EXPECT_FLOAT_EQ(model.denoise.strength, 8.0f);
     EXPECT_EQ(model.denoise.iterations, 3);
+    EXPECT_EQ(model.denoise.algorithm, DenoiseAlgorithm::Regression);
     EXPECT_EQ(model.compare.sides, CompareSides::RawAndDenoised);
     EXPECT_TRUE(model.compare.rightDenoised);
     const DenoiseSettings& pushed = scripted.session->tracer(ViewerSession::Side::Left).denoiseSettings();
     EXPECT_TRUE(pushed.enabled);
     EXPECT_FLOAT_EQ(pushed.strength, 8.0f);
     EXPECT_EQ(pushed.iterations, 3);
+    EXPECT_EQ(pushed.algorithm, DenoiseAlgorithm::Regression);
 }
 
 // `target-error E` turns adaptive sampling of the main view on at E, `target-error off` turns it

@@ -125,7 +125,13 @@ void addRenderSettings(CLI::App& app, RenderSettings& settings, DisplaySettings&
 // writes the denoised image.
 void addDenoiseOptions(CLI::App& app, DenoiseSettings& denoise) {
     app.add_flag("--denoise", denoise.enabled,
-                 "denoise the image (a-trous wavelet filter guided by albedo, normal, depth and the variance; biased, docs/denoising.md)");
+                 "denoise the image (a filter guided by albedo, normal, depth and the variance; biased, docs/denoising.md)");
+    std::string algorithms = "the denoiser's filter:";
+    for (const EnumEntry<DenoiseAlgorithm>& entry : denoiseAlgorithmNames())
+        algorithms += std::string("\n  ") + entry.name + ": " + entry.description;
+    addNamedOption(app, "--denoise-algorithm", denoise.algorithm, "denoise algorithm", denoiseAlgorithmNames().namesAndValues())
+        ->description(algorithms)
+        ->default_str(denoiseAlgorithmName(denoise.algorithm));
     app.add_option("--denoise-iterations", denoise.iterations, settingRanges::kDenoiseIterations.description)
         ->transform(kDecimalInteger)->check(inRange(settingRanges::kDenoiseIterations))->capture_default_str();
     app.add_option("--denoise-strength", denoise.strength, settingRanges::kDenoiseStrength.description)
@@ -135,11 +141,16 @@ void addDenoiseOptions(CLI::App& app, DenoiseSettings& denoise) {
 // The denoise options that only mean something with --denoise, and --denoise with a view that
 // has no radiance to denoise: an error naming the option (exit 2) rather than ignored.
 std::optional<int> checkDenoiseOptions(const CLI::App& command, const DenoiseSettings& denoise, const RenderSettings& settings) {
-    for (const char* name : {"--denoise-iterations", "--denoise-strength"}) {
+    for (const char* name : {"--denoise-algorithm", "--denoise-iterations", "--denoise-strength"}) {
         if (command.get_option(name)->count() > 0 && !denoise.enabled) {
             std::cerr << "ptview: " << name << " needs --denoise\n";
             return kExitBadInput;
         }
+    }
+    if (command.get_option("--denoise-iterations")->count() > 0 && denoise.algorithm != DenoiseAlgorithm::Atrous) {
+        std::cerr << "ptview: --denoise-iterations is the a-trous filter's; --denoise-algorithm "
+                  << denoiseAlgorithmName(denoise.algorithm) << " takes its window in one pass\n";
+        return kExitBadInput;
     }
     if (denoise.enabled && settings.debugView != DebugView::Radiance) {
         std::cerr << "ptview: --denoise needs the radiance view: --view " << debugViewName(settings.debugView)
@@ -413,7 +424,7 @@ CLI::App* addConvergeCommand(CLI::App& app, ConvergeOptions& converge, ConvergeT
     command->add_option("--reference-depth", converge.referenceDepth,
                         "MAX_DEPTH of the rendered reference (default: the deepest configuration's, at least 16)")
         ->transform(kDecimalInteger)->check(inRange(settingRanges::kMaxDepth));
-    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise][/adaptive=E], comma-separated (clamp: biased firefly control, as --clamp; denoise: measure the denoised image, as --denoise, its time included; both biased; adaptive: adaptive sampling, pixels stop at RMS relative error E, as render --noise-threshold)")->capture_default_str();
+    command->add_option("--configs", text.configs, "INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise[=ALGORITHM]][/adaptive=E], comma-separated (clamp: biased firefly control, as --clamp; denoise: measure the denoised image, as --denoise, its time included, denoise=regression with --denoise-algorithm regression; both biased; adaptive: adaptive sampling, pixels stop at RMS relative error E, as render --noise-threshold)")->capture_default_str();
     command->add_option("--time-budget", converge.timeBudgetSeconds, "seconds of rendering per configuration")
         ->check(kFiniteNumber)->check(CLI::Range(0.01, 86400.0))->capture_default_str();
     command->add_option("--max-spp", converge.maxSpp, "stop at this many samples per pixel")

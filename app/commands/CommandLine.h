@@ -90,6 +90,7 @@ struct ConvergeConfig {
     int maxDepth = 8;
     std::optional<float> radianceClamp; // "/clamp=VALUE" after the depth: biased firefly control
     bool denoise = false;               // "/denoise" after the depth: measure the denoised image (biased)
+    DenoiseAlgorithm denoiseAlgorithm = DenoiseAlgorithm::Atrous; // "/denoise=NAME": with that filter
     std::optional<float> adaptiveThreshold; // "/adaptive=E": adaptive sampling, pixels stop at RMS relative error E
 };
 

@@ -54,7 +54,9 @@ std::string configName(const ConvergeConfig& config) {
         std::snprintf(value, sizeof value, "%g", static_cast<double>(*config.radianceClamp));
         name += std::string("/clamp=") + value;
     }
-    if (config.denoise) name += "/denoise";
+    if (config.denoise)
+        name += config.denoiseAlgorithm == DenoiseAlgorithm::Atrous ? std::string("/denoise")
+                                                                    : "/denoise=" + std::string(denoiseAlgorithmName(config.denoiseAlgorithm));
     if (config.adaptiveThreshold) {
         char value[32];
         std::snprintf(value, sizeof value, "%g", static_cast<double>(*config.adaptiveThreshold));
@@ -101,6 +103,7 @@ ConfigResult converge(PathTracer& tracer, const ConvergeConfig& config, const Co
     tracer.setSettings(settings);
     DenoiseSettings denoise;
     denoise.enabled = config.denoise;
+    denoise.algorithm = config.denoiseAlgorithm;
     tracer.setDenoise(denoise);
     if (config.denoise) {
         // Compiles the feature and filter programs; not timed, not kept. Twice: on llvmpipe the
@@ -314,7 +317,8 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
                                           parts[2].size() <= 4 ? parts[2] : std::string();
         ConvergeConfig config;
         // After the depth, each at most once and in either order: "clamp=VALUE" (a positive finite
-        // decimal, all of the part) and "denoise" (the word alone: no "denoise=...").
+        // decimal, all of the part) and "denoise" or "denoise=NAME" (a filter of DenoiseAlgorithm.h;
+        // the word alone is the à-trous one).
         for (std::size_t i = 3; i < parts.size(); ++i) {
             const std::string& part = parts[i];
             const std::string prefix = "clamp=";
@@ -328,8 +332,18 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
                     return std::nullopt;
                 }
                 config.radianceClamp = static_cast<float>(clamp);
-            } else if (part == "denoise" && !config.denoise) {
+            } else if ((part == "denoise" || part.rfind("denoise=", 0) == 0) && !config.denoise) {
                 config.denoise = true;
+                if (part != "denoise") {
+                    const std::string name = part.substr(std::string("denoise=").size());
+                    std::optional<DenoiseAlgorithm> algorithm = denoiseAlgorithmNames().parse(name);
+                    if (!algorithm) {
+                        error = "bad configuration \"" + item + "\": unknown denoise algorithm \"" + name + "\" (valid: " +
+                                denoiseAlgorithmNames().nameList() + "), e.g. full/sobol/8/denoise=regression";
+                        return std::nullopt;
+                    }
+                    config.denoiseAlgorithm = *algorithm;
+                }
             } else if (part.rfind("adaptive=", 0) == 0 && !config.adaptiveThreshold) {
                 const std::string value = part.substr(std::string("adaptive=").size());
                 char* valueEnd = nullptr;
@@ -342,7 +356,7 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
                 }
                 config.adaptiveThreshold = static_cast<float>(threshold);
             } else {
-                error = "bad configuration \"" + item + "\": after the depth only /clamp=VALUE, /denoise and /adaptive=E may "
+                error = "bad configuration \"" + item + "\": after the depth only /clamp=VALUE, /denoise[=ALGORITHM] and /adaptive=E may "
                         "follow, each once, e.g. full/sobol/8/clamp=10 or full/sobol/8/adaptive=0.05";
                 return std::nullopt;
             }
@@ -353,7 +367,7 @@ std::optional<std::vector<ConvergeConfig>> parseConvergeConfigs(const std::strin
         char* end = nullptr;
         long maxDepth = depth.empty() ? -1 : std::strtol(depth.c_str(), &end, 10);
         if (!knownIntegrator || !mode || depth.empty() || *end != '\0' || maxDepth < 0 || maxDepth > 1024) {
-            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise][/adaptive=E], e.g. mis/sobol/8";
+            error = "bad configuration \"" + item + "\": expected INTEGRATOR/SAMPLER/DEPTH[/clamp=VALUE][/denoise[=ALGORITHM]][/adaptive=E], e.g. mis/sobol/8";
             return std::nullopt;
         }
         if (config.adaptiveThreshold && *mode == SamplerMode::Grid) {

@@ -279,11 +279,15 @@ int runRenderCommand(const RenderOptions& requested) {
                      samplerModeName(options.settings.sampler), integratorName(options.settings.integrator),
                      seconds, samples / seconds * 1e-6, backendName(tracer.backend()), nonFinite,
                      context.description().c_str());
-        if (options.denoise.enabled)
-            std::fprintf(stderr, "ptview: denoised (biased: docs/denoising.md) in %.3f s: %d iterations, strength %g, features of %d spp%s\n",
-                         denoiseSeconds, options.denoise.iterations, static_cast<double>(options.denoise.strength),
+        if (options.denoise.enabled) {
+            const std::string filter = options.denoise.algorithm == DenoiseAlgorithm::Atrous
+                                           ? "a-trous, " + std::to_string(options.denoise.iterations) + " iterations"
+                                           : std::string(denoiseAlgorithmName(options.denoise.algorithm));
+            std::fprintf(stderr, "ptview: denoised (biased: docs/denoising.md) in %.3f s: %s, strength %g, features of %d spp%s\n",
+                         denoiseSeconds, filter.c_str(), static_cast<double>(options.denoise.strength),
                          std::min(samplesPerPixel, Denoiser::kMaxFeatureSamples),
                          format == OutputFormat::Exr ? "; the raw mean is the EXR's raw. layer" : "");
+        }
         const std::string textures = tracer.gpuScene().textures().describe();
         if (!textures.empty()) printMessage("textures: " + textures);
     } catch (const EnvironmentMapError& e) { // too large for this GPU

@@ -3,6 +3,7 @@
 #include <ptview/model/DetachableSection.h>
 #include <ptview/model/EditDistance.h>
 #include <ptview/io/InputFile.h>
+#include <ptview/settings/DenoiseAlgorithm.h>
 #include <ptview/settings/Integrator.h>
 #include <ptview/settings/LightPaths.h>
 #include <ptview/scene/MaterialSchema.h>
@@ -128,6 +129,7 @@ std::vector<std::string> integratorChoices() { return integratorNames().names();
 std::vector<std::string> samplerChoices() { return samplerModeNames().names(); }
 std::vector<std::string> lightPathsChoices() { return lightPathsNames().names(); }
 std::vector<std::string> toneMapperChoices() { return toneMapperNames().names(); }
+std::vector<std::string> denoiseAlgorithmChoices() { return denoiseAlgorithmNames().names(); }
 std::vector<std::string> displayTransferChoices() { return displayTransferNames().names(); }
 std::vector<std::string> materialTypeChoices() {
     std::vector<std::string> names;
@@ -253,6 +255,8 @@ const std::vector<CommandSpec>& commandSpecs() {
          "standard deviations of noise the denoiser smooths over (larger: smoother, more biased)"},
         {"denoise-iterations", {settingArg("N", settingRanges::kDenoiseIterations)}, nullptr,
          "a-trous iterations of the denoiser (each doubles its reach)"},
+        {"denoise-algorithm", {choiceArg("NAME", "denoise algorithm", denoiseAlgorithmChoices)}, nullptr,
+         "the denoiser's filter (atrous: fast; regression: slower, for final renders)"},
         // Scene edits
         {"set-material", {}, &materialFields(), "edit a field of the material named NAME (split at the last dot)"},
         {"set-light", {}, &lightFields(), "edit a field of the light named NAME (split at the last dot)"},

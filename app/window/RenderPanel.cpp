@@ -52,8 +52,8 @@ void clampControls(RenderSettings& settings) {
 // The denoiser's controls (docs/denoising.md): none of them restarts the accumulation.
 void denoiseControls(ViewerModel& model) {
     ImGui::Checkbox("Denoise (N)", &model.denoise.enabled);
-    itemTooltip("show a denoised copy of the render: an edge-avoiding a-trous filter guided by albedo, normal,\n"
-                "depth and each pixel's variance. BIASED: it borrows light from neighbours, so fine detail and\n"
+    itemTooltip("show a denoised copy of the render: a filter (a-trous; or, slower, regression) guided by albedo,\n"
+                "normal, depth and each pixel's variance. BIASED: it borrows light from neighbours, so fine detail and\n"
                 "soft shadows blur; the bias falls as the noise does. The samples still accumulate raw underneath\n"
                 "(Stats' errors are of the raw image). Filtered in bands of rows over a few frames (docs/viewer.md)");
     if (model.settings.debugView != DebugView::Radiance) noteText("the debug view is shown raw: it has no noise to take out");
@@ -64,8 +64,11 @@ void denoiseControls(ViewerModel& model) {
     ImGui::SliderFloat("strength", &model.denoise.strength, static_cast<float>(strength.panelLo),
                        static_cast<float>(strength.panelHi), "%.3g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     itemTooltip(strength.description);
-    settingSlider("iterations", model.denoise.iterations, settingRanges::kDenoiseIterations);
-    itemTooltip(settingRanges::kDenoiseIterations.description);
+    enumCombo("filter", denoiseAlgorithmNames(), model.denoise.algorithm); // its tooltip: the entry's description
+    if (model.denoise.algorithm == DenoiseAlgorithm::Atrous) {
+        settingSlider("iterations", model.denoise.iterations, settingRanges::kDenoiseIterations);
+        itemTooltip(settingRanges::kDenoiseIterations.description);
+    }
     noteText("biased: it borrows light from neighbours; the bias falls as the noise does");
 }
 

@@ -563,6 +563,7 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         {"denoise", [](Step& s) { s.model.denoise.enabled = s.command.isWord(0, "on"); }},
         {"denoise-strength", [](Step& s) { s.model.denoise.strength = s.command.number(0); }},
         {"denoise-iterations", [](Step& s) { s.model.denoise.iterations = s.command.integer(0); }},
+        {"denoise-algorithm", [](Step& s) { s.model.denoise.algorithm = *denoiseAlgorithmNames().parse(s.word); }},
         // ---- scene edits
         {"set-material", setMaterial},
         {"set-light", setLight},

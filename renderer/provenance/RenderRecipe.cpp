@@ -131,6 +131,8 @@ const std::vector<RecipeField>& recipeFields() {
         stringField("ocio_view", [](RenderRecipe& r) -> auto& { return r.ocio.view; }),
         boolField("highlight_non_finite", [](RenderRecipe& r) -> auto& { return r.display.highlightNonFinite; }),
         boolField("denoise", [](RenderRecipe& r) -> auto& { return r.denoise.enabled; }),
+        // Files from before there was a choice were denoised by the à-trous filter, the table's first.
+        enumField("denoise_algorithm", denoiseAlgorithmNames, [](RenderRecipe& r) -> auto& { return r.denoise.algorithm; }),
         numberField("denoise_iterations", settingRanges::kDenoiseIterations, [](RenderRecipe& r) -> auto& { return r.denoise.iterations; }),
         numberField("denoise_strength", settingRanges::kDenoiseStrength, [](RenderRecipe& r) -> auto& { return r.denoise.strength; }),
         optionalNumberField("noise_threshold", settingRanges::kNoiseThreshold, [](RenderRecipe& r) -> auto& { return r.noiseThreshold; }),

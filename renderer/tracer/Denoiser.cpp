@@ -22,6 +22,9 @@ constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2;
 // a little better still, but leaves less of a crease between surfaces 40 degrees apart).
 constexpr float kSigmaNormal = 16.0f;
 constexpr float kSigmaDepth = 1.0f; // in units of the depth's change per pixel, as SVGF
+// The regression filter's non-local-means bandwidth k per unit of --denoise-strength: its default
+// strength, 4, gives k = 1 (docs/denoising.md has the measurements).
+constexpr float kRegressionBandwidthPerStrength = 0.25f;
 
 // A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...
 GlFramebuffer createFramebufferOf(std::initializer_list<GLuint> textures) {
@@ -64,6 +67,10 @@ Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     atrous_ = buildFilterProgram(shaderDir_, "denoise_atrous.frag");
     atrous_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     atrous_->bindSamplerUnit("uGuide", kGuideUnit);
+    regression_ = buildFilterProgram(shaderDir_, "denoise_regression.frag");
+    regression_->bindSamplerUnit("uIllumination", kIlluminationUnit);
+    regression_->bindSamplerUnit("uGuide", kGuideUnit);
+    regression_->bindSamplerUnit("uAlbedo", kAlbedoUnit);
     compose_ = buildFilterProgram(shaderDir_, "denoise_compose.frag");
     compose_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     compose_->bindSamplerUnit("uAlbedo", kAlbedoUnit);
@@ -166,7 +173,10 @@ bool Denoiser::advance(PathTracer& tracer, int rows) {
             if (cycle_.nextRow == 0) cycle_.samples = tracer.sampleCount();
             drawPrepareRows(tracer, cycle_.nextRow, rowEnd);
         } else if (step < cycle_.stepCount() - 1) {
-            drawAtrousRows(step - cycle_.featurePasses - 1, cycle_.nextRow, rowEnd);
+            if (cycle_.settings.algorithm == DenoiseAlgorithm::Regression)
+                drawRegressionRows(cycle_.nextRow, rowEnd);
+            else
+                drawAtrousRows(step - cycle_.featurePasses - 1, cycle_.nextRow, rowEnd);
         } else {
             drawComposeRows(cycle_.nextRow, rowEnd);
         }
@@ -230,9 +240,23 @@ void Denoiser::drawAtrousRows(int iteration, int rowBegin, int rowEnd) {
     drawRows(rowBegin, rowEnd);
 }
 
+// Reads illumination_[0] (the prepare pass's) and writes [1].
+void Denoiser::drawRegressionRows(int rowBegin, int rowEnd) {
+    glUseProgram(regression_->id());
+    glUniform1f(regression_->uniformLocation("uBandwidth"), kRegressionBandwidthPerStrength * cycle_.settings.strength);
+    glUniform1f(regression_->uniformLocation("uSigmaNormal"), kSigmaNormal);
+    glUniform1f(regression_->uniformLocation("uSigmaDepth"), kSigmaDepth);
+    bindTexture(kIlluminationUnit, illumination_[0].id());
+    bindTexture(kGuideUnit, guide_.id());
+    bindTexture(kAlbedoUnit, albedo_.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[1].id());
+    drawRows(rowBegin, rowEnd);
+}
+
 void Denoiser::drawComposeRows(int rowBegin, int rowEnd) {
     glUseProgram(compose_->id());
-    bindTexture(kIlluminationUnit, illumination_[cycle_.settings.iterations % 2].id());
+    bindTexture(kIlluminationUnit, illumination_[filteredIllumination()].id());
     bindTexture(kAlbedoUnit, albedo_.id());
     glActiveTexture(GL_TEXTURE0);
     glBindFramebuffer(GL_FRAMEBUFFER, resultFramebuffer_[1 - shownResult_].id());

@@ -1,7 +1,8 @@
 #pragma once
 // The denoiser (docs/denoising.md): an edge-avoiding à-trous wavelet filter guided by each
-// pixel's variance (Dammertz et al. 2010; Schied et al. 2017, SVGF, its spatial part) over the
-// demodulated running mean, steered by features of the first non-delta surface (albedo, normal,
+// pixel's variance (Dammertz et al. 2010; Schied et al. 2017, SVGF, its spatial part), or for
+// final renders a first-order regression on the features (after NFOR, Bitterli et al. 2016),
+// over the demodulated running mean, steered by features of the first non-delta surface (albedo, normal,
 // depth) that it traces itself along the path tracer's own camera rays. It reads the
 // accumulation and writes a separate image; the accumulation and the path-tracing program are
 // untouched. Fragment passes in OpenGL 4.1, whichever backend traced the samples.
@@ -59,6 +60,11 @@ public:
 
     static constexpr int kMaxFeatureSamples = 64;
 
+    // The passes between prepare and compose: the à-trous iterations, or the one regression pass.
+    static int filterPassCount(const DenoiseSettings& settings) {
+        return settings.algorithm == DenoiseAlgorithm::Regression ? 1 : settings.iterations;
+    }
+
 private:
     struct FeatureTarget {
         GlFramebuffer framebuffer;
@@ -74,14 +80,17 @@ private:
         int step = 0;
         int nextRow = 0;
         int samples = 0;        // of the radiance, as the prepare pass began
-        int stepCount() const { return featurePasses + 2 + settings.iterations; }
+        int stepCount() const { return featurePasses + 2 + filterPassCount(settings); }
     };
+    // The illumination texture the last filter pass wrote (the prepare pass writes [0]).
+    int filteredIllumination() const { return filterPassCount(cycle_.settings) % 2; }
     void resize(glm::ivec2 size);
     void prepareFeatureProgram(PathTracer& tracer);
     // Row bands [rowBegin, rowEnd) of one pass.
     void drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawAtrousRows(int iteration, int rowBegin, int rowEnd);
+    void drawRegressionRows(int rowBegin, int rowEnd);
     void drawComposeRows(int rowBegin, int rowEnd);
     void drawRows(int rowBegin, int rowEnd) const;
     void finishStep(PathTracer& tracer);
@@ -91,7 +100,7 @@ private:
     std::unique_ptr<GlProgram> featureProgram_;
     ShaderFeatures featureProgramFeatures_;
     SamplerMode featureProgramSampler_ = SamplerMode::Random;
-    std::unique_ptr<GlProgram> prepare_, atrous_, compose_;
+    std::unique_ptr<GlProgram> prepare_, atrous_, regression_, compose_;
     GlVertexArray emptyVertexArray_;
 
     glm::ivec2 size_{0, 0};

@@ -486,7 +486,7 @@ bool PathTracer::denoiseInProgressIsCurrent() const {
 int PathTracer::denoiseRowsLeft() const {
     if (!denoiseSettings_.enabled || denoisedUpToDate()) return 0;
     if (denoiseInProgressIsCurrent()) return denoiser_->rowsLeft();
-    return accumulator_.size().y * (denoiseSettings_.iterations + 3); // about a new denoise's, features aside
+    return accumulator_.size().y * (Denoiser::filterPassCount(denoiseSettings_) + 3); // about a new denoise's, features aside
 }
 
 bool PathTracer::hasDenoised() const {
