@@ -2,13 +2,15 @@
 // its shading normal (mapped from [-1, 1] to [0, 1]) or its albedo (the material's colour; an
 // emitter's radiance scaled to at most 1), or its distance from the ray's origin on the lens (in
 // all three channels; metres, as the scene's units). Nothing hit: black (0, also for depth).
+// Media's null boundaries are no surface: the views see through a fog box as through air.
 #include "intersect.glsl"
+#include "media.glsl"
 // kDebugViewRadiance, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
 vec3 debugViewValue(Ray ray, uint view) {
     Hit hit;
-    if (!intersectScene(ray, hit)) return vec3(0.0);
+    if (!intersectSurface(ray, hit)) return vec3(0.0);
     if (view == kDebugViewNormals) return 0.5 * hit.normalShading + 0.5;
     if (view == kDebugViewDepth) return vec3(hit.t); // the ray's direction is unit length
     Material material = fetchMaterial(hit.material);

@@ -6,13 +6,15 @@
 // of what it reflects, so the filter keeps the reflected edges). Its albedo (the material's
 // colour, textures included, times the tint of the delta bounces before it), shading normal, and
 // distance along the chain. Added to the previous sums (uPrev*, frame 0 starts afresh), as the
-// radiance is. Specialized like the path-tracing program of the scene.
+// radiance is. Media's null boundaries are no surface: the features are those of what lies behind a
+// fog box's faces. Specialized like the path-tracing program of the scene.
 #include "frame_uniforms.glsl"
 #include "camera.glsl"
 #include "intersect.glsl"
 #include "bsdf.glsl"
 #include "shading_frame.glsl"
 #include "microfacet.glsl"
+#include "media.glsl"
 
 uniform sampler2D uPrevAlbedoDepth;
 uniform sampler2D uPrevNormal;
@@ -42,7 +44,7 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
     distance = 0.0;
     for (int bounce = 0; bounce <= kMaxDeltaBounces; ++bounce) {
         Hit hit;
-        if (!intersectScene(ray, hit)) {
+        if (!intersectSurface(ray, hit)) {
             // The environment: nothing to demodulate (albedo 1), no surface to compare normals with.
             albedo = tint;
             normal = vec3(0.0);

@@ -74,7 +74,7 @@ vec3 estimateDirectLighting(Material material, ShadingFrame frame, Hit hit, vec3
     } else {
         blocked = occluded(shadowRay, ls.distance, light);
     }
-    recordShadowRay(bounce, blocked);
+    recordShadowRay(bounce, blocked, transmittance);
     if (blocked) return vec3(0.0);
     float pdfLight = selection * ls.pdfSolidAngle;
     // A delta light has no density to weigh against: only light sampling can find it.
@@ -91,10 +91,11 @@ vec3 estimateMediumDirectLighting(MediumVertex vertex, vec3 directionIn, MediumS
     int light = chooseLight(samplerGet1D(sampler, lightChoiceDimension(bounce)));
     float selection = lightSelectionProbability(light);
     LightSample ls = sampleLight(light, vertex.posWorld, samplerGet2D(sampler, lightPositionDimension(bounce)));
+    recordMediumLightSample(bounce, light, selection, ls, vertex, directionIn);
     if (ls.pdfSolidAngle <= 0.0 || selection <= 0.0 || all(equal(ls.radiance, vec3(0.0)))) return vec3(0.0);
     vec3 transmittance = shadowTransmittance(Ray(vertex.posWorld, ls.wi), ls.distance, light, media);
     bool blocked = all(equal(transmittance, vec3(0.0)));
-    recordShadowRay(bounce, blocked);
+    recordShadowRay(bounce, blocked, transmittance);
     if (blocked) return vec3(0.0);
     float phase = henyeyGreensteinPdf(dot(directionIn, ls.wi), vertex.medium.g);
     float pdfLight = selection * ls.pdfSolidAngle;
@@ -230,11 +231,15 @@ bool survivesRoulette(inout PathState path, Sampler sampler, int bounce) {
 // bounce like a surface's: it counts towards uMaxDepth, roulette and the light-path filters.
 bool scatterInMedium(inout PathState path, MediumVertex vertex, Sampler sampler) {
     int bounce = path.bounce;
+    recordMediumScattering(bounce, vertex, path.media, path.ray, path.throughput);
     if (bounce >= lastBounce()) return false;
-    if (samplesLights())
-        path.radiance += clampContribution(path.throughput * estimateMediumDirectLighting(vertex, path.ray.direction, path.media,
-                                                                                          sampler, bounce, weighsByMis())) *
-                         lightPathWeight(bounce + 1, path.history, false);
+    if (samplesLights()) {
+        vec3 added = clampContribution(path.throughput * estimateMediumDirectLighting(vertex, path.ray.direction, path.media,
+                                                                                      sampler, bounce, weighsByMis())) *
+                     lightPathWeight(bounce + 1, path.history, false);
+        recordDirectLighting(bounce, added);
+        path.radiance += added;
+    }
     if (!samplesBsdf()) return false;
     // g > 0 scatters forward: the phase function's z is the direction the light travelled.
     vec3 wiLocal = sampleHenyeyGreenstein(samplerGet2D(sampler, bsdfDimension(bounce)), vertex.medium.g);
@@ -243,6 +248,7 @@ bool scatterInMedium(inout PathState path, MediumVertex vertex, Sampler sampler)
     path.previousDelta = false;
     recordScattering(path.history, false);
     path.ray = Ray(vertex.posWorld, normalize(toWorld(makeShadingFrame(path.ray.direction), wiLocal)));
+    recordPhaseSample(bounce, path.ray.direction, path.previousPdf);
     path.bounce = bounce + 1;
     if (playsRoulette(bounce) && !survivesRoulette(path, sampler, bounce)) return false;
     recordThroughput(bounce, path.throughput);
@@ -253,9 +259,11 @@ bool scatterInMedium(inout PathState path, MediumVertex vertex, Sampler sampler)
 // between a surface and a point in a medium (which scatterInMedium handles); else the nearest
 // surface.
 int findNextVertex(inout PathState path, Sampler sampler, out Hit hit, out MediumVertex scattering) {
-    if (mediaInScene())
+    if (mediaInScene()) {
+        recordSegmentStart(path.media);
         return flyToNextVertex(path.ray, path.media, path.throughput, samplerGet2D(sampler, freeFlightDimension(path.bounce)),
                                hit, scattering);
+    }
     scattering = MediumVertex(vec3(0.0), Medium(vec3(0.0), vec3(0.0), 0.0));
     return intersectScene(path.ray, hit) ? kFlightSurface : kFlightEscaped;
 }

@@ -219,3 +219,25 @@ bool intersectSurface(Ray ray, out Hit hit) {
     }
     return false;
 }
+
+// The null boundaries a ray crosses before the nearest other surface (the pixel inspector names the
+// media a camera ray passes): how many, and of the first four, nearest first, their materials and
+// distances along the ray (-1 past the last).
+int nullBoundariesBefore(Ray ray, out ivec4 materials, out vec4 distances) {
+    materials = ivec4(-1);
+    distances = vec4(-1.0);
+    if (!mediaInScene()) return 0;
+    vec3 origin = ray.origin;
+    int count = 0;
+    for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
+        Hit hit;
+        if (!intersectScene(ray, hit) || !isNullBoundary(hit.material)) break;
+        if (count < 4) {
+            materials[count] = hit.material;
+            distances[count] = distance(origin, ray.origin + hit.t * ray.direction);
+        }
+        ++count;
+        ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction); // on past it as flyToNextVertex goes
+    }
+    return count;
+}

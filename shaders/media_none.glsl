@@ -39,3 +39,9 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
 }
 
 bool intersectSurface(Ray ray, out Hit hit) { return intersectScene(ray, hit); }
+
+int nullBoundariesBefore(Ray ray, out ivec4 materials, out vec4 distances) {
+    materials = ivec4(-1);
+    distances = vec4(-1.0);
+    return 0;
+}

@@ -7,9 +7,12 @@
 // sum added are the render's. Only the recording program includes this file; path_recorder_none.glsl takes
 // its place in every other.
 //
-// The record of a vertex is 12 vec4 (kRecordFields), the layout renderer/tracer/PathRecorder.cpp reads:
+// The record of a vertex is 14 vec4 (kRecordFields), the layout renderer/tracer/PathRecorder.cpp reads.
+// At a point where a medium scattered the path (kVertexMedium), the phase function stands for the
+// BSDF: its sample is the "BSDF sample", its density the "bsdfPdf".
 //   0  position (an escaped vertex: the direction it left in), flags (kVertex* bits)
-//   1  geometric normal, material index (-1: none)
+//   1  geometric normal (a medium's point: the medium's sigma_t = sigma_a + sigma_s, per metre),
+//      material index (-1: none; a medium's point: the medium's material)
 //   2  shading normal, light index of the surface hit (-1: none)
 //   3  throughput arriving here, solid-angle pdf of the BSDF sample taken here
 //   4  throughput leaving (after the sample's weight and roulette; 0 where the path ends),
@@ -25,7 +28,10 @@
 //      direction that found it (selection x lightPdf, from the previous vertex; 0: not a light)
 //  10  emitted radiance found here, pdf of the BSDF sample that found it (0 for the camera ray)
 //  11  the path's radiance (what estimateRadiance returned), distance to the first surface the
-//      shadow ray's line meets (where a blocked one stops; -1: none)
+//      shadow ray's line meets, null boundaries aside (where a blocked one stops; -1: none)
+//  12  transmittance of the segment that reached this vertex (1 without media), a medium's
+//      Henyey-Greenstein asymmetry g
+//  13  transmittance of the light sample's shadow ray (1 without media), unused
 // kRecordFields and the kVertex* flags: generated from renderer/tracer/RecordedPath.h.
 #include "recorded_path.glsl"
 
@@ -34,6 +40,7 @@ vec4 gRecord[kRecordFields];    // what the hooks reported for it
 uint gFlags;
 vec3 gPreviousPos;              // where the ray being traced started (unpushed), for its light pdf
 float gPreviousBsdfPdf;         // density of the BSDF sample that made it (0: the camera ray)
+MediumStack gSegmentMedia;      // the media the ray being traced started in
 
 void startRecording(int vertex, Ray cameraRay) {
     gRecordVertex = vertex;
@@ -41,9 +48,12 @@ void startRecording(int vertex, Ray cameraRay) {
     gRecord[1].w = -1.0;
     gRecord[2].w = -1.0;
     gRecord[6].w = -1.0;
+    gRecord[12].xyz = vec3(1.0);
+    gRecord[13].xyz = vec3(1.0);
     gFlags = 0u;
     gPreviousPos = cameraRay.origin;
     gPreviousBsdfPdf = 0.0;
+    gSegmentMedia = cameraMediumStack();
     if (vertex == 0) {
         gFlags = kVertexExists | kVertexCamera | kVertexContinued;
         gRecord[0].xyz = cameraRay.origin;
@@ -61,12 +71,24 @@ float recordedLightPdf(int light, vec3 pos, vec3 wi, float t, vec3 n) {
     return light < 0 ? 0.0 : lightSelectionProbability(light) * lightPdf(light, pos, wi, t, n);
 }
 
+// What the media keep of the light along the segment the path just flew, from ray.origin to the
+// point `distance` along ray (kInfinity: it escaped), through the media it started in: a shadow
+// ray's transmittance, stopped a hair short of a surface at the end, which would block it.
+vec3 recordedSegmentTransmittance(Ray ray, float distance, bool endsOnSurface) {
+    if (!mediaInScene()) return vec3(1.0);
+    return shadowTransmittance(ray, endsOnSurface ? distance * (1.0 - 1e-5) : distance, -1, gSegmentMedia);
+}
+
+// A ray is about to fly from a vertex through `media` (in scenes with media).
+void recordSegmentStart(MediumStack media) { gSegmentMedia = media; }
+
 void recordSurface(int bounce, bool found, Hit hit, Ray ray, vec3 throughput) {
     if (isRecorded(bounce)) {
         gFlags |= kVertexExists | (found ? kVertexSurface : 0u);
         gRecord[0].xyz = found ? hit.posWorld : ray.direction;
         gRecord[3].xyz = throughput;
         gRecord[10].w = gPreviousBsdfPdf;
+        gRecord[12].xyz = recordedSegmentTransmittance(ray, found ? hit.t : kInfinity, found);
         if (found) {
             gRecord[1] = vec4(hit.normalGeom, float(hit.material));
             gRecord[2] = vec4(hit.normalShading, float(hit.light));
@@ -90,30 +112,42 @@ void recordEmission(int bounce, vec3 added) {
     if (isRecorded(bounce)) gRecord[9].xyz = added;
 }
 
-void recordLightSample(int bounce, int light, float selection, LightSample ls, Material material, ShadingFrame frame,
-                       vec3 woLocal, Hit hit) {
-    if (!isRecorded(bounce)) return;
+// A light sample drawn from posWorld, the shadow ray's line being shadowLine; scatteringPdf is the
+// density of the sample's direction for the BSDF (or phase function) there.
+void recordLightSampleFrom(vec3 posWorld, Ray shadowLine, int light, float selection, LightSample ls, float scatteringPdf) {
     bool atInfinity = ls.distance >= kInfinity;
     if (ls.pdfSolidAngle > 0.0 && selection > 0.0 && any(greaterThan(ls.radiance, vec3(0.0)))) gFlags |= kVertexLightSampled;
     if (ls.isDelta) gFlags |= kVertexLightDelta;
     if (atInfinity) gFlags |= kVertexLightAtInfinity;
-    gRecord[6] = vec4(atInfinity ? ls.wi : hit.posWorld + ls.distance * ls.wi, float(light));
+    gRecord[6] = vec4(atInfinity ? ls.wi : posWorld + ls.distance * ls.wi, float(light));
     gRecord[7].x = selection * ls.pdfSolidAngle;
-    gRecord[7].y = bsdfPdf(material, woLocal, toLocal(frame, ls.wi));
+    gRecord[7].y = scatteringPdf;
     // The density BSDF-found emission would be weighed with, from the light's own surface as the
     // shadow ray's direction meets it: equal to the sample's pdf when the two strategies agree.
+    // Media's null boundaries let the ray through, so they neither block nor emit.
     Hit first;
-    bool hitSomething = intersectScene(spawnRay(hit.posWorld, hit.normalGeom, ls.wi), first);
+    bool hitSomething = intersectSurface(shadowLine, first);
     gRecord[11].w = hitSomething ? first.t : -1.0;
     float evaluated = -1.0;
     if (ls.isDelta) evaluated = 0.0;
-    else if (atInfinity) evaluated = recordedLightPdf(light, hit.posWorld, ls.wi, kInfinity, vec3(0.0));
-    else if (hitSomething && first.light == light) evaluated = recordedLightPdf(light, hit.posWorld, ls.wi, first.t, first.normalGeom);
+    else if (atInfinity) evaluated = recordedLightPdf(light, posWorld, ls.wi, kInfinity, vec3(0.0));
+    else if (hitSomething && first.light == light) evaluated = recordedLightPdf(light, posWorld, ls.wi, first.t, first.normalGeom);
     gRecord[7].w = evaluated;
 }
 
-void recordShadowRay(int bounce, bool blocked) {
-    if (isRecorded(bounce)) gFlags |= kVertexShadowTraced | (blocked ? kVertexShadowBlocked : 0u);
+void recordLightSample(int bounce, int light, float selection, LightSample ls, Material material, ShadingFrame frame,
+                       vec3 woLocal, Hit hit) {
+    if (isRecorded(bounce))
+        recordLightSampleFrom(hit.posWorld, spawnRay(hit.posWorld, hit.normalGeom, ls.wi), light, selection, ls,
+                              bsdfPdf(material, woLocal, toLocal(frame, ls.wi)));
+}
+
+// transmittance: what media leave of the light along the shadow ray (1 without).
+void recordShadowRay(int bounce, bool blocked, vec3 transmittance) {
+    if (isRecorded(bounce)) {
+        gFlags |= kVertexShadowTraced | (blocked ? kVertexShadowBlocked : 0u);
+        gRecord[13].xyz = transmittance;
+    }
 }
 
 void recordLightWeight(int bounce, float misWeight) {
@@ -147,4 +181,38 @@ void recordThroughput(int bounce, vec3 throughput) {
         gFlags |= kVertexContinued;
         gRecord[4].xyz = throughput;
     }
+}
+
+// ---- Where a medium scattered the path (shaders/integrator.glsl, scatterInMedium) -------------
+
+// The path reached vertex.posWorld along ray, in `media` (innermost last: the one that scattered).
+void recordMediumScattering(int bounce, MediumVertex vertex, MediumStack media, Ray ray, vec3 throughput) {
+    if (isRecorded(bounce)) {
+        gFlags |= kVertexExists | kVertexMedium;
+        gRecord[0].xyz = vertex.posWorld;
+        gRecord[1] = vec4(vertex.medium.sigmaA + vertex.medium.sigmaS, float(media.materials[media.depth - 1]));
+        gRecord[3].xyz = throughput;
+        gRecord[10].w = gPreviousBsdfPdf;
+        gRecord[12] = vec4(recordedSegmentTransmittance(ray, distance(ray.origin, vertex.posWorld), false), vertex.medium.g);
+    }
+    gPreviousPos = vertex.posWorld;
+}
+
+// directionIn: the direction the path arrived in (the phase function's is measured from it).
+void recordMediumLightSample(int bounce, int light, float selection, LightSample ls, MediumVertex vertex,
+                             vec3 directionIn) {
+    if (isRecorded(bounce))
+        recordLightSampleFrom(vertex.posWorld, Ray(vertex.posWorld, ls.wi), light, selection, ls,
+                              henyeyGreensteinPdf(dot(directionIn, ls.wi), vertex.medium.g));
+}
+
+// The phase function's sample: its direction and solid-angle density (its weight is 1).
+void recordPhaseSample(int bounce, vec3 wiWorld, float pdf) {
+    if (isRecorded(bounce)) {
+        if (pdf > 0.0) gFlags |= kVertexBsdfSampled;
+        gRecord[3].w = pdf;
+        gRecord[4].w = pdf;
+        gRecord[5].xyz = wiWorld;
+    }
+    gPreviousBsdfPdf = pdf;
 }

@@ -6,9 +6,14 @@ void recordEmissionWeight(int bounce, float misWeight, vec3 emitted) {}
 void recordEmission(int bounce, vec3 added) {}
 void recordLightSample(int bounce, int light, float selection, LightSample ls, Material material, ShadingFrame frame,
                        vec3 woLocal, Hit hit) {}
-void recordShadowRay(int bounce, bool blocked) {}
+void recordShadowRay(int bounce, bool blocked, vec3 transmittance) {}
 void recordLightWeight(int bounce, float misWeight) {}
 void recordDirectLighting(int bounce, vec3 added) {}
 void recordBsdfSample(int bounce, BsdfSample bs, Material material, ShadingFrame frame, vec3 woLocal) {}
 void recordRoulette(int bounce, float survival, bool ended) {}
 void recordThroughput(int bounce, vec3 throughput) {}
+void recordSegmentStart(MediumStack media) {}
+void recordMediumScattering(int bounce, MediumVertex vertex, MediumStack media, Ray ray, vec3 throughput) {}
+void recordMediumLightSample(int bounce, int light, float selection, LightSample ls, MediumVertex vertex,
+                             vec3 directionIn) {}
+void recordPhaseSample(int bounce, vec3 wiWorld, float pdf) {}

@@ -1,7 +1,8 @@
 // The light-path explorer (renderer/settings/LightPaths.h) on the real GLSL: its views split the
 // image into parts that add up to it, sample for sample (the paths traced are the same, only
-// what is added changes), caustics need mirrors or glass, and a program that shows all the light
-// carries none of the explorer's code.
+// what is added changes), caustics need mirrors or glass, a medium's scattering is a bounce, and a
+// program that shows all the light carries none of the explorer's code.
+#include "FoggyCornell.h"
 #include "GlTestContext.h"
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/scene/SceneLoader.h>
@@ -16,7 +17,10 @@ namespace {
 constexpr glm::ivec2 kSize{32, 32};
 constexpr int kSpp = 4;
 
-Scene scene(const char* name) { return loadScene(std::string(PTVIEW_ASSETS_DIR "/scenes/") + name + ".json"); }
+Scene scene(const char* name) {
+    if (std::string(name) == "foggy_cornell") return parseScene(testing::foggyCornellJson(), testing::kFoggyCornellName);
+    return loadScene(std::string(PTVIEW_ASSETS_DIR "/scenes/") + name + ".json");
+}
 
 RenderSettings settingsFor(Integrator integrator, LightPaths paths, int bounces = 1) {
     RenderSettings settings;
@@ -101,7 +105,7 @@ TEST_P(LightPathViews, DirectPlusIndirectAndAtMostKAreTheirParts) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, LightPathViews,
                          ::testing::Values(Case{"cornell", Integrator::Full}, Case{"cornell_spheres", Integrator::Full},
-                                           Case{"cornell_spheres", Integrator::Naive}),
+                                           Case{"cornell_spheres", Integrator::Naive}, Case{"foggy_cornell", Integrator::Full}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                              return std::string(info.param.scene) + "_" + integratorName(info.param.integrator);
                          });
@@ -125,6 +129,29 @@ TEST(LightPathViews, CausticsAreAPartOfTheIndirectLight) {
     }
     EXPECT_GT(lit, 10) << "the glass sphere's caustic";
     EXPECT_LT(total(caustics), 0.5 * total(indirect));
+}
+
+// In the foggy Cornell box with black walls, light reaches the camera only straight from the light
+// or scattered by the fog: were a scattering in the fog not a bounce, its light would show in the
+// exactly-0 image. It shows in exactly 1 (single scattering) and 2 (double) instead; exactly 0 is
+// the light seen directly, nothing below it.
+TEST(LightPathViews, AScatteringInAMediumIsABounce) {
+    Scene fog = parseScene(testing::foggyCornellJson(), testing::kFoggyCornellName);
+    for (Material& material : fog.materials)
+        if (material.type == MaterialType::Diffuse) material.color = glm::vec3(0.0f);
+    const ImageRgbF none = render(fog, settingsFor(Integrator::Full, LightPaths::Exactly, 0), 16);
+    const ImageRgbF single = render(fog, settingsFor(Integrator::Full, LightPaths::Exactly, 1), 16);
+    const ImageRgbF twice = render(fog, settingsFor(Integrator::Full, LightPaths::Exactly, 2), 16);
+    double singleBelow = 0.0;
+    for (int y = kSize.y / 2; y < kSize.y; ++y) // the lower half sees the floor and the boxes, not the light
+        for (int x = 0; x < kSize.x; ++x) {
+            EXPECT_EQ(none.at(x, y), glm::vec3(0.0f)) << "pixel " << x << ", " << y;
+            const glm::vec3 v = single.at(x, y);
+            singleBelow += v.r + v.g + v.b;
+        }
+    EXPECT_GT(singleBelow, 0.0) << "the fog scatters the light once";
+    EXPECT_GT(total(twice), 0.0) << "and twice";
+    EXPECT_GT(total(none), 0.0) << "the light itself, seen through the fog";
 }
 
 TEST(LightPathViews, OnlyProgramsThatShowAPartCarryTheExplorer) {

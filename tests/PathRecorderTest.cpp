@@ -1,9 +1,11 @@
 // The paths behind a pixel (renderer/tracer/PathRecorder.*) on the real GLSL: the recorded paths are
 // the render's samples (their contributions add up to the rendered pixel), their shadow rays
 // agree with a CPU ray cast, the two MIS strategies' weights of one light path sum to 1 with the
-// densities each side recorded, pixels are counted from the top, and only the recording program
-// carries the recorder.
+// densities each side recorded, pixels are counted from the top, only the recording program
+// carries the recorder, and a medium's scattering is a vertex with the medium's coefficients and
+// the transmittance on the way.
 #include "CpuRayCast.h"
+#include "FoggyCornell.h"
 #include "GlTestContext.h"
 #include <ptview/tracer/PathRecorder.h>
 #include <ptview/tracer/PathTracer.h>
@@ -223,6 +225,89 @@ TEST(RecordedPaths, ShadowRaysAndMisWeightsOnARoughMetalSphere) {
     EXPECT_GT(counts.lightPairs, 100);
     EXPECT_GT(counts.emissionPairs, 20);
     EXPECT_LE(counts.lightMissed, counts.lightPairs / 100);
+}
+
+double henyeyGreenstein(double cosTheta, double g) {
+    const double d2 = 1.0 + g * g - 2.0 * g * cosTheta;
+    return (1.0 - g * g) / (4.0 * M_PI * d2 * std::sqrt(d2));
+}
+
+// In the foggy Cornell box the fog scatters many paths. Each such point is a medium vertex with the
+// fog's coefficients and material; every segment's transmittance is exp(-sigma_t x its length in
+// the fog's box), from the box alone, and so is every shadow ray's; the phase function's densities
+// are Henyey-Greenstein's of the angles recorded; and the contributions, medium vertices' light
+// samples among them, still add up to the rendered pixel.
+TEST(RecordedPaths, FogScatteringsAreMediumVerticesWithTheFogsCoefficients) {
+    const Scene fog = parseScene(testing::foggyCornellJson(), testing::kFoggyCornellName);
+    constexpr int kSpp = 64;
+    const glm::ivec2 pixel{16, 22}; // of 32x32: through the fog to the floor or the short box
+    const Traced traced = renderAndRecord(fog, settingsFor(Integrator::Full, SamplerMode::Random, 4), {32, 32}, kSpp, {pixel});
+    const float sigmaT = testing::kFogSigmaA + testing::kFogSigmaS;
+    // The GPU's rays start a spawn offset off their surface, and its float sums differ from these.
+    constexpr float kTolerance = 2e-3f;
+    int mediumVertices = 0, segments = 0, shadowRays = 0, phaseSamples = 0, lightSamples = 0;
+    glm::vec3 mean(0.0f);
+    for (const RecordedPath& path : traced.paths[0]) {
+        const glm::vec3 sum = path.summedContributions();
+        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(sum[ch], path.radiance[ch], 1e-5f * (1.0f + path.radiance[ch]));
+        mean += sum / float(kSpp);
+        for (size_t i = 1; i < path.vertices.size(); ++i) {
+            const PathVertex& v = path.vertices[i];
+            const PathVertex& previous = path.vertices[i - 1];
+            const std::string where = "sample " + std::to_string(path.sampleIndex) + " vertex " + std::to_string(i);
+            for (int ch = 0; ch < 3; ++ch)
+                EXPECT_NEAR(v.transmittanceSoFar[ch], previous.transmittanceSoFar[ch] * v.segmentTransmittance[ch], 1e-6f) << where;
+            if (v.kind == PathVertex::Kind::Escaped) continue;
+            const glm::vec3 directionIn = previous.direction; // of the ray that left it: exact, where the positions are rounded
+            EXPECT_NEAR(v.segmentTransmittance.g, std::exp(-sigmaT * testing::lengthInFog(previous.position, v.position)), kTolerance)
+                << where;
+            ++segments;
+            if (v.shadowTraced && !v.shadowBlocked && !v.lightAtInfinity) {
+                EXPECT_NEAR(v.shadowTransmittance.g, std::exp(-sigmaT * testing::lengthInFog(v.position, v.lightPoint)), kTolerance)
+                    << where;
+                ++shadowRays;
+            }
+            if (v.kind != PathVertex::Kind::Medium) continue;
+            ++mediumVertices;
+            EXPECT_EQ(fog.materials.at(static_cast<size_t>(v.material)).name, "fog") << where;
+            EXPECT_EQ(v.sigmaT, glm::vec3(sigmaT)) << where;
+            EXPECT_FLOAT_EQ(v.phaseG, testing::kFogG) << where;
+            EXPECT_LT(glm::length(v.normalGeom), 1e-6f) << "a point in a medium has no normal, " << where;
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_LE(std::abs(v.position[axis] - testing::kFogBoxCenter[axis]), testing::kFogBoxHalfSize[axis] + 1e-4f) << where;
+            if (v.bsdfSampled) {
+                const double expected = henyeyGreenstein(glm::dot(directionIn, v.direction), testing::kFogG);
+                EXPECT_NEAR(v.bsdfPdf, expected, 1e-3 * expected) << where;
+                EXPECT_EQ(v.bsdfPdfEvaluated, v.bsdfPdf) << where;
+                ++phaseSamples;
+            }
+            if (v.lightSampled && !v.lightAtInfinity) {
+                const double expected = henyeyGreenstein(glm::dot(directionIn, glm::normalize(v.lightPoint - v.position)), testing::kFogG);
+                EXPECT_NEAR(v.lightBsdfPdf, expected, 1e-3 * expected) << where;
+                ++lightSamples;
+            }
+        }
+    }
+    const glm::vec3 rendered = traced.mean.at(pixel.x, pixel.y);
+    EXPECT_GT(rendered.r + rendered.g + rendered.b, 0.01f) << "a black pixel would agree with anything";
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(mean[ch], rendered[ch], 1e-4f * (1.0f + rendered[ch])) << "channel " << ch;
+    // Enough of each, or the checks above checked nothing.
+    EXPECT_GT(mediumVertices, 30);
+    EXPECT_GT(segments, 100);
+    EXPECT_GT(shadowRays, 30);
+    EXPECT_GT(phaseSamples, 20);
+    EXPECT_GT(lightSamples, 20);
+}
+
+// Without media nothing is attenuated on the way, and no vertex is a medium's.
+TEST(RecordedPaths, WithoutMediaEveryTransmittanceIsOne) {
+    for (const RecordedPath& path : record(scene("cornell"), settingsFor(Integrator::Full, SamplerMode::Random, 4), {32, 32}, 16, {16, 22}))
+        for (const PathVertex& v : path.vertices) {
+            EXPECT_NE(v.kind, PathVertex::Kind::Medium);
+            EXPECT_EQ(v.segmentTransmittance, glm::vec3(1.0f));
+            EXPECT_EQ(v.transmittanceSoFar, glm::vec3(1.0f));
+            EXPECT_EQ(v.shadowTransmittance, glm::vec3(1.0f));
+        }
 }
 
 // Rows from the top, as in the PNG: row 3 sees the ceiling, row 28 the floor (the first and last

@@ -1,5 +1,6 @@
 // Behaviour of the progressive renderer on the real GLSL, headless.
 #include "DisplayTransformReference.h"
+#include "FoggyCornell.h"
 #include "GlTestContext.h"
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/scene/Scene.h>
@@ -301,6 +302,40 @@ TEST(PathTracer, DebugViewsShowNormalsAndAlbedo) {
     ImageRgbF normals = tracer.readMean();
     EXPECT_NEAR(glm::distance(normals.at(kSize.x / 5, 40), glm::vec3(0.5f, 1.0f, 0.5f)), 0.0f, 1e-5f) << "the floor faces +Y";
     EXPECT_NEAR(glm::distance(normals.at(2, kSize.y / 2), glm::vec3(1.0f, 0.5f, 0.5f)), 0.0f, 1e-5f) << "the left wall faces +X";
+}
+
+// A fog box is no surface: the debug views of the foggy Cornell box are those of the clear one,
+// normals and albedo exactly (the same surfaces), depth to a few 1e-3 m. Past each face of the fog
+// the ray goes on from a point spawnRay moved off the face along its normal, a sideways shift of up
+// to a few 1e-3 at a grazing crossing, so a ray that close to an edge of the box may meet the other
+// surface: a few pixels on the edges may differ. Were the fog's faces shown, almost none would agree.
+TEST(PathTracer, DebugViewsSeeThroughAFogBox) {
+    testing::glContext();
+    const Scene clear = cornell(), foggy = parseScene(testing::foggyCornellJson(), testing::kFoggyCornellName);
+    for (DebugView view : {DebugView::Normals, DebugView::Albedo, DebugView::Depth}) {
+        ImageRgbF images[2];
+        for (int i = 0; i < 2; ++i) {
+            PathTracer tracer;
+            tracer.setScene(i == 0 ? clear : foggy);
+            tracer.setImageSize(kSize);
+            RenderSettings settings = testing::naiveSettings(4, 3);
+            settings.debugView = view;
+            tracer.setSettings(settings);
+            for (int sample = 0; sample < 2; ++sample) tracer.renderSample();
+            images[i] = tracer.readMean();
+        }
+        const float tolerance = view == DebugView::Depth ? 5e-3f : 0.0f;
+        int differing = 0;
+        double total = 0.0;
+        for (int y = 0; y < kSize.y; ++y)
+            for (int x = 0; x < kSize.x; ++x) {
+                const glm::vec3 a = images[0].at(x, y), b = images[1].at(x, y);
+                differing += glm::any(glm::greaterThan(glm::abs(a - b), glm::vec3(tolerance)));
+                total += a.x + a.y + a.z;
+            }
+        EXPECT_LE(differing, kSize.x * kSize.y / 100) << debugViewName(view);
+        EXPECT_GT(total, 0.0) << "a black image would agree with anything";
+    }
 }
 
 // The NaN/Inf debug view marks non-finite pixels magenta. A copy of the shaders whose sample is

@@ -1,7 +1,9 @@
 // `ptview paths` end to end on the real binary: the JSON it writes parses, holds the paths asked
 // for, and their mean is the pixel `ptview render` makes of the same samples; --image draws them;
-// a pixel outside the image or no paths is refused with exit code 2 and writes nothing.
+// a pixel outside the image or no paths is refused with exit code 2 and writes nothing; in fog the
+// points where it scattered paths are medium vertices, with its coefficients and the transmittance.
 #include <ptview/io/ImageIO.h>
+#include "FoggyCornell.h"
 #include "RunCommand.h"
 
 #include <nlohmann/json.hpp>
@@ -75,6 +77,50 @@ TEST_F(PathsCommand, WritesTheRenderedPixelsPathsAndAPicture) {
     for (int i = 0; i < width * height; ++i) camera += png[3 * i] == 255 && png[3 * i + 1] == 255 && png[3 * i + 2] == 255;
     stbi_image_free(png);
     EXPECT_GT(camera, 5);
+}
+
+TEST_F(PathsCommand, ShowsWhereAFogScatteredThePaths) {
+    const std::string scene = path(testing::kFoggyCornellName);
+    std::ofstream(scene) << testing::foggyCornellJson();
+    const auto paths = runCommand(kBinary + " paths " + shellQuoted(scene) + " --pixel 16 20 --count 32 --size 32x32 --depth 3" +
+                                  " --out " + shellQuoted(path("p.json")) + " --image " + shellQuoted(path("p.png")));
+    ASSERT_EQ(paths.exitCode, 0) << paths.output;
+    std::ifstream in(path("p.json"));
+    const nlohmann::json json = nlohmann::json::parse(in);
+    const float sigmaT = testing::kFogSigmaA + testing::kFogSigmaS;
+    int medium = 0;
+    for (const auto& p : json["paths"])
+        for (const auto& v : p["vertices"]) {
+            if (v["kind"] == "camera") continue;
+            ASSERT_TRUE(v.contains("segment_transmittance")) << v.dump();
+            ASSERT_TRUE(v.contains("transmittance_so_far")) << v.dump();
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_GT(v["segment_transmittance"][c].get<float>(), 0.0f);
+                EXPECT_LE(v["transmittance_so_far"][c].get<float>(), v["segment_transmittance"][c].get<float>() + 1e-6f);
+            }
+            if (v["kind"] != "medium") continue;
+            ++medium;
+            EXPECT_EQ(v["material_name"], "fog");
+            for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(v["sigma_t"][c].get<float>(), sigmaT);
+            EXPECT_FLOAT_EQ(v["g"].get<float>(), testing::kFogG);
+            EXPECT_FALSE(v.contains("normal_geometric"));
+            if (!v.contains("light_sample")) continue;
+            const auto& light = v["light_sample"];
+            EXPECT_TRUE(light.contains("phase_pdf")) << v.dump();
+            if (light["shadow_ray"] == "reached") {
+                EXPECT_TRUE(light.contains("shadow_transmittance")) << v.dump();
+            }
+        }
+    EXPECT_GT(medium, 5) << "the fog scatters some of 32 paths through a metre of it";
+
+    // The medium vertices' markers: green dots (PathsPicture.cpp) on the picture.
+    int width = 0, height = 0, channels = 0;
+    unsigned char* png = stbi_load(path("p.png").c_str(), &width, &height, &channels, 3);
+    ASSERT_NE(png, nullptr);
+    int green = 0;
+    for (int i = 0; i < width * height; ++i) green += png[3 * i] == 40 && png[3 * i + 1] == 230 && png[3 * i + 2] == 120;
+    stbi_image_free(png);
+    EXPECT_GT(green, 0);
 }
 
 TEST_F(PathsCommand, RefusesAPixelOutsideTheImageAndNoPaths) {

@@ -1,7 +1,9 @@
 // The pixel inspector headless: the first hit the GPU probe finds equals a CPU ray cast of the
 // same pinhole ray, the one-pixel read-backs equal the whole-image ones at that pixel, and the
 // split view and a resize treat the pinned pixel as documented (ViewerModel::pinnedPixel).
+#include "FoggyCornell.h"
 #include "GlTestContext.h"
+#include "TestFiles.h"
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/model/CameraController.h>
 #include <ptview/model/SceneInput.h>
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -159,6 +162,107 @@ TEST(PixelInspector, FirstHitMatchesACpuRayCastOfThePixelCentre) {
     EXPECT_GT(hits, 50);
     EXPECT_GT(boxHits, 5) << "the boxes' faces come six to a shape: their shape index is the one to get wrong";
     EXPECT_GT(escapes, 0) << "the open front: rays that meet nothing";
+}
+
+// In the foggy Cornell box the pinhole ray passes the fog box's faces to the surface the clear box
+// shows there, and the inspection names the fog at each face it crossed, where the CPU finds the
+// face; the camera, outside, starts in no medium. Its JSON names the fog; the clear box's has no media.
+TEST(PixelInspector, NamesTheFogTheRayCrossesAndSeesThroughIt) {
+    testing::ScratchFiles files("inspector_fog");
+    const std::string foggyPath = files.write("foggy_cornell.json", testing::foggyCornellJson()).string();
+    std::unique_ptr<ViewerSession> session = openSession(foggyPath.c_str());
+    renderSamples(*session, 1);
+    const Scene& foggy = session->model().scene;
+    const Scene clear = loadScene(kCornell);
+    const glm::vec3 fogLow = testing::kFogBoxCenter - testing::kFogBoxHalfSize, fogHigh = testing::kFogBoxCenter + testing::kFogBoxHalfSize;
+    int hits = 0, throughTwoFaces = 0;
+    // Off the image's diagonals, where the rays of the camera on the box's axis meet its edges.
+    for (int y = 3; y < kSize.y; y += 7) {
+        for (int x = 0; x < kSize.x; x += 7) {
+            SCOPED_TRACE(::testing::Message() << "pixel " << x << " " << y);
+            const glm::vec3 direction = pinholeDirection(clear.camera, {x, y}, kSize);
+            const CpuHit expected = castRay(clear, clear.camera.eye, direction);
+            // Past each face of the fog the ray goes on from a point spawnRay moved off the face along its
+            // normal: at a grazing crossing that shifts the ray sideways by up to a few 1e-3, so a
+            // surface that near an edge may be either one, and a distance is that close.
+            if (expected.secondT - expected.t < 2e-2f) continue;
+            session->model().pinnedPixel = glm::ivec2(x, y);
+            std::optional<PixelInspection> inspection = session->inspectPinnedPixel();
+            ASSERT_TRUE(inspection);
+            EXPECT_TRUE(inspection->media.around.empty());
+            if (expected.shape < 0) {
+                EXPECT_FALSE(inspection->hit) << "the CPU ray escapes";
+                continue;
+            }
+            ASSERT_TRUE(inspection->hit) << "the CPU ray meets " << clear.shapes[static_cast<size_t>(expected.shape)].name;
+            const SurfaceHit& hit = *inspection->hit;
+            EXPECT_EQ(foggy.materials.at(static_cast<size_t>(hit.material)).name,
+                      clear.materials.at(static_cast<size_t>(clear.shapes[static_cast<size_t>(expected.shape)].material)).name);
+            EXPECT_NEAR(hit.distance, expected.t, 2e-3f);
+            // The faces of the fog's box the CPU ray passes before the surface, nearest first.
+            std::vector<float> faces;
+            for (int axis = 0; axis < 3; ++axis)
+                for (float plane : {fogLow[axis], fogHigh[axis]}) {
+                    const float t = (plane - clear.camera.eye[axis]) / direction[axis];
+                    const glm::vec3 p = clear.camera.eye + t * direction;
+                    bool onFace = t > 0.0f && t < expected.t;
+                    for (int other = 0; other < 3; ++other)
+                        if (other != axis) onFace = onFace && p[other] >= fogLow[other] && p[other] <= fogHigh[other];
+                    if (onFace) faces.push_back(t);
+                }
+            std::sort(faces.begin(), faces.end());
+            ASSERT_EQ(inspection->media.crossings, static_cast<int>(faces.size()));
+            ASSERT_EQ(inspection->media.crossed.size(), faces.size());
+            for (size_t i = 0; i < faces.size(); ++i) {
+                EXPECT_EQ(foggy.materials.at(static_cast<size_t>(inspection->media.crossed[i].material)).name, "fog");
+                EXPECT_NEAR(inspection->media.crossed[i].distance, faces[i], 1e-3f);
+            }
+            ++hits;
+            throughTwoFaces += faces.size() == 2;
+        }
+    }
+    EXPECT_GT(hits, 40);
+    EXPECT_GT(throughTwoFaces, 10) << "into the fog and out of it to a wall";
+
+    session->model().pinnedPixel = glm::ivec2(kSize.x / 2, kSize.y / 2);
+    std::optional<PixelInspection> inspection = session->inspectPinnedPixel();
+    ASSERT_TRUE(inspection);
+    const std::string json = pixelInspectionJson(*inspection, foggy);
+    EXPECT_NE(json.find("\"camera_in\": []"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"boundaries_crossed\": 1"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"material\": \"fog\""), std::string::npos) << json;
+    std::unique_ptr<ViewerSession> clearSession = openSession(kCornell);
+    renderSamples(*clearSession, 1);
+    clearSession->model().pinnedPixel = glm::ivec2(kSize.x / 2, kSize.y / 2);
+    std::optional<PixelInspection> clearInspection = clearSession->inspectPinnedPixel();
+    ASSERT_TRUE(clearInspection);
+    EXPECT_TRUE(clearInspection->media.empty());
+    EXPECT_EQ(pixelInspectionJson(*clearInspection, clear).find("\"media\""), std::string::npos);
+}
+
+// A camera inside the fog: every ray starts in it, and leaves it at the face of its box before a wall.
+TEST(PixelInspector, NamesTheFogAroundTheCamera) {
+    testing::glContext();
+    Scene foggy = parseScene(testing::foggyCornellJson(), testing::kFoggyCornellName);
+    foggy.camera.eye = glm::vec3(0.0f, 1.0f, 0.5f); // looking down -z at (0, 1, 0)
+    PathTracer tracer;
+    tracer.setScene(foggy);
+    tracer.setImageSize({16, 16});
+    // Right of the tall box, level with the eye: out of the fog at its back face, then the back wall.
+    const glm::vec2 filmPos{13.5f, 8.0f};
+    const float right = (filmPos.x / 16.0f * 2.0f - 1.0f) * std::tan(glm::radians(foggy.camera.vfovDeg) * 0.5f);
+    const glm::vec3 direction = glm::normalize(glm::vec3(right, 0.0f, -1.0f));
+    const CameraRayMedia media = tracer.probeCameraRayMedia(filmPos);
+    ASSERT_EQ(media.around.size(), 1u);
+    EXPECT_EQ(foggy.materials.at(static_cast<size_t>(media.around[0])).name, "fog");
+    ASSERT_EQ(media.crossings, 1);
+    ASSERT_EQ(media.crossed.size(), 1u);
+    EXPECT_EQ(media.crossed[0].material, media.around[0]);
+    EXPECT_NEAR(media.crossed[0].distance, (0.5f + 0.99f) / -direction.z, 1e-3f);
+    const std::optional<SurfaceHit> hit = tracer.probeSurface(filmPos);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->position.z, -1.0f, 1e-4f) << "the back wall, behind the fog's face";
+    EXPECT_NEAR(hit->distance, 1.5f / -direction.z, 1e-3f);
 }
 
 // The one-pixel reads (three 1x1 reads of the sums, the display pass into one texel) give what

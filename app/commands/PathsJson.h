@@ -23,6 +23,10 @@ struct PathsReport {
     const std::vector<RecordedPath>* paths = nullptr;
 };
 
+// Whether the scene has media, so that its paths' vertices show the transmittance on the way
+// (segment, so far, shadow ray): paths of scenes without media show the fields they always had.
+bool pathsShowMedia(const Scene& scene);
+
 // How a recorded path ended: "escaped", "roulette", "emitter", "last_bounce" (the integrator's
 // depth: uMaxDepth, or 1 for direct and mis), "direct_only" (the direct integrator stops after
 // the first light sample) or "absorbed" (the BSDF sample failed or carried nothing).

@@ -96,6 +96,16 @@ glm::u8vec3 pathSegmentColor(PathSegment kind) {
     return {0, 0, 0};
 }
 
+std::optional<glm::u8vec3> pathVertexColor(PathVertex::Kind kind) {
+    switch (kind) {
+    case PathVertex::Kind::Surface: return glm::u8vec3(255, 255, 255);
+    case PathVertex::Kind::Medium: return glm::u8vec3(40, 230, 120);
+    case PathVertex::Kind::Camera:
+    case PathVertex::Kind::Escaped: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 CameraDesc sideViewCamera(const CameraDesc& camera, std::optional<glm::vec3> eye) {
     CameraDesc view = camera;
     view.apertureRadius = 0.0f; // a sharp picture, whatever the scene's lens
@@ -173,8 +183,8 @@ ImageRgba8 drawPathsPicture(PathTracer& tracer, const CameraDesc& view, const st
             }
     for (const RecordedPath& path : paths)
         for (const PathVertex& v : path.vertices)
-            if (v.kind == PathVertex::Kind::Surface)
-                if (std::optional<glm::vec2> p = projectToImage(view, size, v.position)) canvas.dot(*p, {255, 255, 255});
+            if (std::optional<glm::u8vec3> color = pathVertexColor(v.kind))
+                if (std::optional<glm::vec2> p = projectToImage(view, size, v.position)) canvas.dot(*p, *color);
     return image;
 }
 

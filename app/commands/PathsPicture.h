@@ -21,6 +21,9 @@ enum class PathSegment { Camera, Bsdf, ShadowReached, ShadowBlocked, Escaped };
 
 // The colour each kind is drawn in (sRGB 8-bit).
 glm::u8vec3 pathSegmentColor(PathSegment kind);
+// The colour of a vertex's marker: white at a surface, green where a medium scattered the path;
+// nullopt for the camera and an escape, which get none.
+std::optional<glm::u8vec3> pathVertexColor(PathVertex::Kind kind);
 
 // The second camera: `eye` when given (looking at the scene camera's target), else the scene
 // camera turned sideways by kSideViewDegrees about its up axis through the target.

@@ -13,6 +13,20 @@ namespace {
 
 nlohmann::ordered_json vectorJson(const glm::vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
+std::string materialName(const Scene& scene, int material) {
+    bool known = material >= 0 && material < static_cast<int>(scene.materials.size());
+    return known ? scene.materials[static_cast<size_t>(material)].name : std::string();
+}
+
+nlohmann::ordered_json mediaJson(const CameraRayMedia& media, const Scene& scene) {
+    nlohmann::ordered_json around = nlohmann::ordered_json::array();
+    for (int material : media.around) around.push_back(materialName(scene, material));
+    nlohmann::ordered_json crossed = nlohmann::ordered_json::array();
+    for (const CameraRayMedia::Crossing& crossing : media.crossed)
+        crossed.push_back({{"material", materialName(scene, crossing.material)}, {"distance", crossing.distance}});
+    return {{"camera_in", around}, {"boundaries_crossed", media.crossings}, {"crossed", crossed}};
+}
+
 } // namespace
 
 const char* finiteStatus(const glm::vec3& mean) {
@@ -54,14 +68,15 @@ std::string pixelInspectionJson(const PixelInspection& inspection, const Scene& 
         h["normal_shading"] = vectorJson(hit.normalShading);
         h["uv"] = {hit.uv.x, hit.uv.y};
         h["material_index"] = hit.material;
-        bool knownMaterial = hit.material >= 0 && hit.material < static_cast<int>(scene.materials.size());
-        h["material"] = knownMaterial ? scene.materials[static_cast<size_t>(hit.material)].name : std::string();
+        h["material"] = materialName(scene, hit.material);
         h["shape_index"] = hit.shape;
         bool knownShape = hit.shape >= 0 && hit.shape < static_cast<int>(scene.shapes.size());
         h["shape"] = knownShape ? scene.shapes[static_cast<size_t>(hit.shape)].name : std::string();
         h["shape_type"] = knownShape ? shapeSchema(scene.shapes[static_cast<size_t>(hit.shape)].type).name : "";
         out["hit"] = h;
     }
+    // Only where there is a medium to name: the files of scenes without media stay as they were.
+    if (!inspection.media.empty()) out["media"] = mediaJson(inspection.media, scene);
     return out.dump(2) + "\n";
 }
 

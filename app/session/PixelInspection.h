@@ -1,10 +1,11 @@
 #pragma once
 // What the pixel inspector knows about the pinned pixel (ViewerModel::pinnedPixel): its
-// accumulated value and the first surface its pinhole ray meets. The Pixel panel shows it and
+// accumulated value, the first surface its pinhole ray meets and the media it passes on the way. The Pixel panel shows it and
 // `save-pixel` writes it as JSON; no ImGui or OpenGL here.
 
 #include <ptview/metrics/PixelStatistics.h>
 #include <ptview/scene/Scene.h>
+#include <ptview/gpudata/CameraRayMedia.h>
 #include <ptview/gpudata/SurfaceHit.h>
 
 #include <filesystem>
@@ -24,6 +25,7 @@ struct PixelInspection {
     std::optional<glm::vec3> denoised;
     int denoisedSamples = 0;
     std::optional<SurfaceHit> hit; // nullopt: the ray escapes to the environment
+    CameraRayMedia media;          // what the ray starts in and passes before `hit` (probed with it)
     // The pin holds on to what it showed: `hit` is probed with the camera the pixel was pinned
     // under (`pinnedCamera`), and a camera move since (cameraMoved) does not probe again, so
     // the surface described stays the one the traced paths start at. `reading` is always the

@@ -430,9 +430,11 @@ std::optional<PixelInspection> ViewerSession::inspectPinnedPixel() {
     if (newPin || sceneChangedUnderPin) {
         // The pinhole ray through the pixel's centre; the film counts rows from the bottom.
         glm::vec2 filmPos(static_cast<float>(pixel.x) + 0.5f, static_cast<float>(size.y - pixel.y) - 0.5f);
-        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), camera, tracer.probeSurface(filmPos)};
+        pixelProbe_ = PixelProbe{pixel, side, tracer.restartCount(), camera, tracer.probeSurface(filmPos),
+                                 tracer.probeCameraRayMedia(filmPos)};
     }
     inspection.hit = pixelProbe_.hit;
+    inspection.media = pixelProbe_.media;
     inspection.pinnedCamera = pixelProbe_.camera;
     inspection.cameraMoved = !sameView(pixelProbe_.camera, camera);
     return inspection;

@@ -346,6 +346,7 @@ private:
         int restartCount = -1;
         CameraDesc camera; // the view the hit was probed with: the pin's
         std::optional<SurfaceHit> hit;
+        CameraRayMedia media;
     };
     PixelProbe pixelProbe_;
     std::unique_ptr<PathRecorder> pathRecorder_; // built on the first tracePaths

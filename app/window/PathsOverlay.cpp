@@ -38,10 +38,11 @@ void drawPathsOverlay(ImDrawList& draw, const ViewerSession::TracedPaths& traced
                              colour(line.kind, alpha), isSelected ? 2.5f : 1.5f);
         for (size_t v = 1; v < path.vertices.size(); ++v) {
             const PathVertex& vertex = path.vertices[v];
-            if (vertex.kind != PathVertex::Kind::Surface) continue;
+            const std::optional<glm::u8vec3> marker = pathVertexColor(vertex.kind);
+            if (!marker) continue;
             if (auto pixel = projectToImage(camera, renderSize, vertex.position)) {
                 const ImVec2 at = toScreen(*pixel, renderSize, image);
-                draw.AddCircleFilled(at, isSelected ? 3.5f : 2.5f, IM_COL32(255, 255, 255, alpha));
+                draw.AddCircleFilled(at, isSelected ? 3.5f : 2.5f, IM_COL32(marker->r, marker->g, marker->b, alpha));
                 if (isSelected && static_cast<int>(v) == selected.vertex)
                     draw.AddCircle(at, 7.0f, IM_COL32(255, 255, 255, 255), 0, 2.0f);
             }
@@ -58,7 +59,7 @@ std::optional<PathPick> pickPathVertex(const ViewerSession::TracedPaths& traced,
     for (size_t p = 0; p < traced.paths.size(); ++p)
         for (size_t v = 1; v < traced.paths[p].vertices.size(); ++v) {
             const PathVertex& vertex = traced.paths[p].vertices[v];
-            if (vertex.kind != PathVertex::Kind::Surface) continue;
+            if (!pathVertexColor(vertex.kind)) continue; // only what has a marker can be clicked
             auto pixel = projectToImage(camera, renderSize, vertex.position);
             if (!pixel) continue;
             const ImVec2 at = toScreen(*pixel, renderSize, image);

@@ -14,15 +14,6 @@
 namespace ptview {
 namespace {
 
-const char* kindText(const PathVertex& v) {
-    switch (v.kind) {
-    case PathVertex::Kind::Camera: return "camera";
-    case PathVertex::Kind::Surface: return "surface";
-    case PathVertex::Kind::Escaped: return "escaped";
-    }
-    return "?";
-}
-
 std::string vec3Text(const glm::vec3& v) {
     char text[96];
     std::snprintf(text, sizeof text, "%.3g %.3g %.3g", v.x, v.y, v.z);
@@ -55,7 +46,7 @@ void vertexTable(const RecordedPath& path, const Scene& scene, PathPick& selecte
         if (ImGui::Selectable(label, selected.vertex == static_cast<int>(i), ImGuiSelectableFlags_SpanAllColumns))
             selected.vertex = static_cast<int>(i);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(kindText(v));
+        ImGui::TextUnformatted(pathVertexKindName(v.kind));
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(v.material >= 0 && static_cast<size_t>(v.material) < scene.materials.size()
                                    ? printableText(scene.materials[static_cast<size_t>(v.material)].name).c_str() : "-");
@@ -84,17 +75,26 @@ void vertexTable(const RecordedPath& path, const Scene& scene, PathPick& selecte
 }
 
 // Every number of the selected vertex, as save-paths writes them.
-void vertexDetails(const PathVertex& v) {
+void vertexDetails(const PathVertex& v, bool withMedia) {
+    const bool medium = v.kind == PathVertex::Kind::Medium;
     ImGui::Text("throughput in %s, out %s", vec3Text(v.throughputIn).c_str(), vec3Text(v.throughputOut).c_str());
     if (v.kind == PathVertex::Kind::Surface)
         ImGui::Text("normal geometric %s, shading %s", vec3Text(v.normalGeom).c_str(), vec3Text(v.normalShading).c_str());
+    if (medium) ImGui::Text("medium scattering: sigma_t %s per metre, g %.3f", vec3Text(v.sigmaT).c_str(), v.phaseG);
+    if (withMedia && v.kind != PathVertex::Kind::Camera)
+        ImGui::Text("transmittance of the segment here %s, from the camera %s", vec3Text(v.segmentTransmittance).c_str(),
+                    vec3Text(v.transmittanceSoFar).c_str());
     if (v.emissionCounted)
         ImGui::Text("emission %s x weight %.4f (bsdf pdf %.4g, light pdf %.4g) = %s", vec3Text(v.emitted).c_str(),
                     v.emissionMisWeight, v.emissionBsdfPdf, v.emissionLightPdf, vec3Text(v.emissionContribution).c_str());
     if (v.lightSampled)
-        ImGui::Text("light %d sample: pdf %.4g, bsdf pdf %.4g, %s, weight %.4f, added %s", v.sampledLight, v.lightPdf,
-                    v.lightBsdfPdf, shadowText(v), v.lightMisWeight, vec3Text(v.directContribution).c_str());
-    if (v.bsdfSampled)
+        ImGui::Text("light %d sample: pdf %.4g, %s pdf %.4g, %s, weight %.4f, added %s", v.sampledLight, v.lightPdf,
+                    medium ? "phase" : "bsdf", v.lightBsdfPdf, shadowText(v), v.lightMisWeight,
+                    vec3Text(v.directContribution).c_str());
+    if (withMedia && v.shadowTraced) ImGui::Text("shadow ray transmittance %s", vec3Text(v.shadowTransmittance).c_str());
+    if (v.bsdfSampled && medium)
+        ImGui::Text("phase sample: pdf %.4g, direction %s", v.bsdfPdf, vec3Text(v.direction).c_str());
+    else if (v.bsdfSampled)
         ImGui::Text("BSDF sample%s: pdf %.4g (evaluated %.4g), direction %s", v.bsdfDelta ? " (delta lobe)" : "", v.bsdfPdf,
                     v.bsdfPdfEvaluated, vec3Text(v.direction).c_str());
     if (v.roulette) ImGui::Text("roulette: survival %.4f, %s", v.survival, v.rouletteEnded ? "ended the path" : "survived");
@@ -152,7 +152,7 @@ void drawTracedPathsTable(ViewerSession& session, PanelState& state, bool ownWin
                 vec3Text(path.radiance).c_str());
     vertexTable(path, scene, state.selectedPath, ownWindow);
     if (state.selectedPath.vertex >= 0 && state.selectedPath.vertex < static_cast<int>(path.vertices.size()))
-        vertexDetails(path.vertices[static_cast<size_t>(state.selectedPath.vertex)]);
+        vertexDetails(path.vertices[static_cast<size_t>(state.selectedPath.vertex)], pathsShowMedia(scene));
 }
 
 } // namespace ptview

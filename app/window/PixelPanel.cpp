@@ -63,6 +63,24 @@ void drawHit(const ViewerSession& session, const SurfaceHit& hit, PanelState& st
     ImGui::Text("uv        %.4g  %.4g", hit.uv.x, hit.uv.y);
 }
 
+std::string materialText(const Scene& scene, int material) {
+    if (material < 0 || material >= static_cast<int>(scene.materials.size())) return "(unknown)";
+    return printableText(scene.materials[static_cast<size_t>(material)].name);
+}
+
+// The media the ray starts in and the null boundaries it passes before its first surface.
+void drawMedia(const Scene& scene, const CameraRayMedia& media) {
+    std::string around;
+    for (auto it = media.around.rbegin(); it != media.around.rend(); ++it) // innermost first: "fog in room"
+        around += (around.empty() ? "" : " in ") + materialText(scene, *it);
+    ImGui::Text("camera in %s", around.empty() ? "no medium" : around.c_str());
+    itemTooltip("the media around the eye: where every camera ray starts");
+    for (const CameraRayMedia::Crossing& crossing : media.crossed)
+        ImGui::Text("crosses   %s at %.4g m", materialText(scene, crossing.material).c_str(), crossing.distance);
+    if (media.crossings > static_cast<int>(media.crossed.size()))
+        ImGui::Text("          and %d more boundaries", media.crossings - static_cast<int>(media.crossed.size()));
+}
+
 // After a camera move the pin keeps its surface and paths (PixelInspection::cameraMoved): say so
 // where the numbers start, and offer both ways to make the pixel and the pin agree again.
 void drawCameraMovedNote(ViewerSession& session, const PixelInspection& inspection) {
@@ -114,6 +132,7 @@ void drawPixelPanel(ViewerSession& session, PanelState& state) {
     else ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "mean is %s", status);
     ImGui::Separator();
     if (inspection->cameraMoved) ImGui::TextUnformatted("when pinned:");
+    if (!inspection->media.empty()) drawMedia(session.model().scene, inspection->media);
     if (inspection->hit) drawHit(session, *inspection->hit, state);
     else ImGui::TextUnformatted("no surface (environment): the ray escapes");
     if (ImGui::Button("Unpin")) session.model().pinnedPixel.reset();

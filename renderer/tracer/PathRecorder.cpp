@@ -12,21 +12,29 @@
 namespace ptview {
 namespace {
 
-// GL 4.1 promises 8 draw buffers, ProbePass uses at most 4: a record takes kRecordFields / 4 passes.
+// GL 4.1 promises 8 draw buffers, ProbePass uses at most 4: a record takes kRecordFields / 4 passes,
+// rounded up.
 constexpr int kFieldsPerPass = 4;
+constexpr int kPasses = (kRecordFields + kFieldsPerPass - 1) / kFieldsPerPass;
 
 PathVertex decodeVertex(const std::vector<glm::vec4>& field) {
     const unsigned flags = static_cast<unsigned>(field[0].w);
     PathVertex v;
     v.kind = (flags & kVertexCamera) ? PathVertex::Kind::Camera
-           : (flags & kVertexSurface) ? PathVertex::Kind::Surface : PathVertex::Kind::Escaped;
+           : (flags & kVertexSurface) ? PathVertex::Kind::Surface
+           : (flags & kVertexMedium) ? PathVertex::Kind::Medium : PathVertex::Kind::Escaped;
     if (v.kind == PathVertex::Kind::Escaped) {
         v.direction = glm::vec3(field[0]);
     } else {
         v.position = glm::vec3(field[0]);
         v.direction = glm::vec3(field[5]);
     }
-    v.normalGeom = glm::vec3(field[1]);
+    if (v.kind == PathVertex::Kind::Medium) {
+        v.sigmaT = glm::vec3(field[1]);
+        v.phaseG = field[12].w;
+    } else {
+        v.normalGeom = glm::vec3(field[1]);
+    }
     v.material = static_cast<int>(field[1].w);
     v.normalShading = glm::vec3(field[2]);
     v.surfaceLight = static_cast<int>(field[2].w);
@@ -48,6 +56,8 @@ PathVertex decodeVertex(const std::vector<glm::vec4>& field) {
     v.emitted = glm::vec3(field[10]);
     v.emissionBsdfPdf = field[10].w;
     v.shadowHitDistance = field[11].w;
+    v.segmentTransmittance = glm::vec3(field[12]);
+    v.shadowTransmittance = glm::vec3(field[13]);
 
     v.bsdfSampled = flags & kVertexBsdfSampled;
     v.bsdfDelta = flags & kVertexBsdfDelta;
@@ -123,7 +133,7 @@ std::vector<RecordedPath> PathRecorder::record(PathTracer& tracer, glm::ivec2 pi
     glUniform1i(program.uniformLocation("uVerticesPerPath"), verticesPerPath);
     const int items = count * verticesPerPath;
     std::vector<ProbeData> fields;
-    for (int set = 0; set < kRecordFields / kFieldsPerPass; ++set) {
+    for (int set = 0; set < kPasses; ++set) {
         glUseProgram(program.id());
         glUniform1i(program.uniformLocation("uOutputSet"), set);
         std::vector<ProbeData> part = runProbePass(program, items, {}, kFieldsPerPass);
@@ -140,7 +150,10 @@ std::vector<RecordedPath> PathRecorder::record(PathTracer& tracer, glm::ivec2 pi
             for (int f = 0; f < kRecordFields; ++f) record[static_cast<size_t>(f)] = fields[static_cast<size_t>(f)][item];
             if (v == 0) path.radiance = glm::vec3(record[11]);
             if (!(static_cast<unsigned>(record[0].w) & kVertexExists)) break; // the path ended before
-            path.vertices.push_back(decodeVertex(record));
+            PathVertex vertex = decodeVertex(record);
+            if (!path.vertices.empty())
+                vertex.transmittanceSoFar = path.vertices.back().transmittanceSoFar * vertex.segmentTransmittance;
+            path.vertices.push_back(vertex);
         }
     }
     return paths;

@@ -380,9 +380,7 @@ void PathTracer::updateFrameUniforms(glm::ivec2 size, int firstSample, int sampl
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
-std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
-    glm::ivec2 size = accumulator_.size();
-    if (size.x <= 0 || size.y <= 0) return std::nullopt; // no film to place the position on
+std::vector<glm::vec4> PathTracer::runSurfaceProbe(glm::vec2 filmPos, int outputSet) {
     if (!surfaceProbe_ || surfaceProbe_->features != programKey_.features) {
         ShaderAssembler assembler(shaderDir_);
         specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler);
@@ -390,13 +388,23 @@ std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
         probe.features = programKey_.features;
         probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("surface_probe.frag"));
         probe.filmPos = probe.program->uniformLocation("uFilmPos");
+        probe.outputSet = probe.program->uniformLocation("uOutputSet");
         surfaceProbe_ = std::move(probe);
     }
     const GlProgram& program = *surfaceProbe_->program;
     useSceneIn(program);
     glUniform2f(surfaceProbe_->filmPos, filmPos.x, filmPos.y);
-    std::vector<ProbeData> texels = runProbePass(program, 1, {}, 4);
-    glm::vec4 distances = texels[0][0], position = texels[1][0], normalGeom = texels[2][0], normalShading = texels[3][0];
+    glUniform1i(surfaceProbe_->outputSet, outputSet);
+    std::vector<glm::vec4> texels;
+    for (const ProbeData& output : runProbePass(program, 1, {}, 4)) texels.push_back(output[0]);
+    return texels;
+}
+
+std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
+    glm::ivec2 size = accumulator_.size();
+    if (size.x <= 0 || size.y <= 0) return std::nullopt; // no film to place the position on
+    std::vector<glm::vec4> texels = runSurfaceProbe(filmPos, 0);
+    glm::vec4 distances = texels[0], position = texels[1], normalGeom = texels[2], normalShading = texels[3];
     if (!(distances.x > 0.0f) || !std::isfinite(distances.x)) return std::nullopt;
     SurfaceHit hit;
     hit.distance = distances.x;
@@ -410,6 +418,19 @@ std::optional<SurfaceHit> PathTracer::probeSurface(glm::vec2 filmPos) {
     hit.primitive = static_cast<int>(normalShading.w);
     hit.shape = shapeOfPrimitive(scene_, hit.primitiveKind, hit.primitive, gpuScene_.meshes().instances());
     return hit;
+}
+
+CameraRayMedia PathTracer::probeCameraRayMedia(glm::vec2 filmPos) {
+    CameraRayMedia media;
+    glm::ivec2 size = accumulator_.size();
+    if (size.x <= 0 || size.y <= 0) return media;
+    std::vector<glm::vec4> texels = runSurfaceProbe(filmPos, 1);
+    const glm::vec4 materials = texels[0], distances = texels[1], around = texels[2], counts = texels[3];
+    media.crossings = static_cast<int>(counts.x);
+    for (int i = 0; i < std::min(media.crossings, CameraRayMedia::kListedCrossings); ++i)
+        media.crossed.push_back({static_cast<int>(materials[i]), distances[i]});
+    for (int i = 0; i < std::min(static_cast<int>(counts.y), 4); ++i) media.around.push_back(static_cast<int>(around[i]));
+    return media;
 }
 
 std::optional<float> PathTracer::focusDistanceAt(glm::vec2 filmPos) {

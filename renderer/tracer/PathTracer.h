@@ -17,6 +17,7 @@
 #include <ptview/io/Image.h>
 #include <ptview/settings/RenderSettings.h>
 #include <ptview/scene/Scene.h>
+#include <ptview/gpudata/CameraRayMedia.h>
 #include <ptview/gpudata/SurfaceHit.h>
 #include <ptview/gpu/ShaderFeatures.h>
 #include <ptview/settings/ToneMapper.h>
@@ -195,7 +196,10 @@ public:
     // bottom-left corner, as the camera counts them; a pixel's centre is its index + 0.5) meets,
     // found on the GPU by the scene's own intersection code (shaders/surface_probe.frag, one
     // fragment); nullopt when that ray leaves the scene, or there is no image yet.
+    // Null boundaries (media's surfaces) let the ray through.
     std::optional<SurfaceHit> probeSurface(glm::vec2 filmPos);
+    // The media the same ray starts in and passes before that surface (the pixel inspector).
+    CameraRayMedia probeCameraRayMedia(glm::vec2 filmPos);
     // Click-to-focus: probeSurface's distance along the view direction.
     std::optional<float> focusDistanceAt(glm::vec2 filmPos);
     // One pixel of the full-size accumulation (x from the left, y from the top, as in a saved
@@ -238,6 +242,7 @@ private:
         ShaderFeatures features; // specialized like the path-tracing program of these features
         std::unique_ptr<GlProgram> program;
         GLint filmPos = -1;
+        GLint outputSet = -1;
     };
     struct TraceProgram {
         std::unique_ptr<GlProgram> program;
@@ -256,6 +261,8 @@ private:
     // program that traces the scene reads.
     void bindScene(const GlProgram& program, glm::ivec2 size, int firstSample, int samplesPerPass);
     void updateProgramKey();
+    // The surface probe's four outputs of set outputSet (shaders/surface_probe.frag) for filmPos.
+    std::vector<glm::vec4> runSurfaceProbe(glm::vec2 filmPos, int outputSet);
     bool renderRowsInto(Accumulator& target, int& nextRow, int rowCount, int samplesPerPass);
     void resizePreview();
     void drawMean(const Accumulator& shown, PixelRect target, const DisplaySettings& settings, PixelRect clip) const;

@@ -3,7 +3,8 @@
 // OpenGL, so that the JSON writer, the picture and the viewer's table read them as they are.
 // Directions are world space and unit; pdfs are solid-angle densities; a light pdf includes the
 // probability of choosing that light. Vertex 0 is the camera; vertex k + 1 is what the ray of
-// bounce k found: a surface, or the environment (escaped).
+// bounce k found: a surface, a point where a medium scattered it (a bounce like a surface's, its
+// phase function in the BSDF's place), or the environment (escaped).
 
 #include <glm/glm.hpp>
 
@@ -12,18 +13,27 @@
 namespace ptview {
 
 struct PathVertex {
-    enum class Kind { Camera, Surface, Escaped };
+    enum class Kind { Camera, Surface, Medium, Escaped };
     Kind kind = Kind::Camera;
-    glm::vec3 position{0.0f};       // camera and surface; for an escaped vertex, see `direction`
+    glm::vec3 position{0.0f};       // camera, surface and medium; for an escaped vertex, see `direction`
     glm::vec3 normalGeom{0.0f};     // surface only
     glm::vec3 normalShading{0.0f};
-    int material = -1;              // index into the scene's materials, -1: none
+    int material = -1;              // index into the scene's materials, -1: none (a medium's point: the medium's)
     int surfaceLight = -1;          // light index of the emitting surface hit, -1: none
+
+    // Where a medium scattered the path (Kind::Medium): its coefficients.
+    glm::vec3 sigmaT{0.0f};         // extinction, sigma_a + sigma_s, per metre
+    float phaseG = 0.0f;            // Henyey-Greenstein asymmetry
+
+    // Media on the way (all 1 in scenes without media).
+    glm::vec3 segmentTransmittance{1.0f};  // of the segment that reached this vertex
+    glm::vec3 transmittanceSoFar{1.0f};    // of all the segments from the camera to here
+    glm::vec3 shadowTransmittance{1.0f};   // of the light sample's shadow ray
 
     glm::vec3 throughputIn{0.0f};   // the path's weight arriving here
     glm::vec3 throughputOut{0.0f};  // leaving (sample weight and roulette applied); 0 where the path ends
 
-    // The BSDF sample taken here (continues the path).
+    // The BSDF sample taken here (continues the path); at a medium's point the phase function's.
     bool bsdfSampled = false;       // a sample of nonzero pdf was drawn
     bool bsdfDelta = false;         // from a delta lobe (mirror, glass): no density to weigh against
     float bsdfPdf = 0.0f;           // its density as sampled
@@ -67,7 +77,7 @@ struct PathVertex {
 // How the recording pass hands a vertex over: kRecordFields vec4 (shaders/path_recorder.glsl says
 // what each holds), field 0's w holding these flags as a float of exact integer value. The GLSL
 // gets both from here, as the generated include "recorded_path.glsl" (PathRecorder.h).
-constexpr int kRecordFields = 12;
+constexpr int kRecordFields = 14;
 
 enum VertexFlag : unsigned {
     kVertexExists = 1u,
@@ -84,6 +94,7 @@ enum VertexFlag : unsigned {
     kVertexRoulette = 2048u,
     kVertexRouletteEnded = 4096u,
     kVertexContinued = 8192u,
+    kVertexMedium = 16384u,
 };
 
 // Each flag's GLSL name and meaning, for the generated include.
@@ -107,7 +118,19 @@ inline constexpr VertexFlagName kVertexFlagNames[] = {
     {kVertexRoulette, "kVertexRoulette", "roulette was played after this vertex's sample"},
     {kVertexRouletteEnded, "kVertexRouletteEnded", ""},
     {kVertexContinued, "kVertexContinued", "a ray left this vertex"},
+    {kVertexMedium, "kVertexMedium", "a medium scattered the path here (field 1: sigma_t, the medium; 12 w: g)"},
 };
+
+// The name of a vertex's kind, as `ptview paths` writes it and the viewer's paths table shows it.
+inline const char* pathVertexKindName(PathVertex::Kind kind) {
+    switch (kind) {
+    case PathVertex::Kind::Camera: return "camera";
+    case PathVertex::Kind::Surface: return "surface";
+    case PathVertex::Kind::Medium: return "medium";
+    case PathVertex::Kind::Escaped: return "escaped";
+    }
+    return "?";
+}
 
 struct RecordedPath {
     int sampleIndex = 0;      // the render's sample (frame) index this path is
