@@ -1,5 +1,5 @@
 // The BSDF of a material: f, pdf and sampling, dispatched on the material type, for the models
-// this program was built for: diffuse, emitter, diffuse_transmission, mirror, specular_transmission, glass, metal, plastic, principled.
+// this program was built for: diffuse, emitter, diffuse_transmission, mirror, specular_transmission, glass, metal, plastic, principled, medium.
 // Generated for each program by generateBsdfDispatch (renderer/gpu/ShaderFeatures.cpp), so that
 // it compiles only the models its scene uses; shaders/bsdf.glsl is the output for every model.
 // The conventions are at the top of bsdf_common.glsl.

@@ -229,15 +229,22 @@ int nullBoundariesBefore(Ray ray, out ivec4 materials, out vec4 distances) {
     if (!mediaInScene()) return 0;
     vec3 origin = ray.origin;
     int count = 0;
+    int crossedMaterial = -1;
+    vec3 crossedAt = ray.origin;
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         Hit hit;
         if (!intersectScene(ray, hit) || !isNullBoundary(hit.material)) break;
-        if (count < 4) {
-            materials[count] = hit.material;
-            distances[count] = distance(origin, ray.origin + hit.t * ray.direction);
+        vec3 at = ray.origin + hit.t * ray.direction;
+        if (!sameCrossing(hit.material, at, crossedMaterial, crossedAt)) { // as flyToNextVertex counts them
+            if (count < 4) {
+                materials[count] = hit.material;
+                distances[count] = distance(origin, at);
+            }
+            ++count;
         }
-        ++count;
-        ray = spawnRay(hit.posWorld, hit.normalGeom, ray.direction); // on past it as flyToNextVertex goes
+        crossedMaterial = hit.material;
+        crossedAt = at;
+        ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
     }
     return count;
 }
