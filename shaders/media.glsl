@@ -111,6 +111,28 @@ bool sameCrossing(int material, vec3 at, int crossedMaterial, vec3 crossedAt) {
            distance(at, crossedAt) < 8.0 * (kNullBoundaryPush * maxMagnitude(crossedAt) + 1e-8 * uSceneRadius);
 }
 
+// A walk along a ray across null boundaries: the last one met, and how far past it the ray now
+// starts.
+struct BoundaryWalk {
+    int crossedMaterial;
+    vec3 crossedAt;
+    float lead; // from the boundary last crossed to ray.origin, pushed past it
+};
+
+BoundaryWalk startBoundaryWalk(Ray ray) { return BoundaryWalk(-1, ray.origin, 0.0); }
+
+// Takes the ray on past the null boundary it hit. Returns whether that was a crossing of its own
+// (not the last one met again), which the caller counts.
+bool passBoundary(inout Ray ray, inout BoundaryWalk walk, Hit hit) {
+    vec3 at = ray.origin + hit.t * ray.direction;
+    bool newCrossing = !sameCrossing(hit.material, at, walk.crossedMaterial, walk.crossedAt);
+    walk.crossedMaterial = hit.material;
+    walk.crossedAt = at;
+    ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
+    walk.lead = dot(ray.origin - at, ray.direction);
+    return newCrossing;
+}
+
 vec3 opticalDepth(Medium medium, float lengthMetres) {
     return (medium.sigmaA + medium.sigmaS) * min(lengthMetres, kLongestSegment);
 }
@@ -119,23 +141,16 @@ vec3 opticalDepth(Medium medium, float lengthMetres) {
 // boundaries; 0 when any other surface but `light`'s own is in the way. Analytic: no sampling.
 vec3 shadowTransmittance(Ray ray, float maxDistance, int light, MediumStack stack) {
     vec3 depth = vec3(0.0);
-    float lead = 0.0; // from the boundary last crossed to ray.origin, pushed past it
-    int crossedMaterial = -1;
-    vec3 crossedAt = ray.origin;
+    BoundaryWalk walk = startBoundaryWalk(ray);
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         Hit hit;
         bool blocked = intersectScene(ray, hit) && hit.t < maxDistance;
         float segment = blocked ? hit.t : maxDistance;
-        if (inMedium(stack)) depth += opticalDepth(innermostMedium(stack), lead + segment);
+        if (inMedium(stack)) depth += opticalDepth(innermostMedium(stack), walk.lead + segment);
         if (!blocked || (light >= 0 && hit.light == light)) return exp(-depth);
         if (!isNullBoundary(hit.material)) return vec3(0.0);
-        vec3 at = ray.origin + hit.t * ray.direction;
-        if (!sameCrossing(hit.material, at, crossedMaterial, crossedAt)) crossMediumBoundary(stack, hit.material);
-        crossedMaterial = hit.material;
-        crossedAt = at;
-        ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
-        lead = dot(ray.origin - at, ray.direction);
-        maxDistance -= hit.t + lead;
+        if (passBoundary(ray, walk, hit)) crossMediumBoundary(stack, hit.material);
+        maxDistance -= hit.t + walk.lead;
     }
     return vec3(0.0); // more boundaries than a path may cross: counted as blocked
 }
@@ -160,12 +175,10 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
     vec3 scatteringDepth = vec3(0.0); // through media that scatter: the sampled part
     vec3 absorbingDepth = vec3(0.0);  // through media that only absorb: taken as it is
     float travelled = 0.0; // from the vertex to the boundary last crossed
-    float lead = 0.0;      // from that boundary to ray.origin, pushed past it
-    int crossedMaterial = -1;
-    vec3 crossedAt = ray.origin;
+    BoundaryWalk walk = startBoundaryWalk(ray);
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         bool found = intersectScene(ray, hit);
-        float segment = lead + (found ? hit.t : kInfinity); // from the boundary
+        float segment = walk.lead + (found ? hit.t : kInfinity); // from the boundary
         if (inMedium(stack)) {
             Medium medium = innermostMedium(stack);
             vec3 segmentDepth = opticalDepth(medium, segment);
@@ -178,7 +191,7 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
                     float pdf = dot(channelProbability, sigmaT * exp(-depth));
                     if (!(pdf > 0.0)) return kFlightLost;
                     throughput *= medium.sigmaS * exp(-depth - absorbingDepth) / pdf;
-                    scattering = MediumVertex(ray.origin + (t - lead) * ray.direction, medium);
+                    scattering = MediumVertex(ray.origin + (t - walk.lead) * ray.direction, medium);
                     return kFlightScattered;
                 }
                 scatteringDepth += segmentDepth;
@@ -194,12 +207,7 @@ int flyToNextVertex(Ray ray, inout MediumStack stack, inout vec3 throughput, vec
             hit.t = travelled;
             return found ? kFlightSurface : kFlightEscaped;
         }
-        vec3 at = ray.origin + hit.t * ray.direction;
-        if (!sameCrossing(hit.material, at, crossedMaterial, crossedAt)) crossMediumBoundary(stack, hit.material);
-        crossedMaterial = hit.material;
-        crossedAt = at;
-        ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
-        lead = dot(ray.origin - at, ray.direction);
+        if (passBoundary(ray, walk, hit)) crossMediumBoundary(stack, hit.material);
     }
     return kFlightLost;
 }
@@ -229,22 +237,17 @@ int nullBoundariesBefore(Ray ray, out ivec4 materials, out vec4 distances) {
     if (!mediaInScene()) return 0;
     vec3 origin = ray.origin;
     int count = 0;
-    int crossedMaterial = -1;
-    vec3 crossedAt = ray.origin;
+    BoundaryWalk walk = startBoundaryWalk(ray);
     for (int crossing = 0; crossing <= kMaxMediumCrossings; ++crossing) {
         Hit hit;
         if (!intersectScene(ray, hit) || !isNullBoundary(hit.material)) break;
-        vec3 at = ray.origin + hit.t * ray.direction;
-        if (!sameCrossing(hit.material, at, crossedMaterial, crossedAt)) { // as flyToNextVertex counts them
+        if (passBoundary(ray, walk, hit)) { // as flyToNextVertex counts them
             if (count < 4) {
                 materials[count] = hit.material;
-                distances[count] = distance(origin, at);
+                distances[count] = distance(origin, walk.crossedAt);
             }
             ++count;
         }
-        crossedMaterial = hit.material;
-        crossedAt = at;
-        ray = continuePastBoundary(at, hit.normalGeom, ray.direction);
     }
     return count;
 }
