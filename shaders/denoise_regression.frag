@@ -195,15 +195,12 @@ void main() {
             }
         }
 
-    // Each fit's value at p, and its SURE. The centre's own weight (geometry and patch weight 1)
-    // is its variance factor alone.
-    float tolerated = kVarianceTolerance * expectedVariance;
-    float centreWeight = (tolerated + 1e-20) / (max(tolerated, centre.a) + 1e-20);
-    float inverse00;
     // A line fitted to noise can overshoot below 0 where the light is dim: radiance is not negative.
+    float inverse00;
     vec3 narrow = max(interceptOf(xtwxNarrow, xtwyNarrow, inverse00), vec3(0.0));
-    float scale = 1.0 / (luminance(narrow) * luminance(narrow) + 1e-2);
+    // The fit's variance from the centre's: the neighbours that count have about as much noise
+    // (those with more count for less, above).
     outNarrow = vec4(narrow, centre.a * inverse00);
     vec3 wide = max(interceptOf(xtwxWide, xtwyWide, inverse00), vec3(0.0));
-    outWide = vec4(wide, centre.a * inverse00);
+    outWide = vec4(wide, 0.0);
 }
