@@ -12,19 +12,27 @@
 // weighs its regression): 3x3 patches around the pixel and the neighbour compared, the difference
 // less what their noise explains, over their noise (each pixel's variance of the mean from the
 // prepare pass), times the à-trous filter's geometry weight (denoise_guide.glsl), so that nothing
-// is fitted across a silhouette. Not done here, from NFOR: the two half buffers of samples (the
-// weights of one fitting the other) and the per-pixel choice among bandwidths; the accumulation
-// keeps one sum per pixel, not two.
+// is fitted across a silhouette.
+//
+// The fit is made at two bandwidths at once (the patch distances and geometry weights are
+// shared), the narrower with the variance of its value beside it; denoise_select_bandwidth.frag
+// chooses between them per pixel. NFOR instead estimates each bandwidth's error from two half
+// buffers of samples (the weights of one fitting the other); the accumulation keeps one sum per
+// pixel, not two.
 #include "denoise_guide.glsl"
 
 uniform sampler2D uIllumination; // demodulated rgb (fireflies bounded), variance of its luminance
 uniform sampler2D uGuide;
 uniform sampler2D uAlbedo;
-uniform float uBandwidth;   // non-local means' k: how many standard deviations of noise a patch may differ by
+// Non-local means' k, of each fit: how many standard deviations of noise a patch may differ by.
+uniform float uBandwidthNarrow;
+uniform float uBandwidthWide;
 uniform float uSigmaNormal;
 uniform float uSigmaDepth;
 
-layout(location = 0) out vec4 outIllumination;
+// Each fit's illumination; in the narrower's alpha the variance of its luminance.
+layout(location = 0) out vec4 outNarrow;
+layout(location = 1) out vec4 outWide;
 
 // The window: (2 kWindowRadius + 1)^2 neighbours. NFOR's is 21x21; 15x15 measured within a few
 // percent of it, either way, at about half the cost (docs/denoising.md).
@@ -62,6 +70,53 @@ void featuresOf(vec4 g, vec3 a, vec4 gP, vec3 aP, ivec2 d, out float x[kFeatureC
     x[7] = luminance(a) - luminance(aP);
 }
 
+// Solves (XtWX + ridge) b = XtWY by Cholesky, L L^T, in place in the lower triangle, for the
+// intercept b[0], and returns [(XtWX + ridge)^-1]_00 = |L^-1 e0|^2 in inverse00: the intercept's
+// variance per unit of the data's, were every weight 0 or 1 (weights between make it an
+// overestimate, which is the safe side for the bandwidth choice).
+vec3 interceptOf(float xtwx[kFeatureCount * kFeatureCount], vec3 xtwy[kFeatureCount], out float inverse00) {
+    float weightSum = xtwx[0];
+    for (int i = 1; i < kFeatureCount; ++i) xtwx[i * kFeatureCount + i] += kRidge * weightSum;
+    for (int j = 0; j < kFeatureCount; ++j) {
+        float diagonal = xtwx[j * kFeatureCount + j];
+        for (int k = 0; k < j; ++k) diagonal -= xtwx[j * kFeatureCount + k] * xtwx[j * kFeatureCount + k];
+        if (!(diagonal > 1e-12 * weightSum)) {
+            // Never reached with the ridge; the weighted mean is the safe answer.
+            inverse00 = 1.0 / weightSum;
+            return xtwy[0] / weightSum;
+        }
+        float root = sqrt(diagonal);
+        xtwx[j * kFeatureCount + j] = root;
+        for (int i = j + 1; i < kFeatureCount; ++i) {
+            float s = xtwx[i * kFeatureCount + j];
+            for (int k = 0; k < j; ++k) s -= xtwx[i * kFeatureCount + k] * xtwx[j * kFeatureCount + k];
+            xtwx[i * kFeatureCount + j] = s / root;
+        }
+    }
+    // Forward (L z = XtWY, and L u = e0 beside it), then back (L^T b = z); only the intercept is
+    // wanted, but it is the last unknown the back substitution reaches.
+    vec3 z[kFeatureCount];
+    float u[kFeatureCount];
+    inverse00 = 0.0;
+    for (int i = 0; i < kFeatureCount; ++i) {
+        vec3 s = xtwy[i];
+        float t = (i == 0) ? 1.0 : 0.0;
+        for (int k = 0; k < i; ++k) {
+            s -= xtwx[i * kFeatureCount + k] * z[k];
+            t -= xtwx[i * kFeatureCount + k] * u[k];
+        }
+        z[i] = s / xtwx[i * kFeatureCount + i];
+        u[i] = t / xtwx[i * kFeatureCount + i];
+        inverse00 += u[i] * u[i];
+    }
+    for (int i = kFeatureCount - 1; i >= 0; --i) {
+        vec3 s = z[i];
+        for (int k = i + 1; k < kFeatureCount; ++k) s -= xtwx[k * kFeatureCount + i] * z[k];
+        z[i] = s / xtwx[i * kFeatureCount + i];
+    }
+    return z[0];
+}
+
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(uIllumination, 0);
@@ -69,7 +124,7 @@ void main() {
     vec4 guideP = texelFetch(uGuide, p, 0);
     // An outline pixel (part surface, part light or sky) has no neighbour that is a fair stand-in.
     if (isOutline(guideP)) {
-        outIllumination = centre;
+        outNarrow = outWide = vec4(centre.rgb, 0.0);
         return;
     }
     vec3 albedoP = texelFetch(uAlbedo, p, 0).rgb;
@@ -91,10 +146,10 @@ void main() {
 
     // The normal equations of the weighted fit: XtWX (symmetric, kept whole for plain indexing)
     // and XtWY per channel.
-    float xtwx[kFeatureCount * kFeatureCount];
-    vec3 xtwy[kFeatureCount];
-    for (int i = 0; i < kFeatureCount * kFeatureCount; ++i) xtwx[i] = 0.0;
-    for (int i = 0; i < kFeatureCount; ++i) xtwy[i] = vec3(0.0);
+    float xtwxNarrow[kFeatureCount * kFeatureCount], xtwxWide[kFeatureCount * kFeatureCount];
+    vec3 xtwyNarrow[kFeatureCount], xtwyWide[kFeatureCount];
+    for (int i = 0; i < kFeatureCount * kFeatureCount; ++i) xtwxNarrow[i] = xtwxWide[i] = 0.0;
+    for (int i = 0; i < kFeatureCount; ++i) xtwyNarrow[i] = xtwyWide[i] = vec3(0.0);
 
     for (int dy = -kWindowRadius; dy <= kWindowRadius; ++dy)
         for (int dx = -kWindowRadius; dx <= kWindowRadius; ++dx) {
@@ -116,7 +171,7 @@ void main() {
                 difference += delta * delta - cancelled;
                 noise += cancelled;
             }
-            w *= exp(-max(difference, 0.0) / (uBandwidth * uBandwidth * noise + 1e-10));
+            float excess = max(difference, 0.0);
             // A neighbour noisier than expected (a firefly the prepare pass's bound left, in a
             // cluster of them on metal) counts for less, as least squares with unequal noise
             // weighs each point by its inverse variance. The fit stays unbiased for a linear
@@ -124,54 +179,28 @@ void main() {
             vec4 tapQ = texelFetch(uIllumination, q, 0);
             float tolerated = kVarianceTolerance * expectedVariance;
             w *= (tolerated + 1e-20) / (max(tolerated, tapQ.a) + 1e-20);
+            float wNarrow = w * exp(-excess / (uBandwidthNarrow * uBandwidthNarrow * noise + 1e-10));
+            float wWide = w * exp(-excess / (uBandwidthWide * uBandwidthWide * noise + 1e-10));
             float x[kFeatureCount];
             featuresOf(guideQ, texelFetch(uAlbedo, q, 0).rgb, guideP, albedoP, d, x);
             vec3 y = tapQ.rgb;
             for (int i = 0; i < kFeatureCount; ++i) {
-                float wx = w * x[i];
-                xtwy[i] += wx * y;
-                for (int j = 0; j <= i; ++j) xtwx[i * kFeatureCount + j] += wx * x[j];
+                float wxNarrow = wNarrow * x[i], wxWide = wWide * x[i];
+                xtwyNarrow[i] += wxNarrow * y;
+                xtwyWide[i] += wxWide * y;
+                for (int j = 0; j <= i; ++j) {
+                    xtwxNarrow[i * kFeatureCount + j] += wxNarrow * x[j];
+                    xtwxWide[i * kFeatureCount + j] += wxWide * x[j];
+                }
             }
         }
 
-    // Solve (XtWX + ridge) b = XtWY by Cholesky, L L^T, in place in the lower triangle.
-    float weightSum = xtwx[0];
-    for (int i = 1; i < kFeatureCount; ++i) xtwx[i * kFeatureCount + i] += kRidge * weightSum;
-    bool solved = true;
-    for (int j = 0; j < kFeatureCount; ++j) {
-        float diagonal = xtwx[j * kFeatureCount + j];
-        for (int k = 0; k < j; ++k) diagonal -= xtwx[j * kFeatureCount + k] * xtwx[j * kFeatureCount + k];
-        if (!(diagonal > 1e-12 * weightSum)) {
-            solved = false;
-            break;
-        }
-        float root = sqrt(diagonal);
-        xtwx[j * kFeatureCount + j] = root;
-        for (int i = j + 1; i < kFeatureCount; ++i) {
-            float s = xtwx[i * kFeatureCount + j];
-            for (int k = 0; k < j; ++k) s -= xtwx[i * kFeatureCount + k] * xtwx[j * kFeatureCount + k];
-            xtwx[i * kFeatureCount + j] = s / root;
-        }
-    }
-    vec3 estimate;
-    if (solved) {
-        // Forward (L z = XtWY), then back (L^T b = z); only the intercept is wanted, but it is the
-        // last unknown the back substitution reaches.
-        vec3 z[kFeatureCount];
-        for (int i = 0; i < kFeatureCount; ++i) {
-            vec3 s = xtwy[i];
-            for (int k = 0; k < i; ++k) s -= xtwx[i * kFeatureCount + k] * z[k];
-            z[i] = s / xtwx[i * kFeatureCount + i];
-        }
-        for (int i = kFeatureCount - 1; i >= 0; --i) {
-            vec3 s = z[i];
-            for (int k = i + 1; k < kFeatureCount; ++k) s -= xtwx[k * kFeatureCount + i] * z[k];
-            z[i] = s / xtwx[i * kFeatureCount + i];
-        }
-        estimate = z[0];
-    } else {
-        estimate = xtwy[0] / weightSum; // the weighted mean: never reached with the ridge, kept as the safe answer
-    }
     // A line fitted to noise can overshoot below 0 where the light is dim: radiance is not negative.
-    outIllumination = vec4(max(estimate, vec3(0.0)), centre.a);
+    float inverse00;
+    vec3 narrow = max(interceptOf(xtwxNarrow, xtwyNarrow, inverse00), vec3(0.0));
+    // The fit's variance from the centre's: the neighbours that count have about as much noise
+    // (those with more count for less, above).
+    outNarrow = vec4(narrow, centre.a * inverse00);
+    vec3 wide = max(interceptOf(xtwxWide, xtwyWide, inverse00), vec3(0.0));
+    outWide = vec4(wide, 0.0);
 }

@@ -15,8 +15,9 @@ struct DenoiseSettings {
     // cornell_spheres (3 and 5 close behind, 6 worse: docs/denoising.md).
     int iterations = 4;
     // How many standard deviations of a pixel's own noise a neighbour's brightness may differ by
-    // and still count (SVGF's sigma_l; the regression filter's non-local-means bandwidth is this
-    // times Denoiser's kRegressionBandwidthPerStrength): larger is smoother and more biased.
+    // and still count (SVGF's sigma_l; the regression filter's narrower non-local-means bandwidth
+    // is this times Denoiser's kRegressionBandwidthPerStrength, its wider twice that): larger is
+    // smoother and more biased.
     float strength = 4.0f;
     // Which filter: the à-trous one (the viewer's, fast) or the regression (final renders).
     DenoiseAlgorithm algorithm = DenoiseAlgorithm::Atrous;

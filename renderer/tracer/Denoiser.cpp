@@ -14,7 +14,7 @@ namespace {
 // Units of the filter passes: the accumulation's three sums, then the features. The feature pass
 // traces the scene, whose textures take units 3 and up, so its previous sums take 0 and 1.
 constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4;
-constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2;
+constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2, kWideUnit = 3;
 
 // The edge-stopping functions' widths (denoise_guide.glsl). SVGF's normal exponent is 128 for
 // exact per-pixel normals; ours are averaged over the pixel's samples, and 16 measured better
@@ -25,6 +25,10 @@ constexpr float kSigmaDepth = 1.0f; // in units of the depth's change per pixel,
 // The regression filter's non-local-means bandwidth k per unit of --denoise-strength: its default
 // strength, 4, gives k = 1 (docs/denoising.md has the measurements).
 constexpr float kRegressionBandwidthPerStrength = 0.25f;
+// The regression's second fit has this many times the bandwidth of the first; each pixel then
+// takes the wider where the two agree (denoise_select_bandwidth.frag; docs/denoising.md: the
+// diffuse walls want the wider, the helmet's firefly clusters the narrower).
+constexpr float kRegressionWideBandwidthFactor = 2.0f;
 
 // A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...
 GlFramebuffer createFramebufferOf(std::initializer_list<GLuint> textures) {
@@ -71,6 +75,10 @@ Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     regression_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     regression_->bindSamplerUnit("uGuide", kGuideUnit);
     regression_->bindSamplerUnit("uAlbedo", kAlbedoUnit);
+    bandwidthSelection_ = buildFilterProgram(shaderDir_, "denoise_select_bandwidth.frag");
+    bandwidthSelection_->bindSamplerUnit("uNarrow", kIlluminationUnit);
+    bandwidthSelection_->bindSamplerUnit("uGuide", kGuideUnit);
+    bandwidthSelection_->bindSamplerUnit("uWide", kWideUnit);
     compose_ = buildFilterProgram(shaderDir_, "denoise_compose.frag");
     compose_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     compose_->bindSamplerUnit("uAlbedo", kAlbedoUnit);
@@ -103,6 +111,8 @@ void Denoiser::resize(glm::ivec2 size) {
         result_[i] = createFloatTexture(size);
         resultFramebuffer_[i] = createFramebufferOf({result_[i].id()});
     }
+    regressionWide_ = createFloatTexture(size);
+    regressionFramebuffer_ = createFramebufferOf({illumination_[1].id(), regressionWide_.id()});
     size_ = size;
     featureSamples_ = 0;
     resultSamples_ = 0;
@@ -173,10 +183,13 @@ bool Denoiser::advance(PathTracer& tracer, int rows) {
             if (cycle_.nextRow == 0) cycle_.samples = tracer.sampleCount();
             drawPrepareRows(tracer, cycle_.nextRow, rowEnd);
         } else if (step < cycle_.stepCount() - 1) {
-            if (cycle_.settings.algorithm == DenoiseAlgorithm::Regression)
+            const int filterPass = step - cycle_.featurePasses - 1;
+            if (cycle_.settings.algorithm != DenoiseAlgorithm::Regression)
+                drawAtrousRows(filterPass, cycle_.nextRow, rowEnd);
+            else if (filterPass == 0)
                 drawRegressionRows(cycle_.nextRow, rowEnd);
             else
-                drawAtrousRows(step - cycle_.featurePasses - 1, cycle_.nextRow, rowEnd);
+                drawBandwidthSelectionRows(cycle_.nextRow, rowEnd);
         } else {
             drawComposeRows(cycle_.nextRow, rowEnd);
         }
@@ -240,17 +253,32 @@ void Denoiser::drawAtrousRows(int iteration, int rowBegin, int rowEnd) {
     drawRows(rowBegin, rowEnd);
 }
 
-// Reads illumination_[0] (the prepare pass's) and writes [1].
+// Reads illumination_[0] (the prepare pass's) and writes the fits at two bandwidths: the narrower
+// to illumination_[1], the wider to regressionWide_.
 void Denoiser::drawRegressionRows(int rowBegin, int rowEnd) {
     glUseProgram(regression_->id());
-    glUniform1f(regression_->uniformLocation("uBandwidth"), kRegressionBandwidthPerStrength * cycle_.settings.strength);
+    const float bandwidth = kRegressionBandwidthPerStrength * cycle_.settings.strength;
+    glUniform1f(regression_->uniformLocation("uBandwidthNarrow"), bandwidth);
+    glUniform1f(regression_->uniformLocation("uBandwidthWide"), kRegressionWideBandwidthFactor * bandwidth);
     glUniform1f(regression_->uniformLocation("uSigmaNormal"), kSigmaNormal);
     glUniform1f(regression_->uniformLocation("uSigmaDepth"), kSigmaDepth);
     bindTexture(kIlluminationUnit, illumination_[0].id());
     bindTexture(kGuideUnit, guide_.id());
     bindTexture(kAlbedoUnit, albedo_.id());
     glActiveTexture(GL_TEXTURE0);
-    glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[1].id());
+    glBindFramebuffer(GL_FRAMEBUFFER, regressionFramebuffer_.id());
+    drawRows(rowBegin, rowEnd);
+}
+
+// Reads the two fits and writes, per pixel, the one chosen to illumination_[0] (what compose reads
+// after an even number of filter passes).
+void Denoiser::drawBandwidthSelectionRows(int rowBegin, int rowEnd) {
+    glUseProgram(bandwidthSelection_->id());
+    bindTexture(kIlluminationUnit, illumination_[1].id());
+    bindTexture(kGuideUnit, guide_.id());
+    bindTexture(kWideUnit, regressionWide_.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[0].id());
     drawRows(rowBegin, rowEnd);
 }
 

@@ -60,9 +60,10 @@ public:
 
     static constexpr int kMaxFeatureSamples = 64;
 
-    // The passes between prepare and compose: the à-trous iterations, or the one regression pass.
+    // The passes between prepare and compose: the à-trous iterations, or the regression's two
+    // (the fits at two bandwidths, then the per-pixel choice between them).
     static int filterPassCount(const DenoiseSettings& settings) {
-        return settings.algorithm == DenoiseAlgorithm::Regression ? 1 : settings.iterations;
+        return settings.algorithm == DenoiseAlgorithm::Regression ? 2 : settings.iterations;
     }
 
 private:
@@ -91,6 +92,7 @@ private:
     void drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawAtrousRows(int iteration, int rowBegin, int rowEnd);
     void drawRegressionRows(int rowBegin, int rowEnd);
+    void drawBandwidthSelectionRows(int rowBegin, int rowEnd);
     void drawComposeRows(int rowBegin, int rowEnd);
     void drawRows(int rowBegin, int rowEnd) const;
     void finishStep(PathTracer& tracer);
@@ -100,7 +102,7 @@ private:
     std::unique_ptr<GlProgram> featureProgram_;
     ShaderFeatures featureProgramFeatures_;
     SamplerMode featureProgramSampler_ = SamplerMode::Random;
-    std::unique_ptr<GlProgram> prepare_, atrous_, regression_, compose_;
+    std::unique_ptr<GlProgram> prepare_, atrous_, regression_, bandwidthSelection_, compose_;
     GlVertexArray emptyVertexArray_;
 
     glm::ivec2 size_{0, 0};
@@ -113,6 +115,10 @@ private:
     GlFramebuffer prepareFramebuffer_;
     GlTexture illumination_[2], guide_, albedo_;
     GlFramebuffer illuminationFramebuffer_[2];
+    // The regression's fit at the wider bandwidth (the narrower goes to illumination_[1]), each
+    // with its estimated error in alpha, and the framebuffer writing both.
+    GlTexture regressionWide_;
+    GlFramebuffer regressionFramebuffer_;
     // Two results: the last finished one is shown while the next is composed.
     GlFramebuffer resultFramebuffer_[2];
     GlTexture result_[2];
