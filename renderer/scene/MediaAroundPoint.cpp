@@ -1,5 +1,7 @@
 #include <ptview/scene/MediaAroundPoint.h>
 
+#include <ptview/scene/MediumBoundaries.h>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
@@ -9,11 +11,6 @@
 
 namespace ptview {
 namespace {
-
-bool boundsMedium(const Scene& scene, int material) {
-    return material >= 0 && static_cast<std::size_t>(material) < scene.materials.size() &&
-           scene.materials[static_cast<std::size_t>(material)].boundsMedium();
-}
 
 // Whether the ray from `origin` along `direction` crosses the triangle (Moller-Trumbore).
 bool crosses(glm::vec3 origin, glm::vec3 direction, glm::vec3 a, glm::vec3 b, glm::vec3 c) {

@@ -19,11 +19,6 @@ std::string pointText(const glm::vec3& p) {
     return text;
 }
 
-bool boundsMedium(const Scene& scene, int material) {
-    return material >= 0 && static_cast<std::size_t>(material) < scene.materials.size() &&
-           scene.materials[static_cast<std::size_t>(material)].boundsMedium();
-}
-
 // The first edge of the mesh's medium-bounding triangles that an odd number of them share (a
 // closed surface has every edge on two, or on an even number where surfaces touch); nullopt: closed.
 std::optional<std::string> openEdge(const Scene& scene, const Shape& shape) {
@@ -66,6 +61,11 @@ std::optional<std::string> openEdge(const Scene& scene, const Shape& shape) {
 }
 
 } // namespace
+
+bool boundsMedium(const Scene& scene, int material) {
+    return material >= 0 && static_cast<std::size_t>(material) < scene.materials.size() &&
+           scene.materials[static_cast<std::size_t>(material)].boundsMedium();
+}
 
 std::optional<OpenMediumBoundary> findOpenMediumBoundary(const Scene& scene) {
     for (std::size_t i = 0; i < scene.shapes.size(); ++i) {

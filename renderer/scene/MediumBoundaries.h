@@ -12,6 +12,10 @@
 
 namespace ptview {
 
+// Whether scene.materials[material] bounds a medium; false for an index out of range (a shape's
+// material not yet resolved).
+bool boundsMedium(const Scene& scene, int material);
+
 struct OpenMediumBoundary {
     std::size_t shape; // into Scene::shapes
     std::string what;  // "a quad encloses no volume", "the edge from (x, y, z) to (x, y, z) ..."
