@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace ptview {
@@ -23,8 +25,8 @@ struct Field {
         input.pixelRelativeMse = &error;
         input.pixelSampleCounts = &counts;
         input.pixelTakesSamples = &takesSamples;
-        input.thresholdRelativeMse = threshold;
         input.minSamples = minSamples;
+        input.thresholdRelativeMsePerSample = threshold / counts[0]; // equal counts: the plain threshold
         return pixelsToStop(input);
     }
 };
@@ -102,8 +104,8 @@ TEST(AdaptiveStopRule, TilesStopOnlyWhole) {
     input.pixelRelativeMse = &field.error;
     input.pixelSampleCounts = &field.counts;
     input.pixelTakesSamples = &field.takesSamples;
-    input.thresholdRelativeMse = 1e-4;
     input.minSamples = 16;
+    input.thresholdRelativeMsePerSample = 1e-4 / 64;
     input.tileSide = 4;
     for (size_t i = 0; i < stop.size(); ++i) EXPECT_EQ(pixelsToStop(input)[i], stop[i]) << "all converged: as without tiles";
     // Pixel (0, 0) (top left) cannot stop (too few samples), which holds back (1, 0), (0, 1) and
@@ -122,6 +124,89 @@ TEST(AdaptiveStopRule, TilesStopOnlyWhole) {
     for (int y = 0; y < 6; ++y)
         for (int x = 0; x < 6; ++x)
             EXPECT_EQ(stop[field.at(x, y)], (x <= 1 && y <= 1) || (x == 5 && y == 0) ? 0 : 1) << x << " " << y;
+}
+
+// A pixel's threshold grows with its samples: at the same error, the pixel with more samples (whose
+// next samples buy less) stops, the other does not.
+TEST(AdaptiveStopRule, APixelsThresholdIsPerSample) {
+    Field field(8, 8, 1e-4, 64);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 4; x < 8; ++x) field.counts[field.at(x, y)] = 256;
+    AdaptiveStopInput input;
+    input.width = input.height = 8;
+    input.pixelRelativeMse = &field.error;
+    input.pixelSampleCounts = &field.counts;
+    input.pixelTakesSamples = &field.takesSamples;
+    input.minSamples = 16;
+    input.thresholdRelativeMsePerSample = 1e-4 / 128; // 0.5e-4 at 64 samples, 2e-4 at 256
+    std::vector<std::uint8_t> stop = pixelsToStop(input);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) EXPECT_EQ(stop[field.at(x, y)], x >= 5 ? 1 : 0) << x << " " << y; // x = 4: held by x = 3
+}
+
+// Pixels whose errors fall as v / n, checked every 1.25x samples as AdaptiveSampler does: the
+// marginal threshold gives the noisier half sqrt(100) = 10 times the samples of the other half
+// (an equal threshold would give it 100 times), reaches the target error, and spends 0.6x the
+// samples an equal threshold spends for it ((1 + 10)^2 / 4 / ((1 + 100) / 2)).
+TEST(AdaptiveStopRule, TheMarginalThresholdSpendsSamplesAsTheSquareRootOfTheVariance) {
+    const int w = 32, h = 8;
+    const double target = 1e-4;
+    Field field(w, h, 0.0, 64);
+    std::vector<double> variancePerSample(size_t(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) variancePerSample[field.at(x, y)] = x < w / 2 ? 1.0 : 0.01;
+    AdaptiveStopInput input;
+    input.width = w;
+    input.height = h;
+    input.pixelRelativeMse = &field.error;
+    input.pixelSampleCounts = &field.counts;
+    input.pixelTakesSamples = &field.takesSamples;
+    input.minSamples = 64;
+    int checks = 0;
+    for (; checks < 100; ++checks) {
+        bool anySampled = false;
+        for (size_t i = 0; i < field.error.size(); ++i)
+            if (field.takesSamples[i]) {
+                field.error[i] = variancePerSample[i] / field.counts[i];
+                anySampled = true;
+            }
+        if (!anySampled) break;
+        std::vector<double> neighbourhood = neighbourhoodRelativeMse(input);
+        input.thresholdRelativeMsePerSample = marginalStopThreshold(input, neighbourhood, target);
+        std::vector<std::uint8_t> stop = pixelsToStop(input);
+        for (size_t i = 0; i < stop.size(); ++i) {
+            if (stop[i]) field.takesSamples[i] = 0;
+            if (field.takesSamples[i]) field.counts[i] = int(std::ceil(field.counts[i] * 1.25));
+        }
+    }
+    ASSERT_LT(checks, 100);
+    double meanError = 0.0, samples = 0.0, equalThresholdSamples = 0.0;
+    for (size_t i = 0; i < field.error.size(); ++i) {
+        meanError += field.error[i] / field.error.size();
+        samples += field.counts[i];
+        equalThresholdSamples += std::max(64.0, variancePerSample[i] / target);
+    }
+    EXPECT_LE(meanError, target * 1.02);
+    EXPECT_GE(meanError, target * 0.75) << "not far past it either";
+    EXPECT_LT(samples, 0.7 * equalThresholdSamples);
+    // Away from the border between the halves (where 3x3 means mix them), the counts' ratio is
+    // sqrt(100), to within a check's 1.25.
+    const double ratio = double(field.counts[field.at(2, 4)]) / field.counts[field.at(w - 3, 4)];
+    EXPECT_GT(ratio, 10.0 / 1.3);
+    EXPECT_LT(ratio, 10.0 * 1.3);
+}
+
+TEST(AdaptiveStopRule, MarginalThresholdAtTheEnds) {
+    Field field(4, 4, 1e-4, 64);
+    AdaptiveStopInput input;
+    input.width = input.height = 4;
+    input.pixelRelativeMse = &field.error;
+    input.pixelSampleCounts = &field.counts;
+    input.pixelTakesSamples = &field.takesSamples;
+    EXPECT_TRUE(std::isinf(marginalStopThreshold(input, field.error, 1.01e-4))) << "there already: every pixel may stop";
+    EXPECT_GT(marginalStopThreshold(input, field.error, 0.5e-4), 0.0);
+    for (auto& flag : field.takesSamples) flag = 0;
+    EXPECT_EQ(marginalStopThreshold(input, field.error, 0.5e-4), 0.0) << "the stopped pixels alone exceed it";
 }
 
 TEST(AdaptiveStopRule, RefusesArraysOfTheWrongSize) {

@@ -221,7 +221,7 @@ int runRenderCommand(const RenderOptions& requested) {
             const SampleCountSummary& counts = adaptive->sampleCounts();
             const std::string threshold = secondsText(*options.noiseThreshold);
             const std::string stop = adaptive->reachedThreshold() ? "the estimate reached --noise-threshold " + threshold
-                                     : adaptive->allStopped()     ? "every pixel stopped (each neighbourhood reached " + threshold + ")"
+                                     : adaptive->allStopped()     ? "every pixel stopped (their errors average " + threshold + " squared or less)"
                                      : outOfTime ? "--time " + secondsText(*options.timeLimitSeconds) + " s passed during the last check"
                                                  : "the cap of " + std::to_string(maxSamples) + " spp came first";
             char error[64];

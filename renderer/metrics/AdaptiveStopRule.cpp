@@ -1,32 +1,85 @@
 #include <ptview/metrics/AdaptiveStopRule.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace ptview {
 
-std::vector<std::uint8_t> pixelsToStop(const AdaptiveStopInput& input) {
-    const int w = input.width, h = input.height;
-    const size_t pixels = size_t(std::max(w, 0)) * size_t(std::max(h, 0));
+namespace {
+
+void checkSizes(const AdaptiveStopInput& input) {
+    const size_t pixels = size_t(std::max(input.width, 0)) * size_t(std::max(input.height, 0));
     if (!input.pixelRelativeMse || !input.pixelSampleCounts || !input.pixelTakesSamples ||
         input.pixelRelativeMse->size() != pixels || input.pixelSampleCounts->size() != pixels ||
         input.pixelTakesSamples->size() != pixels)
-        throw std::invalid_argument("pixelsToStop: one error, count and flag per pixel expected");
-    auto index = [w](int x, int y) { return size_t(y) * size_t(w) + size_t(x); };
-    std::vector<std::uint8_t> couldStop(pixels, 0);
+        throw std::invalid_argument("adaptive stop rule: one error, count and flag per pixel expected");
+}
+
+} // namespace
+
+std::vector<double> neighbourhoodRelativeMse(const AdaptiveStopInput& input) {
+    checkSizes(input);
+    const int w = input.width, h = input.height;
+    std::vector<double> means(input.pixelRelativeMse->size(), 0.0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const size_t i = index(x, y);
-            if (!(*input.pixelTakesSamples)[i] || (*input.pixelSampleCounts)[i] < input.minSamples) continue;
             double sum = 0.0;
             int count = 0;
             for (int v = std::max(y - 1, 0); v <= std::min(y + 1, h - 1); ++v)
                 for (int u = std::max(x - 1, 0); u <= std::min(x + 1, w - 1); ++u) {
-                    sum += (*input.pixelRelativeMse)[index(u, v)];
+                    sum += (*input.pixelRelativeMse)[size_t(v) * size_t(w) + size_t(u)];
                     ++count;
                 }
-            couldStop[i] = sum <= input.thresholdRelativeMse * count ? 1 : 0;
+            means[size_t(y) * size_t(w) + size_t(x)] = sum / count;
         }
+    return means;
+}
+
+double marginalStopThreshold(const AdaptiveStopInput& input, const std::vector<double>& relativeMse,
+                             double targetRelativeMse) {
+    checkSizes(input);
+    const size_t pixels = relativeMse.size();
+    if (pixels == 0) return 0.0;
+    // The image's mean error if pixels still sampled stop where e / n falls to mu.
+    auto predicted = [&](double mu) {
+        double sum = 0.0;
+        for (size_t i = 0; i < pixels; ++i) {
+            const double e = std::max(relativeMse[i], 0.0);
+            if (!(*input.pixelTakesSamples)[i] || std::isinf(mu)) {
+                sum += e;
+                continue;
+            }
+            const double variancePerSample = e * std::max((*input.pixelSampleCounts)[i], 1);
+            sum += std::min(e, std::sqrt(variancePerSample * mu));
+        }
+        return sum / double(pixels);
+    };
+    const double infinity = std::numeric_limits<double>::infinity();
+    if (predicted(infinity) <= targetRelativeMse) return infinity;
+    if (predicted(0.0) >= targetRelativeMse) return 0.0;
+    // predicted() grows with mu: bisect on its logarithm, from a bracket found by doubling.
+    double low = 1e-30, high = 1e-30;
+    while (predicted(high) < targetRelativeMse && high < 1e30) high *= 16.0;
+    for (int step = 0; step < 60 && high > low * (1.0 + 1e-9); ++step) {
+        const double mid = std::sqrt(low * high);
+        (predicted(mid) < targetRelativeMse ? low : high) = mid;
+    }
+    return low;
+}
+
+std::vector<std::uint8_t> pixelsToStop(const AdaptiveStopInput& input) {
+    const std::vector<double> neighbourhood = neighbourhoodRelativeMse(input);
+    const int w = input.width, h = input.height;
+    const size_t pixels = neighbourhood.size();
+    auto index = [w](int x, int y) { return size_t(y) * size_t(w) + size_t(x); };
+    std::vector<std::uint8_t> couldStop(pixels, 0);
+    for (size_t i = 0; i < pixels; ++i) {
+        const int samples = (*input.pixelSampleCounts)[i];
+        if (!(*input.pixelTakesSamples)[i] || samples < input.minSamples) continue;
+        couldStop[i] = neighbourhood[i] <= input.thresholdRelativeMsePerSample * samples ? 1 : 0;
+    }
     std::vector<std::uint8_t> stop(pixels, 0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {

@@ -70,6 +70,8 @@ constexpr double kMaxDenominatorDisagreement = 4.0;
 struct ConvergedBrightness {
     glm::dvec3 ownAsFloor;
     glm::dvec3 ownOnceKnown;
+    bool ownKnown[3]; // kOwnMeanSamples samples' worth carry the pixel's own mean
+    glm::dvec3 darkest; // its own unbiased mean^2 alone: the least it may converge to
 };
 
 ConvergedBrightness convergedBrightness(const NeighbourhoodSums& sums, int x, int y, glm::vec3 ownMean,
@@ -96,9 +98,10 @@ ConvergedBrightness convergedBrightness(const NeighbourhoodSums& sums, int x, in
     ConvergedBrightness brightness;
     for (int c = 0; c < 3; ++c) {
         brightness.ownAsFloor[c] = std::max(own[c], neighbourhood[c]) + kRelativeMseEpsilon;
+        brightness.darkest[c] = own[c] + kRelativeMseEpsilon;
         // mean^2 / Var[mean]: how many samples' worth carry the mean (one bright sample: about 1).
-        bool ownKnown = double(ownMean[c]) * ownMean[c] >= kOwnMeanSamples * double(ownVariance[c]);
-        brightness.ownOnceKnown[c] = (ownKnown ? own[c] : neighbourhood[c]) + kRelativeMseEpsilon;
+        brightness.ownKnown[c] = double(ownMean[c]) * ownMean[c] >= kOwnMeanSamples * double(ownVariance[c]);
+        brightness.ownOnceKnown[c] = (brightness.ownKnown[c] ? own[c] : neighbourhood[c]) + kRelativeMseEpsilon;
     }
     return brightness;
 }
@@ -144,11 +147,18 @@ std::vector<PixelErrorTerms> pixelErrorTerms(const PixelStatistics& statistics, 
             PixelErrorTerms& pixel = terms[size_t(y) * size_t(mean.width) + size_t(x)];
             for (int c = 0; c < 3; ++c) {
                 double change = double(now[c]) - double(before[c]);
-                double squaredError = change * change * varianceScale;
+                // A mean that fewer than kOwnMeanSamples samples' worth carry is known no better than
+                // its samples' spread says, however little it changed: a light smaller than the
+                // pixel met by the same share of the samples at both reads shows no change at all.
+                double squaredError = std::max(change * change * varianceScale,
+                                               brightness.ownKnown[c] ? 0.0 : double(variance[c]));
                 double term = squaredError / brightness.ownAsFloor[c];
                 pixel.ownAsFloor += term;
                 pixel.ownAsFloorSquares += term * term;
                 pixel.ownOnceKnown += squaredError / brightness.ownOnceKnown[c];
+                pixel.ownMeanKnown = pixel.ownMeanKnown && brightness.ownKnown[c];
+                pixel.stopRelativeMse += squaredError / (brightness.ownKnown[c] ? brightness.ownOnceKnown[c]
+                                                                                : brightness.darkest[c]);
             }
             pixel.channels = 3;
         }

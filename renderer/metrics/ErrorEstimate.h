@@ -82,9 +82,17 @@ struct PixelErrorTerms {
     double ownOnceKnown = 0.0;
     double ownAsFloorSquares = 0.0;
     int channels = 0;
-    // The pixel's own relative MSE as adaptive sampling judges it: the larger, "own once known"
-    // reading (a firefly is judged against its neighbourhood, so it is not taken for converged).
-    double relativeMse() const { return channels > 0 ? ownOnceKnown / channels : 0.0; }
+    // Every channel's own mean carries kOwnMeanSamples samples' worth: neither a firefly nor a
+    // light smaller than the pixel met by a few samples, whose own error the render cannot know.
+    bool ownMeanKnown = true;
+    // The pixel's own relative MSE as adaptive sampling judges it: the "own once known" reading,
+    // except that a channel whose own mean is not known is judged against the darkest brightness
+    // it may converge to (its own unbiased mean^2, near 0, plus epsilon), not its neighbourhood's:
+    // a firefly on a dim wall and a pixel beside a light that one sample in 80 hit both keep
+    // sampling (judged against the light beside it, the latter looked converged at 8 times its
+    // true value on `mis`).
+    double stopRelativeMse = 0.0;
+    double relativeMse() const { return channels > 0 ? stopRelativeMse / channels : 0.0; }
 };
 
 // Rows top first; every pixel is taken to have statistics.sampleCount samples now and

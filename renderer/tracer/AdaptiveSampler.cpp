@@ -18,14 +18,15 @@ AdaptiveSampler::AdaptiveSampler(PathTracer& tracer, double noiseThreshold, int 
     : tracer_(tracer), noiseThreshold_(noiseThreshold), minSamples_(std::max(minSamples, 1)) {
     tracer_.restart();
     // The first check only takes a snapshot; pixels may stop from the next but one on.
-    nextCheck_ = roundUpToPasses(std::max(1, minSamples_ / 2), tracer_.samplesPerPass());
+    samplesPerPass_ = tracer_.samplesPerPass();
+    nextCheck_ = roundUpToPasses(std::max(1, minSamples_ / 2), samplesPerPass_);
 }
 
 void AdaptiveSampler::renderToNextCheck(int maxSamples) {
     if (allStopped() || tracer_.sampleCount() >= maxSamples) return;
     const int target = std::min(nextCheck_, maxSamples);
     // Whole passes from where the last check left: where passes end decides the sums' rounding.
-    tracer_.renderSamples(target - tracer_.sampleCount());
+    tracer_.renderSamples(target - tracer_.sampleCount(), samplesPerPass_);
     check();
     scheduleNextCheck();
 }
@@ -38,12 +39,20 @@ bool AdaptiveSampler::checkIfDue() {
 }
 
 void AdaptiveSampler::scheduleNextCheck() {
-    const int perPass = tracer_.samplesPerPass();
-    nextCheck_ = std::max(nextCheck_ + perPass, roundUpToPasses(nextCheck_ * kAdaptiveCheckGrowth, perPass));
+    // Passes of the tracer's size until pixels stop; then larger ones, as many samples a pass as the
+    // tracer's would trace over the whole image, but no more than the step to the next check.
+    const int base = tracer_.samplesPerPass();
+    const double sampledPixels = std::max(1.0, (1.0 - summary_.stoppedShare) * double(tracer_.imageSize().x) *
+                                                   double(tracer_.imageSize().y));
+    const int step = std::max(base, static_cast<int>(nextCheck_ * (kAdaptiveCheckGrowth - 1.0)) / base * base);
+    samplesPerPass_ = std::clamp(static_cast<int>(base * double(tracer_.imageSize().x) * tracer_.imageSize().y / sampledPixels),
+                                 base, std::min(std::max(kAdaptiveMaxSamplesPerPass, base), step));
+    nextCheck_ = nextCheck_ + roundUpToPasses(std::max(nextCheck_ * (kAdaptiveCheckGrowth - 1.0), 1.0), samplesPerPass_);
 }
 
 bool AdaptiveSampler::reachedThreshold() const {
-    return estimate_.reliable && estimate_.relativeMse <= noiseThreshold_ * noiseThreshold_;
+    return estimate_.reliable && estimate_.relativeMse <= noiseThreshold_ * noiseThreshold_ &&
+           sampledPixelsWithUnknownMeans_ == 0;
 }
 
 void AdaptiveSampler::check() {
@@ -73,13 +82,17 @@ void AdaptiveSampler::check() {
         input.pixelRelativeMse = &pixelRelativeMse_;
         input.pixelSampleCounts = &stats.pixelSampleCounts;
         input.pixelTakesSamples = &stats.pixelTakesSamples;
-        input.thresholdRelativeMse = noiseThreshold_ * noiseThreshold_;
         input.minSamples = minSamples_;
         input.tileSide = kAdaptiveTileSide;
+        input.thresholdRelativeMsePerSample =
+            marginalStopThreshold(input, neighbourhoodRelativeMse(input), noiseThreshold_ * noiseThreshold_);
         std::vector<std::uint8_t> stop = pixelsToStop(input);
         tracer_.stopPixels(stop);
-        for (size_t i = 0; i < pixels; ++i)
+        sampledPixelsWithUnknownMeans_ = 0;
+        for (size_t i = 0; i < pixels; ++i) {
             if (stop[i]) stats.pixelTakesSamples[i] = 0;
+            if (stats.pixelTakesSamples[i] && !terms_[i].ownMeanKnown) ++sampledPixelsWithUnknownMeans_;
+        }
         // Snapshots older than the one used now will never be used again: the next check has more samples.
         snapshots_.erase(snapshots_.begin(), snapshots_.begin() + (earlier - snapshots_.data()));
     }

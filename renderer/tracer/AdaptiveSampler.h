@@ -25,6 +25,12 @@ inline constexpr int kAdaptiveTileSide = 4;
 // to whole passes, at least one pass later).
 inline constexpr double kAdaptiveCheckGrowth = 1.25;
 
+// Once most pixels stopped, a pass carries more samples (PathTracer::kPixelSamplesPerPass over the
+// pixels still sampled, at most this): a pass over an image whose pixels mostly stopped costs
+// llvmpipe about a millisecond however few pixels it traces, which in a tail of a few noisy tiles
+// cost more than their samples (docs/sampling.md).
+inline constexpr int kAdaptiveMaxSamplesPerPass = 256;
+
 struct SampleCountSummary {
     int min = 0, max = 0;
     double mean = 0.0;
@@ -51,7 +57,11 @@ public:
     // The image's estimated error at the last check: the pixels still sampled as they are now,
     // the stopped ones as they were when they stopped. Not reliable before the second check.
     const ErrorEstimate& estimate() const { return estimate_; }
-    // The estimate is reliable and at most the threshold.
+    // The estimate is reliable and at most the threshold, and no pixel still sampled has a mean
+    // that a few samples carry: the image's estimate judges such a pixel half by its own mean and
+    // half by its neighbourhood's (ErrorEstimate.h), which for a light smaller than the pixel met by
+    // the same share of the samples at two checks read a third of the true error (`mis`,
+    // docs/sampling.md); its tile's few more samples settle which it is.
     bool reachedThreshold() const;
     bool allStopped() const { return summary_.stoppedShare >= 1.0; }
     const SampleCountSummary& sampleCounts() const { return summary_; }
@@ -67,6 +77,7 @@ private:
     double noiseThreshold_;
     int minSamples_;
     int nextCheck_;
+    int samplesPerPass_; // of the passes up to nextCheck_
     struct Snapshot {
         int samples;
         ImageRgbF mean;
@@ -76,6 +87,7 @@ private:
     std::vector<double> pixelRelativeMse_;
     ErrorEstimate estimate_;
     SampleCountSummary summary_;
+    int sampledPixelsWithUnknownMeans_ = 0;
 };
 
 } // namespace ptview

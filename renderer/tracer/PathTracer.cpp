@@ -543,11 +543,14 @@ void PathTracer::warmUp() {
     restart();
 }
 
-void PathTracer::renderSamples(int count) {
+void PathTracer::renderSamples(int count) { renderSamples(count, samplesPerPass()); }
+
+void PathTracer::renderSamples(int count, int samplesPerPass) {
     const int target = accumulator_.sampleCount() + count;
+    const int perPass = std::max(samplesPerPass, 1);
     if (nextRow_ > 0) renderRows(accumulator_.size().y); // a pass begun by renderRows ends first
     while (accumulator_.sampleCount() < target)
-        renderRowsInto(accumulator_, nextRow_, accumulator_.size().y, std::min(samplesPerPass(), target - accumulator_.sampleCount()));
+        renderRowsInto(accumulator_, nextRow_, accumulator_.size().y, std::min(perPass, target - accumulator_.sampleCount()));
 }
 
 int PathTracer::samplesPerPass() const {

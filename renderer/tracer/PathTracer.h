@@ -96,6 +96,9 @@ public:
     // are added to the accumulation, so where passes end changes the last bits. A caller that
     // wants the same bits for the same sample count asks in whole passes.
     void renderSamples(int count);
+    // The same in passes of samplesPerPass (at least 1) instead of samplesPerPass()'s: adaptive
+    // sampling's passes, once most pixels stopped, carry more samples each (AdaptiveSampler.h).
+    void renderSamples(int count, int samplesPerPass);
     // kPixelSamplesPerPass over the pixel count, in [1, kMaxSamplesPerPass]: a pass of about a
     // million paths, short enough on a software rasterizer (docs/performance.md, "Measurements
     // behind code comments").
