@@ -9,7 +9,7 @@ error are interpolated (log-log) between the uniform renders. Times are the rend
 ("after T s" / the written line), so they include no compilation. Not a test: times depend on
 the machine and its load.
 
-usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.05,0.02,0.01]
+usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.05,0.02,0.01] [--reference-spp 16384]
 """
 import math, os, re, subprocess, sys
 import numpy as np
@@ -49,6 +49,11 @@ def main():
         i = args.index('--thresholds')
         thresholds = [float(t) for t in args[i + 1].split(',')]
         del args[i:i + 2]
+    reference_spp = 16384
+    if '--reference-spp' in args:
+        i = args.index('--reference-spp')
+        reference_spp = int(args[i + 1])
+        del args[i:i + 2]
     ptview, outdir, size, scenes = args[0], args[1], args[2], args[3:]
     os.makedirs(outdir, exist_ok=True)
     print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
@@ -57,9 +62,9 @@ def main():
         name = os.path.splitext(os.path.basename(scene))[0]
         refs = []
         for seed in (1000, 1001):
-            path = f'{outdir}/{name}-ref{seed}.pfm'
+            path = f'{outdir}/{name}-{size}-ref{reference_spp}-{seed}.pfm'
             if not os.path.exists(path):
-                render(ptview, scene, size, path, '--spp', '16384', '--sampler', 'sobol', '--seed', str(seed))
+                render(ptview, scene, size, path, '--spp', str(reference_spp), '--sampler', 'sobol', '--seed', str(seed))
             refs.append(pfm(path))
         floor = rel_mse(refs[1], refs[0]) / 2  # each reference's own noise
         print(f'<!-- {name}: reference noise relMSE {floor:.3g} -->', flush=True)
