@@ -173,6 +173,8 @@ int runRenderCommand(const RenderOptions& requested) {
         tracer.setImageSize(size);
         if (!options.program.backend)
             std::fprintf(stderr, "ptview: backend auto: %s\n", tracer.chooseBackend().describe().c_str());
+        else
+            tracer.warmUp(); // llvmpipe compiles a program at its first draw: not part of the render's time
 
         // Batches grow until one takes ~0.2 s, so progress is timed without a sync per sample. They
         // are whole passes of the tracer's samplesPerPass() (but the last), so that where passes
