@@ -18,7 +18,7 @@ struct Field {
     std::vector<std::uint8_t> takesSamples;
     Field(int w, int h, double e, int n) : width(w), height(h), error(size_t(w * h), e), counts(size_t(w * h), n), takesSamples(size_t(w * h), 1) {}
     size_t at(int x, int y) const { return size_t(y * width + x); }
-    std::vector<std::uint8_t> stop(double threshold, int minSamples) const {
+    AdaptiveStopInput input(int minSamples = 16) const {
         AdaptiveStopInput input;
         input.width = width;
         input.height = height;
@@ -26,8 +26,12 @@ struct Field {
         input.pixelSampleCounts = &counts;
         input.pixelTakesSamples = &takesSamples;
         input.minSamples = minSamples;
-        input.thresholdRelativeMsePerSample = threshold / counts[0]; // equal counts: the plain threshold
-        return pixelsToStop(input);
+        return input;
+    }
+    std::vector<std::uint8_t> stop(double threshold, int minSamples) const {
+        AdaptiveStopInput rule = input(minSamples);
+        rule.thresholdRelativeMsePerSample = threshold / counts[0]; // equal counts: the plain threshold
+        return pixelsToStop(rule);
     }
 };
 
@@ -99,12 +103,7 @@ TEST(AdaptiveStopRule, TilesStopOnlyWhole) {
     Field field(6, 6, 0.0, 64);
     field.takesSamples[field.at(5, 0)] = 0; // a stopped pixel holds no tile back
     std::vector<std::uint8_t> stop = field.stop(1e-4, 16);
-    AdaptiveStopInput input;
-    input.width = input.height = 6;
-    input.pixelRelativeMse = &field.error;
-    input.pixelSampleCounts = &field.counts;
-    input.pixelTakesSamples = &field.takesSamples;
-    input.minSamples = 16;
+    AdaptiveStopInput input = field.input(16);
     input.thresholdRelativeMsePerSample = 1e-4 / 64;
     input.tileSide = 4;
     for (size_t i = 0; i < stop.size(); ++i) EXPECT_EQ(pixelsToStop(input)[i], stop[i]) << "all converged: as without tiles";
@@ -132,12 +131,7 @@ TEST(AdaptiveStopRule, APixelsThresholdIsPerSample) {
     Field field(8, 8, 1e-4, 64);
     for (int y = 0; y < 8; ++y)
         for (int x = 4; x < 8; ++x) field.counts[field.at(x, y)] = 256;
-    AdaptiveStopInput input;
-    input.width = input.height = 8;
-    input.pixelRelativeMse = &field.error;
-    input.pixelSampleCounts = &field.counts;
-    input.pixelTakesSamples = &field.takesSamples;
-    input.minSamples = 16;
+    AdaptiveStopInput input = field.input(16);
     input.thresholdRelativeMsePerSample = 1e-4 / 128; // 0.5e-4 at 64 samples, 2e-4 at 256
     std::vector<std::uint8_t> stop = pixelsToStop(input);
     for (int y = 0; y < 8; ++y)
@@ -155,13 +149,7 @@ TEST(AdaptiveStopRule, TheMarginalThresholdSpendsSamplesAsTheSquareRootOfTheVari
     std::vector<double> variancePerSample(size_t(w * h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) variancePerSample[field.at(x, y)] = x < w / 2 ? 1.0 : 0.01;
-    AdaptiveStopInput input;
-    input.width = w;
-    input.height = h;
-    input.pixelRelativeMse = &field.error;
-    input.pixelSampleCounts = &field.counts;
-    input.pixelTakesSamples = &field.takesSamples;
-    input.minSamples = 64;
+    AdaptiveStopInput input = field.input(64);
     int checks = 0;
     for (; checks < 100; ++checks) {
         bool anySampled = false;
@@ -198,11 +186,7 @@ TEST(AdaptiveStopRule, TheMarginalThresholdSpendsSamplesAsTheSquareRootOfTheVari
 
 TEST(AdaptiveStopRule, MarginalThresholdAtTheEnds) {
     Field field(4, 4, 1e-4, 64);
-    AdaptiveStopInput input;
-    input.width = input.height = 4;
-    input.pixelRelativeMse = &field.error;
-    input.pixelSampleCounts = &field.counts;
-    input.pixelTakesSamples = &field.takesSamples;
+    AdaptiveStopInput input = field.input();
     EXPECT_TRUE(std::isinf(marginalStopThreshold(input, field.error, 1.01e-4))) << "there already: every pixel may stop";
     EXPECT_GT(marginalStopThreshold(input, field.error, 0.5e-4), 0.0);
     for (auto& flag : field.takesSamples) flag = 0;
