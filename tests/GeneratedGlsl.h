@@ -31,6 +31,7 @@ inline std::vector<GeneratedInclude> generatedIncludes() {
         {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
         {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},
         {"mesh_instances.glsl", generateMeshInstances(ShaderFeatures::all())},
+        {"texture_slots.glsl", generateTextureSlots(ShaderFeatures::all())},
     };
 }
 
