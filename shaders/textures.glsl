@@ -9,6 +9,7 @@
 // filtering interpolates between texel centres.
 #include "enums.glsl"
 #include "scene_data.glsl"
+#include "srgb_decode_table.glsl"
 
 uniform sampler2DArray uTextureAtlas;
 uniform int uTextureRecordStart; // texel of texture 0's record in uMaterials
@@ -22,9 +23,11 @@ int wrapTexel(int i, int n, uint mode) {
     return m < n ? m : period - 1 - m;
 }
 
-// The exact sRGB transfer function (IEC 61966-2-1), per channel.
+// The exact sRGB decode (IEC 61966-2-1) of an RGBA8 texel's colour, by table: pow() per channel
+// cost more on llvmpipe, where every lookup decodes whether its texture is sRGB or not.
 vec3 srgbToLinear(vec3 c) {
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+    ivec3 byte = ivec3(c * 255.0 + 0.5); // c is byte / 255 as the atlas returns it
+    return vec3(kSrgbToLinear[byte.r], kSrgbToLinear[byte.g], kSrgbToLinear[byte.b]);
 }
 
 vec4 atlasTexel(vec4 place, ivec2 texel, bool srgb) {
