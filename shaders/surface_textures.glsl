@@ -38,8 +38,13 @@ Material fetchSurfaceMaterial(int index, vec2 uv) {
     vec4 textures = texelFetch(uMaterials, kMaterialTexels * index + 4);
     float emissionTexture = texelFetch(uMaterials, kMaterialTexels * index + 3).w;
     if (kBaseColorTextured && textures.x >= 0.0) material.color *= materialTexture(index, int(textures.x), 0, uv).rgb;
-    if (kRoughnessTextured && textures.y >= 0.0) material.roughness *= materialTexture(index, int(textures.y), 1, uv).g;
-    if (kMetallicTextured && textures.z >= 0.0) material.metallic *= materialTexture(index, int(textures.z), 2, uv).b;
+    vec4 roughnessTexel = vec4(1.0);
+    if (kRoughnessTextured && textures.y >= 0.0) {
+        roughnessTexel = materialTexture(index, int(textures.y), 1, uv);
+        material.roughness *= roughnessTexel.g;
+    }
+    if (kMetallicTextured && textures.z >= 0.0)
+        material.metallic *= (kMetallicFromRoughnessTexel ? roughnessTexel : materialTexture(index, int(textures.z), 2, uv)).b;
     if (kEmissionTextured && emissionTexture >= 0.0)
         material.radiance *= materialTexture(index, int(emissionTexture), 4, uv).rgb;
     return material;

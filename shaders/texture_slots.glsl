@@ -9,3 +9,6 @@ const bool kRoughnessTextured = true;
 const bool kMetallicTextured = true;
 const bool kNormalTextured = true;
 const bool kEmissionTextured = true;
+// Every metallic texture is its material's roughness texture with the same scale and offset
+// (glTF's metallicRoughness): the roughness lookup's texel serves both.
+const bool kMetallicFromRoughnessTexel = false;

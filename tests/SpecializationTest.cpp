@@ -171,7 +171,18 @@ TEST(Specialization, OnlyTheTexturedInputsAreRead) {
     EXPECT_TRUE(contains(programSource(spot), "const bool kBaseColorTextured = true;\nconst bool kRoughnessTextured = false;\n"
                                               "const bool kMetallicTextured = false;\nconst bool kNormalTextured = false;\n"
                                               "const bool kEmissionTextured = false;\n"));
-    EXPECT_EQ(sceneFeatures(shippedScene("helmet")).textureSlots, 0x1fu);
+    Scene helmet = shippedScene("helmet");
+    EXPECT_EQ(sceneFeatures(helmet).textureSlots, 0x1fu);
+    // The helmet's metallic and roughness come from one texel (glTF's metallicRoughness texture):
+    // one lookup serves both, until a material reads metallic from elsewhere.
+    EXPECT_TRUE(sceneFeatures(helmet).metallicFromRoughnessTexel);
+    EXPECT_TRUE(contains(programSource(helmet), "const bool kMetallicFromRoughnessTexel = true;"));
+    EXPECT_FALSE(cow.metallicFromRoughnessTexel);
+    for (Material& material : helmet.materials)
+        if (material.metallicTexture.used()) material.metallicTexture.offset.x += 0.5f;
+    EXPECT_FALSE(sceneFeatures(helmet).metallicFromRoughnessTexel);
+    EXPECT_TRUE(sceneFeatures(helmet).covers(sceneFeatures(shippedScene("helmet"))));
+    EXPECT_FALSE(sceneFeatures(shippedScene("helmet")).covers(sceneFeatures(helmet)));
     EXPECT_EQ(sceneFeatures(shippedScene("cornell")).textureSlots, 0u);
     EXPECT_EQ(ShaderFeatures::all().textureSlots, 0x1fu);
     // A roughness texture given in the viewer needs a program that reads it.

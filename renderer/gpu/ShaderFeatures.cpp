@@ -148,7 +148,10 @@ std::string generateTextureSlots(const ShaderFeatures& features) {
            "// (renderer/gpu/ShaderFeatures.cpp). llvmpipe runs every branch for a SIMD group, even on a\n"
            "// material's record that says no texture, so each input read costs a full lookup at every vertex\n"
            "// unless it is compiled out. shaders/texture_slots.glsl is the output for every input.\n" +
-           constants;
+           constants +
+           "// Every metallic texture is its material's roughness texture with the same scale and offset\n"
+           "// (glTF's metallicRoughness): the roughness lookup's texel serves both.\n"
+           "const bool kMetallicFromRoughnessTexel = " + (features.metallicFromRoughnessTexel ? "true" : "false") + ";\n";
 }
 
 namespace {

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <iterator>
 #include <tuple>
 
@@ -16,7 +17,7 @@ namespace {
 auto tied(const ShaderFeatures& f) {
     ShapeCounts unrolled = f.unrolledShapes.value_or(ShapeCounts{-1, -1, -1});
     return std::make_tuple(f.materialModels, f.lightKinds, f.quadLightsUpClose, f.environmentMap,
-                           f.meshes, f.oneMeshInstance, f.textures, f.textureSlots, f.thinLens, f.normalMaps, f.alpha, f.media, unrolled.spheres, unrolled.quads,
+                           f.meshes, f.oneMeshInstance, f.textures, f.textureSlots, f.metallicFromRoughnessTexel, f.thinLens, f.normalMaps, f.alpha, f.media, unrolled.spheres, unrolled.quads,
                            unrolled.disks);
 }
 
@@ -52,7 +53,8 @@ bool ShaderFeatures::covers(const ShaderFeatures& other) const {
            (quadLightsUpClose || !other.quadLightsUpClose) &&
            (environmentMap || !other.environmentMap) && (meshes || !other.meshes) &&
            (!oneMeshInstance || other.oneMeshInstance || !other.meshes) &&
-           (textures || !other.textures) && (other.textureSlots & ~textureSlots) == 0 && (thinLens || !other.thinLens) &&
+           (textures || !other.textures) && (other.textureSlots & ~textureSlots) == 0 &&
+           (!metallicFromRoughnessTexel || other.metallicFromRoughnessTexel) && (thinLens || !other.thinLens) &&
            (normalMaps || !other.normalMaps) && (alpha || !other.alpha) && (media || !other.media) &&
            (!unrolledShapes || (other.unrolledShapes && *unrolledShapes == *other.unrolledShapes));
 }
@@ -95,6 +97,7 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
     auto addLightKind = [&](LightKind kind) { features.lightKinds |= 1u << static_cast<int>(kind); };
     // An emitting surface is a light of its shape's kind (a superset of buildLightTable's test,
     // which also leaves out textured emission).
+    bool metallicTextured = false, metallicApart = false; // apart: not from the roughness texel
     auto useMaterial = [&](int index, LightKind kind) {
         const Material& material = scene.materials[static_cast<std::size_t>(index)];
         features.materialModels |= 1u << static_cast<int>(material.type);
@@ -102,6 +105,12 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
         if (material.hasTextures()) features.textures = true;
         for (std::size_t k = 0; k < std::size(kMaterialTextureInputs); ++k)
             if ((material.*kMaterialTextureInputs[k].slot).used()) features.textureSlots |= 1u << k;
+        const TextureSlot& metallic = material.metallicTexture;
+        const TextureSlot& roughness = material.roughnessTexture;
+        metallicTextured = metallicTextured || metallic.used();
+        if (metallic.used() && !(metallic.texture == roughness.texture && metallic.scale == roughness.scale &&
+                                 metallic.offset == roughness.offset))
+            metallicApart = true;
         if (material.normalTexture.used()) features.normalMaps = true;
         if (material.alphaMode != AlphaMode::Opaque) features.alpha = features.textures = true;
         if (material.boundsMedium()) features.media = true;
@@ -125,6 +134,7 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
                      : light.type == LightType::Spot ? LightKind::Spot
                                                      : LightKind::Directional);
     features.oneMeshInstance = meshShapes == 1;
+    features.metallicFromRoughnessTexel = metallicTextured && !metallicApart;
     features.environmentMap = !scene.environmentMap.empty();
     if (features.environmentMap || scene.environment != glm::vec3(0.0f)) addLightKind(LightKind::Environment);
     features.thinLens = scene.camera.apertureRadius > 0.0f;
