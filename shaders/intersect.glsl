@@ -158,42 +158,43 @@ bool intersectScene(Ray ray, out Hit hit) {
 
     hit.posWorld = ray.origin + hit.t * ray.direction;
     hit.uv = vec2(0.0);
+    // Where a normal map's x and y point (disks: none). One normal-map call after both kinds of
+    // hit, not one in each: llvmpipe runs both sides for a SIMD group, so two calls cost two lookups.
+    vec3 tangent = vec3(0.0), bitangent = vec3(0.0);
     if (onMesh) {
         hit.primitive = ivec2(kPrimitiveMeshInstance, meshHit.instance);
         meshSurface(meshHit, hit.normalGeom, hit.normalShading, hit.material, hit.light);
         hit.uv = meshSurfaceUv(meshHit);
-        vec3 tangent, bitangent;
         meshSurfaceTangents(meshHit, tangent, bitangent);
-        hit.normalShading = normalMappedShading(hit.material, hit.uv, hit.normalShading, hit.normalGeom, tangent, bitangent, -ray.direction);
-        return true;
-    }
-    ivec2 ids;
-    vec3 tangent = vec3(0.0), bitangent = vec3(0.0); // where a normal map's x and y point (disks: none)
-    if (sphereHit >= 0) {
-        vec4 sphere = texelFetch(uSpheres, sphereHit);
-        hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
-        hit.uv = sphereSurfaceUv(hit.normalGeom);
-        sphereSurfaceTangents(hit.normalGeom, tangent, bitangent);
-        ids = sphereIds(sphereHit);
-        hit.primitive = ivec2(kPrimitiveSphere, sphereHit);
-    } else if (quadHit >= 0) {
-        Quad quad = fetchQuad(quadHit);
-        vec3 u, v;
-        quadEdges(quadHit, u, v);
-        hit.normalGeom = normalize(quadNormal(quadHit));
-        hit.uv = quadSurfaceUv(hit.posWorld, quad);
-        quadSurfaceTangents(u, v, tangent, bitangent);
-        hit.posWorld = quadSurfacePoint(hit.posWorld, quad, u, v, spawnOffset(hit.posWorld));
-        ids = quadIds(quadHit);
-        hit.primitive = ivec2(kPrimitiveQuad, quadHit);
     } else {
-        hit.normalGeom = texelFetch(uDisks, kDiskTexels * diskHit + 1).xyz;
-        ids = diskIds(diskHit);
-        hit.primitive = ivec2(kPrimitiveDisk, diskHit);
+        ivec2 ids;
+        if (sphereHit >= 0) {
+            vec4 sphere = texelFetch(uSpheres, sphereHit);
+            hit.normalGeom = normalize(hit.posWorld - sphere.xyz);
+            hit.uv = sphereSurfaceUv(hit.normalGeom);
+            sphereSurfaceTangents(hit.normalGeom, tangent, bitangent);
+            ids = sphereIds(sphereHit);
+            hit.primitive = ivec2(kPrimitiveSphere, sphereHit);
+        } else if (quadHit >= 0) {
+            Quad quad = fetchQuad(quadHit);
+            vec3 u, v;
+            quadEdges(quadHit, u, v);
+            hit.normalGeom = normalize(quadNormal(quadHit));
+            hit.uv = quadSurfaceUv(hit.posWorld, quad);
+            quadSurfaceTangents(u, v, tangent, bitangent);
+            hit.posWorld = quadSurfacePoint(hit.posWorld, quad, u, v, spawnOffset(hit.posWorld));
+            ids = quadIds(quadHit);
+            hit.primitive = ivec2(kPrimitiveQuad, quadHit);
+        } else {
+            hit.normalGeom = texelFetch(uDisks, kDiskTexels * diskHit + 1).xyz;
+            ids = diskIds(diskHit);
+            hit.primitive = ivec2(kPrimitiveDisk, diskHit);
+        }
+        hit.material = ids.x;
+        hit.light = ids.y;
+        hit.normalShading = hit.normalGeom;
     }
-    hit.material = ids.x;
-    hit.light = ids.y;
-    hit.normalShading = normalMappedShading(hit.material, hit.uv, hit.normalGeom, hit.normalGeom, tangent, bitangent, -ray.direction);
+    hit.normalShading = normalMappedShading(hit.material, hit.uv, hit.normalShading, hit.normalGeom, tangent, bitangent, -ray.direction);
     return true;
 }
 

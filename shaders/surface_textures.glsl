@@ -4,6 +4,7 @@
 #include "scene_data.glsl"
 #include "mesh_intersect.glsl"
 #include "textures.glsl"
+#include "texture_slots.glsl"
 
 // Quads: center + a u + b v with (a, b) in [-1, 1]^2; uv = ((a + 1) / 2, (1 - b) / 2), so an image
 // is upright on a quad whose u points right and v up as seen from its front (cross(u, v)).
@@ -30,14 +31,21 @@ vec4 materialTexture(int material, int texture, int slot, vec2 uv) {
 }
 
 // The material with its textured inputs evaluated at uv: factor x texture, base colour RGB,
-// roughness G, metallic B, emission RGB (docs/materials.md).
+// roughness G, metallic B, emission RGB (docs/materials.md). Inputs no material of the scene
+// textures are compiled out (texture_slots.glsl).
 Material fetchSurfaceMaterial(int index, vec2 uv) {
     Material material = fetchMaterial(index);
     vec4 textures = texelFetch(uMaterials, kMaterialTexels * index + 4);
     float emissionTexture = texelFetch(uMaterials, kMaterialTexels * index + 3).w;
-    if (textures.x >= 0.0) material.color *= materialTexture(index, int(textures.x), 0, uv).rgb;
-    if (textures.y >= 0.0) material.roughness *= materialTexture(index, int(textures.y), 1, uv).g;
-    if (textures.z >= 0.0) material.metallic *= materialTexture(index, int(textures.z), 2, uv).b;
-    if (emissionTexture >= 0.0) material.radiance *= materialTexture(index, int(emissionTexture), 4, uv).rgb;
+    if (kBaseColorTextured && textures.x >= 0.0) material.color *= materialTexture(index, int(textures.x), 0, uv).rgb;
+    vec4 roughnessTexel = vec4(1.0);
+    if (kRoughnessTextured && textures.y >= 0.0) {
+        roughnessTexel = materialTexture(index, int(textures.y), 1, uv);
+        material.roughness *= roughnessTexel.g;
+    }
+    if (kMetallicTextured && textures.z >= 0.0)
+        material.metallic *= (kMetallicFromRoughnessTexel ? roughnessTexel : materialTexture(index, int(textures.z), 2, uv)).b;
+    if (kEmissionTextured && emissionTexture >= 0.0)
+        material.radiance *= materialTexture(index, int(emissionTexture), 4, uv).rgb;
     return material;
 }

@@ -9,6 +9,7 @@
 // filtering interpolates between texel centres.
 #include "enums.glsl"
 #include "scene_data.glsl"
+#include "srgb_decode_table.glsl"
 
 uniform sampler2DArray uTextureAtlas;
 uniform int uTextureRecordStart; // texel of texture 0's record in uMaterials
@@ -22,9 +23,11 @@ int wrapTexel(int i, int n, uint mode) {
     return m < n ? m : period - 1 - m;
 }
 
-// The exact sRGB transfer function (IEC 61966-2-1), per channel.
+// The exact sRGB decode (IEC 61966-2-1) of an RGBA8 texel's colour, by table: pow() per channel
+// cost more on llvmpipe, where every lookup decodes whether its texture is sRGB or not.
 vec3 srgbToLinear(vec3 c) {
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+    ivec3 byte = ivec3(c * 255.0 + 0.5); // c is byte / 255 as the atlas returns it
+    return vec3(kSrgbToLinear[byte.r], kSrgbToLinear[byte.g], kSrgbToLinear[byte.b]);
 }
 
 vec4 atlasTexel(vec4 place, ivec2 texel, bool srgb) {
@@ -33,7 +36,9 @@ vec4 atlasTexel(vec4 place, ivec2 texel, bool srgb) {
     return c;
 }
 
-// The texture's value at uv: RGBA, colours linear.
+// The texture's value at uv: RGBA, colours linear. Nearest filtering reads the same four texels
+// as bilinear with weights (1, 0, 0, 0), which gives the nearest texel exactly: llvmpipe runs both
+// sides of a branch for its SIMD group, so a separate nearest path cost a fifth read and decode.
 vec4 sampleTexture(int texture, vec2 uv) {
     vec4 place = texelFetch(uMaterials, uTextureRecordStart + kTextureRecordTexels * texture);
     vec4 reading = texelFetch(uMaterials, uTextureRecordStart + kTextureRecordTexels * texture + 1);
@@ -42,16 +47,13 @@ vec4 sampleTexture(int texture, vec2 uv) {
     uint wrapV = uint(reading.z);
     int flags = int(reading.w);
     bool srgb = (flags & 1) != 0;
+    bool bilinear = (flags & 2) != 0;
     if (any(isnan(uv)) || any(isinf(uv))) uv = vec2(0.0);
     uv = clamp(uv, vec2(-1e6), vec2(1e6)); // keeps texel indices within int range
     vec2 p = uv * vec2(size);
-    if ((flags & 2) == 0) {
-        ivec2 i = ivec2(floor(p));
-        return atlasTexel(place, ivec2(wrapTexel(i.x, size.x, wrapU), wrapTexel(i.y, size.y, wrapV)), srgb);
-    }
-    p -= 0.5;
+    if (bilinear) p -= 0.5; // texel centres
     vec2 cell = floor(p);
-    vec2 t = p - cell;
+    vec2 t = bilinear ? p - cell : vec2(0.0);
     ivec2 i0 = ivec2(cell);
     int x0 = wrapTexel(i0.x, size.x, wrapU), x1 = wrapTexel(i0.x + 1, size.x, wrapU);
     int y0 = wrapTexel(i0.y, size.y, wrapV), y1 = wrapTexel(i0.y + 1, size.y, wrapV);

@@ -6,6 +6,7 @@
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/tracer/PathRecorder.h>
 #include <ptview/gpu/ShaderFeatures.h>
+#include <ptview/gpu/SrgbDecodeTable.h>
 #include <ptview/probes/WarpProbe.h>
 
 #include <string>
@@ -23,6 +24,7 @@ inline std::vector<GeneratedInclude> generatedIncludes() {
         {"enums.glsl", glslEnumConstants()},
         {"gpu_layout.glsl", glslLayoutConstants()},
         {"frame_uniforms.glsl", glslFrameBlock()},
+        {"srgb_decode_table.glsl", srgbDecodeTableGlsl()},
         {"recorded_path.glsl", recordedPathGlsl()},
         {"warp_ids.glsl", warpIdsGlsl()},
         {"display_views.glsl", displayViewsGlsl()},
@@ -31,6 +33,7 @@ inline std::vector<GeneratedInclude> generatedIncludes() {
         {"bsdf.glsl", generateBsdfDispatch(ShaderFeatures::all())},
         {"light_kinds.glsl", generateLightKinds(ShaderFeatures::all())},
         {"mesh_instances.glsl", generateMeshInstances(ShaderFeatures::all())},
+        {"texture_slots.glsl", generateTextureSlots(ShaderFeatures::all())},
     };
 }
 

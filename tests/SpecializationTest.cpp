@@ -160,6 +160,38 @@ TEST(Specialization, EachFeatureBringsItsCode) {
     EXPECT_FALSE(contains(mirror, kDielectricCode));
 }
 
+// A program reads from textures only the material inputs some material of its scene has a texture
+// in (texture_slots.glsl): the cow's MTL gives it a base colour alone, the helmet's glTF every
+// input. Each input left in costs a full lookup at every vertex on llvmpipe.
+TEST(Specialization, OnlyTheTexturedInputsAreRead) {
+    Scene spot = shippedScene("cornell_spot");
+    const ShaderFeatures cow = sceneFeatures(spot);
+    EXPECT_EQ(cow.textureSlots, 1u);
+    EXPECT_TRUE(contains(cow.describe(), "textures: yes base-color\n"));
+    EXPECT_TRUE(contains(programSource(spot), "const bool kBaseColorTextured = true;\nconst bool kRoughnessTextured = false;\n"
+                                              "const bool kMetallicTextured = false;\nconst bool kNormalTextured = false;\n"
+                                              "const bool kEmissionTextured = false;\n"));
+    Scene helmet = shippedScene("helmet");
+    EXPECT_EQ(sceneFeatures(helmet).textureSlots, 0x1fu);
+    // The helmet's metallic and roughness come from one texel (glTF's metallicRoughness texture):
+    // one lookup serves both, until a material reads metallic from elsewhere.
+    EXPECT_TRUE(sceneFeatures(helmet).metallicFromRoughnessTexel);
+    EXPECT_TRUE(contains(programSource(helmet), "const bool kMetallicFromRoughnessTexel = true;"));
+    EXPECT_FALSE(cow.metallicFromRoughnessTexel);
+    for (Material& material : helmet.materials)
+        if (material.metallicTexture.used()) material.metallicTexture.offset.x += 0.5f;
+    EXPECT_FALSE(sceneFeatures(helmet).metallicFromRoughnessTexel);
+    EXPECT_TRUE(sceneFeatures(helmet).covers(sceneFeatures(shippedScene("helmet"))));
+    EXPECT_FALSE(sceneFeatures(shippedScene("helmet")).covers(sceneFeatures(helmet)));
+    EXPECT_EQ(sceneFeatures(shippedScene("cornell")).textureSlots, 0u);
+    EXPECT_EQ(ShaderFeatures::all().textureSlots, 0x1fu);
+    // A roughness texture given in the viewer needs a program that reads it.
+    ShaderFeatures roughness = cow;
+    roughness.textureSlots |= 2u;
+    EXPECT_FALSE(cow.covers(roughness));
+    EXPECT_TRUE(roughness.covers(cow));
+}
+
 // Media code (media.glsl) only where a material bounds a medium: a medium material, or a
 // refracting one with an interior; the fog's program has it, the Cornell box's the empty variant.
 TEST(Specialization, MediaCodeOnlyInScenesWithAMedium) {

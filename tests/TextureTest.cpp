@@ -185,6 +185,29 @@ TEST_F(TexturedView, NearestTexelsAreTheSrgbDecodedValuesTopLeftFirst) {
                 [](int x, int y) { return insideTexel(x, y, 4); }, "nearest");
 }
 
+// Every 8-bit code value of every channel decodes to its IEC 61966-2-1 value through the shaders'
+// table (srgb_decode_table.glsl): a 16x16 image holds each byte once per channel (in a different
+// order per channel, so that channels cannot be swapped unseen), shown a 4x4 block of texels at a
+// time through the texture's scale and offset. Neighbouring bytes differ by far more than the
+// tolerance, so an index off by one fails.
+TEST_F(TexturedView, EveryByteOfEveryChannelDecodesToItsSrgbValue) {
+    ImageRgba8 image;
+    image.width = image.height = 16;
+    for (int i = 0; i < 256; ++i)
+        for (int c : {i, 255 - i, (i * 7 + 3) % 256, 255}) image.rgba.push_back(static_cast<std::uint8_t>(c));
+    writePng(files_.write("bytes.png", ""), image);
+    for (int by = 0; by < 4; ++by)
+        for (int bx = 0; bx < 4; ++bx) {
+            const std::string offset = "[" + std::to_string(bx * 0.25) + ", " + std::to_string(by * 0.25) + "]";
+            Scene scene = load(viewScene(R"({"texture": "bytes.png", "filter": "nearest", "scale": [0.25, 0.25], "offset": )" +
+                                             offset + "}",
+                                         "", kQuad));
+            ImageRgbF mean = renderMean(scene, SamplerMode::Random, 4);
+            expectImage(mean, [&](int x, int y) { return texelLinear(image, 4 * bx + x / 8, 4 * by + y / 8); },
+                        [](int x, int y) { return insideTexel(x, y, 4); }, "block " + offset);
+        }
+}
+
 TEST_F(TexturedView, ObjTextureCoordinatesCountVUpAndShowTheSameImage) {
     const ImageRgba8 image = asymmetric4x4();
     files_.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"

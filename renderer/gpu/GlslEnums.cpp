@@ -5,6 +5,7 @@
 #include <ptview/gpudata/GpuLayout.h>
 #include <ptview/gpu/GpuMeshes.h>
 #include <ptview/gpu/GpuScene.h>
+#include <ptview/gpu/SrgbDecodeTable.h>
 #include <ptview/settings/Integrator.h>
 #include <ptview/settings/LightPaths.h>
 #include <ptview/scene/MaterialSchema.h>
@@ -93,6 +94,7 @@ void addGeneratedGlsl(ShaderAssembler& assembler) {
     assembler.replaceWithText("enums.glsl", glslEnumConstants());
     assembler.replaceWithText("gpu_layout.glsl", glslLayoutConstants());
     assembler.replaceWithText("frame_uniforms.glsl", glslFrameBlock());
+    assembler.replaceWithText("srgb_decode_table.glsl", srgbDecodeTableGlsl());
 }
 
 std::string glslIntConstant(const std::string& name, long long value, const std::string& comment) {

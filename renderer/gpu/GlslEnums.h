@@ -25,8 +25,9 @@ std::string glslLayoutConstants();
 // The text of "frame_uniforms.glsl".
 std::string glslFrameBlock();
 
-// Makes `assembler` serve the three includes above; every program that includes a file naming
-// their constants needs it (specializeShaders and specializeBsdfs call it).
+// Makes `assembler` serve the three includes above and srgb_decode_table.glsl (SrgbDecodeTable.h);
+// every program that includes a file naming their constants needs it (specializeShaders and
+// specializeBsdfs call it).
 void addGeneratedGlsl(ShaderAssembler& assembler);
 
 // "const int kName = 7; // comment\n": one line of a generated include.

@@ -3,11 +3,14 @@
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/gpu/GpuScene.h>
 #include <ptview/scene/MaterialSchema.h>
+#include <ptview/scene/MaterialTextures.h>
 #include <ptview/gpudata/QuadLightReach.h>
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
 #include <tuple>
 #include <vector>
 
@@ -119,6 +122,38 @@ std::string generateLightKinds(const ShaderFeatures& features) {
            "const bool kQuadLightsUpClose = " + (features.quadLightsUpClose ? "true" : "false") + ";\n";
 }
 
+// "base-color" -> "kBaseColorTextured".
+std::string texturedConstant(const char* inputName) {
+    std::string name = "k";
+    bool upper = true;
+    for (const char* c = inputName; *c; ++c) {
+        if (*c == '-') {
+            upper = true;
+            continue;
+        }
+        name += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(*c))) : *c;
+        upper = false;
+    }
+    return name + "Textured";
+}
+
+std::string generateTextureSlots(const ShaderFeatures& features) {
+    std::string constants;
+    for (std::size_t k = 0; k < std::size(kMaterialTextureInputs); ++k)
+        constants += "const bool " + texturedConstant(kMaterialTextureInputs[k].name) + " = " +
+                     (((features.textureSlots >> k) & 1u) ? "true" : "false") + ";\n";
+    return "// Which material inputs this program reads from textures (surface_textures.glsl), one constant per\n"
+           "// input of kMaterialTextureInputs (renderer/scene/MaterialTextures.h): those some material of the\n"
+           "// scene has a texture in. Generated for each program by generateTextureSlots\n"
+           "// (renderer/gpu/ShaderFeatures.cpp). llvmpipe runs every branch for a SIMD group, even on a\n"
+           "// material's record that says no texture, so each input read costs a full lookup at every vertex\n"
+           "// unless it is compiled out. shaders/texture_slots.glsl is the output for every input.\n" +
+           constants +
+           "// Every metallic texture is its material's roughness texture with the same scale and offset\n"
+           "// (glTF's metallicRoughness): the roughness lookup's texel serves both.\n"
+           "const bool kMetallicFromRoughnessTexel = " + (features.metallicFromRoughnessTexel ? "true" : "false") + ";\n";
+}
+
 namespace {
 
 // What one program is built for.
@@ -167,6 +202,7 @@ void specialize(ShaderAssembler& assembler, const ProgramChoices& program) {
         if (!variant.wanted(program)) assembler.replaceWithFile(variant.include, variant.emptyVariant);
     assembler.replaceWithText("light_kinds.glsl", generateLightKinds(program.features));
     assembler.replaceWithText("mesh_instances.glsl", generateMeshInstances(program.features));
+    assembler.replaceWithText("texture_slots.glsl", generateTextureSlots(program.features));
     if (program.features.unrolledShapes)
         assembler.replaceWithText("shape_loops.glsl", generateShapeLoops(*program.features.unrolledShapes));
     assembler.replaceWithText("specialization.glsl", generateSpecialization(program));

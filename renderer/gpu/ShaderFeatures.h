@@ -44,5 +44,6 @@ std::vector<IncludeVariantFiles> includeVariantFiles();
 std::string generateBsdfDispatch(const ShaderFeatures& features);
 std::string generateLightKinds(const ShaderFeatures& features);
 std::string generateMeshInstances(const ShaderFeatures& features);
+std::string generateTextureSlots(const ShaderFeatures& features);
 
 } // namespace ptview

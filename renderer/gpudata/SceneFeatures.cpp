@@ -3,9 +3,12 @@
 #include <ptview/gpudata/QuadLightReach.h>
 #include <ptview/gpudata/SceneRecords.h>
 #include <ptview/scene/MaterialSchema.h>
+#include <ptview/scene/MaterialTextures.h>
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+#include <iterator>
 #include <tuple>
 
 namespace ptview {
@@ -14,7 +17,7 @@ namespace {
 auto tied(const ShaderFeatures& f) {
     ShapeCounts unrolled = f.unrolledShapes.value_or(ShapeCounts{-1, -1, -1});
     return std::make_tuple(f.materialModels, f.lightKinds, f.quadLightsUpClose, f.environmentMap,
-                           f.meshes, f.oneMeshInstance, f.textures, f.thinLens, f.normalMaps, f.alpha, f.media, unrolled.spheres, unrolled.quads,
+                           f.meshes, f.oneMeshInstance, f.textures, f.textureSlots, f.metallicFromRoughnessTexel, f.thinLens, f.normalMaps, f.alpha, f.media, unrolled.spheres, unrolled.quads,
                            unrolled.disks);
 }
 
@@ -36,6 +39,7 @@ ShaderFeatures ShaderFeatures::all() {
     for (const auto& entry : lightKindNames()) features.lightKinds |= 1u << static_cast<int>(entry.value);
     features.quadLightsUpClose = features.environmentMap = features.meshes = features.textures = features.thinLens = true;
     features.normalMaps = features.alpha = features.media = true;
+    features.textureSlots = (1u << std::size(kMaterialTextureInputs)) - 1u;
     return features;
 }
 
@@ -49,7 +53,8 @@ bool ShaderFeatures::covers(const ShaderFeatures& other) const {
            (quadLightsUpClose || !other.quadLightsUpClose) &&
            (environmentMap || !other.environmentMap) && (meshes || !other.meshes) &&
            (!oneMeshInstance || other.oneMeshInstance || !other.meshes) &&
-           (textures || !other.textures) && (thinLens || !other.thinLens) &&
+           (textures || !other.textures) && (other.textureSlots & ~textureSlots) == 0 &&
+           (!metallicFromRoughnessTexel || other.metallicFromRoughnessTexel) && (thinLens || !other.thinLens) &&
            (normalMaps || !other.normalMaps) && (alpha || !other.alpha) && (media || !other.media) &&
            (!unrolledShapes || (other.unrolledShapes && *unrolledShapes == *other.unrolledShapes));
 }
@@ -61,6 +66,9 @@ std::string ShaderFeatures::describe() const {
     std::string materials;
     for (const MaterialSchema& schema : kMaterialSchemas)
         if (usesModel(schema.type)) materials += std::string(" ") + schema.name;
+    std::string textureInputs;
+    for (std::size_t k = 0; k < std::size(kMaterialTextureInputs); ++k)
+        if ((textureSlots >> k) & 1u) textureInputs += std::string(" ") + kMaterialTextureInputs[k].name;
     std::string lights;
     for (const auto& entry : lightKindNames())
         if (hasLightKind(entry.value)) lights += std::string(" ") + entry.name;
@@ -71,7 +79,7 @@ std::string ShaderFeatures::describe() const {
                 : std::string()) +
            "environment: " + (environmentMap ? "map" : "constant") + "\n" +
            "meshes: " + (meshes ? (oneMeshInstance ? "one instance (BVH)" : "yes (two-level BVH)") : "no") + "\n" +
-           "transmission: " + (transmission() ? "yes" : "no") + "\n" + "textures: " + (textures ? "yes" : "no") + "\n" +
+           "transmission: " + (transmission() ? "yes" : "no") + "\n" + "textures: " + (textures ? "yes" : "no") + textureInputs + "\n" +
            "camera: " + (thinLens ? "thin lens" : "pinhole") + "\n" +
            "normal maps: " + (normalMaps ? "yes" : "no") + "\n" +
            "alpha: " + (alpha ? "mask/blend" : "opaque") + "\n" +
@@ -89,11 +97,20 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
     auto addLightKind = [&](LightKind kind) { features.lightKinds |= 1u << static_cast<int>(kind); };
     // An emitting surface is a light of its shape's kind (a superset of buildLightTable's test,
     // which also leaves out textured emission).
+    bool metallicTextured = false, metallicApart = false; // apart: not from the roughness texel
     auto useMaterial = [&](int index, LightKind kind) {
         const Material& material = scene.materials[static_cast<std::size_t>(index)];
         features.materialModels |= 1u << static_cast<int>(material.type);
         if (material.radiance != glm::vec3(0.0f)) addLightKind(kind);
         if (material.hasTextures()) features.textures = true;
+        for (std::size_t k = 0; k < std::size(kMaterialTextureInputs); ++k)
+            if ((material.*kMaterialTextureInputs[k].slot).used()) features.textureSlots |= 1u << k;
+        const TextureSlot& metallic = material.metallicTexture;
+        const TextureSlot& roughness = material.roughnessTexture;
+        metallicTextured = metallicTextured || metallic.used();
+        if (metallic.used() && !(metallic.texture == roughness.texture && metallic.scale == roughness.scale &&
+                                 metallic.offset == roughness.offset))
+            metallicApart = true;
         if (material.normalTexture.used()) features.normalMaps = true;
         if (material.alphaMode != AlphaMode::Opaque) features.alpha = features.textures = true;
         if (material.boundsMedium()) features.media = true;
@@ -117,6 +134,7 @@ ShaderFeatures sceneFeatures(const Scene& scene) {
                      : light.type == LightType::Spot ? LightKind::Spot
                                                      : LightKind::Directional);
     features.oneMeshInstance = meshShapes == 1;
+    features.metallicFromRoughnessTexel = metallicTextured && !metallicApart;
     features.environmentMap = !scene.environmentMap.empty();
     if (features.environmentMap || scene.environment != glm::vec3(0.0f)) addLightKind(LightKind::Environment);
     features.thinLens = scene.camera.apertureRadius > 0.0f;

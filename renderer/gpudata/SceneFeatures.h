@@ -38,6 +38,12 @@ struct ShaderFeatures {
                                       //   (mesh_instances.glsl); the program then covers no scene
                                       //   of more
     bool textures = false;            // a material a shape uses has a texture (surface_textures.glsl)
+    std::uint32_t textureSlots = 0;   // bit k: ... has a texture in input k of kMaterialTextureInputs
+                                      //   (MaterialTextures.h): only those inputs are read
+                                      //   (texture_slots.glsl)
+    bool metallicFromRoughnessTexel = false; // every material with a metallic texture reads it from its
+                                      //   roughness texture with the same scale and offset (glTF's
+                                      //   metallicRoughness): one lookup serves both
     bool thinLens = false;            // the camera has an aperture (camera_thin_lens.glsl), else a pinhole
     bool normalMaps = false;          // ... a normal map (normal_map.glsl); implies textures
     bool alpha = false;               // ... alpha mode MASK or BLEND (surface_alpha.glsl); implies

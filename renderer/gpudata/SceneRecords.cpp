@@ -1,7 +1,10 @@
 #include <ptview/gpudata/SceneRecords.h>
 
+#include <ptview/scene/MaterialTextures.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace ptview {
 namespace {
@@ -127,8 +130,9 @@ void flattenMaterials(const std::vector<Material>& materials, ScenePrimitives& o
         gpu.alphaMode = static_cast<float>(material.alphaMode);
         gpu.alphaCutoff = material.alphaCutoff;
         gpu.normalScale = material.normalScale;
-        const TextureSlot* slots[5] = {&material.baseColorTexture, &material.roughnessTexture, &material.metallicTexture,
-                                       &material.normalTexture, &material.emissionTexture};
+        const TextureSlot* slots[5]; // in kMaterialTextureInputs' order, as the shaders index them
+        static_assert(std::size(kMaterialTextureInputs) == 5);
+        for (std::size_t k = 0; k < 5; ++k) slots[k] = &(material.*kMaterialTextureInputs[k].slot);
         gpu.textures = glm::vec4(float(slots[0]->texture), float(slots[1]->texture), float(slots[2]->texture),
                                  float(slots[3]->texture));
         gpu.emissionTexture = float(slots[4]->texture);
