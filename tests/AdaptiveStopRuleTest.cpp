@@ -184,6 +184,20 @@ TEST(AdaptiveStopRule, TheMarginalThresholdSpendsSamplesAsTheSquareRootOfTheVari
     EXPECT_LT(ratio, 10.0 * 1.3);
 }
 
+// However many samples a pixel has, its threshold is at most maxThresholdRelativeMse.
+TEST(AdaptiveStopRule, NoPixelsThresholdExceedsTheBound) {
+    Field field(8, 8, 4e-4, 4096);
+    AdaptiveStopInput input = field.input(16);
+    input.thresholdRelativeMsePerSample = 1e-6; // 4.1e-3 at 4096 samples
+    for (std::uint8_t s : pixelsToStop(input)) EXPECT_EQ(s, 1) << "unbounded";
+    input.maxThresholdRelativeMse = 3.9e-4;
+    for (std::uint8_t s : pixelsToStop(input)) EXPECT_EQ(s, 0) << "above the bound";
+    // The prediction knows the bound: a pixel still sampled ends at most there.
+    input.maxThresholdRelativeMse = 1e-4;
+    const double mu = marginalStopThreshold(input, field.error, 2e-4);
+    EXPECT_TRUE(std::isinf(mu)) << "every pixel would end at 1e-4 at most: the target is met whatever mu";
+}
+
 TEST(AdaptiveStopRule, MarginalThresholdAtTheEnds) {
     Field field(4, 4, 1e-4, 64);
     AdaptiveStopInput input = field.input();

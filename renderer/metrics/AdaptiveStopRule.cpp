@@ -47,12 +47,13 @@ double marginalStopThreshold(const AdaptiveStopInput& input, const std::vector<d
         double sum = 0.0;
         for (size_t i = 0; i < pixels; ++i) {
             const double e = std::max(relativeMse[i], 0.0);
-            if (!(*input.pixelTakesSamples)[i] || std::isinf(mu)) {
+            if (!(*input.pixelTakesSamples)[i]) {
                 sum += e;
                 continue;
             }
             const double variancePerSample = e * std::max((*input.pixelSampleCounts)[i], 1);
-            sum += std::min(e, std::sqrt(variancePerSample * mu));
+            const double stopsAt = std::isinf(mu) ? e : std::sqrt(variancePerSample * mu);
+            sum += std::min({e, stopsAt, input.maxThresholdRelativeMse});
         }
         return sum / double(pixels);
     };
@@ -78,7 +79,8 @@ std::vector<std::uint8_t> pixelsToStop(const AdaptiveStopInput& input) {
     for (size_t i = 0; i < pixels; ++i) {
         const int samples = (*input.pixelSampleCounts)[i];
         if (!(*input.pixelTakesSamples)[i] || samples < input.minSamples) continue;
-        couldStop[i] = neighbourhood[i] <= input.thresholdRelativeMsePerSample * samples ? 1 : 0;
+        const double threshold = std::min(input.thresholdRelativeMsePerSample * samples, input.maxThresholdRelativeMse);
+        couldStop[i] = neighbourhood[i] <= threshold ? 1 : 0;
     }
     std::vector<std::uint8_t> stop(pixels, 0);
     for (int y = 0; y < h; ++y)

@@ -8,6 +8,7 @@
 // where they lower the image's error most. No OpenGL: the rule is unit tested on plain arrays.
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace ptview {
@@ -23,6 +24,8 @@ struct AdaptiveStopInput {
     // must fall to (marginalStopThreshold). With every pixel at the same count n, this is the
     // plain threshold divided by n.
     double thresholdRelativeMsePerSample = 0.0;
+    // No pixel's threshold exceeds this (relative MSE; infinity: no bound).
+    double maxThresholdRelativeMse = std::numeric_limits<double>::infinity();
     int minSamples = 0;                // no pixel stops before it has these
     // Pixels stop in whole tiles of tileSide x tileSide, counted from the image's bottom-left
     // corner (where OpenGL's rasterizer aligns its blocks): a GPU or llvmpipe runs the pixels of a
@@ -35,7 +38,8 @@ struct AdaptiveStopInput {
 std::vector<double> neighbourhoodRelativeMse(const AdaptiveStopInput& input);
 
 // A pixel "could stop" when it takes samples, has at least minSamples, and its
-// neighbourhoodRelativeMse is at most thresholdRelativeMsePerSample times its sample count.
+// neighbourhoodRelativeMse is at most thresholdRelativeMsePerSample times its sample count, and
+// at most maxThresholdRelativeMse.
 // It stops when it and every pixel of its 3x3 neighbourhood that still takes samples could, and
 // so does every pixel of its tile that still takes samples. Returns the flags of the pixels that
 // stop now (1), rows top first.
@@ -50,7 +54,8 @@ std::vector<std::uint8_t> pixelsToStop(const AdaptiveStopInput& input);
 // nothing over uniform sampling in the mean). mu is where the image's predicted final error,
 // stopped pixels at their kept error and the others at min(e, sqrt(v mu)), equals the target:
 // 0 when the stopped pixels alone exceed it, infinity when the image is there already.
-// `relativeMse` is neighbourhoodRelativeMse's; the input's threshold is not read.
+// `relativeMse` is neighbourhoodRelativeMse's; the input's threshold per sample is not read, its
+// maxThresholdRelativeMse is.
 double marginalStopThreshold(const AdaptiveStopInput& input, const std::vector<double>& relativeMse,
                              double targetRelativeMse);
 

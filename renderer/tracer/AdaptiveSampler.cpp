@@ -84,6 +84,7 @@ void AdaptiveSampler::check() {
         input.pixelTakesSamples = &stats.pixelTakesSamples;
         input.minSamples = minSamples_;
         input.tileSide = kAdaptiveTileSide;
+        input.maxThresholdRelativeMse = kAdaptiveMaxPixelThreshold * noiseThreshold_ * noiseThreshold_;
         input.thresholdRelativeMsePerSample =
             marginalStopThreshold(input, neighbourhoodRelativeMse(input), noiseThreshold_ * noiseThreshold_);
         std::vector<std::uint8_t> stop = pixelsToStop(input);

@@ -25,6 +25,10 @@ inline constexpr int kAdaptiveTileSide = 4;
 // to whole passes, at least one pass later).
 inline constexpr double kAdaptiveCheckGrowth = 1.25;
 
+// No pixel stops with its estimate above this many times the threshold's square, however costly
+// its noise: where the noise comes from rare bright paths the estimate reads low, and the
+// samples the marginal rule grants such a pixel were too few (docs/sampling.md).
+inline constexpr double kAdaptiveMaxPixelThreshold = 4.0;
 // Once most pixels stopped, a pass carries more samples (PathTracer::kPixelSamplesPerPass over the
 // pixels still sampled, at most this): a pass over an image whose pixels mostly stopped costs
 // llvmpipe about a millisecond however few pixels it traces, which in a tail of a few noisy tiles
