@@ -64,7 +64,7 @@ void main() {
 
     // The 3x3 neighbourhood's luminance: the variance when the pixel has too few samples of its
     // own, and the bound on fireflies below.
-    float neighbourSum = 0.0, neighbourSquares = 0.0;
+    float neighbourSum = 0.0, neighbourSquares = 0.0, brightestNeighbour = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             if (dx == 0 && dy == 0) continue;
@@ -72,9 +72,13 @@ void main() {
             float l = luminance(meanAt(q) / albedoAt(q));
             neighbourSum += l;
             neighbourSquares += l * l;
+            brightestNeighbour = max(brightestNeighbour, l);
         }
-    float neighbourMean = neighbourSum / 8.0;
-    float neighbourSpread = sqrt(max(neighbourSquares / 8.0 - neighbourMean * neighbourMean, 0.0));
+    // The bound below leaves the brightest neighbour out: where a caustic sample lit two pixels
+    // side by side, each would otherwise raise the other's bound past itself (on dof two such
+    // pixels carried half of the denoised image's error, docs/denoising.md).
+    float othersMean = (neighbourSum - brightestNeighbour) / 7.0;
+    float othersSpread = sqrt(max((neighbourSquares - brightestNeighbour * brightestNeighbour) / 7.0 - othersMean * othersMean, 0.0));
 
     float variance;
     float sampleCount = sampleCountAt(p);
@@ -98,7 +102,7 @@ void main() {
     // sample does not spread into a blotch (biased, like any clamp; the bound rises and the own
     // noise falls with the samples, so it stops applying as the image converges). A highlight that
     // is really there has a small error of its own and stays.
-    float bound = neighbourMean + 3.0 * neighbourSpread;
+    float bound = othersMean + 3.0 * othersSpread;
     if (luminanceP > bound && luminanceP - bound < 3.0 * sqrt(variance)) illumination *= bound / luminanceP;
 
     vec3 normalSum = texelFetch(uFeatureNormal, p, 0).xyz;
