@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace ptview {
 
@@ -42,32 +43,40 @@ double marginalStopThreshold(const AdaptiveStopInput& input, const std::vector<d
     checkSizes(input);
     const size_t pixels = relativeMse.size();
     if (pixels == 0) return 0.0;
-    // The image's mean error if pixels still sampled stop where e / n falls to mu.
-    auto predicted = [&](double mu) {
-        double sum = 0.0;
-        for (size_t i = 0; i < pixels; ++i) {
-            const double e = std::max(relativeMse[i], 0.0);
-            if (!(*input.pixelTakesSamples)[i]) {
-                sum += e;
-                continue;
-            }
-            const double variancePerSample = e * std::max((*input.pixelSampleCounts)[i], 1);
-            const double stopsAt = std::isinf(mu) ? e : std::sqrt(variancePerSample * mu);
-            sum += std::min({e, stopsAt, input.maxThresholdRelativeMse});
+    // With t = sqrt(mu), a pixel still sampled ends at min(c, a t): c = min(e, the bound), a =
+    // sqrt(v) = sqrt(e n). The image's predicted error is piecewise linear in t with a bend at each
+    // c / a, so one pass over the bends, sorted, solves it exactly (a check in the viewer runs this
+    // over every pixel of the window).
+    const double target = targetRelativeMse * double(pixels);
+    double stopped = 0.0, saturated = 0.0, slope = 0.0;
+    std::vector<std::pair<double, size_t>> bends; // (c / a, pixel)
+    std::vector<double> cap(pixels, 0.0), rate(pixels, 0.0);
+    for (size_t i = 0; i < pixels; ++i) {
+        const double e = std::max(relativeMse[i], 0.0);
+        if (!(*input.pixelTakesSamples)[i]) {
+            stopped += e;
+            continue;
         }
-        return sum / double(pixels);
-    };
-    const double infinity = std::numeric_limits<double>::infinity();
-    if (predicted(infinity) <= targetRelativeMse) return infinity;
-    if (predicted(0.0) >= targetRelativeMse) return 0.0;
-    // predicted() grows with mu: bisect on its logarithm, from a bracket found by doubling.
-    double low = 1e-30, high = 1e-30;
-    while (predicted(high) < targetRelativeMse && high < 1e30) high *= 16.0;
-    for (int step = 0; step < 60 && high > low * (1.0 + 1e-9); ++step) {
-        const double mid = std::sqrt(low * high);
-        (predicted(mid) < targetRelativeMse ? low : high) = mid;
+        cap[i] = std::min(e, input.maxThresholdRelativeMse);
+        rate[i] = std::sqrt(e * std::max((*input.pixelSampleCounts)[i], 1));
+        if (cap[i] <= 0.0 || rate[i] <= 0.0) continue; // ends at 0 whatever mu
+        slope += rate[i];
+        bends.emplace_back(cap[i] / rate[i], i);
     }
-    return low;
+    double all = stopped;
+    for (const auto& bend : bends) all += cap[bend.second];
+    if (all <= target) return std::numeric_limits<double>::infinity();
+    if (stopped >= target) return 0.0;
+    std::sort(bends.begin(), bends.end());
+    // Between bends, error = stopped + saturated + slope t.
+    for (const auto& [t, i] : bends) {
+        if (stopped + saturated + slope * t >= target) break;
+        saturated += cap[i];
+        slope -= rate[i];
+    }
+    if (!(slope > 0.0)) return std::numeric_limits<double>::infinity(); // rounding at the last bend
+    const double t = (target - stopped - saturated) / slope;
+    return t * t;
 }
 
 std::vector<std::uint8_t> pixelsToStop(const AdaptiveStopInput& input) {
