@@ -25,16 +25,11 @@ usage: bench/adaptive_ceiling.py PTVIEW OUTDIR SIZE SPP BUDGET SCENE...
 import os, subprocess, sys
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "cycles"))
+from pfm import read_pfm  # noqa: E402
+
 RENDERS = 16
 MIN_SAMPLES = 64
-
-def pfm(path):
-    with open(path, 'rb') as f:
-        assert f.readline().strip() == b'PF'
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype='<f4' if scale < 0 else '>f4').reshape(h, w, 3)
-    return data.astype(np.float64)
 
 def box3(a):
     padded = np.pad(a, 1, mode='edge')
@@ -69,7 +64,7 @@ def main():
             if not os.path.exists(path):
                 subprocess.run([ptview, 'render', scene, '--size', size, '--spp', str(spp), '--seed', str(seed),
                                 '--backend', 'fragment', '--out', path], capture_output=True, check=True)
-            images.append(pfm(path))
+            images.append(read_pfm(path))
         images = np.array(images)
         converged = images.mean(0)
         def variance_per_sample(part):  # relative, as ErrorMetrics.h normalizes

@@ -14,13 +14,8 @@ usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.
 import math, os, re, subprocess, sys
 import numpy as np
 
-def pfm(path):
-    with open(path, 'rb') as f:
-        assert f.readline().strip() == b'PF'
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype='<f4' if scale < 0 else '>f4').reshape(h, w, 3)
-    return data.astype(np.float64)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "cycles"))
+from pfm import read_pfm  # noqa: E402
 
 def rel_mse(x, ref):
     return float(np.mean((x - ref) ** 2 / (ref ** 2 + 1e-2)))
@@ -65,7 +60,7 @@ def main():
             path = f'{outdir}/{name}-{size}-ref{reference_spp}-{seed}.pfm'
             if not os.path.exists(path):
                 render(ptview, scene, size, path, '--spp', str(reference_spp), '--sampler', 'sobol', '--seed', str(seed))
-            refs.append(pfm(path))
+            refs.append(read_pfm(path))
         floor = rel_mse(refs[1], refs[0]) / 2  # each reference's own noise
         print(f'<!-- {name}: reference noise relMSE {floor:.3g} -->', flush=True)
         true = lambda image: rel_mse(image, refs[0]) - floor
@@ -73,12 +68,12 @@ def main():
         for e in thresholds:
             log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', '2')
             mean_spp = float(re.search(r'spp min/mean/max \d+/([0-9.]+)/\d+', log).group(1))
-            adaptive.append((e, seconds_of(log), mean_spp, true(pfm(f'{outdir}/{name}-adaptive.pfm'))))
+            adaptive.append((e, seconds_of(log), mean_spp, true(read_pfm(f'{outdir}/{name}-adaptive.pfm'))))
         smallest = min(a[3] for a in adaptive)
         uniform, spp = [], 16
         while spp <= 65536:
             log = render(ptview, scene, size, f'{outdir}/{name}-uniform.pfm', '--spp', str(spp), '--seed', '2')
-            uniform.append((spp, seconds_of(log), true(pfm(f'{outdir}/{name}-uniform.pfm'))))
+            uniform.append((spp, seconds_of(log), true(read_pfm(f'{outdir}/{name}-uniform.pfm'))))
             if uniform[-1][2] < smallest / 1.5: break
             spp *= 2
         for e, seconds, mean_spp, error in adaptive:
