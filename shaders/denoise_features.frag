@@ -8,6 +8,13 @@
 // distance along the chain. Added to the previous sums (uPrev*, frame 0 starts afresh), as the
 // radiance is. Media's null boundaries are no surface: the features are those of what lies behind a
 // fog box's faces. Specialized like the path-tracing program of the scene.
+//
+// Also the emission each camera ray meets first, exactly what the path adds there
+// (emissionAddedByCameraRay): the prepare pass takes it out of the pixel's mean, so that a light's
+// or the sky's outline is filtered as the surface beside it, and adds back the emission of more
+// camera rays than the radiance has. Those come from a second run of this program (uCoverage), at
+// up to Denoiser::kMaxCoverageSamples rays per pixel, only where an emitter or the environment and
+// a surface share a pixel's 3x3 neighbourhood.
 #include "frame_uniforms.glsl"
 #include "camera.glsl"
 #include "intersect.glsl"
@@ -15,13 +22,24 @@
 #include "shading_frame.glsl"
 #include "microfacet.glsl"
 #include "media.glsl"
+#include "integrator.glsl"
 
 uniform sampler2D uPrevAlbedoDepth;
 uniform sampler2D uPrevNormal;
+uniform sampler2D uPrevEmission;
+// The coverage run: the features' emission sums at the radiance's samples, which say where it runs
+// (bound to uPrevNormal's unit: the coverage run keeps no normals), and their sample count.
+uniform sampler2D uCoverageZone;
+uniform float uCoverageZoneSamples;
+uniform bool uCoverage;
 
-layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m)
+layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m); coverage run: albedo
+                                              // rgb, camera rays traced in this pixel
 layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that met a surface
                                               // (not the environment, not an emitter)
+layout(location = 2) out vec4 outEmission;    // sums: emission met first rgb, samples that met an
+                                              // emitter or the environment first (whose light is
+                                              // all that emission)
 
 // Delta bounces followed before a surface counts as the first one whatever it is: a path that
 // long between mirrors is rare, and features that stop there are still features.
@@ -38,13 +56,29 @@ bool isPurelySpecular(Material material) {
 }
 
 // Albedo, normal and distance of one camera ray; normal 0 and distance -1 where it leaves the
-// scene or meets an emitter.
-void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance) {
+// scene or meets an emitter. `emitted`: the emission the path adds where the camera ray itself
+// lands, and `lightFirst` where that is an emitter (which reflects nothing) or the environment:
+// albedo 0 then, the sample's light is all in `emitted`. In a scene with media the camera ray may
+// scatter before it gets there, so nothing is separated (the light counts as behind a mirror:
+// albedo 1, no surface).
+void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance,
+                    out vec3 emitted, out bool lightFirst) {
     vec3 tint = vec3(1.0);
     distance = 0.0;
+    emitted = vec3(0.0);
+    lightFirst = false;
+    bool separates = !mediaInScene();
     for (int bounce = 0; bounce <= kMaxDeltaBounces; ++bounce) {
         Hit hit;
         if (!intersectSurface(ray, hit)) {
+            if (bounce == 0 && separates) {
+                emitted = emissionAddedByCameraRay(environmentRadiance(ray.direction));
+                lightFirst = true;
+                albedo = vec3(0.0);
+                normal = vec3(0.0);
+                distance = -1.0;
+                return;
+            }
             // The environment: nothing to demodulate (albedo 1), no surface to compare normals with.
             albedo = tint;
             normal = vec3(0.0);
@@ -53,6 +87,16 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
         }
         distance += hit.t;
         Material material = fetchSurfaceMaterial(hit.material, hit.uv);
+        if (bounce == 0 && separates) {
+            emitted = emissionAddedByCameraRay(emittedRadiance(material, hit.normalGeom, -ray.direction));
+            if (material.type == kMaterialEmitter) {
+                lightFirst = true;
+                albedo = vec3(0.0);
+                normal = vec3(0.0);
+                distance = -1.0;
+                return;
+            }
+        }
         if (material.type == kMaterialEmitter) {
             // An emitter's radiance, seen directly, has no noise to take out: like the
             // environment, it is no surface for the filter (albedo 1, no normal, no distance).
@@ -77,23 +121,45 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
     }
 }
 
+// The coverage run traces a pixel only where its 3x3 neighbourhood has samples that met light
+// first and samples that did not: a light's or the sky's outline, and the pixels an edge of it may
+// reach.
+bool inCoverageZone(ivec2 pixel) {
+    ivec2 last = textureSize(uCoverageZone, 0) - 1;
+    bool someLight = false, someElse = false;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            float lightFirstSamples = texelFetch(uCoverageZone, clamp(pixel + ivec2(dx, dy), ivec2(0), last), 0).a;
+            someLight = someLight || lightFirstSamples > 0.0;
+            someElse = someElse || lightFirstSamples < uCoverageZoneSamples;
+        }
+    return someLight && someElse;
+}
+
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     vec4 albedoDepth = vec4(0.0);
     vec4 normalSum = vec4(0.0);
+    vec4 emission = vec4(0.0);
     if (uFrameIndex > 0u) {
         albedoDepth = texelFetch(uPrevAlbedoDepth, ivec2(pixel), 0);
-        normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
+        if (!uCoverage) normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
+        emission = texelFetch(uPrevEmission, ivec2(pixel), 0);
     }
-    for (uint i = 0u; i < uSamplesPerPass; ++i) {
-        Sampler sampler;
-        Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
-        vec3 albedo, normal;
-        float distance;
-        sampleFeatures(ray, sampler, albedo, normal, distance);
-        albedoDepth += vec4(albedo, max(distance, 0.0));
-        normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
+    if (!uCoverage || inCoverageZone(ivec2(pixel))) {
+        for (uint i = 0u; i < uSamplesPerPass; ++i) {
+            Sampler sampler;
+            Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
+            vec3 albedo, normal, emitted;
+            float distance;
+            bool lightFirst;
+            sampleFeatures(ray, sampler, albedo, normal, distance, emitted, lightFirst);
+            albedoDepth += vec4(albedo, uCoverage ? 1.0 : max(distance, 0.0));
+            normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
+            emission += vec4(emitted, lightFirst ? 1.0 : 0.0);
+        }
     }
     outAlbedoDepth = albedoDepth;
     outNormal = normalSum;
+    outEmission = emission;
 }

@@ -4,6 +4,12 @@
 // (radiance over albedo, so that the filter never blurs a texture: the albedo multiplies back in
 // at the end) with the variance of its luminance, the guide (normal, depth, depth change per
 // pixel) and the albedo the compose pass multiplies back.
+//
+// The emission the camera rays met first is taken out of the mean before that, where the features
+// are of exactly the pixel's samples (their sums then hold that emission sample for sample), and
+// the compose pass adds it back, from the coverage run's camera rays where it ran: on a light's
+// outline a pixel's noise is mostly which of its few samples met the light, which no filter can
+// take out, while its surface part is filtered as its neighbours are (docs/denoising.md).
 #include "denoise_guide.glsl"
 
 uniform sampler2D uSum;
@@ -11,11 +17,18 @@ uniform sampler2D uCompensation;
 uniform sampler2D uSumSquares;
 uniform sampler2D uFeatureAlbedoDepth;
 uniform sampler2D uFeatureNormal;
+uniform sampler2D uFeatureEmission;  // sums: emission met first rgb, samples that met light first
+                                     // (an emitter or the environment)
+uniform sampler2D uCoverageAlbedo;   // the coverage run's sums: albedo rgb, camera rays
+uniform sampler2D uCoverageEmission; // the coverage run's sums: emission met first rgb
 uniform float uInvFeatureCount;
+uniform float uFeatureCount;
+uniform bool uHasCoverage;
 
 layout(location = 0) out vec4 outIllumination; // demodulated mean rgb, variance of its luminance
 layout(location = 1) out vec4 outGuide;        // encodeOctahedral(normal), depth, depth per pixel
-layout(location = 2) out vec4 outAlbedo;       // what the illumination was divided by
+layout(location = 2) out vec4 outAlbedo;       // what the filtered illumination is multiplied by
+layout(location = 3) out vec4 outEmission;     // what compose adds to that
 
 // Below this an albedo channel divides as this: black surfaces keep their (small) radiance
 // through the division and the multiplication back.
@@ -28,16 +41,60 @@ const float kWholeSurface = 0.9999;
 
 ivec2 clampToImage(ivec2 p) { return clamp(p, ivec2(0), textureSize(uSum, 0) - 1); }
 
-vec3 albedoAt(ivec2 p) {
-    return max(texelFetch(uFeatureAlbedoDepth, p, 0).rgb * uInvFeatureCount, vec3(kSmallestAlbedo));
-}
-
 // The pixel's own sample count, the sum's alpha (accumulate_sum.glsl): adaptive sampling stops
 // pixels at different counts.
 float sampleCountAt(ivec2 p) { return max(texelFetch(uSum, p, 0).a, 1.0); }
 
+// Whether the emission the features met first is taken out of the pixel's mean: where the
+// features are of exactly the pixel's samples (not past kMaxFeatureSamples, nor where adaptive
+// sampling stopped the pixel at another count), and some of them met a surface. A pixel that sees
+// only light is filtered among its like, as before: a defocused light's disc is noise of the lens
+// samples that its neighbours share.
+bool emissionSeparable(ivec2 p) {
+    return texelFetch(uSum, p, 0).a == uFeatureCount && texelFetch(uFeatureNormal, p, 0).w > 0.0;
+}
+
+// The features' albedo; where the emission is not separated, a sample that met light first counts
+// as albedo 1 (its light is in the mean, with nothing to demodulate).
+vec3 albedoAt(ivec2 p) {
+    vec3 albedoSum = texelFetch(uFeatureAlbedoDepth, p, 0).rgb;
+    if (!emissionSeparable(p)) albedoSum += vec3(texelFetch(uFeatureEmission, p, 0).a);
+    return max(albedoSum * uInvFeatureCount, vec3(kSmallestAlbedo));
+}
+
+vec3 emissionAt(ivec2 p) {
+    return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).rgb * uInvFeatureCount : vec3(0.0);
+}
+
 vec3 meanAt(ivec2 p) {
     return (texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb) / sampleCountAt(p);
+}
+
+// The demodulated illumination: the mean less the emission met first, over the albedo. Never
+// below 0 (the two sums of a light's samples may round apart).
+vec3 illuminationAt(ivec2 p) { return max(meanAt(p) - emissionAt(p), vec3(0.0)) / albedoAt(p); }
+
+// The variance of the illumination's luminance from the pixel's own sums: each channel's variance
+// of the mean (n (n - 1) in the denominator) over the albedo squared, weighed as luminance weighs
+// the channels.
+float ownVarianceAt(ivec2 p) {
+    float n = sampleCountAt(p);
+    vec3 sum = texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb;
+    vec3 sumSquares = texelFetch(uSumSquares, p, 0).rgb;
+    vec3 channelVariance = max(sumSquares - sum * sum / n, vec3(0.0)) / (n * (n - 1.0));
+    vec3 albedo = albedoAt(p);
+    vec3 w = vec3(0.2126, 0.7152, 0.0722);
+    return dot(w * w, channelVariance / (albedo * albedo));
+}
+
+// Samples whose light was all emission met first, where it was taken out.
+float lightFirstSamplesAt(ivec2 p) { return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).a : 0.0; }
+
+// Whether some of the pixel's samples met light first and the others a surface: its sums' variance
+// is then mostly which of them met the light, which the separation took out with the emission.
+bool partlyLightAt(ivec2 p) {
+    float lightFirstSamples = lightFirstSamplesAt(p);
+    return lightFirstSamples > 0.0 && lightFirstSamples < sampleCountAt(p);
 }
 
 // Mean depth of the samples that met a surface, or -1 when none did.
@@ -59,7 +116,7 @@ float depthSlope(ivec2 p, ivec2 axis, float depth) {
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 albedo = albedoAt(p);
-    vec3 illumination = meanAt(p) / albedo;
+    vec3 illumination = illuminationAt(p);
     float luminanceP = luminance(illumination);
 
     // The 3x3 neighbourhood's luminance: the variance when the pixel has too few samples of its
@@ -69,7 +126,7 @@ void main() {
         for (int dx = -1; dx <= 1; ++dx) {
             if (dx == 0 && dy == 0) continue;
             ivec2 q = clampToImage(p + ivec2(dx, dy));
-            float l = luminance(meanAt(q) / albedoAt(q));
+            float l = luminance(illuminationAt(q));
             neighbourSum += l;
             neighbourSquares += l * l;
             brightestNeighbour = max(brightestNeighbour, l);
@@ -80,18 +137,25 @@ void main() {
     float othersMean = (neighbourSum - brightestNeighbour) / 7.0;
     float othersSpread = sqrt(max((neighbourSquares - brightestNeighbour * brightestNeighbour) / 7.0 - othersMean * othersMean, 0.0));
 
-    float variance;
+    float variance = -1.0;
     float sampleCount = sampleCountAt(p);
-    if (sampleCount >= kSamplesForOwnVariance) {
-        // The variance of each channel's mean from the sums (n (n - 1) in the denominator), over
-        // the albedo squared, weighed as luminance weighs the channels.
-        vec3 sum = texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb;
-        vec3 sumSquares = texelFetch(uSumSquares, p, 0).rgb;
-        vec3 channelVariance = max(sumSquares - sum * sum / sampleCount, vec3(0.0)) /
-                               (sampleCount * (sampleCount - 1.0));
-        vec3 w = vec3(0.2126, 0.7152, 0.0722);
-        variance = dot(w * w, channelVariance / (albedo * albedo));
-    } else {
+    float lightFirstSamples = lightFirstSamplesAt(p);
+    if (partlyLightAt(p)) {
+        // Its surface's noise: that of the neighbours all on a surface, per sample, over the
+        // samples of this one that met it.
+        float neighbourVariance = 0.0, surfaceNeighbours = 0.0;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                ivec2 q = clampToImage(p + ivec2(dx, dy));
+                if (texelFetch(uFeatureNormal, q, 0).w * uInvFeatureCount < kWholeSurface || sampleCountAt(q) < kSamplesForOwnVariance) continue;
+                neighbourVariance += ownVarianceAt(q) * sampleCountAt(q);
+                surfaceNeighbours += 1.0;
+            }
+        if (surfaceNeighbours > 0.0) variance = neighbourVariance / (surfaceNeighbours * (sampleCount - lightFirstSamples));
+    } else if (sampleCount >= kSamplesForOwnVariance) {
+        variance = ownVarianceAt(p);
+    }
+    if (variance < 0.0) {
         // Too few samples: the spread of the 3x3 neighbourhood, the pixel included, stands in.
         float sum = neighbourSum + luminanceP, squares = neighbourSquares + luminanceP * luminanceP;
         variance = max(squares / 9.0 - (sum / 9.0) * (sum / 9.0), 0.0);
@@ -109,15 +173,28 @@ void main() {
     float depth = depthAt(p);
     vec2 slope = vec2(depthSlope(p, ivec2(1, 0), depth), depthSlope(p, ivec2(0, 1), depth));
     // The share of the pixel's samples that met a surface: 0 where it sees only the environment
-    // or emitters, between 0 and 1 on their outline, where a surface's noise and a light's
-    // brightness share the pixel and no neighbour's value is a fair stand-in.
+    // or emitters, between 0 and 1 on their outline, where a surface's noise and the light of
+    // what else the pixel sees share it and no neighbour's value is a fair stand-in. Light whose
+    // emission was taken out leaves only the surface's: the pixel is that surface's then.
     float surfaceShare = texelFetch(uFeatureNormal, p, 0).w * uInvFeatureCount;
+    float explainedShare = surfaceShare + lightFirstSamples * uInvFeatureCount;
     outIllumination = vec4(illumination, variance);
     if (surfaceShare <= 0.0 || dot(normalSum, normalSum) == 0.0)
         outGuide = vec4(0.0, 0.0, kGuideEnvironment, 0.0);
-    else if (surfaceShare < kWholeSurface)
+    else if (explainedShare < kWholeSurface)
         outGuide = vec4(0.0, 0.0, kGuideOutline, 0.0);
     else
         outGuide = vec4(encodeOctahedral(normalize(normalSum)), depth, length(slope));
-    outAlbedo = vec4(albedo, 1.0);
+
+    // Multiplied back: the albedo, and the emission taken out. The coverage run's camera rays
+    // (more of them than the pixel's samples) give both where it ran: which share of the pixel
+    // a light covers is then known better than its few samples said.
+    vec4 coverageAlbedo = uHasCoverage ? texelFetch(uCoverageAlbedo, p, 0) : vec4(0.0);
+    if (emissionSeparable(p) && coverageAlbedo.a > 0.0) {
+        outAlbedo = vec4(max(coverageAlbedo.rgb / coverageAlbedo.a, vec3(kSmallestAlbedo)), 1.0);
+        outEmission = vec4(texelFetch(uCoverageEmission, p, 0).rgb / coverageAlbedo.a, 1.0);
+    } else {
+        outAlbedo = vec4(albedo, 1.0);
+        outEmission = vec4(emissionAt(p), 1.0);
+    }
 }

@@ -184,6 +184,14 @@ void addEmissionFound(inout PathState path, vec3 emitted, int light, float hitDi
     path.radiance += added;
 }
 
+// What extendPath adds where a camera ray meets emission first, a surface's or the environment's
+// (bounce 0: a throughput of 1, and nothing to weigh it against). The denoiser computes it for the
+// same camera rays and takes it out of the pixel before filtering (denoise_features.frag), so the
+// two must stay the same sum.
+vec3 emissionAddedByCameraRay(vec3 emitted) {
+    return clampContribution(emitted) * lightPathWeight(0, startPathHistory(), false);
+}
+
 void addDirectLighting(inout PathState path, Material material, ShadingFrame frame, Hit hit, vec3 woLocal,
                        Sampler sampler) {
     int bounce = path.bounce;

@@ -220,6 +220,42 @@ TEST(Denoiser, AnImageWithoutNoiseIsLeftAsItIs) {
     }
 }
 
+TEST(Denoiser, ALightsOutlineIsDenoisedLikeTheWallBesideIt) {
+    // A bright square emitter before a sky-lit wall, at 8 spp of independent samples. On its
+    // outline a pixel's noise is which of its samples met the light (20 against the wall's 0.5):
+    // a filter of the mean can only leave it there. The denoiser takes the emission its own camera
+    // rays meet out of the pixel, filters the rest as the wall, and adds the emission back from
+    // four times as many camera rays: the outline's error must fall to well under half the raw
+    // image's (1/4 of the coverage's variance, the wall's noise filtered; left as it is: 1).
+    Scene scene = parseScene(R"({
+  "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [48, 48]},
+  "environment": {"color": [1, 1, 1]},
+  "materials": {"wall": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}, "glow": {"type": "emitter", "radiance": [20, 20, 20]}},
+  "shapes": [{"type": "quad", "material": "wall", "center": [0, 0, -3], "u": [5, 0, 0], "v": [0, 5, 0]},
+             {"type": "quad", "material": "glow", "center": [0.05, 0.03, -2], "u": [0.3, 0, 0], "v": [0, 0.3, 0]}]
+})", "outline.json");
+    const ImageRgbF reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 100), 4096, DenoiseSettings{false}).raw;
+    for (const DenoiseSettings& filter : everyFilter()) {
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 7), 8, filter);
+        // The outline: pixels the reference has well between the wall (at most 0.5) and the light.
+        double rawError = 0.0, denoisedError = 0.0;
+        int outline = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x) {
+                const float ref = reference.at(x, y).g;
+                if (ref < 1.0f || ref > 19.0f) continue;
+                ++outline;
+                rawError += std::pow(renders.raw.at(x, y).g - ref, 2.0) / (ref * ref);
+                denoisedError += std::pow(renders.denoised.at(x, y).g - ref, 2.0) / (ref * ref);
+            }
+        std::printf("%s: %d outline pixels, relMSE raw %.5f denoised %.5f\n", denoiseAlgorithmName(filter.algorithm), outline,
+                    rawError / outline, denoisedError / outline);
+        ASSERT_GT(outline, 40);
+        EXPECT_LT(denoisedError, 0.5 * rawError);
+    }
+}
+
 TEST(Denoiser, ItsErrorAndItsBiasFallAsSamplesGrow) {
     // The Cornell box at 4, 16, 64 and 256 spp against 4096 spp: the denoised image's error falls
     // with the samples, stays below the raw image's, and the difference between denoised and raw

@@ -11,10 +11,13 @@
 namespace ptview {
 namespace {
 
-// Units of the filter passes: the accumulation's three sums, then the features. The feature pass
-// traces the scene, whose textures take units 3 and up, so its previous sums take 0 and 1.
-constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4;
-constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2, kWideUnit = 3;
+// Units of the filter passes: the accumulation's three sums, then the features and the coverage
+// run's sums. The feature pass traces the scene, whose textures take units 3 and up, so its
+// previous sums take 0 to 2 (the coverage run's zone shares the normals' unit: it keeps none).
+constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4,
+              kFeatureEmissionUnit = 5, kCoverageAlbedoUnit = 6, kCoverageEmissionUnit = 7;
+constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2, kWideUnit = 3, kEmissionUnit = 3;
+constexpr int kPrevAlbedoDepthUnit = 0, kPrevNormalUnit = 1, kCoverageZoneUnit = 1, kPrevEmissionUnit = 2;
 
 // The edge-stopping functions' widths (denoise_guide.glsl). SVGF's normal exponent is 128 for
 // exact per-pixel normals; ours are averaged over the pixel's samples, and 16 measured better
@@ -30,15 +33,17 @@ constexpr float kRegressionBandwidthPerStrength = 0.25f;
 // diffuse walls want the wider, the helmet's firefly clusters the narrower).
 constexpr float kRegressionWideBandwidthFactor = 2.0f;
 
-// A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...
+// A framebuffer drawing into textures, in order, as draw buffers 0, 1, ...; a texture 0 leaves
+// its draw buffer out (what the shader writes there goes nowhere).
 GlFramebuffer createFramebufferOf(std::initializer_list<GLuint> textures) {
     GlFramebuffer framebuffer = createFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     GLenum drawBuffers[4];
     GLsizei count = 0;
     for (GLuint texture : textures) {
-        drawBuffers[count] = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + count);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, drawBuffers[count], GL_TEXTURE_2D, texture, 0);
+        const GLenum attachment = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + count);
+        drawBuffers[count] = texture != 0 ? attachment : GL_NONE;
+        if (texture != 0) glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
         ++count;
     }
     glDrawBuffers(count, drawBuffers);
@@ -68,6 +73,9 @@ Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     prepare_->bindSamplerUnit("uSumSquares", kSumSquaresUnit);
     prepare_->bindSamplerUnit("uFeatureAlbedoDepth", kFeatureAlbedoDepthUnit);
     prepare_->bindSamplerUnit("uFeatureNormal", kFeatureNormalUnit);
+    prepare_->bindSamplerUnit("uFeatureEmission", kFeatureEmissionUnit);
+    prepare_->bindSamplerUnit("uCoverageAlbedo", kCoverageAlbedoUnit);
+    prepare_->bindSamplerUnit("uCoverageEmission", kCoverageEmissionUnit);
     atrous_ = buildFilterProgram(shaderDir_, "denoise_atrous.frag");
     atrous_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     atrous_->bindSamplerUnit("uGuide", kGuideUnit);
@@ -82,6 +90,7 @@ Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     compose_ = buildFilterProgram(shaderDir_, "denoise_compose.frag");
     compose_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     compose_->bindSamplerUnit("uAlbedo", kAlbedoUnit);
+    compose_->bindSamplerUnit("uEmission", kEmissionUnit);
     black_ = createTexture();
     glBindTexture(GL_TEXTURE_2D, black_.id());
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -95,7 +104,13 @@ void Denoiser::resize(glm::ivec2 size) {
     for (FeatureTarget& target : features_) {
         target.albedoDepth = createFloatTexture(size);
         target.normal = createFloatTexture(size);
-        target.framebuffer = createFramebufferOf({target.albedoDepth.id(), target.normal.id()});
+        target.emission = createFloatTexture(size);
+        target.framebuffer = createFramebufferOf({target.albedoDepth.id(), target.normal.id(), target.emission.id()});
+    }
+    for (FeatureTarget& target : coverage_) {
+        target.albedoDepth = createFloatTexture(size);
+        target.emission = createFloatTexture(size);
+        target.framebuffer = createFramebufferOf({target.albedoDepth.id(), 0, target.emission.id()});
     }
     for (int i = 0; i < 2; ++i) {
         illumination_[i] = createFloatTexture(size);
@@ -105,7 +120,8 @@ void Denoiser::resize(glm::ivec2 size) {
     }
     guide_ = createFloatTexture(size);
     albedo_ = createFloatTexture(size);
-    prepareFramebuffer_ = createFramebufferOf({illumination_[0].id(), guide_.id(), albedo_.id()});
+    emission_ = createFloatTexture(size);
+    prepareFramebuffer_ = createFramebufferOf({illumination_[0].id(), guide_.id(), albedo_.id(), emission_.id()});
     for (int i = 0; i < 2; ++i) {
         illuminationFramebuffer_[i] = createFramebufferOf({illumination_[i].id()});
         result_[i] = createFloatTexture(size);
@@ -115,6 +131,7 @@ void Denoiser::resize(glm::ivec2 size) {
     regressionFramebuffer_ = createFramebufferOf({illumination_[1].id(), regressionWide_.id()});
     size_ = size;
     featureSamples_ = 0;
+    coverageSamples_ = 0;
     resultSamples_ = 0;
     resultRestartCount_ = -1;
     cycle_.active = false;
@@ -127,6 +144,7 @@ void Denoiser::drawRows(int rowBegin, int rowEnd) const {
 void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
     if (tracer.restartCount() != featureRestartCount_) {
         featureSamples_ = 0;
+        coverageSamples_ = 0;
         featureRestartCount_ = tracer.restartCount();
     }
     // The feature program traces the scene as the path-tracing program does: the same includes,
@@ -136,16 +154,23 @@ void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
         ShaderAssembler assembler(shaderDir_);
         specializeShaders(assembler, tracer.features(), tracer.settings().integrator, sampler);
         featureProgram_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("denoise_features.frag"));
-        featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", 0); // the scene's units start at 3
-        featureProgram_->bindSamplerUnit("uPrevNormal", 1);
+        featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", kPrevAlbedoDepthUnit); // the scene's units start at 3
+        featureProgram_->bindSamplerUnit("uPrevNormal", kPrevNormalUnit);
+        featureProgram_->bindSamplerUnit("uCoverageZone", kCoverageZoneUnit);
+        featureProgram_->bindSamplerUnit("uPrevEmission", kPrevEmissionUnit);
         featureProgramFeatures_ = tracer.features();
         featureProgramSampler_ = sampler;
         featureSamples_ = 0;
+        coverageSamples_ = 0;
     }
 }
 
 int Denoiser::featureSamplesThisPass(const PathTracer& tracer) const {
     return std::min(tracer.samplesPerPass(), cycle_.featureTarget - featureSamples_);
+}
+
+int Denoiser::coverageSamplesThisPass(const PathTracer& tracer) const {
+    return std::min(tracer.samplesPerPass(), cycle_.coverageTarget - coverageSamples_);
 }
 
 void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
@@ -158,6 +183,12 @@ void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     cycle_.featureTarget = std::max(featureSamples_, std::min(tracer.sampleCount(), kMaxFeatureSamples));
     const int perPass = std::max(1, tracer.samplesPerPass());
     cycle_.featurePasses = (cycle_.featureTarget - featureSamples_ + perPass - 1) / perPass;
+    // Past kMaxFeatureSamples the features are not of the radiance's samples, so nothing is
+    // separated and the coverage run stops where it is.
+    cycle_.coverageTarget = coverageSamples_;
+    if (tracer.sampleCount() <= kMaxFeatureSamples)
+        cycle_.coverageTarget = std::max(coverageSamples_, std::min(kCoverageSamplesPerSample * tracer.sampleCount(), kMaxCoverageSamples));
+    cycle_.coveragePasses = (cycle_.coverageTarget - coverageSamples_ + perPass - 1) / perPass;
     cycle_.samples = tracer.sampleCount();
 }
 
@@ -179,11 +210,13 @@ bool Denoiser::advance(PathTracer& tracer, int rows) {
         const int step = cycle_.step;
         if (step < cycle_.featurePasses) {
             drawFeatureRows(tracer, cycle_.nextRow, rowEnd);
-        } else if (step == cycle_.featurePasses) {
+        } else if (step < cycle_.prepareStep()) {
+            drawCoverageRows(tracer, cycle_.nextRow, rowEnd);
+        } else if (step == cycle_.prepareStep()) {
             if (cycle_.nextRow == 0) cycle_.samples = tracer.sampleCount();
             drawPrepareRows(tracer, cycle_.nextRow, rowEnd);
         } else if (step < cycle_.stepCount() - 1) {
-            const int filterPass = step - cycle_.featurePasses - 1;
+            const int filterPass = step - cycle_.prepareStep() - 1;
             if (cycle_.settings.algorithm != DenoiseAlgorithm::Regression)
                 drawAtrousRows(filterPass, cycle_.nextRow, rowEnd);
             else if (filterPass == 0)
@@ -205,6 +238,9 @@ void Denoiser::finishStep(PathTracer& tracer) {
     if (cycle_.step < cycle_.featurePasses) {
         featureSamples_ += featureSamplesThisPass(tracer);
         featureWrite_ = 1 - featureWrite_;
+    } else if (cycle_.step < cycle_.prepareStep()) {
+        coverageSamples_ += coverageSamplesThisPass(tracer);
+        coverageWrite_ = 1 - coverageWrite_;
     }
     cycle_.nextRow = 0;
     if (++cycle_.step < cycle_.stepCount()) return;
@@ -218,11 +254,27 @@ void Denoiser::finishStep(PathTracer& tracer) {
 void Denoiser::drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     // Every band sets the frame uniforms again: the tracer's own passes change them in between.
     tracer.useSceneIn(*featureProgram_, featureSamples_, featureSamplesThisPass(tracer));
+    glUniform1i(featureProgram_->uniformLocation("uCoverage"), 0);
     const FeatureTarget& previous = features_[1 - featureWrite_];
-    bindTexture(0, previous.albedoDepth.id());
-    bindTexture(1, previous.normal.id());
+    bindTexture(kPrevAlbedoDepthUnit, previous.albedoDepth.id());
+    bindTexture(kPrevNormalUnit, previous.normal.id());
+    bindTexture(kPrevEmissionUnit, previous.emission.id());
     glActiveTexture(GL_TEXTURE0);
     glBindFramebuffer(GL_FRAMEBUFFER, features_[featureWrite_].framebuffer.id());
+    drawRows(rowBegin, rowEnd);
+}
+
+// The same program, run again for more camera rays where the features saw emission first.
+void Denoiser::drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd) {
+    tracer.useSceneIn(*featureProgram_, coverageSamples_, coverageSamplesThisPass(tracer));
+    glUniform1i(featureProgram_->uniformLocation("uCoverage"), 1);
+    glUniform1f(featureProgram_->uniformLocation("uCoverageZoneSamples"), static_cast<float>(featureSamples_));
+    const FeatureTarget& previous = coverage_[1 - coverageWrite_];
+    bindTexture(kPrevAlbedoDepthUnit, previous.albedoDepth.id());
+    bindTexture(kCoverageZoneUnit, features_[1 - featureWrite_].emission.id());
+    bindTexture(kPrevEmissionUnit, previous.emission.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, coverage_[coverageWrite_].framebuffer.id());
     drawRows(rowBegin, rowEnd);
 }
 
@@ -232,9 +284,15 @@ void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     const FeatureTarget& features = features_[1 - featureWrite_];
     bindTexture(kFeatureAlbedoDepthUnit, features.albedoDepth.id());
     bindTexture(kFeatureNormalUnit, features.normal.id());
+    bindTexture(kFeatureEmissionUnit, features.emission.id());
+    const FeatureTarget& coverage = coverage_[1 - coverageWrite_];
+    bindTexture(kCoverageAlbedoUnit, coverage.albedoDepth.id());
+    bindTexture(kCoverageEmissionUnit, coverage.emission.id());
     glActiveTexture(GL_TEXTURE0);
     // Each pixel's sample count comes with its sums (the sum's alpha), whenever this band runs.
     glUniform1f(prepare_->uniformLocation("uInvFeatureCount"), featureSamples_ > 0 ? 1.0f / static_cast<float>(featureSamples_) : 0.0f);
+    glUniform1f(prepare_->uniformLocation("uFeatureCount"), static_cast<float>(featureSamples_));
+    glUniform1i(prepare_->uniformLocation("uHasCoverage"), coverageSamples_ > 0 ? 1 : 0);
     glBindFramebuffer(GL_FRAMEBUFFER, prepareFramebuffer_.id());
     drawRows(rowBegin, rowEnd);
 }
@@ -286,6 +344,7 @@ void Denoiser::drawComposeRows(int rowBegin, int rowEnd) {
     glUseProgram(compose_->id());
     bindTexture(kIlluminationUnit, illumination_[filteredIllumination()].id());
     bindTexture(kAlbedoUnit, albedo_.id());
+    bindTexture(kEmissionUnit, emission_.id());
     glActiveTexture(GL_TEXTURE0);
     glBindFramebuffer(GL_FRAMEBUFFER, resultFramebuffer_[1 - shownResult_].id());
     drawRows(rowBegin, rowEnd);

@@ -59,6 +59,12 @@ public:
     void bindResult(int sumUnit, int compensationUnit) const;
 
     static constexpr int kMaxFeatureSamples = 64;
+    // The emission met by camera rays is separated from the rest of a pixel only while the
+    // features are of exactly the radiance's samples (at most kMaxFeatureSamples); it is then
+    // added back from this many camera rays per radiance sample, at most kMaxCoverageSamples, in
+    // the pixels next to it (docs/denoising.md: a light's outline).
+    static constexpr int kCoverageSamplesPerSample = 4;
+    static constexpr int kMaxCoverageSamples = 64;
 
     // The passes between prepare and compose: the à-trous iterations, or the regression's two
     // (the fits at two bandwidths, then the per-pixel choice between them).
@@ -67,9 +73,11 @@ public:
     }
 
 private:
+    // The features' sums (denoise_features.frag); the coverage run's have no normals, and count
+    // their camera rays per pixel where the features' depth is.
     struct FeatureTarget {
         GlFramebuffer framebuffer;
-        GlTexture albedoDepth, normal;
+        GlTexture albedoDepth, normal, emission;
     };
     // The denoise in progress: its passes in order, each size_.y rows, done up to (step, nextRow).
     struct Cycle {
@@ -78,10 +86,13 @@ private:
         int restartCount = -1;
         int featurePasses = 0;  // first steps: feature passes up to featureTarget samples
         int featureTarget = 0;
+        int coveragePasses = 0; // then coverage passes up to coverageTarget camera rays
+        int coverageTarget = 0;
         int step = 0;
         int nextRow = 0;
         int samples = 0;        // of the radiance, as the prepare pass began
-        int stepCount() const { return featurePasses + 2 + filterPassCount(settings); }
+        int prepareStep() const { return featurePasses + coveragePasses; }
+        int stepCount() const { return prepareStep() + 2 + filterPassCount(settings); }
     };
     // The illumination texture the last filter pass wrote (the prepare pass writes [0]).
     int filteredIllumination() const { return filterPassCount(cycle_.settings) % 2; }
@@ -89,6 +100,7 @@ private:
     void prepareFeatureProgram(PathTracer& tracer);
     // Row bands [rowBegin, rowEnd) of one pass.
     void drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd);
+    void drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawAtrousRows(int iteration, int rowBegin, int rowEnd);
     void drawRegressionRows(int rowBegin, int rowEnd);
@@ -97,6 +109,7 @@ private:
     void drawRows(int rowBegin, int rowEnd) const;
     void finishStep(PathTracer& tracer);
     int featureSamplesThisPass(const PathTracer& tracer) const;
+    int coverageSamplesThisPass(const PathTracer& tracer) const;
 
     std::filesystem::path shaderDir_;
     std::unique_ptr<GlProgram> featureProgram_;
@@ -110,10 +123,13 @@ private:
     int featureWrite_ = 0;
     int featureSamples_ = 0;
     int featureRestartCount_ = -1; // the tracer's restartCount() the features belong to
+    FeatureTarget coverage_[2];
+    int coverageWrite_ = 0;
+    int coverageSamples_ = 0;      // camera rays per pixel of the coverage run, where it ran
 
     Cycle cycle_;
     GlFramebuffer prepareFramebuffer_;
-    GlTexture illumination_[2], guide_, albedo_;
+    GlTexture illumination_[2], guide_, albedo_, emission_; // emission_: what compose adds back
     GlFramebuffer illuminationFramebuffer_[2];
     // The regression's fit at the wider bandwidth (the narrower goes to illumination_[1]), each
     // with its estimated error in alpha, and the framebuffer writing both.
