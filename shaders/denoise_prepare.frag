@@ -90,11 +90,13 @@ float ownVarianceAt(ivec2 p) {
 // Samples whose light was all emission met first, where it was taken out.
 float lightFirstSamplesAt(ivec2 p) { return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).a : 0.0; }
 
-// Whether some of the pixel's samples met light first and the others a surface: its sums' variance
-// is then mostly which of them met the light, which the separation took out with the emission.
+// Whether some of the pixel's samples met emission first and the others a surface: its sums'
+// variance is then mostly which of them met the light, which the separation took out with the
+// emission. (Where what they met is black, the sums' variance is the surface part's, and more.)
 bool partlyLightAt(ivec2 p) {
     float lightFirstSamples = lightFirstSamplesAt(p);
-    return lightFirstSamples > 0.0 && lightFirstSamples < sampleCountAt(p);
+    vec3 emission = texelFetch(uFeatureEmission, p, 0).rgb;
+    return lightFirstSamples > 0.0 && lightFirstSamples < sampleCountAt(p) && emission.r + emission.g + emission.b > 0.0;
 }
 
 // Mean depth of the samples that met a surface, or -1 when none did.
