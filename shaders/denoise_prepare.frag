@@ -163,12 +163,13 @@ void main() {
         variance = max(squares / 9.0 - (sum / 9.0) * (sum / 9.0), 0.0);
     }
 
-    // A firefly: brighter than its neighbourhood by more than three of its spreads, and by no more
-    // than its own noise explains. Brought down to that bound before filtering, so that one bright
+    // A firefly: brighter than its neighbourhood by more than five of its spreads, and by no more
+    // than its own noise explains (three, the first choice, brought real detail down too: the
+    // spread of seven noisy neighbours is often small; docs/denoising.md). Brought down to that bound before filtering, so that one bright
     // sample does not spread into a blotch (biased, like any clamp; the bound rises and the own
     // noise falls with the samples, so it stops applying as the image converges). A highlight that
     // is really there has a small error of its own and stays.
-    float bound = othersMean + 3.0 * othersSpread;
+    float bound = othersMean + 5.0 * othersSpread;
     if (luminanceP > bound && luminanceP - bound < 3.0 * sqrt(variance)) illumination *= bound / luminanceP;
 
     vec3 normalSum = texelFetch(uFeatureNormal, p, 0).xyz;

@@ -14,8 +14,8 @@
 // prepare pass), times the à-trous filter's geometry weight (denoise_guide.glsl), so that nothing
 // is fitted across a silhouette.
 //
-// The fit is made at two bandwidths at once (the patch distances and geometry weights are
-// shared), the narrower with the variance of its value beside it; denoise_select_bandwidth.frag
+// The fit is made at two bandwidths at once (the patch distances are shared; the wider has a wider
+// depth tolerance too), the narrower with the variance of its value beside it; denoise_select_bandwidth.frag
 // chooses between them per pixel. NFOR instead estimates each bandwidth's error from two half
 // buffers of samples (the weights of one fitting the other); the accumulation keeps one sum per
 // pixel, not two.
@@ -28,7 +28,12 @@ uniform sampler2D uAlbedo;
 uniform float uBandwidthNarrow;
 uniform float uBandwidthWide;
 uniform float uSigmaNormal;
-uniform float uSigmaDepth;
+// Each fit's depth tolerance (Denoiser.cpp: it grows with the bandwidth): the wider fit is wider in
+// its geometry too, so that on a curved surface (the cow) it takes in the neighbours whose depth
+// the centre's slope does not predict; where that bends the light, the two fits disagree and the
+// narrower is kept.
+uniform float uSigmaDepthNarrow;
+uniform float uSigmaDepthWide;
 
 // Each fit's illumination; in the narrower's alpha the variance of its luminance.
 layout(location = 0) out vec4 outNarrow;
@@ -157,8 +162,9 @@ void main() {
             ivec2 q = p + d;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec4 guideQ = texelFetch(uGuide, q, 0);
-            float w = (d == ivec2(0)) ? 1.0 : geometryWeight(guideP, guideQ, length(vec2(d)), uSigmaNormal, uSigmaDepth);
-            if (w < 1e-4) continue;
+            float w = (d == ivec2(0)) ? 1.0 : geometryWeight(guideP, guideQ, length(vec2(d)), uSigmaNormal, uSigmaDepthNarrow);
+            float wGeometryWide = (d == ivec2(0)) ? 1.0 : geometryWeight(guideP, guideQ, length(vec2(d)), uSigmaNormal, uSigmaDepthWide);
+            if (max(w, wGeometryWide) < 1e-4) continue;
             // Non-local means: the squared difference of the patches beyond what their noise
             // explains (Rousselle et al.'s variance cancellation, Var_p + min(Var_p, Var_q)), over
             // k^2 times that noise, summed over the patch before dividing so that a pixel whose
@@ -178,9 +184,9 @@ void main() {
             // trend whatever the weights, so this costs no bias where the model holds.
             vec4 tapQ = texelFetch(uIllumination, q, 0);
             float tolerated = kVarianceTolerance * expectedVariance;
-            w *= (tolerated + 1e-20) / (max(tolerated, tapQ.a) + 1e-20);
-            float wNarrow = w * exp(-excess / (uBandwidthNarrow * uBandwidthNarrow * noise + 1e-10));
-            float wWide = w * exp(-excess / (uBandwidthWide * uBandwidthWide * noise + 1e-10));
+            float noiseFactor = (tolerated + 1e-20) / (max(tolerated, tapQ.a) + 1e-20);
+            float wNarrow = w * noiseFactor * exp(-excess / (uBandwidthNarrow * uBandwidthNarrow * noise + 1e-10));
+            float wWide = wGeometryWide * noiseFactor * exp(-excess / (uBandwidthWide * uBandwidthWide * noise + 1e-10));
             float x[kFeatureCount];
             featuresOf(guideQ, texelFetch(uAlbedo, q, 0).rgb, guideP, albedoP, d, x);
             vec3 y = tapQ.rgb;
