@@ -14,7 +14,8 @@
 // or the sky's outline is filtered as the surface beside it, and adds back the emission of more
 // camera rays than the radiance has. Those come from a second run of this program (uCoverage), at
 // up to Denoiser::kMaxCoverageSamples rays per pixel, only where an emitter or the environment and
-// a surface share a pixel's 3x3 neighbourhood.
+// a surface share a pixel's 3x3 neighbourhood, or where pixels that see only light differ
+// (inCoverageZone).
 #include "frame_uniforms.glsl"
 #include "camera.glsl"
 #include "intersect.glsl"
@@ -122,18 +123,26 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
 }
 
 // The coverage run traces a pixel only where its 3x3 neighbourhood has samples that met light
-// first and samples that did not: a light's or the sky's outline, and the pixels an edge of it may
-// reach.
+// first and samples that did not (a light's or the sky's outline, and the pixels an edge of it may
+// reach), or pixels that saw only light and more than twice as much in one as in another (a
+// defocused lamp's disc over the sky, whose pixels the prepare pass takes from the coverage run;
+// not the gentle gradients of a sky map, which would cost rays over the whole sky).
 bool inCoverageZone(ivec2 pixel) {
     ivec2 last = textureSize(uCoverageZone, 0) - 1;
     bool someLight = false, someElse = false;
+    float dimmestLight = 1e30, brightestLight = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-            float lightFirstSamples = texelFetch(uCoverageZone, clamp(pixel + ivec2(dx, dy), ivec2(0), last), 0).a;
-            someLight = someLight || lightFirstSamples > 0.0;
-            someElse = someElse || lightFirstSamples < uCoverageZoneSamples;
+            vec4 emission = texelFetch(uCoverageZone, clamp(pixel + ivec2(dx, dy), ivec2(0), last), 0);
+            someLight = someLight || emission.a > 0.0;
+            someElse = someElse || emission.a < uCoverageZoneSamples;
+            if (emission.a >= uCoverageZoneSamples) {
+                float light = luminance(emission.rgb);
+                dimmestLight = min(dimmestLight, light);
+                brightestLight = max(brightestLight, light);
+            }
         }
-    return someLight && someElse;
+    return (someLight && someElse) || brightestLight > 2.0 * dimmestLight + 1e-6 * uCoverageZoneSamples;
 }
 
 void main() {

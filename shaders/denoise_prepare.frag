@@ -62,6 +62,15 @@ vec3 albedoAt(ivec2 p) {
     return max(albedoSum * uInvFeatureCount, vec3(kSmallestAlbedo));
 }
 
+// A pixel whose samples and the coverage run's camera rays all met light first (the sky, a
+// defocused lamp's disc over it): the coverage run's mean is the same estimate from more rays.
+bool lightOnlyCoveredAt(ivec2 p) {
+    if (!uHasCoverage || texelFetch(uSum, p, 0).a != uFeatureCount || texelFetch(uFeatureNormal, p, 0).w > 0.0) return false;
+    vec4 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0);
+    return coverageAlbedo.a > 0.0 && texelFetch(uCoverageEmission, p, 0).a == coverageAlbedo.a &&
+           texelFetch(uFeatureEmission, p, 0).a == uFeatureCount;
+}
+
 vec3 emissionAt(ivec2 p) {
     return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).rgb * uInvFeatureCount : vec3(0.0);
 }
@@ -72,7 +81,13 @@ vec3 meanAt(ivec2 p) {
 
 // The demodulated illumination: the mean less the emission met first, over the albedo. Never
 // below 0 (the two sums of a light's samples may round apart).
-vec3 illuminationAt(ivec2 p) { return max(meanAt(p) - emissionAt(p), vec3(0.0)) / albedoAt(p); }
+vec3 illuminationAt(ivec2 p) {
+    if (lightOnlyCoveredAt(p)) {
+        vec4 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0);
+        return texelFetch(uCoverageEmission, p, 0).rgb / coverageAlbedo.a;
+    }
+    return max(meanAt(p) - emissionAt(p), vec3(0.0)) / albedoAt(p);
+}
 
 // The variance of the illumination's luminance from the pixel's own sums: each channel's variance
 // of the mean (n (n - 1) in the denominator) over the albedo squared, weighed as luminance weighs
@@ -154,6 +169,14 @@ void main() {
                 surfaceNeighbours += 1.0;
             }
         if (surfaceNeighbours > 0.0) variance = neighbourVariance / (surfaceNeighbours * (sampleCount - lightFirstSamples));
+    } else if (sampleCount >= kSamplesForOwnVariance && lightOnlyCoveredAt(p)) {
+        // The coverage run's mean: the sums' variance per ray, or, where its rays found what the
+        // pixel's samples missed (a defocused lamp's one hit in 64), what its distance from the
+        // pixel's own mean says (they share the first samples: that distance squared is about
+        // three times the variance of the coverage run's mean).
+        float rays = texelFetch(uCoverageAlbedo, p, 0).a;
+        float distance = luminanceP - luminance(meanAt(p));
+        variance = max(ownVarianceAt(p) * sampleCount / rays, distance * distance / 3.0);
     } else if (sampleCount >= kSamplesForOwnVariance) {
         variance = ownVarianceAt(p);
     }

@@ -256,6 +256,42 @@ TEST(Denoiser, ALightsOutlineIsDenoisedLikeTheWallBesideIt) {
     }
 }
 
+TEST(Denoiser, ADefocusedBulbsDiscIsDenoisedFromMoreCameraRays) {
+    // A bright bulb far behind the focus of a thin lens, against a dim sky (as on dof): its disc
+    // is pixels that see only light, where each of 8 independent samples met the bulb through
+    // some point of the lens or missed it. No feature tells the disc from the sky, so a filter of
+    // the mean has only the hits' brightness to go by; the coverage run's 4x camera rays estimate
+    // those pixels with a quarter of the variance before any filtering. Over the disc the denoised
+    // relMSE measured 0.16 (a-trous) and 0.20 (regression), and 0.36 and 0.40 with the filters
+    // given the 8 samples' mean alone (raw: 5.7): the bound sits between.
+    Scene scene = parseScene(R"({
+  "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 30, "resolution": [48, 48],
+             "aperture_radius": 0.1, "focus_distance": 1.0},
+  "environment": {"color": [0.03, 0.035, 0.05]},
+  "materials": {"bulb": {"type": "emitter", "radiance": [60, 45, 20]}},
+  "shapes": [{"type": "sphere", "center": [0.02, 0.01, -5], "radius": 0.15, "material": "bulb"}]
+})", "bokeh.json");
+    const ImageRgbF reference = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 100), 4096, DenoiseSettings{false}).raw;
+    for (const DenoiseSettings& filter : everyFilter()) {
+        SCOPED_TRACE(denoiseAlgorithmName(filter.algorithm));
+        Renders renders = renderAndDenoise(scene, settingsOf(Integrator::Full, 4, 7), 8, filter);
+        double rawError = 0.0, denoisedError = 0.0;
+        int disc = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x) {
+                const float ref = reference.at(x, y).g;
+                if (ref < 0.1f) continue; // the sky is 0.035
+                ++disc;
+                rawError += std::pow(renders.raw.at(x, y).g - ref, 2.0) / (ref * ref);
+                denoisedError += std::pow(renders.denoised.at(x, y).g - ref, 2.0) / (ref * ref);
+            }
+        std::printf("%s: disc of %d pixels, relMSE raw %.4f denoised %.4f\n", denoiseAlgorithmName(filter.algorithm), disc,
+                    rawError / disc, denoisedError / disc);
+        ASSERT_GT(disc, 100);
+        EXPECT_LT(denoisedError / disc, 0.28);
+    }
+}
+
 TEST(Denoiser, ItsErrorAndItsBiasFallAsSamplesGrow) {
     // The Cornell box at 4, 16, 64 and 256 spp against 4096 spp: the denoised image's error falls
     // with the samples, stays below the raw image's, and the difference between denoised and raw
