@@ -89,21 +89,33 @@ vec3 illuminationAt(ivec2 p) {
     return max(meanAt(p) - emissionAt(p), vec3(0.0)) / albedoAt(p);
 }
 
+// Samples whose light was all emission met first, where it was taken out.
+float lightFirstSamplesAt(ivec2 p) { return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).a : 0.0; }
+
 // The variance of the illumination's luminance from the pixel's own sums: each channel's variance
 // of the mean (n (n - 1) in the denominator) over the albedo squared, weighed as luminance weighs
 // the channels.
+//
+// Where the emission met first was taken out, of what is left: the sums less the emission's. Its
+// sum of squares is not summed, so it is taken as that of light-first samples all of one radiance
+// (a lamp, a constant sky: exact), the least it can be, so the variance left is the most it can
+// be. A surface sample is taken to emit nothing (the helmet's glowing parts: a little more).
 float ownVarianceAt(ivec2 p) {
     float n = sampleCountAt(p);
     vec3 sum = texelFetch(uSum, p, 0).rgb - texelFetch(uCompensation, p, 0).rgb;
     vec3 sumSquares = texelFetch(uSumSquares, p, 0).rgb;
+    float lightFirstSamples = lightFirstSamplesAt(p);
+    if (lightFirstSamples > 0.0) {
+        vec3 emissionSum = texelFetch(uFeatureEmission, p, 0).rgb;
+        sum -= emissionSum;
+        sumSquares = max(sumSquares - emissionSum * emissionSum / lightFirstSamples, vec3(0.0));
+    }
     vec3 channelVariance = max(sumSquares - sum * sum / n, vec3(0.0)) / (n * (n - 1.0));
     vec3 albedo = albedoAt(p);
     vec3 w = vec3(0.2126, 0.7152, 0.0722);
     return dot(w * w, channelVariance / (albedo * albedo));
 }
 
-// Samples whose light was all emission met first, where it was taken out.
-float lightFirstSamplesAt(ivec2 p) { return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).a : 0.0; }
 
 // Whether some of the pixel's samples met emission first and the others a surface: its sums'
 // variance is then mostly which of them met the light, which the separation took out with the
@@ -129,6 +141,9 @@ float depthSlope(ivec2 p, ivec2 axis, float depth) {
     float slope = min(a, b);
     return slope > 1e29 ? 0.0 : slope;
 }
+
+// Whether the emission added back comes from the coverage run.
+bool coveredAt(ivec2 p) { return uHasCoverage && emissionSeparable(p) && texelFetch(uCoverageAlbedo, p, 0).a > 0.0; }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -157,19 +172,7 @@ void main() {
     float variance = -1.0;
     float sampleCount = sampleCountAt(p);
     float lightFirstSamples = lightFirstSamplesAt(p);
-    if (partlyLightAt(p)) {
-        // Its surface's noise: that of the neighbours all on a surface, per sample, over the
-        // samples of this one that met it.
-        float neighbourVariance = 0.0, surfaceNeighbours = 0.0;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                ivec2 q = clampToImage(p + ivec2(dx, dy));
-                if (texelFetch(uFeatureNormal, q, 0).w * uInvFeatureCount < kWholeSurface || sampleCountAt(q) < kSamplesForOwnVariance) continue;
-                neighbourVariance += ownVarianceAt(q) * sampleCountAt(q);
-                surfaceNeighbours += 1.0;
-            }
-        if (surfaceNeighbours > 0.0) variance = neighbourVariance / (surfaceNeighbours * (sampleCount - lightFirstSamples));
-    } else if (sampleCount >= kSamplesForOwnVariance && lightOnlyCoveredAt(p)) {
+    if (sampleCount >= kSamplesForOwnVariance && lightOnlyCoveredAt(p)) {
         // The coverage run's mean: the sums' variance per ray, or, where its rays found what the
         // pixel's samples missed (a defocused lamp's one hit in 64), what its distance from the
         // pixel's own mean says (they share the first samples: that distance squared is about
@@ -215,8 +218,8 @@ void main() {
     // Multiplied back: the albedo, and the emission taken out. The coverage run's camera rays
     // (more of them than the pixel's samples) give both where it ran: which share of the pixel
     // a light covers is then known better than its few samples said.
-    vec4 coverageAlbedo = uHasCoverage ? texelFetch(uCoverageAlbedo, p, 0) : vec4(0.0);
-    if (emissionSeparable(p) && coverageAlbedo.a > 0.0) {
+    if (coveredAt(p)) {
+        vec4 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0);
         outAlbedo = vec4(max(coverageAlbedo.rgb / coverageAlbedo.a, vec3(kSmallestAlbedo)), 1.0);
         outEmission = vec4(texelFetch(uCoverageEmission, p, 0).rgb / coverageAlbedo.a, 1.0);
     } else {
