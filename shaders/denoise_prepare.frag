@@ -116,16 +116,6 @@ float ownVarianceAt(ivec2 p) {
     return dot(w * w, channelVariance / (albedo * albedo));
 }
 
-
-// Whether some of the pixel's samples met emission first and the others a surface: its sums'
-// variance is then mostly which of them met the light, which the separation took out with the
-// emission. (Where what they met is black, the sums' variance is the surface part's, and more.)
-bool partlyLightAt(ivec2 p) {
-    float lightFirstSamples = lightFirstSamplesAt(p);
-    vec3 emission = texelFetch(uFeatureEmission, p, 0).rgb;
-    return lightFirstSamples > 0.0 && lightFirstSamples < sampleCountAt(p) && emission.r + emission.g + emission.b > 0.0;
-}
-
 // Mean depth of the samples that met a surface, or -1 when none did.
 float depthAt(ivec2 p) {
     float hits = texelFetch(uFeatureNormal, p, 0).w;
@@ -191,10 +181,11 @@ void main() {
 
     // A firefly: brighter than its neighbourhood by more than five of its spreads, and by no more
     // than its own noise explains (three, the first choice, brought real detail down too: the
-    // spread of seven noisy neighbours is often small; docs/denoising.md). Brought down to that bound before filtering, so that one bright
-    // sample does not spread into a blotch (biased, like any clamp; the bound rises and the own
-    // noise falls with the samples, so it stops applying as the image converges). A highlight that
-    // is really there has a small error of its own and stays.
+    // spread of seven noisy neighbours is often small; docs/denoising.md). Brought down to that
+    // bound before filtering, so that one bright sample does not spread into a blotch (biased,
+    // like any clamp; the bound rises and the own noise falls with the samples, so it stops
+    // applying as the image converges). A highlight that is really there has a small error of its
+    // own and stays.
     float bound = othersMean + 5.0 * othersSpread;
     if (luminanceP > bound && luminanceP - bound < 3.0 * sqrt(variance)) illumination *= bound / luminanceP;
 
