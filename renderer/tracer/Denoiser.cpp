@@ -177,9 +177,9 @@ int Denoiser::featureSamplesThisPass(const PathTracer& tracer) const {
     return std::min(tracer.samplesPerPass(), cycle_.featureTarget - featureSamples_);
 }
 
-int Denoiser::coverageSamplesThisPass(const PathTracer& tracer) const {
-    return std::min(tracer.samplesPerPass(), cycle_.coverageTarget - coverageSamples_);
-}
+// All of a cycle's coverage rays in one pass: they are traced only in the few pixels of the
+// zone (denoise_features.frag), and each pass costs every pixel the zone test.
+int Denoiser::coverageSamplesThisPass(const PathTracer&) const { return cycle_.coverageTarget - coverageSamples_; }
 
 void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     resize(tracer.imageSize());
@@ -196,7 +196,7 @@ void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     cycle_.coverageTarget = coverageSamples_;
     if (tracer.sampleCount() <= kMaxFeatureSamples)
         cycle_.coverageTarget = std::max(coverageSamples_, std::min(kCoverageSamplesPerSample * tracer.sampleCount(), kMaxCoverageSamples));
-    cycle_.coveragePasses = (cycle_.coverageTarget - coverageSamples_ + perPass - 1) / perPass;
+    cycle_.coveragePasses = cycle_.coverageTarget > coverageSamples_ ? 1 : 0;
     cycle_.samples = tracer.sampleCount();
 }
 
