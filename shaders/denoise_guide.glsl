@@ -28,16 +28,22 @@ bool isOutline(vec4 guide) { return guide.z == kGuideOutline; }
 // How much pixel q may count toward pixel p, from their geometry: 0 across a silhouette or a
 // crease, 1 on one smooth surface. offsetPixels: q - p. Environment and emitters count only
 // among themselves; an outline pixel counts for nobody and takes nobody in (it stays as it is).
-float geometryWeight(vec4 guideP, vec4 guideQ, float offsetPixels, float sigmaNormal, float sigmaDepth) {
-    if (isOutline(guideP) || isOutline(guideQ)) return 0.0;
+// geometryWeights: the same at two depth tolerances at once (the regression's two fits), the
+// normal's part computed once.
+vec2 geometryWeights(vec4 guideP, vec4 guideQ, float offsetPixels, float sigmaNormal, vec2 sigmaDepth) {
+    if (isOutline(guideP) || isOutline(guideQ)) return vec2(0.0);
     bool environmentP = seesEnvironment(guideP);
-    if (environmentP || seesEnvironment(guideQ)) return environmentP == seesEnvironment(guideQ) ? 1.0 : 0.0;
+    if (environmentP || seesEnvironment(guideQ)) return vec2(environmentP == seesEnvironment(guideQ) ? 1.0 : 0.0);
     float normalWeight = pow(max(0.0, dot(decodeOctahedral(guideP.xy), decodeOctahedral(guideQ.xy))), sigmaNormal);
     // The depth the surface through p would have at q, within sigmaDepth of its change per pixel
     // (plus a thousandth of the depth, so that a surface seen head-on still has a tolerance).
-    float tolerance = sigmaDepth * guideP.w * offsetPixels + 1e-3 * guideP.z + 1e-6;
-    float depthWeight = exp(-abs(guideP.z - guideQ.z) / tolerance);
+    vec2 tolerance = sigmaDepth * guideP.w * offsetPixels + 1e-3 * guideP.z + 1e-6;
+    vec2 depthWeight = exp(-abs(guideP.z - guideQ.z) / tolerance);
     return normalWeight * depthWeight;
+}
+
+float geometryWeight(vec4 guideP, vec4 guideQ, float offsetPixels, float sigmaNormal, float sigmaDepth) {
+    return geometryWeights(guideP, guideQ, offsetPixels, sigmaNormal, vec2(sigmaDepth)).x;
 }
 
 // How much q may count toward p from their (demodulated) brightness: within a few standard

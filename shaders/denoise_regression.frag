@@ -162,9 +162,10 @@ void main() {
             ivec2 q = p + d;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec4 guideQ = texelFetch(uGuide, q, 0);
-            float w = (d == ivec2(0)) ? 1.0 : geometryWeight(guideP, guideQ, length(vec2(d)), uSigmaNormal, uSigmaDepthNarrow);
-            float wGeometryWide = (d == ivec2(0)) ? 1.0 : geometryWeight(guideP, guideQ, length(vec2(d)), uSigmaNormal, uSigmaDepthWide);
-            if (max(w, wGeometryWide) < 1e-4) continue;
+            vec2 geometry = (d == ivec2(0)) ? vec2(1.0)
+                                            : geometryWeights(guideP, guideQ, length(vec2(d)), uSigmaNormal,
+                                                              vec2(uSigmaDepthNarrow, uSigmaDepthWide));
+            if (max(geometry.x, geometry.y) < 1e-4) continue;
             // Non-local means: the squared difference of the patches beyond what their noise
             // explains (Rousselle et al.'s variance cancellation, Var_p + min(Var_p, Var_q)), over
             // k^2 times that noise, summed over the patch before dividing so that a pixel whose
@@ -185,8 +186,8 @@ void main() {
             vec4 tapQ = texelFetch(uIllumination, q, 0);
             float tolerated = kVarianceTolerance * expectedVariance;
             float noiseFactor = (tolerated + 1e-20) / (max(tolerated, tapQ.a) + 1e-20);
-            float wNarrow = w * noiseFactor * exp(-excess / (uBandwidthNarrow * uBandwidthNarrow * noise + 1e-10));
-            float wWide = wGeometryWide * noiseFactor * exp(-excess / (uBandwidthWide * uBandwidthWide * noise + 1e-10));
+            float wNarrow = geometry.x * noiseFactor * exp(-excess / (uBandwidthNarrow * uBandwidthNarrow * noise + 1e-10));
+            float wWide = geometry.y * noiseFactor * exp(-excess / (uBandwidthWide * uBandwidthWide * noise + 1e-10));
             float x[kFeatureCount];
             featuresOf(guideQ, texelFetch(uAlbedo, q, 0).rgb, guideP, albedoP, d, x);
             vec3 y = tapQ.rgb;
