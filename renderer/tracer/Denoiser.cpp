@@ -179,7 +179,7 @@ int Denoiser::featureSamplesThisPass(const PathTracer& tracer) const {
 
 // All of a cycle's coverage rays in one pass: they are traced only in the few pixels of the
 // zone (denoise_features.frag), and each pass costs every pixel the zone test.
-int Denoiser::coverageSamplesThisPass(const PathTracer&) const { return cycle_.coverageTarget - coverageSamples_; }
+int Denoiser::coverageSamplesThisPass() const { return cycle_.coverageTarget - coverageSamples_; }
 
 void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     resize(tracer.imageSize());
@@ -247,7 +247,7 @@ void Denoiser::finishStep(PathTracer& tracer) {
         featureSamples_ += featureSamplesThisPass(tracer);
         featureWrite_ = 1 - featureWrite_;
     } else if (cycle_.step < cycle_.prepareStep()) {
-        coverageSamples_ += coverageSamplesThisPass(tracer);
+        coverageSamples_ += coverageSamplesThisPass();
         coverageWrite_ = 1 - coverageWrite_;
     }
     cycle_.nextRow = 0;
@@ -274,7 +274,7 @@ void Denoiser::drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd) {
 
 // The same program, run again for more camera rays where the features saw emission first.
 void Denoiser::drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd) {
-    tracer.useSceneIn(*featureProgram_, coverageSamples_, coverageSamplesThisPass(tracer));
+    tracer.useSceneIn(*featureProgram_, coverageSamples_, coverageSamplesThisPass());
     glUniform1i(featureProgram_->uniformLocation("uCoverage"), 1);
     glUniform1f(featureProgram_->uniformLocation("uCoverageZoneSamples"), static_cast<float>(featureSamples_));
     const FeatureTarget& previous = coverage_[1 - coverageWrite_];

@@ -62,7 +62,8 @@ public:
     // The emission met by camera rays is separated from the rest of a pixel only while the
     // features are of exactly the radiance's samples (at most kMaxFeatureSamples); it is then
     // added back from this many camera rays per radiance sample, at most kMaxCoverageSamples, in
-    // the pixels next to it (docs/denoising.md: a light's outline).
+    // the pixels next to it; pixels that see only light, and differ, take those rays' mean for
+    // their own (docs/denoising.md: lights' and the sky's outlines).
     static constexpr int kCoverageSamplesPerSample = 4;
     static constexpr int kMaxCoverageSamples = 64;
 
@@ -86,7 +87,7 @@ private:
         int restartCount = -1;
         int featurePasses = 0;  // first steps: feature passes up to featureTarget samples
         int featureTarget = 0;
-        int coveragePasses = 0; // then coverage passes up to coverageTarget camera rays
+        int coveragePasses = 0; // then the coverage run's pass (0 or 1) up to coverageTarget camera rays
         int coverageTarget = 0;
         int step = 0;
         int nextRow = 0;
@@ -109,7 +110,7 @@ private:
     void drawRows(int rowBegin, int rowEnd) const;
     void finishStep(PathTracer& tracer);
     int featureSamplesThisPass(const PathTracer& tracer) const;
-    int coverageSamplesThisPass(const PathTracer& tracer) const;
+    int coverageSamplesThisPass() const;
 
     std::filesystem::path shaderDir_;
     std::unique_ptr<GlProgram> featureProgram_;
