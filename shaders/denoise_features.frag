@@ -73,7 +73,7 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
         Hit hit;
         if (!intersectSurface(ray, hit)) {
             if (bounce == 0 && separates) {
-                emitted = emissionAddedByCameraRay(environmentRadiance(ray.direction));
+                emitted = emissionAddedByCameraRay(ray, environmentRadiance(ray.direction));
                 lightFirst = true;
                 albedo = vec3(0.0);
                 normal = vec3(0.0);
@@ -89,7 +89,7 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
         distance += hit.t;
         Material material = fetchSurfaceMaterial(hit.material, hit.uv);
         if (bounce == 0 && separates) {
-            emitted = emissionAddedByCameraRay(emittedRadiance(material, hit.normalGeom, -ray.direction));
+            emitted = emissionAddedByCameraRay(ray, emittedRadiance(material, hit.normalGeom, -ray.direction));
             if (material.type == kMaterialEmitter) {
                 lightFirst = true;
                 albedo = vec3(0.0);

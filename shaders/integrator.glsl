@@ -184,12 +184,13 @@ void addEmissionFound(inout PathState path, vec3 emitted, int light, float hitDi
     path.radiance += added;
 }
 
-// What extendPath adds where a camera ray meets emission first, a surface's or the environment's
-// (bounce 0: a throughput of 1, and nothing to weigh it against). The denoiser computes it for the
-// same camera rays and takes it out of the pixel before filtering (denoise_features.frag), so the
-// two must stay the same sum.
-vec3 emissionAddedByCameraRay(vec3 emitted) {
-    return clampContribution(emitted) * lightPathWeight(0, startPathHistory(), false);
+// What a path adds where its camera ray meets emission first, a surface's or the environment's:
+// addEmissionFound on a path just started. The denoiser's features compute it for the same camera
+// rays and take it out of the pixel before filtering (denoise_features.frag).
+vec3 emissionAddedByCameraRay(Ray cameraRay, vec3 emitted) {
+    PathState path = startPath(cameraRay);
+    addEmissionFound(path, emitted, -1, kInfinity, vec3(0.0)); // bounce 0: weight 1, whatever the light
+    return path.radiance;
 }
 
 void addDirectLighting(inout PathState path, Material material, ShadingFrame frame, Hit hit, vec3 woLocal,
