@@ -285,13 +285,9 @@ int runRenderCommand(const RenderOptions& requested) {
             const std::string filter = options.denoise.algorithm == DenoiseAlgorithm::Atrous
                                            ? "a-trous, " + std::to_string(options.denoise.iterations) + " iterations"
                                            : std::string(denoiseAlgorithmName(options.denoise.algorithm));
-            // Past kMaxFeatureSamples no emission is separated, so no coverage run (Denoiser.h).
+            const int coverageSamples = Denoiser::coverageSamplesFor(samplesPerPixel);
             const std::string outlines =
-                samplesPerPixel <= Denoiser::kMaxFeatureSamples
-                    ? ", light outlines from " +
-                          std::to_string(std::min(Denoiser::kCoverageSamplesPerSample * samplesPerPixel, Denoiser::kMaxCoverageSamples)) +
-                          " camera rays"
-                    : std::string();
+                coverageSamples > 0 ? ", light outlines from " + std::to_string(coverageSamples) + " camera rays" : std::string();
             std::fprintf(stderr, "ptview: denoised (biased: docs/denoising.md) in %.3f s: %s, strength %g, features of %d spp%s%s\n",
                          denoiseSeconds, filter.c_str(), static_cast<double>(options.denoise.strength),
                          std::min(samplesPerPixel, Denoiser::kMaxFeatureSamples), outlines.c_str(),

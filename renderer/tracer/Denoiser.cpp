@@ -115,10 +115,10 @@ void Denoiser::resize(glm::ivec2 size) {
         target.emission = createFloatTexture(size);
         target.framebuffer = createFramebufferOf({target.albedoDepth.id(), target.normal.id(), target.emission.id()});
     }
-    for (FeatureTarget& target : coverage_) {
-        target.albedoDepth = createFloatTexture(size);
+    for (CoverageTarget& target : coverage_) {
+        target.albedoRays = createFloatTexture(size);
         target.emission = createFloatTexture(size);
-        target.framebuffer = createFramebufferOf({target.albedoDepth.id(), 0, target.emission.id()});
+        target.framebuffer = createFramebufferOf({target.albedoRays.id(), 0, target.emission.id()});
     }
     for (int i = 0; i < 2; ++i) {
         illumination_[i] = createFloatTexture(size);
@@ -193,9 +193,7 @@ void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     cycle_.featurePasses = (cycle_.featureTarget - featureSamples_ + perPass - 1) / perPass;
     // Past kMaxFeatureSamples the features are not of the radiance's samples, so nothing is
     // separated and the coverage run stops where it is.
-    cycle_.coverageTarget = coverageSamples_;
-    if (tracer.sampleCount() <= kMaxFeatureSamples)
-        cycle_.coverageTarget = std::max(coverageSamples_, std::min(kCoverageSamplesPerSample * tracer.sampleCount(), kMaxCoverageSamples));
+    cycle_.coverageTarget = std::max(coverageSamples_, coverageSamplesFor(tracer.sampleCount()));
     cycle_.coveragePasses = cycle_.coverageTarget > coverageSamples_ ? 1 : 0;
     cycle_.samples = tracer.sampleCount();
 }
@@ -277,8 +275,8 @@ void Denoiser::drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     tracer.useSceneIn(*featureProgram_, coverageSamples_, coverageSamplesThisPass());
     glUniform1i(featureProgram_->uniformLocation("uCoverage"), 1);
     glUniform1f(featureProgram_->uniformLocation("uCoverageZoneSamples"), static_cast<float>(featureSamples_));
-    const FeatureTarget& previous = coverage_[1 - coverageWrite_];
-    bindTexture(kPrevAlbedoDepthUnit, previous.albedoDepth.id());
+    const CoverageTarget& previous = coverage_[1 - coverageWrite_];
+    bindTexture(kPrevAlbedoDepthUnit, previous.albedoRays.id());
     bindTexture(kCoverageZoneUnit, features_[1 - featureWrite_].emission.id());
     bindTexture(kPrevEmissionUnit, previous.emission.id());
     glActiveTexture(GL_TEXTURE0);
@@ -293,8 +291,8 @@ void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     bindTexture(kFeatureAlbedoDepthUnit, features.albedoDepth.id());
     bindTexture(kFeatureNormalUnit, features.normal.id());
     bindTexture(kFeatureEmissionUnit, features.emission.id());
-    const FeatureTarget& coverage = coverage_[1 - coverageWrite_];
-    bindTexture(kCoverageAlbedoUnit, coverage.albedoDepth.id());
+    const CoverageTarget& coverage = coverage_[1 - coverageWrite_];
+    bindTexture(kCoverageAlbedoUnit, coverage.albedoRays.id());
     bindTexture(kCoverageEmissionUnit, coverage.emission.id());
     glActiveTexture(GL_TEXTURE0);
     // Each pixel's sample count comes with its sums (the sum's alpha), whenever this band runs.

@@ -16,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 
@@ -66,6 +67,10 @@ public:
     // their own (docs/denoising.md: lights' and the sky's outlines).
     static constexpr int kCoverageSamplesPerSample = 4;
     static constexpr int kMaxCoverageSamples = 64;
+    // The coverage run's camera rays per pixel for a radiance of `samples` per pixel (0: none).
+    static int coverageSamplesFor(int samples) {
+        return samples <= kMaxFeatureSamples ? std::min(kCoverageSamplesPerSample * samples, kMaxCoverageSamples) : 0;
+    }
 
     // The passes between prepare and compose: the à-trous iterations, or the regression's two
     // (the fits at two bandwidths, then the per-pixel choice between them).
@@ -74,11 +79,16 @@ public:
     }
 
 private:
-    // The features' sums (denoise_features.frag); the coverage run's have no normals, and count
-    // their camera rays per pixel where the features' depth is.
+    // The features' sums (denoise_features.frag).
     struct FeatureTarget {
         GlFramebuffer framebuffer;
         GlTexture albedoDepth, normal, emission;
+    };
+    // The coverage run's sums: the same program's albedo and emission outputs, with the camera
+    // rays traced in each pixel where the features' depth is (it keeps no normals).
+    struct CoverageTarget {
+        GlFramebuffer framebuffer;
+        GlTexture albedoRays, emission;
     };
     // The denoise in progress: its passes in order, each size_.y rows, done up to (step, nextRow).
     struct Cycle {
@@ -124,7 +134,7 @@ private:
     int featureWrite_ = 0;
     int featureSamples_ = 0;
     int featureRestartCount_ = -1; // the tracer's restartCount() the features belong to
-    FeatureTarget coverage_[2];
+    CoverageTarget coverage_[2];
     int coverageWrite_ = 0;
     int coverageSamples_ = 0;      // camera rays per pixel of the coverage run, where it ran
 
