@@ -45,14 +45,21 @@ ivec2 clampToImage(ivec2 p) { return clamp(p, ivec2(0), textureSize(uSum, 0) - 1
 // pixels at different counts.
 float sampleCountAt(ivec2 p) { return max(texelFetch(uSum, p, 0).a, 1.0); }
 
+// Whether the features are of exactly the pixel's samples: not past kMaxFeatureSamples, nor where
+// adaptive sampling stopped the pixel at another count. Their emission sums then hold the
+// emission of the pixel's own samples.
+bool featuresAreOfItsSamples(ivec2 p) { return texelFetch(uSum, p, 0).a == uFeatureCount; }
+
+float surfaceSamplesAt(ivec2 p) { return texelFetch(uFeatureNormal, p, 0).w; }
+
+// The coverage run's camera rays in the pixel (0 where it did not run).
+float coverageRaysAt(ivec2 p) { return uHasCoverage ? texelFetch(uCoverageAlbedo, p, 0).a : 0.0; }
+
 // Whether the emission the features met first is taken out of the pixel's mean: where the
-// features are of exactly the pixel's samples (not past kMaxFeatureSamples, nor where adaptive
-// sampling stopped the pixel at another count), and some of them met a surface. A pixel that sees
-// only light is filtered among its like, as before: a defocused light's disc is noise of the lens
-// samples that its neighbours share.
-bool emissionSeparable(ivec2 p) {
-    return texelFetch(uSum, p, 0).a == uFeatureCount && texelFetch(uFeatureNormal, p, 0).w > 0.0;
-}
+// features are of its samples and some of them met a surface. A pixel that sees only light is
+// filtered among its like, as before: a defocused light's disc is noise of the lens samples that
+// its neighbours share.
+bool emissionSeparable(ivec2 p) { return featuresAreOfItsSamples(p) && surfaceSamplesAt(p) > 0.0; }
 
 // The features' albedo; where the emission is not separated, a sample that met light first counts
 // as albedo 1 (its light is in the mean, with nothing to demodulate).
@@ -65,11 +72,13 @@ vec3 albedoAt(ivec2 p) {
 // A pixel whose samples and the coverage run's camera rays all met light first (the sky, a
 // defocused lamp's disc over it): the coverage run's mean is the same estimate from more rays.
 bool lightOnlyCoveredAt(ivec2 p) {
-    if (!uHasCoverage || texelFetch(uSum, p, 0).a != uFeatureCount || texelFetch(uFeatureNormal, p, 0).w > 0.0) return false;
-    vec4 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0);
-    return coverageAlbedo.a > 0.0 && texelFetch(uCoverageEmission, p, 0).a == coverageAlbedo.a &&
-           texelFetch(uFeatureEmission, p, 0).a == uFeatureCount;
+    float rays = coverageRaysAt(p);
+    return rays > 0.0 && featuresAreOfItsSamples(p) && texelFetch(uFeatureEmission, p, 0).a == uFeatureCount &&
+           texelFetch(uCoverageEmission, p, 0).a == rays;
 }
+
+// The coverage run's mean emission met first.
+vec3 coverageEmissionAt(ivec2 p) { return texelFetch(uCoverageEmission, p, 0).rgb / coverageRaysAt(p); }
 
 vec3 emissionAt(ivec2 p) {
     return emissionSeparable(p) ? texelFetch(uFeatureEmission, p, 0).rgb * uInvFeatureCount : vec3(0.0);
@@ -82,10 +91,7 @@ vec3 meanAt(ivec2 p) {
 // The demodulated illumination: the mean less the emission met first, over the albedo. Never
 // below 0 (the two sums of a light's samples may round apart).
 vec3 illuminationAt(ivec2 p) {
-    if (lightOnlyCoveredAt(p)) {
-        vec4 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0);
-        return texelFetch(uCoverageEmission, p, 0).rgb / coverageAlbedo.a;
-    }
+    if (lightOnlyCoveredAt(p)) return coverageEmissionAt(p);
     return max(meanAt(p) - emissionAt(p), vec3(0.0)) / albedoAt(p);
 }
 
@@ -118,7 +124,7 @@ float ownVarianceAt(ivec2 p) {
 
 // Mean depth of the samples that met a surface, or -1 when none did.
 float depthAt(ivec2 p) {
-    float hits = texelFetch(uFeatureNormal, p, 0).w;
+    float hits = surfaceSamplesAt(p);
     return hits > 0.0 ? texelFetch(uFeatureAlbedoDepth, p, 0).w / hits : -1.0;
 }
 
@@ -131,9 +137,6 @@ float depthSlope(ivec2 p, ivec2 axis, float depth) {
     float slope = min(a, b);
     return slope > 1e29 ? 0.0 : slope;
 }
-
-// Whether the emission added back comes from the coverage run.
-bool coveredAt(ivec2 p) { return uHasCoverage && emissionSeparable(p) && texelFetch(uCoverageAlbedo, p, 0).a > 0.0; }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -159,24 +162,21 @@ void main() {
     float othersMean = (neighbourSum - brightestNeighbour) / 7.0;
     float othersSpread = sqrt(max((neighbourSquares - brightestNeighbour * brightestNeighbour) / 7.0 - othersMean * othersMean, 0.0));
 
-    float variance = -1.0;
+    float variance;
     float sampleCount = sampleCountAt(p);
-    float lightFirstSamples = lightFirstSamplesAt(p);
-    if (sampleCount >= kSamplesForOwnVariance && lightOnlyCoveredAt(p)) {
+    if (sampleCount < kSamplesForOwnVariance) {
+        // Too few samples: the spread of the 3x3 neighbourhood, the pixel included, stands in.
+        float sum = neighbourSum + luminanceP, squares = neighbourSquares + luminanceP * luminanceP;
+        variance = max(squares / 9.0 - (sum / 9.0) * (sum / 9.0), 0.0);
+    } else if (lightOnlyCoveredAt(p)) {
         // The coverage run's mean: the sums' variance per ray, or, where its rays found what the
         // pixel's samples missed (a defocused lamp's one hit in 64), what its distance from the
         // pixel's own mean says (they share the first samples: that distance squared is about
         // three times the variance of the coverage run's mean).
-        float rays = texelFetch(uCoverageAlbedo, p, 0).a;
         float distance = luminanceP - luminance(meanAt(p));
-        variance = max(ownVarianceAt(p) * sampleCount / rays, distance * distance / 3.0);
-    } else if (sampleCount >= kSamplesForOwnVariance) {
+        variance = max(ownVarianceAt(p) * sampleCount / coverageRaysAt(p), distance * distance / 3.0);
+    } else {
         variance = ownVarianceAt(p);
-    }
-    if (variance < 0.0) {
-        // Too few samples: the spread of the 3x3 neighbourhood, the pixel included, stands in.
-        float sum = neighbourSum + luminanceP, squares = neighbourSquares + luminanceP * luminanceP;
-        variance = max(squares / 9.0 - (sum / 9.0) * (sum / 9.0), 0.0);
     }
 
     // A firefly: brighter than its neighbourhood by more than five of its spreads, and by no more
@@ -196,8 +196,8 @@ void main() {
     // or emitters, between 0 and 1 on their outline, where a surface's noise and the light of
     // what else the pixel sees share it and no neighbour's value is a fair stand-in. Light whose
     // emission was taken out leaves only the surface's: the pixel is that surface's then.
-    float surfaceShare = texelFetch(uFeatureNormal, p, 0).w * uInvFeatureCount;
-    float explainedShare = surfaceShare + lightFirstSamples * uInvFeatureCount;
+    float surfaceShare = surfaceSamplesAt(p) * uInvFeatureCount;
+    float explainedShare = surfaceShare + lightFirstSamplesAt(p) * uInvFeatureCount;
     outIllumination = vec4(illumination, variance);
     if (surfaceShare <= 0.0 || dot(normalSum, normalSum) == 0.0)
         outGuide = vec4(0.0, 0.0, kGuideEnvironment, 0.0);
@@ -209,10 +209,10 @@ void main() {
     // Multiplied back: the albedo, and the emission taken out. The coverage run's camera rays
     // (more of them than the pixel's samples) give both where it ran: which share of the pixel
     // a light covers is then known better than its few samples said.
-    if (coveredAt(p)) {
-        vec4 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0);
-        outAlbedo = vec4(max(coverageAlbedo.rgb / coverageAlbedo.a, vec3(kSmallestAlbedo)), 1.0);
-        outEmission = vec4(texelFetch(uCoverageEmission, p, 0).rgb / coverageAlbedo.a, 1.0);
+    if (emissionSeparable(p) && coverageRaysAt(p) > 0.0) {
+        vec3 coverageAlbedo = texelFetch(uCoverageAlbedo, p, 0).rgb / coverageRaysAt(p);
+        outAlbedo = vec4(max(coverageAlbedo, vec3(kSmallestAlbedo)), 1.0);
+        outEmission = vec4(coverageEmissionAt(p), 1.0);
     } else {
         outAlbedo = vec4(albedo, 1.0);
         outEmission = vec4(emissionAt(p), 1.0);
