@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <utility>
 
 namespace ptview {
 
@@ -48,31 +47,34 @@ double marginalStopThreshold(const AdaptiveStopInput& input, const std::vector<d
     // c / a, so one pass over the bends, sorted, solves it exactly (a check in the viewer runs this
     // over every pixel of the window).
     const double target = targetRelativeMse * double(pixels);
-    double stopped = 0.0, saturated = 0.0, slope = 0.0;
-    std::vector<std::pair<double, size_t>> bends; // (c / a, pixel)
-    std::vector<double> cap(pixels, 0.0), rate(pixels, 0.0);
+    struct Bend {
+        double t, cap, rate; // t = cap / rate
+        bool operator<(const Bend& other) const { return t < other.t; }
+    };
+    double stopped = 0.0, saturated = 0.0, slope = 0.0, all = 0.0;
+    std::vector<Bend> bends;
     for (size_t i = 0; i < pixels; ++i) {
         const double e = std::max(relativeMse[i], 0.0);
         if (!(*input.pixelTakesSamples)[i]) {
             stopped += e;
             continue;
         }
-        cap[i] = std::min(e, input.maxThresholdRelativeMse);
-        rate[i] = std::sqrt(e * std::max((*input.pixelSampleCounts)[i], 1));
-        if (cap[i] <= 0.0 || rate[i] <= 0.0) continue; // ends at 0 whatever mu
-        slope += rate[i];
-        bends.emplace_back(cap[i] / rate[i], i);
+        const double cap = std::min(e, input.maxThresholdRelativeMse);
+        const double rate = std::sqrt(e * std::max((*input.pixelSampleCounts)[i], 1));
+        if (cap <= 0.0 || rate <= 0.0) continue; // ends at 0 whatever mu
+        slope += rate;
+        all += cap;
+        bends.push_back({cap / rate, cap, rate});
     }
-    double all = stopped;
-    for (const auto& bend : bends) all += cap[bend.second];
+    all += stopped;
     if (all <= target) return std::numeric_limits<double>::infinity();
     if (stopped >= target) return 0.0;
     std::sort(bends.begin(), bends.end());
     // Between bends, error = stopped + saturated + slope t.
-    for (const auto& [t, i] : bends) {
-        if (stopped + saturated + slope * t >= target) break;
-        saturated += cap[i];
-        slope -= rate[i];
+    for (const Bend& bend : bends) {
+        if (stopped + saturated + slope * bend.t >= target) break;
+        saturated += bend.cap;
+        slope -= bend.rate;
     }
     if (!(slope > 0.0)) return std::numeric_limits<double>::infinity(); // rounding at the last bend
     const double t = (target - stopped - saturated) / slope;
