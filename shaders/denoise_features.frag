@@ -15,7 +15,7 @@
 // camera rays than the radiance has. Those come from a second run of this program (uCoverage), at
 // up to Denoiser::kMaxCoverageSamples rays per pixel, only where an emitter or the environment and
 // a surface share a pixel's 3x3 neighbourhood, or where pixels that see only light differ
-// (inCoverageZone).
+// (denoise_coverage_zone.frag).
 #include "frame_uniforms.glsl"
 #include "camera.glsl"
 #include "intersect.glsl"
@@ -28,14 +28,12 @@
 uniform sampler2D uPrevAlbedoDepth;
 uniform sampler2D uPrevNormal;
 uniform sampler2D uPrevEmission;
-// The coverage run: the features' emission sums at the radiance's samples, which say where it runs
-// (bound to uPrevNormal's unit: the coverage run keeps no normals), and their sample count.
-uniform sampler2D uCoverageZone;
-uniform float uCoverageZoneSamples;
+// The coverage run: only this pass's sums are written, added to the run's by blending, and only
+// in the pixels denoise_coverage_zone.frag marked in the stencil (llvmpipe then skips the rest).
 uniform bool uCoverage;
 
 layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m); coverage run: albedo
-                                              // rgb, camera rays traced in this pixel
+                                              // rgb, camera rays traced
 layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that met a surface
                                               // (not the environment, not an emitter)
 layout(location = 2) out vec4 outEmission;    // sums: emission met first rgb, samples that met an
@@ -122,51 +120,26 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
     }
 }
 
-// The coverage run traces a pixel only where its 3x3 neighbourhood has samples that met light
-// first and samples that did not (a light's or the sky's outline, and the pixels an edge of it may
-// reach), or pixels that saw only light and more than twice as much in one as in another (a
-// defocused lamp's disc over the sky, whose pixels the prepare pass takes from the coverage run;
-// not the gentle gradients of a sky map, which would cost rays over the whole sky).
-bool inCoverageZone(ivec2 pixel) {
-    ivec2 last = textureSize(uCoverageZone, 0) - 1;
-    bool someLight = false, someElse = false;
-    float dimmestLight = 1e30, brightestLight = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            vec4 emission = texelFetch(uCoverageZone, clamp(pixel + ivec2(dx, dy), ivec2(0), last), 0);
-            someLight = someLight || emission.a > 0.0;
-            someElse = someElse || emission.a < uCoverageZoneSamples;
-            if (emission.a >= uCoverageZoneSamples) {
-                float light = luminance(emission.rgb);
-                dimmestLight = min(dimmestLight, light);
-                brightestLight = max(brightestLight, light);
-            }
-        }
-    return (someLight && someElse) || brightestLight > 2.0 * dimmestLight + 1e-6 * uCoverageZoneSamples;
-}
-
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     vec4 albedoDepth = vec4(0.0);
     vec4 normalSum = vec4(0.0);
     vec4 emission = vec4(0.0);
-    if (uFrameIndex > 0u) {
+    if (uFrameIndex > 0u && !uCoverage) {
         albedoDepth = texelFetch(uPrevAlbedoDepth, ivec2(pixel), 0);
-        if (!uCoverage) normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
+        normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
         emission = texelFetch(uPrevEmission, ivec2(pixel), 0);
     }
-    if (!uCoverage || inCoverageZone(ivec2(pixel))) {
-        for (uint i = 0u; i < uSamplesPerPass; ++i) {
-            Sampler sampler;
-            Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
-            vec3 albedo, normal, emitted;
-            float distance;
-            bool lightFirst;
-            sampleFeatures(ray, sampler, albedo, normal, distance, emitted, lightFirst);
-            albedoDepth += vec4(albedo, uCoverage ? 1.0 : max(distance, 0.0));
-            normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
-            emission += vec4(emitted, lightFirst ? 1.0 : 0.0);
-        }
+    for (uint i = 0u; i < uSamplesPerPass; ++i) {
+        Sampler sampler;
+        Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
+        vec3 albedo, normal, emitted;
+        float distance;
+        bool lightFirst;
+        sampleFeatures(ray, sampler, albedo, normal, distance, emitted, lightFirst);
+        albedoDepth += vec4(albedo, uCoverage ? 1.0 : max(distance, 0.0));
+        normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
+        emission += vec4(emitted, lightFirst ? 1.0 : 0.0);
     }
     outAlbedoDepth = albedoDepth;
     outNormal = normalSum;

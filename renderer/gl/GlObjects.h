@@ -38,6 +38,7 @@ namespace gldelete {
 inline void texture(GLuint id) { glDeleteTextures(1, &id); }
 inline void buffer(GLuint id) { glDeleteBuffers(1, &id); }
 inline void framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+inline void renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
 inline void vertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 inline void program(GLuint id) { glDeleteProgram(id); }
 } // namespace gldelete
@@ -45,12 +46,14 @@ inline void program(GLuint id) { glDeleteProgram(id); }
 using GlTexture = GlHandle<gldelete::texture>;
 using GlBuffer = GlHandle<gldelete::buffer>;
 using GlFramebuffer = GlHandle<gldelete::framebuffer>;
+using GlRenderbuffer = GlHandle<gldelete::renderbuffer>;
 using GlVertexArray = GlHandle<gldelete::vertexArray>;
 using GlProgramHandle = GlHandle<gldelete::program>;
 
 inline GlTexture createTexture() { GLuint id = 0; glGenTextures(1, &id); return GlTexture(id); }
 inline GlBuffer createBuffer() { GLuint id = 0; glGenBuffers(1, &id); return GlBuffer(id); }
 inline GlFramebuffer createFramebuffer() { GLuint id = 0; glGenFramebuffers(1, &id); return GlFramebuffer(id); }
+inline GlRenderbuffer createRenderbuffer() { GLuint id = 0; glGenRenderbuffers(1, &id); return GlRenderbuffer(id); }
 inline GlVertexArray createVertexArray() { GLuint id = 0; glGenVertexArrays(1, &id); return GlVertexArray(id); }
 
 } // namespace ptview

@@ -17,7 +17,7 @@ namespace {
 constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4,
               kFeatureEmissionUnit = 5, kCoverageAlbedoUnit = 6, kCoverageEmissionUnit = 7;
 constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2, kWideUnit = 3, kEmissionUnit = 3;
-constexpr int kPrevAlbedoDepthUnit = 0, kPrevNormalUnit = 1, kCoverageZoneUnit = 1, kPrevEmissionUnit = 2;
+constexpr int kPrevAlbedoDepthUnit = 0, kPrevNormalUnit = 1, kPrevEmissionUnit = 2;
 
 // The edge-stopping functions' widths (denoise_guide.glsl). SVGF's normal exponent is 128 for
 // exact per-pixel normals; ours are averaged over the pixel's samples, and 16 measured better
@@ -75,6 +75,8 @@ std::unique_ptr<GlProgram> buildFilterProgram(const std::filesystem::path& shade
 
 Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     : shaderDir_(shaderDir), emptyVertexArray_(createVertexArray()) {
+    coverageZone_ = buildFilterProgram(shaderDir_, "denoise_coverage_zone.frag");
+    coverageZone_->bindSamplerUnit("uFeatureEmission", kFeatureEmissionUnit);
     prepare_ = buildFilterProgram(shaderDir_, "denoise_prepare.frag");
     prepare_->bindSamplerUnit("uSum", kSumUnit);
     prepare_->bindSamplerUnit("uCompensation", kCompensationUnit);
@@ -115,11 +117,17 @@ void Denoiser::resize(glm::ivec2 size) {
         target.emission = createFloatTexture(size);
         target.framebuffer = createFramebufferOf({target.albedoDepth.id(), target.normal.id(), target.emission.id()});
     }
-    for (CoverageTarget& target : coverage_) {
-        target.albedoRays = createFloatTexture(size);
-        target.emission = createFloatTexture(size);
-        target.framebuffer = createFramebufferOf({target.albedoRays.id(), 0, target.emission.id()});
-    }
+    coverage_.albedoRays = createFloatTexture(size);
+    coverage_.emission = createFloatTexture(size);
+    coverage_.framebuffer = createFramebufferOf({coverage_.albedoRays.id(), 0, coverage_.emission.id()});
+    coverage_.stencil = createRenderbuffer();
+    glBindRenderbuffer(GL_RENDERBUFFER, coverage_.stencil.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, coverage_.framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, coverage_.stencil.id());
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("the GPU cannot render to the denoiser's RGBA32F targets with a stencil");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (int i = 0; i < 2; ++i) {
         illumination_[i] = createFloatTexture(size);
         // denoise_atrous.frag blurs the variance with bilinear reads (every other read is exact).
@@ -164,7 +172,6 @@ void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
         featureProgram_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("denoise_features.frag"));
         featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", kPrevAlbedoDepthUnit); // the scene's units start at 3
         featureProgram_->bindSamplerUnit("uPrevNormal", kPrevNormalUnit);
-        featureProgram_->bindSamplerUnit("uCoverageZone", kCoverageZoneUnit);
         featureProgram_->bindSamplerUnit("uPrevEmission", kPrevEmissionUnit);
         featureProgramFeatures_ = tracer.features();
         featureProgramSampler_ = sampler;
@@ -194,7 +201,7 @@ void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     // Past kMaxFeatureSamples the features are not of the radiance's samples, so nothing is
     // separated and the coverage run stops where it is.
     cycle_.coverageTarget = std::max(coverageSamples_, coverageSamplesFor(tracer.sampleCount()));
-    cycle_.coveragePasses = cycle_.coverageTarget > coverageSamples_ ? 1 : 0;
+    cycle_.coveragePasses = cycle_.coverageTarget > coverageSamples_ ? 2 : 0;
     cycle_.samples = tracer.sampleCount();
 }
 
@@ -216,6 +223,8 @@ bool Denoiser::advance(PathTracer& tracer, int rows) {
         const int step = cycle_.step;
         if (step < cycle_.featurePasses) {
             drawFeatureRows(tracer, cycle_.nextRow, rowEnd);
+        } else if (step == cycle_.featurePasses && cycle_.coveragePasses > 0) {
+            drawCoverageZoneRows(cycle_.nextRow, rowEnd);
         } else if (step < cycle_.prepareStep()) {
             drawCoverageRows(tracer, cycle_.nextRow, rowEnd);
         } else if (step == cycle_.prepareStep()) {
@@ -244,9 +253,8 @@ void Denoiser::finishStep(PathTracer& tracer) {
     if (cycle_.step < cycle_.featurePasses) {
         featureSamples_ += featureSamplesThisPass(tracer);
         featureWrite_ = 1 - featureWrite_;
-    } else if (cycle_.step < cycle_.prepareStep()) {
+    } else if (cycle_.step == cycle_.prepareStep() - 1 && cycle_.coveragePasses > 0) {
         coverageSamples_ += coverageSamplesThisPass();
-        coverageWrite_ = 1 - coverageWrite_;
     }
     cycle_.nextRow = 0;
     if (++cycle_.step < cycle_.stepCount()) return;
@@ -270,18 +278,46 @@ void Denoiser::drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     drawRows(rowBegin, rowEnd);
 }
 
-// The same program, run again for more camera rays where the features saw emission first.
+// The coverage run's zone, as the stencil: set where denoise_coverage_zone.frag keeps the pixel.
+void Denoiser::drawCoverageZoneRows(int rowBegin, int rowEnd) {
+    glUseProgram(coverageZone_->id());
+    bindTexture(kFeatureEmissionUnit, features_[1 - featureWrite_].emission.id());
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1f(coverageZone_->uniformLocation("uFeatureSamples"), static_cast<float>(featureSamples_));
+    glBindFramebuffer(GL_FRAMEBUFFER, coverage_.framebuffer.id());
+    if (rowBegin == 0) {
+        glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+        if (coverageSamples_ == 0) {
+            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+            glClearBufferfv(GL_COLOR, 0, zero);
+            glClearBufferfv(GL_COLOR, 2, zero);
+        }
+    }
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    drawRows(rowBegin, rowEnd);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+// The same program as the features', run again for more camera rays in the zone alone (the
+// stencil), its sums added to the run's by blending.
 void Denoiser::drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     tracer.useSceneIn(*featureProgram_, coverageSamples_, coverageSamplesThisPass());
     glUniform1i(featureProgram_->uniformLocation("uCoverage"), 1);
-    glUniform1f(featureProgram_->uniformLocation("uCoverageZoneSamples"), static_cast<float>(featureSamples_));
-    const CoverageTarget& previous = coverage_[1 - coverageWrite_];
-    bindTexture(kPrevAlbedoDepthUnit, previous.albedoRays.id());
-    bindTexture(kCoverageZoneUnit, features_[1 - featureWrite_].emission.id());
-    bindTexture(kPrevEmissionUnit, previous.emission.id());
     glActiveTexture(GL_TEXTURE0);
-    glBindFramebuffer(GL_FRAMEBUFFER, coverage_[coverageWrite_].framebuffer.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, coverage_.framebuffer.id());
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
     drawRows(rowBegin, rowEnd);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
 }
 
 void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
@@ -291,9 +327,8 @@ void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     bindTexture(kFeatureAlbedoDepthUnit, features.albedoDepth.id());
     bindTexture(kFeatureNormalUnit, features.normal.id());
     bindTexture(kFeatureEmissionUnit, features.emission.id());
-    const CoverageTarget& coverage = coverage_[1 - coverageWrite_];
-    bindTexture(kCoverageAlbedoUnit, coverage.albedoRays.id());
-    bindTexture(kCoverageEmissionUnit, coverage.emission.id());
+    bindTexture(kCoverageAlbedoUnit, coverage_.albedoRays.id());
+    bindTexture(kCoverageEmissionUnit, coverage_.emission.id());
     glActiveTexture(GL_TEXTURE0);
     // Each pixel's sample count comes with its sums (the sum's alpha), whenever this band runs.
     glUniform1f(prepare_->uniformLocation("uInvFeatureCount"), featureSamples_ > 0 ? 1.0f / static_cast<float>(featureSamples_) : 0.0f);

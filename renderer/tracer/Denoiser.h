@@ -85,10 +85,12 @@ private:
         GlTexture albedoDepth, normal, emission;
     };
     // The coverage run's sums: the same program's albedo and emission outputs, with the camera
-    // rays traced in each pixel where the features' depth is (it keeps no normals).
+    // rays traced in each pixel where the features' depth is (it keeps no normals). Each pass adds
+    // to them by blending, only where the stencil (written by the zone pass) is set.
     struct CoverageTarget {
         GlFramebuffer framebuffer;
         GlTexture albedoRays, emission;
+        GlRenderbuffer stencil;
     };
     // The denoise in progress: its passes in order, each size_.y rows, done up to (step, nextRow).
     struct Cycle {
@@ -97,7 +99,8 @@ private:
         int restartCount = -1;
         int featurePasses = 0;  // first steps: feature passes up to featureTarget samples
         int featureTarget = 0;
-        int coveragePasses = 0; // then the coverage run's pass (0 or 1) up to coverageTarget camera rays
+        int coveragePasses = 0; // then the coverage run's (0, or 2: its zone, then its rays up to
+                                // coverageTarget camera rays per pixel)
         int coverageTarget = 0;
         int step = 0;
         int nextRow = 0;
@@ -111,6 +114,7 @@ private:
     void prepareFeatureProgram(PathTracer& tracer);
     // Row bands [rowBegin, rowEnd) of one pass.
     void drawFeatureRows(PathTracer& tracer, int rowBegin, int rowEnd);
+    void drawCoverageZoneRows(int rowBegin, int rowEnd);
     void drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawAtrousRows(int iteration, int rowBegin, int rowEnd);
@@ -126,7 +130,7 @@ private:
     std::unique_ptr<GlProgram> featureProgram_;
     ShaderFeatures featureProgramFeatures_;
     SamplerMode featureProgramSampler_ = SamplerMode::Random;
-    std::unique_ptr<GlProgram> prepare_, atrous_, regression_, bandwidthSelection_, compose_;
+    std::unique_ptr<GlProgram> coverageZone_, prepare_, atrous_, regression_, bandwidthSelection_, compose_;
     GlVertexArray emptyVertexArray_;
 
     glm::ivec2 size_{0, 0};
@@ -134,8 +138,7 @@ private:
     int featureWrite_ = 0;
     int featureSamples_ = 0;
     int featureRestartCount_ = -1; // the tracer's restartCount() the features belong to
-    CoverageTarget coverage_[2];
-    int coverageWrite_ = 0;
+    CoverageTarget coverage_;
     int coverageSamples_ = 0;      // camera rays per pixel of the coverage run, where it ran
 
     Cycle cycle_;
