@@ -11,7 +11,6 @@ uniform sampler2D uIllumination; // demodulated rgb, variance of its luminance
 uniform sampler2D uGuide;
 uniform int uStepPixels;
 uniform float uSigmaLuminance;
-uniform float uSigmaNormal;
 uniform float uSigmaDepth;
 
 layout(location = 0) out vec4 outIllumination;
@@ -53,8 +52,9 @@ void main() {
         float w = kernels[i];
         if (i != kCentre) {
             float offsetPixels = length(vec2(i % 3 - 1, i / 3 - 1)) * float(uStepPixels);
-            w *= geometryWeight(guides[kCentre], guides[i], offsetPixels, uSigmaNormal, uSigmaDepth) *
-                 luminanceWeight(luminanceP, luminance(taps[i].rgb), varianceP, uSigmaLuminance);
+            GeometryWeights geometry = geometryWeightTerms(guides[kCentre], guides[i], offsetPixels, vec2(uSigmaDepth));
+            w *= geometry.normalFactor * exp(-(geometry.depthExponent.x +
+                                               luminanceWeightExponent(luminanceP, luminance(taps[i].rgb), varianceP, uSigmaLuminance)));
         }
         sum += w * taps[i].rgb;
         varianceSum += w * w * taps[i].a;

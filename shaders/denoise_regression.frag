@@ -27,7 +27,6 @@ uniform sampler2D uAlbedo;
 // Non-local means' k, of each fit: how many standard deviations of noise a patch may differ by.
 uniform float uBandwidthNarrow;
 uniform float uBandwidthWide;
-uniform float uSigmaNormal;
 // Each fit's depth tolerance (Denoiser.cpp: it grows with the bandwidth): the wider fit is wider in
 // its geometry too, so that on a curved surface (the cow) it takes in the neighbours whose depth
 // the centre's slope does not predict; where that bends the light, the two fits disagree and the
@@ -163,7 +162,7 @@ void main() {
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec4 guideQ = texelFetch(uGuide, q, 0);
             vec2 geometry = (d == ivec2(0)) ? vec2(1.0)
-                                            : geometryWeights(guideP, guideQ, length(vec2(d)), uSigmaNormal,
+                                            : geometryWeights(guideP, guideQ, length(vec2(d)),
                                                               vec2(uSigmaDepthNarrow, uSigmaDepthWide));
             if (max(geometry.x, geometry.y) < 1e-4) continue;
             // Non-local means: the squared difference of the patches beyond what their noise

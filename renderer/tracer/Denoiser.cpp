@@ -13,17 +13,16 @@ namespace {
 
 // Units of the filter passes: the accumulation's three sums, then the features and the coverage
 // run's sums. The feature pass traces the scene, whose textures take units 3 and up, so its
-// previous sums take 0 to 2 (the coverage run's zone shares the normals' unit: it keeps none).
+// previous sums take 0 to 2.
 constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4,
               kFeatureEmissionUnit = 5, kCoverageAlbedoUnit = 6, kCoverageEmissionUnit = 7;
+// The firefly bound reads the sums (their counts) at their units and the prepare pass's illumination
+// after them.
+constexpr int kPreparedIlluminationUnit = 3;
 constexpr int kIlluminationUnit = 0, kGuideUnit = 1, kAlbedoUnit = 2, kWideUnit = 3, kEmissionUnit = 3;
 constexpr int kPrevAlbedoDepthUnit = 0, kPrevNormalUnit = 1, kPrevEmissionUnit = 2;
 
-// The edge-stopping functions' widths (denoise_guide.glsl). SVGF's normal exponent is 128 for
-// exact per-pixel normals; ours are averaged over the pixel's samples, and 16 measured better
-// (relMSE at 16 spp: cornell 0.000751 -> 0.000725, cornell_spheres 0.00466 -> 0.00455; 8 was
-// a little better still, but leaves less of a crease between surfaces 40 degrees apart).
-constexpr float kSigmaNormal = 16.0f;
+// The edge-stopping functions' widths (denoise_guide.glsl; the normal's is a constant there).
 constexpr float kSigmaDepth = 1.0f; // in units of the depth's change per pixel, as SVGF
 // The regression filter's non-local-means bandwidth k per unit of --denoise-strength: its default
 // strength, 4, gives k = 1 (docs/denoising.md has the measurements).
@@ -86,6 +85,9 @@ Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     prepare_->bindSamplerUnit("uFeatureEmission", kFeatureEmissionUnit);
     prepare_->bindSamplerUnit("uCoverageAlbedo", kCoverageAlbedoUnit);
     prepare_->bindSamplerUnit("uCoverageEmission", kCoverageEmissionUnit);
+    boundFireflies_ = buildFilterProgram(shaderDir_, "denoise_bound_fireflies.frag");
+    boundFireflies_->bindSamplerUnit("uIllumination", kPreparedIlluminationUnit);
+    boundFireflies_->bindSamplerUnit("uSum", kSumUnit);
     atrous_ = buildFilterProgram(shaderDir_, "denoise_atrous.frag");
     atrous_->bindSamplerUnit("uIllumination", kIlluminationUnit);
     atrous_->bindSamplerUnit("uGuide", kGuideUnit);
@@ -137,7 +139,7 @@ void Denoiser::resize(glm::ivec2 size) {
     guide_ = createFloatTexture(size);
     albedo_ = createFloatTexture(size);
     emission_ = createFloatTexture(size);
-    prepareFramebuffer_ = createFramebufferOf({illumination_[0].id(), guide_.id(), albedo_.id(), emission_.id()});
+    prepareFramebuffer_ = createFramebufferOf({illumination_[1].id(), guide_.id(), albedo_.id(), emission_.id()});
     for (int i = 0; i < 2; ++i) {
         illuminationFramebuffer_[i] = createFramebufferOf({illumination_[i].id()});
         result_[i] = createFloatTexture(size);
@@ -230,8 +232,10 @@ bool Denoiser::advance(PathTracer& tracer, int rows) {
         } else if (step == cycle_.prepareStep()) {
             if (cycle_.nextRow == 0) cycle_.samples = tracer.sampleCount();
             drawPrepareRows(tracer, cycle_.nextRow, rowEnd);
+        } else if (step == cycle_.prepareStep() + 1) {
+            drawBoundFirefliesRows(tracer, cycle_.nextRow, rowEnd);
         } else if (step < cycle_.stepCount() - 1) {
-            const int filterPass = step - cycle_.prepareStep() - 1;
+            const int filterPass = step - cycle_.prepareStep() - 2;
             if (cycle_.settings.algorithm != DenoiseAlgorithm::Regression)
                 drawAtrousRows(filterPass, cycle_.nextRow, rowEnd);
             else if (filterPass == 0)
@@ -338,11 +342,20 @@ void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     drawRows(rowBegin, rowEnd);
 }
 
-// Iteration i reads illumination_[i % 2] (the prepare pass wrote [0]) and writes the other.
+// Reads the prepare pass's illumination_[1] and writes illumination_[0].
+void Denoiser::drawBoundFirefliesRows(PathTracer& tracer, int rowBegin, int rowEnd) {
+    glUseProgram(boundFireflies_->id());
+    tracer.bindLatestSums(kSumUnit, kCompensationUnit, kSumSquaresUnit);
+    bindTexture(kPreparedIlluminationUnit, illumination_[1].id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, illuminationFramebuffer_[0].id());
+    drawRows(rowBegin, rowEnd);
+}
+
+// Iteration i reads illumination_[i % 2] (the firefly bound wrote [0]) and writes the other.
 void Denoiser::drawAtrousRows(int iteration, int rowBegin, int rowEnd) {
     glUseProgram(atrous_->id());
     glUniform1f(atrous_->uniformLocation("uSigmaLuminance"), cycle_.settings.strength);
-    glUniform1f(atrous_->uniformLocation("uSigmaNormal"), kSigmaNormal);
     glUniform1f(atrous_->uniformLocation("uSigmaDepth"), kSigmaDepth);
     glUniform1i(atrous_->uniformLocation("uStepPixels"), 1 << iteration);
     bindTexture(kGuideUnit, guide_.id());
@@ -352,14 +365,13 @@ void Denoiser::drawAtrousRows(int iteration, int rowBegin, int rowEnd) {
     drawRows(rowBegin, rowEnd);
 }
 
-// Reads illumination_[0] (the prepare pass's) and writes the fits at two bandwidths: the narrower
+// Reads illumination_[0] (the firefly bound's) and writes the fits at two bandwidths: the narrower
 // to illumination_[1], the wider to regressionWide_.
 void Denoiser::drawRegressionRows(int rowBegin, int rowEnd) {
     glUseProgram(regression_->id());
     const float bandwidth = kRegressionBandwidthPerStrength * cycle_.settings.strength;
     glUniform1f(regression_->uniformLocation("uBandwidthNarrow"), bandwidth);
     glUniform1f(regression_->uniformLocation("uBandwidthWide"), kRegressionWideBandwidthFactor * bandwidth);
-    glUniform1f(regression_->uniformLocation("uSigmaNormal"), kSigmaNormal);
     glUniform1f(regression_->uniformLocation("uSigmaDepthNarrow"), regressionDepthTolerance(bandwidth));
     glUniform1f(regression_->uniformLocation("uSigmaDepthWide"), regressionDepthTolerance(kRegressionWideBandwidthFactor * bandwidth));
     bindTexture(kIlluminationUnit, illumination_[0].id());

@@ -106,9 +106,10 @@ private:
         int nextRow = 0;
         int samples = 0;        // of the radiance, as the prepare pass began
         int prepareStep() const { return featurePasses + coveragePasses; }
-        int stepCount() const { return prepareStep() + 2 + filterPassCount(settings); }
+        // prepare, the firefly bound, the filter passes, compose
+        int stepCount() const { return prepareStep() + 3 + filterPassCount(settings); }
     };
-    // The illumination texture the last filter pass wrote (the prepare pass writes [0]).
+    // The illumination texture the last filter pass wrote (the firefly bound writes [0]).
     int filteredIllumination() const { return filterPassCount(cycle_.settings) % 2; }
     void resize(glm::ivec2 size);
     void prepareFeatureProgram(PathTracer& tracer);
@@ -117,6 +118,7 @@ private:
     void drawCoverageZoneRows(int rowBegin, int rowEnd);
     void drawCoverageRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd);
+    void drawBoundFirefliesRows(PathTracer& tracer, int rowBegin, int rowEnd);
     void drawAtrousRows(int iteration, int rowBegin, int rowEnd);
     void drawRegressionRows(int rowBegin, int rowEnd);
     void drawBandwidthSelectionRows(int rowBegin, int rowEnd);
@@ -130,7 +132,7 @@ private:
     std::unique_ptr<GlProgram> featureProgram_;
     ShaderFeatures featureProgramFeatures_;
     SamplerMode featureProgramSampler_ = SamplerMode::Random;
-    std::unique_ptr<GlProgram> coverageZone_, prepare_, atrous_, regression_, bandwidthSelection_, compose_;
+    std::unique_ptr<GlProgram> coverageZone_, prepare_, boundFireflies_, atrous_, regression_, bandwidthSelection_, compose_;
     GlVertexArray emptyVertexArray_;
 
     glm::ivec2 size_{0, 0};

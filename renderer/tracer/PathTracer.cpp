@@ -507,7 +507,9 @@ bool PathTracer::denoiseInProgressIsCurrent() const {
 int PathTracer::denoiseRowsLeft() const {
     if (!denoiseSettings_.enabled || denoisedUpToDate()) return 0;
     if (denoiseInProgressIsCurrent()) return denoiser_->rowsLeft();
-    return accumulator_.size().y * (Denoiser::filterPassCount(denoiseSettings_) + 3); // about a new denoise's, features aside
+    // About a new denoise's, features aside: the coverage run's zone and rays, prepare, the firefly
+    // bound, the filter passes, compose.
+    return accumulator_.size().y * (Denoiser::filterPassCount(denoiseSettings_) + 5);
 }
 
 bool PathTracer::hasDenoised() const {

@@ -1,0 +1,54 @@
+#version 410 core
+// The denoiser's second pass (docs/denoising.md): what each pixel's 3x3 neighbourhood of
+// demodulated illumination (the prepare pass's) says about it. A pixel with too few samples for a
+// variance of its own takes the neighbourhood's spread; a firefly is brought down to a bound above
+// its neighbours, so that one bright sample does not spread into a blotch.
+#include "denoise_guide.glsl"
+
+uniform sampler2D uIllumination; // the prepare pass's: demodulated rgb, variance of its luminance
+uniform sampler2D uSum;          // the accumulated sum: its alpha is the pixel's sample count
+
+layout(location = 0) out vec4 outIllumination;
+
+// Fewer samples than this give no variance worth the name: the pixel's neighbours estimate it.
+const float kSamplesForOwnVariance = 4.0;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 last = textureSize(uIllumination, 0) - 1;
+    vec4 own = texelFetch(uIllumination, p, 0);
+    vec3 illumination = own.rgb;
+    float variance = own.a;
+    float luminanceP = luminance(illumination);
+
+    float neighbourSum = 0.0, neighbourSquares = 0.0, brightestNeighbour = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            if (dx == 0 && dy == 0) continue;
+            float l = luminance(texelFetch(uIllumination, clamp(p + ivec2(dx, dy), ivec2(0), last), 0).rgb);
+            neighbourSum += l;
+            neighbourSquares += l * l;
+            brightestNeighbour = max(brightestNeighbour, l);
+        }
+    // The bound below leaves the brightest neighbour out: where a caustic sample lit two pixels
+    // side by side, each would otherwise raise the other's bound past itself (on dof two such
+    // pixels carried half of the denoised image's error, docs/denoising.md).
+    float othersMean = (neighbourSum - brightestNeighbour) / 7.0;
+    float othersSpread = sqrt(max((neighbourSquares - brightestNeighbour * brightestNeighbour) / 7.0 - othersMean * othersMean, 0.0));
+
+    if (max(texelFetch(uSum, p, 0).a, 1.0) < kSamplesForOwnVariance) {
+        // Too few samples: the spread of the 3x3 neighbourhood, the pixel included, stands in.
+        float sum = neighbourSum + luminanceP, squares = neighbourSquares + luminanceP * luminanceP;
+        variance = max(squares / 9.0 - (sum / 9.0) * (sum / 9.0), 0.0);
+    }
+
+    // A firefly: brighter than its neighbourhood by more than five of its spreads, and by no more
+    // than its own noise explains (three, the first choice, brought real detail down too: the
+    // spread of seven noisy neighbours is often small; docs/denoising.md). Brought down to that
+    // bound before filtering (biased, like any clamp; the bound rises and the own noise falls with
+    // the samples, so it stops applying as the image converges). A highlight that is really there
+    // has a small error of its own and stays.
+    float bound = othersMean + 5.0 * othersSpread;
+    if (luminanceP > bound && luminanceP - bound < 3.0 * sqrt(variance)) illumination *= bound / luminanceP;
+    outIllumination = vec4(illumination, variance);
+}
