@@ -12,6 +12,10 @@
 #include "bsdf_plastic.glsl"
 #include "bsdf_principled.glsl"
 
+// Whether some model here may scatter by delta lobes alone (a mirror, glass, smooth metal): the
+// denoiser's features look through such surfaces (denoise_features.frag).
+const bool kPurelySpecularModels = true;
+
 vec3 bsdfF(Material material, vec3 woLocal, vec3 wiLocal) {
     switch (material.type) {
     case kMaterialDiffuse: return lambertianReflectionBsdfF(material, woLocal, wiLocal);

@@ -106,7 +106,7 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
         }
         normal = hit.normalShading;
         albedo = tint * material.color;
-        if (bounce == kMaxDeltaBounces || !isPurelySpecular(material)) return;
+        if (!kPurelySpecularModels || bounce == kMaxDeltaBounces || !isPurelySpecular(material)) return;
         ShadingFrame frame = makeShadingFrame(hit.normalShading);
         vec3 woLocal = toLocal(frame, -ray.direction);
         // Glass both reflects and refracts; the features follow the refraction, whatever the

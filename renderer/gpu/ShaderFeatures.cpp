@@ -57,13 +57,23 @@ std::string generateShapeLoops(const ShapeCounts& counts) {
            unrolledLoop("FOR_EACH_DISK", counts.disks);
 }
 
+// Models that may scatter by delta lobes alone: mirrors and glass always, metal and principled
+// when smooth enough. The denoiser's features look through such a surface
+// (denoise_features.frag), code a program whose scene has none of them leaves out.
+bool mayBePurelySpecular(MaterialType type) {
+    return type == MaterialType::Mirror || type == MaterialType::SpecularTransmission || type == MaterialType::Glass ||
+           type == MaterialType::Metal || type == MaterialType::Principled;
+}
+
 } // namespace
 
 std::string generateBsdfDispatch(const ShaderFeatures& features) {
     std::string includes, f, pdf, sample, models;
     std::vector<std::string> files;
+    bool purelySpecular = false;
     for (const BsdfCode& code : kBsdfCode) {
         if (!features.usesModel(code.type)) continue;
+        purelySpecular = purelySpecular || mayBePurelySpecular(code.type);
         models += std::string(models.empty() ? "" : ", ") + materialSchema(code.type).name;
         if (code.file && std::find(files.begin(), files.end(), code.file) == files.end()) {
             files.push_back(code.file);
@@ -83,6 +93,9 @@ std::string generateBsdfDispatch(const ShaderFeatures& features) {
            "// it compiles only the models its scene uses; shaders/bsdf.glsl is the output for every model.\n"
            "// The conventions are at the top of bsdf_common.glsl.\n"
            "#include \"material.glsl\"\n#include \"bsdf_common.glsl\"\n" + includes +
+           "\n// Whether some model here may scatter by delta lobes alone (a mirror, glass, smooth metal): the\n"
+           "// denoiser's features look through such surfaces (denoise_features.frag).\n"
+           "const bool kPurelySpecularModels = " + (purelySpecular ? "true" : "false") + ";\n" +
            "\nvec3 bsdfF(Material material, vec3 woLocal, vec3 wiLocal) {\n    switch (material.type) {\n" + f +
            "    default: return vec3(0.0); // delta models and emitters\n    }\n}\n"
            "\nfloat bsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) {\n    switch (material.type) {\n" + pdf +
