@@ -60,12 +60,16 @@ TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode)
                                kNormalMapCode, kAlphaCode})
         EXPECT_FALSE(contains(source, absent)) << absent;
     EXPECT_FALSE(features.textures);
+    // Nothing scatters by delta lobes alone: the denoiser's features follow no mirror bounce.
+    EXPECT_TRUE(contains(source, "const bool kPurelySpecularModels = false;"));
+    EXPECT_TRUE(contains(programSource(shippedScene("cornell_spheres")), "const bool kPurelySpecularModels = true;"));
 
     // The uber-shader has all of it, for the same scene.
     std::string uber = programSource(cornell, PathTracerOptions{true, std::nullopt});
     for (const char* present : {kDielectricCode, kMicrofacetCode, kEnvironmentMapCode, kBvhCode, kTextureCode, kPrincipledCode,
                                 kNormalMapCode, kAlphaCode})
         EXPECT_TRUE(contains(uber, present)) << present;
+    EXPECT_TRUE(contains(uber, "const bool kPurelySpecularModels = true;"));
 }
 
 // The principled grid has the model but no texture; a textured material brings the texture code.
