@@ -203,7 +203,7 @@ void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     // Past kMaxFeatureSamples the features are not of the radiance's samples, so nothing is
     // separated and the coverage run stops where it is.
     cycle_.coverageTarget = std::max(coverageSamples_, coverageSamplesFor(tracer.sampleCount()));
-    cycle_.coveragePasses = cycle_.coverageTarget > coverageSamples_ ? 2 : 0;
+    cycle_.coverage = cycle_.coverageTarget > coverageSamples_;
     cycle_.samples = tracer.sampleCount();
 }
 
@@ -225,9 +225,9 @@ bool Denoiser::advance(PathTracer& tracer, int rows) {
         const int step = cycle_.step;
         if (step < cycle_.featurePasses) {
             drawFeatureRows(tracer, cycle_.nextRow, rowEnd);
-        } else if (step == cycle_.featurePasses && cycle_.coveragePasses > 0) {
+        } else if (cycle_.coverage && step == cycle_.coverageZoneStep()) {
             drawCoverageZoneRows(cycle_.nextRow, rowEnd);
-        } else if (step < cycle_.prepareStep()) {
+        } else if (cycle_.coverage && step == cycle_.coverageRaysStep()) {
             drawCoverageRows(tracer, cycle_.nextRow, rowEnd);
         } else if (step == cycle_.prepareStep()) {
             if (cycle_.nextRow == 0) cycle_.samples = tracer.sampleCount();
@@ -257,7 +257,7 @@ void Denoiser::finishStep(PathTracer& tracer) {
     if (cycle_.step < cycle_.featurePasses) {
         featureSamples_ += featureSamplesThisPass(tracer);
         featureWrite_ = 1 - featureWrite_;
-    } else if (cycle_.step == cycle_.prepareStep() - 1 && cycle_.coveragePasses > 0) {
+    } else if (cycle_.coverage && cycle_.step == cycle_.coverageRaysStep()) {
         coverageSamples_ += coverageSamplesThisPass();
     }
     cycle_.nextRow = 0;

@@ -80,6 +80,11 @@ public:
     static int filterPassCount(const DenoiseSettings& settings) {
         return settings.algorithm == DenoiseAlgorithm::Regression ? 2 : settings.iterations;
     }
+    // The full-image passes of a denoise besides the feature passes: the coverage run's two (its
+    // zone, then its rays), prepare, the firefly bound, the filter passes, compose.
+    static int passesBesideFeatures(const DenoiseSettings& settings) {
+        return kCoveragePasses + kPassesAroundFilter + filterPassCount(settings);
+    }
 
 private:
     // The features' sums (denoise_features.frag).
@@ -95,6 +100,8 @@ private:
         GlTexture albedoRays, emission;
         GlRenderbuffer stencil;
     };
+    static constexpr int kCoveragePasses = 2;     // the zone (the stencil), then the rays
+    static constexpr int kPassesAroundFilter = 3; // prepare and the firefly bound before, compose after
     // The denoise in progress: its passes in order, each size_.y rows, done up to (step, nextRow).
     struct Cycle {
         bool active = false;
@@ -102,15 +109,15 @@ private:
         int restartCount = -1;
         int featurePasses = 0;  // first steps: feature passes up to featureTarget samples
         int featureTarget = 0;
-        int coveragePasses = 0; // then the coverage run's (0, or 2: its zone, then its rays up to
-                                // coverageTarget camera rays per pixel)
-        int coverageTarget = 0;
+        bool coverage = false;  // then the coverage run: its zone, then its rays up to coverageTarget
+        int coverageTarget = 0; // camera rays per pixel
         int step = 0;
         int nextRow = 0;
         int samples = 0;        // of the radiance, as the prepare pass began
-        int prepareStep() const { return featurePasses + coveragePasses; }
-        // prepare, the firefly bound, the filter passes, compose
-        int stepCount() const { return prepareStep() + 3 + filterPassCount(settings); }
+        int coverageZoneStep() const { return featurePasses; }
+        int coverageRaysStep() const { return featurePasses + 1; }
+        int prepareStep() const { return featurePasses + (coverage ? kCoveragePasses : 0); }
+        int stepCount() const { return prepareStep() + kPassesAroundFilter + filterPassCount(settings); }
     };
     // The illumination texture the last filter pass wrote (the firefly bound writes [0]).
     int filteredIllumination() const { return filterPassCount(cycle_.settings) % 2; }

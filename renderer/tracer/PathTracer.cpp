@@ -507,9 +507,7 @@ bool PathTracer::denoiseInProgressIsCurrent() const {
 int PathTracer::denoiseRowsLeft() const {
     if (!denoiseSettings_.enabled || denoisedUpToDate()) return 0;
     if (denoiseInProgressIsCurrent()) return denoiser_->rowsLeft();
-    // About a new denoise's, features aside: the coverage run's zone and rays, prepare, the firefly
-    // bound, the filter passes, compose.
-    return accumulator_.size().y * (Denoiser::filterPassCount(denoiseSettings_) + 5);
+    return accumulator_.size().y * Denoiser::passesBesideFeatures(denoiseSettings_); // about a new denoise's
 }
 
 bool PathTracer::hasDenoised() const {
