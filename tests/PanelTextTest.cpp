@@ -96,19 +96,21 @@ TEST(PanelText, TheSplitViewLabelCallsTheEstimateNoiseAndShowsTheTrueErrorBeside
 // After Tab hides the sidebar, the image says what it shows when that is not the plain render.
 TEST(PanelText, TheImageIsLabelledWhenItIsNotThePlainRender) {
     RenderSettings settings;
-    EXPECT_EQ(imageContentLabel(settings, false), "");
-    EXPECT_EQ(imageContentLabel(settings, true), "denoised");
+    EXPECT_EQ(imageContentLabel(settings, false, 0), "");
+    EXPECT_EQ(imageContentLabel(settings, true, 16), "denoised");
+    EXPECT_EQ(imageContentLabel(settings, true, 0), "raw, denoising")
+        << "until the first denoised image of a render exists, the raw one is shown and not called denoised";
     settings.lightPaths = LightPaths::Direct;
-    EXPECT_EQ(imageContentLabel(settings, false), "light paths: direct only");
-    EXPECT_EQ(imageContentLabel(settings, true), "light paths: direct only, denoised");
+    EXPECT_EQ(imageContentLabel(settings, false, 0), "light paths: direct only");
+    EXPECT_EQ(imageContentLabel(settings, true, 4), "light paths: direct only, denoised");
     settings.lightPaths = LightPaths::Exactly;
     settings.lightPathBounces = 2;
-    EXPECT_EQ(imageContentLabel(settings, false), "light paths: exactly 2 bounces");
+    EXPECT_EQ(imageContentLabel(settings, false, 0), "light paths: exactly 2 bounces");
     settings.lightPaths = LightPaths::AtMost;
     settings.lightPathBounces = 1;
-    EXPECT_EQ(imageContentLabel(settings, false), "light paths: at most 1 bounce");
+    EXPECT_EQ(imageContentLabel(settings, false, 0), "light paths: at most 1 bounce");
     settings.debugView = DebugView::Normals;
-    EXPECT_EQ(imageContentLabel(settings, false), "view: normals") << "a debug view replaces the radiance";
+    EXPECT_EQ(imageContentLabel(settings, false, 0), "view: normals") << "a debug view replaces the radiance";
 }
 
 // A reload error sat below the fold of the sidebar: the title says the last file did not apply,

@@ -193,6 +193,7 @@ target-spp 1
 light-paths direct
 denoise on
 wait-spp 1
+wait-denoised
 status
 light-paths all
 denoise off

@@ -104,6 +104,7 @@ denoise on
 denoise-strength 6
 denoise-iterations 4
 denoise-algorithm regression
+wait-denoised
 compare-sides raw-denoised
 compare-denoise on
 pop-out paths-table on
@@ -131,7 +132,7 @@ ocio-view Filmic Log
 
 TEST(ViewerScript, EveryVerbParsesWithItsArgumentsAndLine) {
     ViewerScript script = parse(kEveryVerb);
-    ASSERT_EQ(script.commands.size(), 83u);
+    ASSERT_EQ(script.commands.size(), 84u);
     EXPECT_EQ(script.path, "s.txt");
 
     // The script must exercise every command the table has, so a new verb cannot go untested.
@@ -399,7 +400,7 @@ TEST(ViewerScript, ViewAndZoomCommandsParseWithinTheirRanges) {
 
 TEST(ViewerScript, ReferenceDescribesEveryCommandAndField) {
     std::string reference = viewerScriptReference();
-    EXPECT_EQ(referenceVerbs().size(), 77u);
+    EXPECT_EQ(referenceVerbs().size(), 78u);
     EXPECT_NE(reference.find("integrator NAME"), std::string::npos);
     EXPECT_NE(reference.find("NAME: one of naive, direct, mis, full"), std::string::npos) << reference;
     EXPECT_NE(reference.find("samples-per-frame N|auto"), std::string::npos);

@@ -316,6 +316,8 @@ const std::vector<CommandSpec>& commandSpecs() {
         // Waiting and output
         {"frames", {integerArg("N", 1)}, nullptr, "let N frames be displayed"},
         {"wait-spp", {integerArg("N", 1)}, nullptr, "wait until the image has N samples per pixel"},
+        {"wait-denoised", {}, nullptr,
+         "wait until the image shown is denoised (with the denoiser on, the raw one is shown until its first filtering ends)"},
         {"wait-seconds", {numberArg("S", 0.0, 600.0)}, nullptr,
          "let S seconds of frames go by (while a test acts on the window from outside)"},
         {"screenshot", {pathArg({".png", ".pfm", ".exr"})}, nullptr, "save the rendered image: tone-mapped PNG, or linear PFM or EXR"},

@@ -69,8 +69,10 @@ inline std::string splitLabelNumbers(int samples, double seconds, const ErrorEst
 // What the image shows when it is not the plain radiance, so it can be told with the sidebar
 // hidden: "light paths: direct only", "light paths: exactly 2 bounces", "view: normals",
 // "denoised", joined by ", "; empty for the plain render. A debug view replaces the radiance, so
-// the light paths (and the denoiser, which a debug view never gets) are not named with it.
-inline std::string imageContentLabel(const RenderSettings& settings, bool denoised) {
+// the light paths (and the denoiser, which a debug view never gets) are not named with it. With
+// the denoiser on (`denoised`) but no denoised image yet (`denoisedSamples` 0: the first filtering
+// of this render is under way) the image is still the raw one, and the label says so.
+inline std::string imageContentLabel(const RenderSettings& settings, bool denoised, int denoisedSamples) {
     if (settings.debugView != DebugView::Radiance) return std::string("view: ") + debugViewName(settings.debugView);
     std::vector<std::string> parts;
     if (settings.lightPaths != LightPaths::All) {
@@ -82,7 +84,7 @@ inline std::string imageContentLabel(const RenderSettings& settings, bool denois
             view.replace(view.find(k), k.size(), countOf(settings.lightPathBounces, "bounce"));
         parts.push_back("light paths: " + view);
     }
-    if (denoised) parts.push_back("denoised");
+    if (denoised) parts.push_back(denoisedSamples > 0 ? "denoised" : "raw, denoising");
     std::string label;
     for (const std::string& part : parts) label += (label.empty() ? "" : ", ") + part;
     return label;

@@ -150,7 +150,8 @@ void printStatus(const ViewerSession& session, const PanelState& panels) {
     // What the window says beyond the sidebar: its title, the label on the image (empty for the
     // plain render) and the last notice drawn on it (PanelText.h decides all three).
     line += " title=" + quoted(windowTitle(model.fileScene.path, session.hasUnsavedEdits(), model.sceneError, model.shaderError)) +
-            " image-label=" + quoted(imageContentLabel(settings, session.showsDenoised(ViewerSession::Side::Left))) +
+            " image-label=" + quoted(imageContentLabel(settings, session.showsDenoised(ViewerSession::Side::Left),
+                                                           session.tracer(ViewerSession::Side::Left).denoisedSampleCount())) +
             " notice=" + quoted(panels.imageNotice) + " popped-out=" + panels.detached.describe() +
             " ui-scale=" + numberText(panels.preferences.uiScale) +
             " high-contrast=" + (panels.preferences.highContrast ? "on" : "off");
@@ -445,6 +446,17 @@ void waitSpp(Step& s) {
     s.again = !s.failed();
 }
 
+// Until the main view shows a denoised image: with the denoiser on, the raw image is shown until
+// the first filtering of the render ends, a few frames after its first sample.
+void waitDenoised(Step& s) {
+    if (s.firstRun()) s.wait().deadline = Clock::now() + kWaitTimeout;
+    s.session.update();
+    if (!s.session.showsDenoised(ViewerSession::Side::Left)) return s.fail("the denoiser is off: nothing to wait for");
+    if (s.session.tracer(ViewerSession::Side::Left).hasDenoised()) return;
+    if (Clock::now() > s.wait().deadline) s.fail("no denoised image in time");
+    s.again = !s.failed();
+}
+
 void waitSeconds(Step& s) {
     using Seconds = std::chrono::duration<double>;
     if (s.firstRun())
@@ -636,6 +648,7 @@ const std::vector<std::pair<const char*, Handler>>& handlers() {
         // ---- waiting and output
         {"frames", waitFrames},
         {"wait-spp", waitSpp},
+        {"wait-denoised", waitDenoised},
         {"wait-seconds", waitSeconds},
         {"screenshot", screenshot},
         {"screenshot-window", screenshotWindow},

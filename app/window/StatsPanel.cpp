@@ -63,7 +63,9 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
     // it), shown the same way, so with a reference loaded the two lines can be compared directly.
     // Both come from the raw accumulation (readStatistics): labelled so, since the image shown may
     // be the denoised one.
-    if (stats.denoised) noteText("shown: denoised, of " + std::to_string(stats.denoisedSamples) + " spp (biased)");
+    if (stats.denoised)
+        noteText(stats.denoisedSamples > 0 ? "shown: denoised, of " + std::to_string(stats.denoisedSamples) + " spp (biased)"
+                                           : std::string("shown: raw until the first denoising ends"));
     // Each figure with the spp it was measured at (about once a second), and the estimate named
     // for what it sees: noise, not bias (PanelText.h).
     std::string estimate = "raw: estimated " + noiseEstimateText(stats.error, stats.errorSamples);

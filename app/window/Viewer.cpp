@@ -658,7 +658,7 @@ void ViewerWindow::drawCompareLabels() {
         std::snprintf(heading, sizeof(heading), "%s / %s / depth %d", integratorName(settings.integrator),
                       samplerModeName(settings.sampler), settings.maxDepth);
         std::string text = heading;
-        if (std::string content = imageContentLabel(settings, stats.denoised); !content.empty()) text += " / " + content;
+        if (std::string content = imageContentLabel(settings, stats.denoised, stats.denoisedSamples); !content.empty()) text += " / " + content;
         if (DisplayView view = session_.displaySettings(side).view; view != DisplayView::Image)
             text += std::string(" / ") + displayViewNames().entry(view).displayLabel();
         // The noise is the raw accumulation's, also on a denoised side (the Stats panel says so);
@@ -712,7 +712,8 @@ void ViewerWindow::drawImageNotes() {
     // (the split view's labels say it for each side).
     if (!session_.comparing()) {
         const RenderSettings& settings = session_.settings(ViewerSession::Side::Left);
-        std::string content = imageContentLabel(settings, session_.showsDenoised(ViewerSession::Side::Left));
+        std::string content = imageContentLabel(settings, session_.showsDenoised(ViewerSession::Side::Left),
+                                                session_.tracer(ViewerSession::Side::Left).denoisedSampleCount());
         if (DisplayView view = session_.model().display.view; view != DisplayView::Image)
             content += (content.empty() ? "" : ", ") + std::string(displayViewNames().entry(view).displayLabel());
         if (!content.empty()) drawImageNote(content, ImVec2(left, 8.0f), false, false, IM_COL32(255, 255, 255, 255));

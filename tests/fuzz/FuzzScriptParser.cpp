@@ -132,6 +132,7 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["pan"] = {number(), number()};
         t["frames"] = {integer(1)};
         t["wait-spp"] = {integer(1)};
+        t["wait-denoised"] = {};
         t["wait-seconds"] = {number(0, 600)};
         t["screenshot"] = {path({".png", ".pfm", ".exr"})};
         t["screenshot-window"] = {path({".png"})};
