@@ -15,6 +15,9 @@
 // Whether some model here may scatter by delta lobes alone (a mirror, glass, smooth metal): the
 // denoiser's features look through such surfaces (denoise_features.frag).
 const bool kPurelySpecularModels = true;
+// Whether some model here may scatter by a delta lobe at all (those, and a smooth coat): the
+// features follow the path through them to the emission it meets (denoise_features.frag).
+const bool kDeltaLobeModels = true;
 
 vec3 bsdfF(Material material, vec3 woLocal, vec3 wiLocal) {
     switch (material.type) {

@@ -9,13 +9,15 @@
 // radiance is. Media's null boundaries are no surface: the features are those of what lies behind a
 // fog box's faces. Specialized like the path-tracing program of the scene.
 //
-// Also the emission each camera ray meets first, exactly what the path adds there
-// (emissionAddedByCameraRay): the prepare pass takes it out of the pixel's mean, so that a light's
-// or the sky's outline is filtered as the surface beside it, and adds back the emission of more
-// camera rays than the radiance has. Those come from a second run of this program (uCoverage), at
-// up to Denoiser::kMaxCoverageSamples rays per pixel, only where an emitter or the environment and
-// a surface share a pixel's 3x3 neighbourhood, or where pixels that see only light differ
-// (denoise_coverage_zone.frag).
+// Also the emission each camera ray's path adds before it first scatters other than by a delta
+// lobe: what its camera ray meets, and what it meets through mirrors, glass and smooth coats,
+// exactly as the path adds it (the integrator's own phases with the same sampler, so the same
+// lobes). The prepare pass takes it out of the pixel's mean, so that a light's or the sky's
+// outline, and a light seen in a mirror, through glass or in a varnish, is filtered as the surface
+// around it, and adds back the emission of more camera rays than the radiance has. Those come from
+// a second run of this program (uCoverage), at up to Denoiser::kMaxCoverageSamples rays per pixel,
+// only where such emission and a surface share a pixel's 3x3 neighbourhood, or where pixels that
+// see only light differ (denoise_coverage_zone.frag).
 #include "frame_uniforms.glsl"
 #include "camera.glsl"
 #include "intersect.glsl"
@@ -36,13 +38,16 @@ layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m);
                                               // rgb, camera rays traced
 layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that met a surface
                                               // (not the environment, not an emitter)
-layout(location = 2) out vec4 outEmission;    // sums: emission met first rgb, samples that met an
-                                              // emitter or the environment first (whose light is
-                                              // all that emission)
+layout(location = 2) out vec4 outEmission;    // sums: emission along the delta chain rgb, samples
+                                              // whose light is all that emission
 
 // Delta bounces followed before a surface counts as the first one whatever it is: a path that
 // long between mirrors is rare, and features that stop there are still features.
 const int kMaxDeltaBounces = 4;
+
+// The delta scatterings followed to the emission beyond them: light inside a glass ball may reflect
+// a few times before it leaves.
+const int kMaxDeltaChain = 8;
 
 // Whether every direction a material scatters to is a delta lobe: the filter looks through it.
 bool isPurelySpecular(Material material) {
@@ -54,51 +59,41 @@ bool isPurelySpecular(Material material) {
     return false;
 }
 
-// Albedo, normal and distance of one camera ray; normal 0 and distance -1 where it leaves the
-// scene or meets an emitter. `emitted`: the emission the path adds where the camera ray itself
-// lands, and `lightFirst` where that is an emitter (which reflects nothing) or the environment:
-// albedo 0 then, the sample's light is all in `emitted`. In a scene with media the camera ray may
-// scatter before it gets there, so nothing is separated (the light counts as behind a mirror:
-// albedo 1, no surface).
-void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance,
-                    out vec3 emitted, out bool lightFirst) {
+// The first vertex of a camera ray, shared by the features and the emission along the path (one
+// trace, one material lookup): in a scene with media, the first surface past null boundaries.
+struct FirstVertex {
+    bool found;
+    Hit hit;
+    Material material;
+};
+
+FirstVertex traceFirstVertex(Ray ray) {
+    FirstVertex first;
+    first.found = intersectSurface(ray, first.hit);
+    if (first.found) first.material = fetchSurfaceMaterial(first.hit.material, first.hit.uv);
+    return first;
+}
+
+// Albedo, normal and distance of one camera ray, whose first vertex is `first`; normal 0 and
+// distance -1 where it leaves the scene or meets an emitter (no surface: albedo 1, nothing to
+// demodulate).
+void sampleFeatures(Ray ray, FirstVertex first, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance) {
     vec3 tint = vec3(1.0);
     distance = 0.0;
-    emitted = vec3(0.0);
-    lightFirst = false;
-    bool separates = !mediaInScene();
+    bool found = first.found;
+    Hit hit = first.hit;
+    Material material = first.material;
     for (int bounce = 0; bounce <= kMaxDeltaBounces; ++bounce) {
-        Hit hit;
-        if (!intersectSurface(ray, hit)) {
-            if (bounce == 0 && separates) {
-                emitted = emissionAddedByCameraRay(ray, environmentRadiance(ray.direction));
-                lightFirst = true;
-                albedo = vec3(0.0);
-                normal = vec3(0.0);
-                distance = -1.0;
-                return;
-            }
-            // The environment: nothing to demodulate (albedo 1), no surface to compare normals with.
+        if (!found) {
             albedo = tint;
             normal = vec3(0.0);
             distance = -1.0;
             return;
         }
         distance += hit.t;
-        Material material = fetchSurfaceMaterial(hit.material, hit.uv);
-        if (bounce == 0 && separates) {
-            emitted = emissionAddedByCameraRay(ray, emittedRadiance(material, hit.normalGeom, -ray.direction));
-            if (material.type == kMaterialEmitter) {
-                lightFirst = true;
-                albedo = vec3(0.0);
-                normal = vec3(0.0);
-                distance = -1.0;
-                return;
-            }
-        }
         if (material.type == kMaterialEmitter) {
             // An emitter's radiance, seen directly, has no noise to take out: like the
-            // environment, it is no surface for the filter (albedo 1, no normal, no distance).
+            // environment, it is no surface for the filter.
             albedo = tint;
             normal = vec3(0.0);
             distance = -1.0;
@@ -117,7 +112,58 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
         if (bs.pdfSolidAngle == 0.0) return; // the surface itself, then
         tint *= bs.weight;
         ray = spawnRay(hit.posWorld, hit.normalGeom, toWorld(frame, bs.wiLocal));
+        found = intersectSurface(ray, hit);
+        if (found) material = fetchSurfaceMaterial(hit.material, hit.uv);
     }
+}
+
+// The emission a path adds before it first scatters other than by a delta lobe: where its camera
+// ray lands (an emitter, the environment) and after each delta scattering that follows (a mirror,
+// glass, a smooth coat), weighted as the path weighs it. The integrator's own phases
+// (integrator.glsl: addEmissionFound, scatter, roulette) with the path's sampler, so the lobes
+// chosen are the path's and the sum is, sample for sample, what the path added there. Unlike the
+// features, glass reflects here where the path's sample reflected. `onlyEmission`: the path added
+// nothing else (no light sample where a lobe is not a delta, no scattering but delta ones), so the
+// sample's light is all this emission. In a scene with media the camera ray may scatter before it
+// gets anywhere: nothing is separated there (0, not only emission).
+vec3 emissionAlongDeltaChain(Ray cameraRay, FirstVertex first, Sampler sampler, out bool onlyEmission) {
+    onlyEmission = false;
+    if (mediaInScene()) return vec3(0.0);
+    onlyEmission = true;
+    PathState path = startPath(cameraRay);
+    bool found = first.found;
+    Hit hit = first.hit;
+    Material material = first.material;
+    for (int vertex = 0; vertex <= kMaxDeltaChain; ++vertex) {
+        int bounce = path.bounce;
+        if (!found) {
+            if (countsEmissionFoundAt(bounce))
+                addEmissionFound(path, environmentRadiance(path.ray.direction), uEnvironmentLight, kInfinity, vec3(0.0));
+            return path.radiance;
+        }
+        if (countsEmissionFoundAt(bounce)) {
+            vec3 emitted = emittedRadiance(material, hit.normalGeom, -path.ray.direction);
+            if (any(greaterThan(emitted, vec3(0.0)))) addEmissionFound(path, emitted, hit.light, hit.t, hit.normalGeom);
+        }
+        if (bounce >= lastBounce() || material.type == kMaterialEmitter) return path.radiance;
+        // A light sample finds nothing through delta lobes alone; elsewhere the path adds one here.
+        if (samplesLights() && !isPurelySpecular(material)) onlyEmission = false;
+        if (!kDeltaLobeModels || !samplesBsdf()) {
+            onlyEmission = onlyEmission && !samplesBsdf();
+            return path.radiance;
+        }
+        ShadingFrame frame = makeShadingFrame(hit.normalShading);
+        if (!scatter(path, material, frame, hit, toLocal(frame, -path.ray.direction), sampler)) return path.radiance;
+        if (!path.previousDelta) {
+            onlyEmission = false;
+            return path.radiance;
+        }
+        if (playsRoulette(bounce) && !survivesRoulette(path, sampler, bounce)) return path.radiance;
+        found = intersectScene(path.ray, hit);
+        if (found) material = fetchSurfaceMaterial(hit.material, hit.uv);
+    }
+    onlyEmission = false; // the path goes on beyond the chain followed here
+    return path.radiance;
 }
 
 void main() {
@@ -133,13 +179,18 @@ void main() {
     for (uint i = 0u; i < uSamplesPerPass; ++i) {
         Sampler sampler;
         Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
-        vec3 albedo, normal, emitted;
+        vec3 albedo, normal;
         float distance;
-        bool lightFirst;
-        sampleFeatures(ray, sampler, albedo, normal, distance, emitted, lightFirst);
+        FirstVertex first = traceFirstVertex(ray);
+        sampleFeatures(ray, first, sampler, albedo, normal, distance);
+        bool onlyEmission;
+        vec3 emitted = emissionAlongDeltaChain(ray, first, sampler, onlyEmission);
+        // A sample whose light is all emission has nothing to demodulate: albedo 0, its light is
+        // all in the emission sums.
+        if (onlyEmission) albedo = vec3(0.0);
         albedoDepth += vec4(albedo, uCoverage ? 1.0 : max(distance, 0.0));
         normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
-        emission += vec4(emitted, lightFirst ? 1.0 : 0.0);
+        emission += vec4(emitted, onlyEmission ? 1.0 : 0.0);
     }
     outAlbedoDepth = albedoDepth;
     outNormal = normalSum;

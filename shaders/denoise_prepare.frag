@@ -75,25 +75,25 @@ float surfaceSamples(PixelSums s) { return s.normal.w; }
 
 float coverageRays(PixelSums s) { return s.coverageAlbedo.a; }
 
-// Whether the emission the features met first is taken out of the pixel's mean: where the
-// features are of its samples and some of them met a surface. A pixel that sees only light is
-// filtered among its like, as before: a defocused light's disc is noise of the lens samples that
-// its neighbours share.
-bool emissionSeparable(PixelSums s) { return featuresAreOfItsSamples(s) && surfaceSamples(s) > 0.0; }
-
-// The features' albedo; where the emission is not separated, a sample that met light first counts
-// as albedo 1 (its light is in the mean, with nothing to demodulate).
-vec3 albedoOf(PixelSums s) {
-    vec3 albedoSum = s.albedoDepth.rgb;
-    if (!emissionSeparable(s)) albedoSum += vec3(s.emission.a);
-    return max(albedoSum * uInvFeatureCount, vec3(kSmallestAlbedo));
-}
-
 // A pixel whose samples and the coverage run's camera rays all met light first (the sky, a
 // defocused lamp's disc over it): the coverage run's mean is the same estimate from more rays.
 bool lightOnlyCovered(PixelSums s) {
     float rays = coverageRays(s);
     return rays > 0.0 && featuresAreOfItsSamples(s) && s.emission.a == uFeatureCount && s.coverageEmission.a == rays;
+}
+
+// Whether the emission along the delta chain is taken out of the pixel's mean: where the features
+// are of its samples and the light of some of them, or of some of the coverage run's rays, is not
+// all emission. A pixel that sees only light is filtered among its like, as before: a defocused
+// light's disc is noise of the lens samples that its neighbours share.
+bool emissionSeparable(PixelSums s) {
+    return featuresAreOfItsSamples(s) && (s.emission.a < uFeatureCount || (coverageRays(s) > 0.0 && !lightOnlyCovered(s)));
+}
+
+vec3 albedoOf(PixelSums s) {
+    vec3 albedoSum = s.albedoDepth.rgb;
+    if (!emissionSeparable(s)) albedoSum += vec3(s.emission.a);
+    return max(albedoSum * uInvFeatureCount, vec3(kSmallestAlbedo));
 }
 
 // The coverage run's mean emission met first.
@@ -125,11 +125,9 @@ float ownVariance(PixelSums s) {
     float n = sampleCount(s);
     vec3 sum = s.radiance.rgb;
     vec3 sumSquares = s.radianceSquares;
+    if (emissionSeparable(s)) sum -= s.emission.rgb;
     float lightFirst = lightFirstSamples(s);
-    if (lightFirst > 0.0) {
-        sum -= s.emission.rgb;
-        sumSquares = max(sumSquares - s.emission.rgb * s.emission.rgb / lightFirst, vec3(0.0));
-    }
+    if (lightFirst > 0.0) sumSquares = max(sumSquares - s.emission.rgb * s.emission.rgb / lightFirst, vec3(0.0));
     vec3 channelVariance = max(sumSquares - sum * sum / n, vec3(0.0)) / (n * (n - 1.0));
     vec3 albedo = albedoOf(s);
     vec3 w = vec3(0.2126, 0.7152, 0.0722);
@@ -182,7 +180,9 @@ void main() {
     float surfaceShare = surfaceSamples(s) * uInvFeatureCount;
     float explainedShare = surfaceShare + lightFirstSamples(s) * uInvFeatureCount;
     outIllumination = vec4(illumination, variance);
-    if (surfaceShare <= 0.0 || dot(normalSum, normalSum) == 0.0)
+    if (surfaceShare <= 0.0 && lightFirstSamples(s) > 0.0)
+        outGuide = vec4(0.0, 0.0, kGuideOutline, 0.0);
+    else if (surfaceShare <= 0.0 || dot(normalSum, normalSum) == 0.0)
         outGuide = vec4(0.0, 0.0, kGuideEnvironment, 0.0);
     else if (explainedShare < kWholeSurface)
         outGuide = vec4(0.0, 0.0, kGuideOutline, 0.0);

@@ -184,15 +184,6 @@ void addEmissionFound(inout PathState path, vec3 emitted, int light, float hitDi
     path.radiance += added;
 }
 
-// What a path adds where its camera ray meets emission first, a surface's or the environment's:
-// addEmissionFound on a path just started. The denoiser's features compute it for the same camera
-// rays and take it out of the pixel before filtering (denoise_features.frag).
-vec3 emissionAddedByCameraRay(Ray cameraRay, vec3 emitted) {
-    PathState path = startPath(cameraRay);
-    addEmissionFound(path, emitted, -1, kInfinity, vec3(0.0)); // bounce 0: weight 1, whatever the light
-    return path.radiance;
-}
-
 void addDirectLighting(inout PathState path, Material material, ShadingFrame frame, Hit hit, vec3 woLocal,
                        Sampler sampler) {
     int bounce = path.bounce;

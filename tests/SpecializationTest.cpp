@@ -63,6 +63,8 @@ TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode)
     // Nothing scatters by delta lobes alone: the denoiser's features follow no mirror bounce.
     EXPECT_TRUE(contains(source, "const bool kPurelySpecularModels = false;"));
     EXPECT_TRUE(contains(programSource(shippedScene("cornell_spheres")), "const bool kPurelySpecularModels = true;"));
+    // Nor by any delta lobe: the features follow no path beyond the camera ray's emission.
+    EXPECT_TRUE(contains(source, "const bool kDeltaLobeModels = false;"));
 
     // The uber-shader has all of it, for the same scene.
     std::string uber = programSource(cornell, PathTracerOptions{true, std::nullopt});
@@ -70,6 +72,7 @@ TEST(Specialization, DiffuseCornellBoxCarriesNoDielectricMicrofacetMapOrBvhCode)
                                 kNormalMapCode, kAlphaCode})
         EXPECT_TRUE(contains(uber, present)) << present;
     EXPECT_TRUE(contains(uber, "const bool kPurelySpecularModels = true;"));
+    EXPECT_TRUE(contains(uber, "const bool kDeltaLobeModels = true;"));
 }
 
 // The principled grid has the model but no texture; a textured material brings the texture code.

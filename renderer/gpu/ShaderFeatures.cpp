@@ -65,15 +65,20 @@ bool mayBePurelySpecular(MaterialType type) {
            type == MaterialType::Metal || type == MaterialType::Principled;
 }
 
+// Models that may scatter by a delta lobe at all: those above, and plastic's smooth coat. The
+// denoiser's features follow the path through such lobes to the emission it meets there.
+bool mayScatterByDeltaLobe(MaterialType type) { return mayBePurelySpecular(type) || type == MaterialType::Plastic; }
+
 } // namespace
 
 std::string generateBsdfDispatch(const ShaderFeatures& features) {
     std::string includes, f, pdf, sample, models;
     std::vector<std::string> files;
-    bool purelySpecular = false;
+    bool purelySpecular = false, deltaLobes = false;
     for (const BsdfCode& code : kBsdfCode) {
         if (!features.usesModel(code.type)) continue;
         purelySpecular = purelySpecular || mayBePurelySpecular(code.type);
+        deltaLobes = deltaLobes || mayScatterByDeltaLobe(code.type);
         models += std::string(models.empty() ? "" : ", ") + materialSchema(code.type).name;
         if (code.file && std::find(files.begin(), files.end(), code.file) == files.end()) {
             files.push_back(code.file);
@@ -96,6 +101,9 @@ std::string generateBsdfDispatch(const ShaderFeatures& features) {
            "\n// Whether some model here may scatter by delta lobes alone (a mirror, glass, smooth metal): the\n"
            "// denoiser's features look through such surfaces (denoise_features.frag).\n"
            "const bool kPurelySpecularModels = " + (purelySpecular ? "true" : "false") + ";\n" +
+           "// Whether some model here may scatter by a delta lobe at all (those, and a smooth coat): the\n"
+           "// features follow the path through them to the emission it meets (denoise_features.frag).\n"
+           "const bool kDeltaLobeModels = " + (deltaLobes ? "true" : "false") + ";\n" +
            "\nvec3 bsdfF(Material material, vec3 woLocal, vec3 wiLocal) {\n    switch (material.type) {\n" + f +
            "    default: return vec3(0.0); // delta models and emitters\n    }\n}\n"
            "\nfloat bsdfPdf(Material material, vec3 woLocal, vec3 wiLocal) {\n    switch (material.type) {\n" + pdf +
