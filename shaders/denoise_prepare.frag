@@ -8,11 +8,13 @@
 // the variance of a pixel with too few samples, is the next pass's (denoise_bound_fireflies.frag),
 // which reads it once per pixel instead of computing it nine times.
 //
-// The emission the camera rays met first is taken out of the mean before that, where the features
-// are of exactly the pixel's samples (their sums then hold that emission sample for sample), and
-// the compose pass adds it back, from the coverage run's camera rays where it ran: on a light's
-// outline a pixel's noise is mostly which of its few samples met the light, which no filter can
-// take out, while its surface part is filtered as its neighbours are (docs/denoising.md).
+// The emission the paths met before their first scattering that is not a delta one (what the
+// camera rays met, and what they met through mirrors, glass and smooth coats) is taken out of the
+// mean before that, where the features are of exactly the pixel's samples (their sums then hold
+// that emission sample for sample), and the compose pass adds it back, from the coverage run's
+// camera rays where it ran: on a light's outline, or where a small light is seen in a varnish, a
+// pixel's noise is mostly which of its few samples met the light, which no filter can take out,
+// while its surface part is filtered as its neighbours are (docs/denoising.md).
 #include "denoise_guide.glsl"
 
 uniform sampler2D uSum;
@@ -20,10 +22,10 @@ uniform sampler2D uCompensation;
 uniform sampler2D uSumSquares;
 uniform sampler2D uFeatureAlbedoDepth;
 uniform sampler2D uFeatureNormal;
-uniform sampler2D uFeatureEmission;  // sums: emission met first rgb, samples that met light first
-                                     // (an emitter or the environment)
+uniform sampler2D uFeatureEmission;  // sums: emission along the delta chain rgb, samples whose
+                                     // light is all that emission
 uniform sampler2D uCoverageAlbedo;   // the coverage run's sums: albedo rgb, camera rays
-uniform sampler2D uCoverageEmission; // the coverage run's sums: emission met first rgb
+uniform sampler2D uCoverageEmission; // the coverage run's sums: emission along the delta chain rgb
 uniform float uInvFeatureCount;
 uniform float uFeatureCount;
 uniform bool uHasCoverage;
@@ -75,8 +77,9 @@ float surfaceSamples(PixelSums s) { return s.normal.w; }
 
 float coverageRays(PixelSums s) { return s.coverageAlbedo.a; }
 
-// A pixel whose samples and the coverage run's camera rays all met light first (the sky, a
-// defocused lamp's disc over it): the coverage run's mean is the same estimate from more rays.
+// A pixel whose samples and the coverage run's camera rays all had emission for all their light
+// (the sky, a defocused lamp's disc over it): the coverage run's mean is the same estimate from
+// more rays.
 bool lightOnlyCovered(PixelSums s) {
     float rays = coverageRays(s);
     return rays > 0.0 && featuresAreOfItsSamples(s) && s.emission.a == uFeatureCount && s.coverageEmission.a == rays;
@@ -84,50 +87,56 @@ bool lightOnlyCovered(PixelSums s) {
 
 // Whether the emission along the delta chain is taken out of the pixel's mean: where the features
 // are of its samples and the light of some of them, or of some of the coverage run's rays, is not
-// all emission. A pixel that sees only light is filtered among its like, as before: a defocused
-// light's disc is noise of the lens samples that its neighbours share.
+// all emission. A pixel that sees only light, and where the coverage run found nothing else, is
+// filtered among its like: a defocused light's disc over the sky is noise of the lens samples that
+// its neighbours share.
 bool emissionSeparable(PixelSums s) {
     return featuresAreOfItsSamples(s) && (s.emission.a < uFeatureCount || (coverageRays(s) > 0.0 && !lightOnlyCovered(s)));
 }
 
+// The features' albedo; where the emission is not separated, a sample whose light is all emission
+// counts as albedo 1 (its light is in the mean, with nothing to demodulate).
 vec3 albedoOf(PixelSums s) {
     vec3 albedoSum = s.albedoDepth.rgb;
     if (!emissionSeparable(s)) albedoSum += vec3(s.emission.a);
     return max(albedoSum * uInvFeatureCount, vec3(kSmallestAlbedo));
 }
 
-// The coverage run's mean emission met first.
+// The coverage run's mean emission.
 vec3 coverageEmission(PixelSums s) { return s.coverageEmission.rgb / coverageRays(s); }
 
 vec3 emissionOf(PixelSums s) { return emissionSeparable(s) ? s.emission.rgb * uInvFeatureCount : vec3(0.0); }
 
 vec3 meanOf(PixelSums s) { return s.radiance.rgb / sampleCount(s); }
 
-// The demodulated illumination: the mean less the emission met first, over the albedo. Never
+// The demodulated illumination: the mean less the emission separated, over the albedo. Never
 // below 0 (the two sums of a light's samples may round apart).
 vec3 illuminationOf(PixelSums s) {
     if (lightOnlyCovered(s)) return coverageEmission(s);
     return max(meanOf(s) - emissionOf(s), vec3(0.0)) / albedoOf(s);
 }
 
-// Samples whose light was all emission met first, where it was taken out.
-float lightFirstSamples(PixelSums s) { return emissionSeparable(s) ? s.emission.a : 0.0; }
+// Samples whose light was all emission, where it was taken out.
+float lightOnlySamples(PixelSums s) { return emissionSeparable(s) ? s.emission.a : 0.0; }
 
 // The variance of the illumination's luminance from the pixel's own sums: each channel's variance
 // of the mean (n (n - 1) in the denominator) over the albedo squared, weighed as luminance weighs
 // the channels.
 //
-// Where the emission met first was taken out, of what is left: the sums less the emission's. Its
-// sum of squares is not summed, so it is taken as that of light-first samples all of one radiance
-// (a lamp, a constant sky: exact), the least it can be, so the variance left is the most it can
-// be. A surface sample is taken to emit nothing (the helmet's glowing parts: a little more).
+// Where emission was taken out, of what is left: the sums less the emission's. Its sum of squares
+// is not summed, so it is taken as that of light-only samples all of one radiance (a lamp, a
+// constant sky: exact), the least it can be, so the variance left is the most it can be. Emission
+// on a surface sample (the helmet's glowing parts, a lamp in a varnish) is left in both sums, so
+// the variance there is of the whole samples, the most it can be.
 float ownVariance(PixelSums s) {
     float n = sampleCount(s);
     vec3 sum = s.radiance.rgb;
     vec3 sumSquares = s.radianceSquares;
-    if (emissionSeparable(s)) sum -= s.emission.rgb;
-    float lightFirst = lightFirstSamples(s);
-    if (lightFirst > 0.0) sumSquares = max(sumSquares - s.emission.rgb * s.emission.rgb / lightFirst, vec3(0.0));
+    float lightOnly = lightOnlySamples(s);
+    if (lightOnly > 0.0) {
+        sum -= s.emission.rgb;
+        sumSquares = max(sumSquares - s.emission.rgb * s.emission.rgb / lightOnly, vec3(0.0));
+    }
     vec3 channelVariance = max(sumSquares - sum * sum / n, vec3(0.0)) / (n * (n - 1.0));
     vec3 albedo = albedoOf(s);
     vec3 w = vec3(0.2126, 0.7152, 0.0722);
@@ -176,11 +185,14 @@ void main() {
     // The share of the pixel's samples that met a surface: 0 where it sees only the environment
     // or emitters, between 0 and 1 on their outline, where a surface's noise and the light of
     // what else the pixel sees share it and no neighbour's value is a fair stand-in. Light whose
-    // emission was taken out leaves only the surface's: the pixel is that surface's then.
+    // emission was taken out leaves only the surface's: the pixel is that surface's then. A pixel
+    // with no surface sample whose emission was taken out (glass showing the sky and a lamp, and a
+    // reflection of something else in a sample or two) keeps what is left as it is: it has no
+    // surface to be filtered as, and the light-only pixels beside it hold their emission.
     float surfaceShare = surfaceSamples(s) * uInvFeatureCount;
-    float explainedShare = surfaceShare + lightFirstSamples(s) * uInvFeatureCount;
+    float explainedShare = surfaceShare + lightOnlySamples(s) * uInvFeatureCount;
     outIllumination = vec4(illumination, variance);
-    if (surfaceShare <= 0.0 && lightFirstSamples(s) > 0.0)
+    if (surfaceShare <= 0.0 && lightOnlySamples(s) > 0.0)
         outGuide = vec4(0.0, 0.0, kGuideOutline, 0.0);
     else if (surfaceShare <= 0.0 || dot(normalSum, normalSum) == 0.0)
         outGuide = vec4(0.0, 0.0, kGuideEnvironment, 0.0);

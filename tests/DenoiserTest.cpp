@@ -246,8 +246,9 @@ TEST(Denoiser, ALightsOutlineIsDenoisedLikeTheWallBesideIt) {
     // outline a pixel's noise is which of its samples met the light (20 against the wall's 0.5):
     // a filter of the mean can only leave it there. The denoiser takes the emission its own camera
     // rays meet out of the pixel, filters the rest as the wall, and adds the emission back from
-    // eight times as many camera rays (Denoiser::coverageSamplesFor): the outline's error must fall
-    // to well under half the raw image's (measured 0.019 against 0.151; left as it is: 1).
+    // sixteen times as many camera rays (Denoiser::coverageSamplesFor): the outline's error must fall
+    // to well under half the raw image's (measured 0.008 against 0.151; 0.019 with eight times as
+    // many; left as it is: 1).
     Scene scene = parseScene(R"({
   "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [48, 48]},
   "environment": {"color": [1, 1, 1]},
@@ -272,10 +273,11 @@ TEST(Denoiser, ADefocusedBulbsDiscIsDenoisedFromMoreCameraRays) {
     // A bright bulb far behind the focus of a thin lens, against a dim sky (as on dof): its disc
     // is pixels that see only light, where each of 8 independent samples met the bulb through
     // some point of the lens or missed it. No feature tells the disc from the sky, so a filter of
-    // the mean has only the hits' brightness to go by; the coverage run's 8x camera rays estimate
-    // those pixels with an eighth of the variance before any filtering. Over the disc the denoised
-    // relMSE measured 0.14 (a-trous) and 0.17 (regression), and 0.36 and 0.40 with the filters
-    // given the 8 samples' mean alone (raw: 5.7): the bound sits between.
+    // the mean has only the hits' brightness to go by; the coverage run's 16x camera rays estimate
+    // those pixels with a sixteenth of the variance before any filtering. Over the disc the denoised
+    // relMSE measured 0.11 (a-trous) and 0.16 (regression; with 8x camera rays 0.14 and 0.17), and
+    // 0.36 and 0.40 with the filters given the 8 samples' mean alone (raw: 5.7): the bound sits
+    // between.
     Scene scene = parseScene(R"({
   "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 30, "resolution": [48, 48],
              "aperture_radius": 0.1, "focus_distance": 1.0},

@@ -287,7 +287,7 @@ int runRenderCommand(const RenderOptions& requested) {
                                            : std::string(denoiseAlgorithmName(options.denoise.algorithm));
             const int coverageSamples = Denoiser::coverageSamplesFor(samplesPerPixel);
             const std::string outlines =
-                coverageSamples > 0 ? ", light outlines from " + std::to_string(coverageSamples) + " camera rays" : std::string();
+                coverageSamples > 0 ? ", lights from " + std::to_string(coverageSamples) + " camera rays" : std::string();
             std::fprintf(stderr, "ptview: denoised (biased: docs/denoising.md) in %.3f s: %s, strength %g, features of %d spp%s%s\n",
                          denoiseSeconds, filter.c_str(), static_cast<double>(options.denoise.strength),
                          std::min(samplesPerPixel, Denoiser::kMaxFeatureSamples), outlines.c_str(),

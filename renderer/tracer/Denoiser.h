@@ -60,13 +60,15 @@ public:
     void bindResult(int sumUnit, int compensationUnit) const;
 
     static constexpr int kMaxFeatureSamples = 64;
-    // The emission met by camera rays is separated from the rest of a pixel only while the
-    // features are of exactly the radiance's samples (at most kMaxFeatureSamples); it is then
-    // added back from the coverage run's camera rays in the pixels next to it; pixels that see only
-    // light, and differ, take those rays' mean for their own (docs/denoising.md: lights' and the
-    // sky's outlines). For n samples, n * max(kMinCoverageSamplesPerSample, n) rays, at most
-    // kMaxCoverageSamples: the filtered surface's error falls faster than 1/n, and the outline's
-    // must keep up (dof at 16 spp, regression: relMSE 0.00245 with 64 rays, 0.00225 with 256).
+    // The emission a path meets before its first scattering that is not a delta one (what its
+    // camera ray meets, and what it meets through mirrors, glass and smooth coats) is separated
+    // from the rest of a pixel only while the features are of exactly the radiance's samples (at
+    // most kMaxFeatureSamples); it is then added back from the coverage run's camera rays in the
+    // pixels next to it; pixels that see only light, and differ, take those rays' mean for their
+    // own (docs/denoising.md: lights' and the sky's outlines). For n samples,
+    // n * max(kMinCoverageSamplesPerSample, 2n) rays, at most kMaxCoverageSamples: the filtered
+    // surface's error falls faster than 1/n, and the emission's must keep up (dof at 16 spp,
+    // regression: relMSE 0.00215 with 256 rays, 0.00186 with 512).
     static constexpr int kMinCoverageSamplesPerSample = 4;
     static constexpr int kMaxCoverageSamples = 1024;
     // The coverage run's camera rays per pixel for a radiance of `samples` per pixel (0: none).
