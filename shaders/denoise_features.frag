@@ -41,13 +41,10 @@ layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, sampl
 layout(location = 2) out vec4 outEmission;    // sums: emission along the delta chain rgb, samples
                                               // whose light is all that emission
 
-// Delta bounces followed before a surface counts as the first one whatever it is: a path that
-// long between mirrors is rare, and features that stop there are still features.
+// Delta bounces followed before a surface counts as the first one whatever it is, and the emission
+// beyond them is no longer separated: a path that long between mirrors is rare, features that stop
+// there are still features, and emission left in the mean is filtered as it was.
 const int kMaxDeltaBounces = 4;
-
-// The delta scatterings followed to the emission beyond them: light inside a glass ball may reflect
-// a few times before it leaves.
-const int kMaxDeltaChain = 8;
 
 // Whether every direction a material scatters to is a delta lobe: the filter looks through it.
 bool isPurelySpecular(Material material) {
@@ -134,7 +131,7 @@ vec3 emissionAlongDeltaChain(Ray cameraRay, FirstVertex first, Sampler sampler, 
     bool found = first.found;
     Hit hit = first.hit;
     Material material = first.material;
-    for (int vertex = 0; vertex <= kMaxDeltaChain; ++vertex) {
+    for (int vertex = 0; vertex <= kMaxDeltaBounces; ++vertex) {
         int bounce = path.bounce;
         if (!found) {
             if (countsEmissionFoundAt(bounce))
