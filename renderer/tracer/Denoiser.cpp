@@ -166,17 +166,18 @@ void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
         featureRestartCount_ = tracer.restartCount();
     }
     // The feature program traces the scene as the path-tracing program does: the same includes,
-    // specialized the same way, and the same sampler, so sample i is the same camera ray.
-    const SamplerMode sampler = tracer.settings().sampler;
-    if (!featureProgram_ || featureProgramFeatures_ != tracer.features() || featureProgramSampler_ != sampler) {
+    // specialized the same way, and the same sampler, so sample i is the same camera ray and the
+    // same path through delta lobes.
+    const RenderSettings& settings = tracer.settings();
+    const FeatureProgramKey key{tracer.features(), settings.integrator, settings.sampler, settings.lightPaths};
+    if (!featureProgram_ || !(featureProgramKey_ == key)) {
         ShaderAssembler assembler(shaderDir_);
-        specializeShaders(assembler, tracer.features(), tracer.settings().integrator, sampler);
+        specializeShaders(assembler, key.features, key.integrator, key.sampler, DebugView::Radiance, key.lightPaths);
         featureProgram_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("denoise_features.frag"));
         featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", kPrevAlbedoDepthUnit); // the scene's units start at 3
         featureProgram_->bindSamplerUnit("uPrevNormal", kPrevNormalUnit);
         featureProgram_->bindSamplerUnit("uPrevEmission", kPrevEmissionUnit);
-        featureProgramFeatures_ = tracer.features();
-        featureProgramSampler_ = sampler;
+        featureProgramKey_ = key;
         featureSamples_ = 0;
         coverageSamples_ = 0;
     }

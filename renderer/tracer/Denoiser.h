@@ -12,6 +12,8 @@
 #include <ptview/gpu/ShaderFeatures.h>
 #include <ptview/io/Image.h>
 #include <ptview/settings/DenoiseSettings.h>
+#include <ptview/settings/Integrator.h>
+#include <ptview/settings/LightPaths.h>
 #include <ptview/settings/SamplerMode.h>
 
 #include <glm/glm.hpp>
@@ -141,9 +143,20 @@ private:
     int coverageSamplesThisPass() const;
 
     std::filesystem::path shaderDir_;
+    // What the feature program is specialized to, as the path-tracing program: the emission it
+    // separates must be what the path adds, under the same integrator and light-path view.
+    struct FeatureProgramKey {
+        ShaderFeatures features;
+        Integrator integrator = Integrator::Full;
+        SamplerMode sampler = SamplerMode::Random;
+        LightPaths lightPaths = LightPaths::All;
+        bool operator==(const FeatureProgramKey& other) const {
+            return features == other.features && integrator == other.integrator && sampler == other.sampler &&
+                   lightPaths == other.lightPaths;
+        }
+    };
     std::unique_ptr<GlProgram> featureProgram_;
-    ShaderFeatures featureProgramFeatures_;
-    SamplerMode featureProgramSampler_ = SamplerMode::Random;
+    FeatureProgramKey featureProgramKey_;
     std::unique_ptr<GlProgram> coverageZone_, prepare_, boundFireflies_, atrous_, regression_, bandwidthSelection_, compose_;
     GlVertexArray emptyVertexArray_;
 
