@@ -37,7 +37,9 @@ uniform bool uCoverage;
 layout(location = 0) out vec4 outAlbedoDepth; // sums: albedo rgb, distance (m); coverage run: albedo
                                               // rgb, camera rays traced
 layout(location = 1) out vec4 outNormal;      // sums: shading normal xyz, samples that met a surface
-                                              // (not the environment, not an emitter)
+                                              // (not the environment, not an emitter); coverage
+                                              // run: the emission's luminance squared (for the
+                                              // noise of its mean), 0, 0, 0
 layout(location = 2) out vec4 outEmission;    // sums: emission along the delta chain rgb, samples
                                               // whose light is all that emission
 
@@ -168,6 +170,7 @@ void main() {
     vec4 albedoDepth = vec4(0.0);
     vec4 normalSum = vec4(0.0);
     vec4 emission = vec4(0.0);
+    float emissionSquares = 0.0;
     if (uFrameIndex > 0u && !uCoverage) {
         albedoDepth = texelFetch(uPrevAlbedoDepth, ivec2(pixel), 0);
         normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
@@ -188,8 +191,9 @@ void main() {
         albedoDepth += vec4(albedo, uCoverage ? 1.0 : max(distance, 0.0));
         normalSum += vec4(normal, distance >= 0.0 ? 1.0 : 0.0);
         emission += vec4(emitted, onlyEmission ? 1.0 : 0.0);
+        emissionSquares += luminance(emitted) * luminance(emitted);
     }
     outAlbedoDepth = albedoDepth;
-    outNormal = normalSum;
+    outNormal = uCoverage ? vec4(emissionSquares, 0.0, 0.0, 0.0) : normalSum;
     outEmission = emission;
 }

@@ -26,6 +26,7 @@ uniform sampler2D uFeatureEmission;  // sums: emission along the delta chain rgb
                                      // light is all that emission
 uniform sampler2D uCoverageAlbedo;   // the coverage run's sums: albedo rgb, camera rays
 uniform sampler2D uCoverageEmission; // the coverage run's sums: emission along the delta chain rgb
+uniform sampler2D uCoverageEmissionSquares; // the coverage run's sum of that emission's luminance squared
 uniform float uInvFeatureCount;
 uniform float uFeatureCount;
 uniform bool uHasCoverage;
@@ -33,7 +34,8 @@ uniform bool uHasCoverage;
 layout(location = 0) out vec4 outIllumination; // demodulated mean rgb, variance of its luminance
 layout(location = 1) out vec4 outGuide;        // encodeOctahedral(normal), depth, depth per pixel
 layout(location = 2) out vec4 outAlbedo;       // what the filtered illumination is multiplied by
-layout(location = 3) out vec4 outEmission;     // what compose adds to that
+layout(location = 3) out vec4 outEmission;     // what compose adds to that rgb, the variance of its
+                                               // luminance (where it is the coverage run's mean)
 
 // Below this an albedo channel divides as this: black surfaces keep their (small) radiance
 // through the division and the multiplication back.
@@ -52,6 +54,7 @@ struct PixelSums {
     vec4 emission;
     vec4 coverageAlbedo;   // the coverage run's: albedo rgb, camera rays (0 where it did not run)
     vec4 coverageEmission;
+    float coverageEmissionSquares;
 };
 
 PixelSums readPixelSums(ivec2 p) {
@@ -63,6 +66,7 @@ PixelSums readPixelSums(ivec2 p) {
     s.emission = texelFetch(uFeatureEmission, p, 0);
     s.coverageAlbedo = uHasCoverage ? texelFetch(uCoverageAlbedo, p, 0) : vec4(0.0);
     s.coverageEmission = uHasCoverage ? texelFetch(uCoverageEmission, p, 0) : vec4(0.0);
+    s.coverageEmissionSquares = uHasCoverage ? texelFetch(uCoverageEmissionSquares, p, 0).r : 0.0;
     return s;
 }
 
@@ -207,9 +211,11 @@ void main() {
     if (emissionSeparable(s) && coverageRays(s) > 0.0) {
         vec3 coverageAlbedo = s.coverageAlbedo.rgb / coverageRays(s);
         outAlbedo = vec4(max(coverageAlbedo, vec3(kSmallestAlbedo)), 1.0);
-        outEmission = vec4(coverageEmission(s), 1.0);
+        float rays = coverageRays(s), meanLuminance = luminance(coverageEmission(s));
+        float variance = rays > 1.0 ? max(s.coverageEmissionSquares / rays - meanLuminance * meanLuminance, 0.0) / (rays - 1.0) : 0.0;
+        outEmission = vec4(coverageEmission(s), variance);
     } else {
         outAlbedo = vec4(albedoOf(s), 1.0);
-        outEmission = vec4(emissionOf(s), 1.0);
+        outEmission = vec4(emissionOf(s), 0.0);
     }
 }

@@ -15,7 +15,7 @@ namespace {
 // run's sums. The feature pass traces the scene, whose textures take units 3 and up, so its
 // previous sums take 0 to 2.
 constexpr int kSumUnit = 0, kCompensationUnit = 1, kSumSquaresUnit = 2, kFeatureAlbedoDepthUnit = 3, kFeatureNormalUnit = 4,
-              kFeatureEmissionUnit = 5, kCoverageAlbedoUnit = 6, kCoverageEmissionUnit = 7;
+              kFeatureEmissionUnit = 5, kCoverageAlbedoUnit = 6, kCoverageEmissionUnit = 7, kCoverageEmissionSquaresUnit = 8;
 // The firefly bound reads the sums (their counts) at their units and the prepare pass's illumination
 // after them.
 constexpr int kPreparedIlluminationUnit = 3;
@@ -85,6 +85,7 @@ Denoiser::Denoiser(const std::filesystem::path& shaderDir)
     prepare_->bindSamplerUnit("uFeatureEmission", kFeatureEmissionUnit);
     prepare_->bindSamplerUnit("uCoverageAlbedo", kCoverageAlbedoUnit);
     prepare_->bindSamplerUnit("uCoverageEmission", kCoverageEmissionUnit);
+    prepare_->bindSamplerUnit("uCoverageEmissionSquares", kCoverageEmissionSquaresUnit);
     boundFireflies_ = buildFilterProgram(shaderDir_, "denoise_bound_fireflies.frag");
     boundFireflies_->bindSamplerUnit("uIllumination", kPreparedIlluminationUnit);
     boundFireflies_->bindSamplerUnit("uSum", kSumUnit);
@@ -121,7 +122,8 @@ void Denoiser::resize(glm::ivec2 size) {
     }
     coverage_.albedoRays = createFloatTexture(size);
     coverage_.emission = createFloatTexture(size);
-    coverage_.framebuffer = createFramebufferOf({coverage_.albedoRays.id(), 0, coverage_.emission.id()});
+    coverage_.emissionSquares = createFloatTexture(size);
+    coverage_.framebuffer = createFramebufferOf({coverage_.albedoRays.id(), coverage_.emissionSquares.id(), coverage_.emission.id()});
     coverage_.stencil = createRenderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, coverage_.stencil.id());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
@@ -334,6 +336,7 @@ void Denoiser::drawPrepareRows(PathTracer& tracer, int rowBegin, int rowEnd) {
     bindTexture(kFeatureEmissionUnit, features.emission.id());
     bindTexture(kCoverageAlbedoUnit, coverage_.albedoRays.id());
     bindTexture(kCoverageEmissionUnit, coverage_.emission.id());
+    bindTexture(kCoverageEmissionSquaresUnit, coverage_.emissionSquares.id());
     glActiveTexture(GL_TEXTURE0);
     // Each pixel's sample count comes with its sums (the sum's alpha), whenever this band runs.
     glUniform1f(prepare_->uniformLocation("uInvFeatureCount"), featureSamples_ > 0 ? 1.0f / static_cast<float>(featureSamples_) : 0.0f);

@@ -101,7 +101,7 @@ private:
     // to them by blending, only where the stencil (written by the zone pass) is set.
     struct CoverageTarget {
         GlFramebuffer framebuffer;
-        GlTexture albedoRays, emission;
+        GlTexture albedoRays, emission, emissionSquares; // denoise_features.frag's sums in the coverage run
         GlRenderbuffer stencil;
     };
     static constexpr int kCoveragePasses = 2;     // the zone (the stencil), then the rays
