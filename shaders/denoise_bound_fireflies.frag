@@ -21,34 +21,21 @@ void main() {
     float variance = own.a;
     float luminanceP = luminance(illumination);
 
-    float neighbourSum = 0.0, neighbourSquares = 0.0, brightestNeighbour = 0.0;
+    Neighbourhood neighbours = noNeighbours();
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             if (dx == 0 && dy == 0) continue;
-            float l = luminance(texelFetch(uIllumination, clamp(p + ivec2(dx, dy), ivec2(0), last), 0).rgb);
-            neighbourSum += l;
-            neighbourSquares += l * l;
-            brightestNeighbour = max(brightestNeighbour, l);
+            addNeighbour(neighbours, luminance(texelFetch(uIllumination, clamp(p + ivec2(dx, dy), ivec2(0), last), 0).rgb));
         }
-    // The bound below leaves the brightest neighbour out: where a caustic sample lit two pixels
-    // side by side, each would otherwise raise the other's bound past itself (on dof two such
-    // pixels carried half of the denoised image's error, docs/denoising.md).
-    float othersMean = (neighbourSum - brightestNeighbour) / 7.0;
-    float othersSpread = sqrt(max((neighbourSquares - brightestNeighbour * brightestNeighbour) / 7.0 - othersMean * othersMean, 0.0));
 
     if (max(texelFetch(uSum, p, 0).a, 1.0) < kSamplesForOwnVariance) {
         // Too few samples: the spread of the 3x3 neighbourhood, the pixel included, stands in.
-        float sum = neighbourSum + luminanceP, squares = neighbourSquares + luminanceP * luminanceP;
+        float sum = neighbours.sum + luminanceP, squares = neighbours.squares + luminanceP * luminanceP;
         variance = max(squares / 9.0 - (sum / 9.0) * (sum / 9.0), 0.0);
     }
 
-    // A firefly: brighter than its neighbourhood by more than five of its spreads, and by no more
-    // than its own noise explains (three, the first choice, brought real detail down too: the
-    // spread of seven noisy neighbours is often small; docs/denoising.md). Brought down to that
-    // bound before filtering (biased, like any clamp; the bound rises and the own noise falls with
-    // the samples, so it stops applying as the image converges). A highlight that is really there
-    // has a small error of its own and stays.
-    float bound = othersMean + 5.0 * othersSpread;
-    if (luminanceP > bound && luminanceP - bound < 3.0 * sqrt(variance)) illumination *= bound / luminanceP;
+    // A firefly is brought down to the bound before filtering (biased, like any clamp).
+    float bound = fireflyBound(neighbours);
+    if (isFirefly(luminanceP, bound, variance)) illumination *= bound / luminanceP;
     outIllumination = vec4(illumination, variance);
 }

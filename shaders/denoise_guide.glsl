@@ -76,3 +76,36 @@ vec2 geometryWeights(vec4 guideP, vec4 guideQ, float offsetPixels, vec2 sigmaDep
 float luminanceWeightExponent(float luminanceP, float luminanceQ, float varianceP, float sigmaLuminance) {
     return abs(luminanceP - luminanceQ) / (sigmaLuminance * sqrt(max(varianceP, 0.0)) + 1e-10);
 }
+
+// The firefly bound (docs/denoising.md), from the luminances of a pixel's eight neighbours,
+// gathered by addNeighbour: their mean plus kFireflySpreads of their spread, the brightest left
+// out (where a caustic sample lit two pixels side by side, each would otherwise raise the other's
+// bound past itself: on dof two such pixels carried half of the denoised image's error). Five,
+// not the three first chosen: the spread of seven noisy neighbours is often small, and three
+// brought real detail down too.
+const float kFireflySpreads = 5.0;
+
+struct Neighbourhood {
+    float sum, squares, brightest;
+};
+
+Neighbourhood noNeighbours() { return Neighbourhood(0.0, 0.0, 0.0); }
+
+void addNeighbour(inout Neighbourhood n, float luminanceQ) {
+    n.sum += luminanceQ;
+    n.squares += luminanceQ * luminanceQ;
+    n.brightest = max(n.brightest, luminanceQ);
+}
+
+float fireflyBound(Neighbourhood n) {
+    float othersMean = (n.sum - n.brightest) / 7.0;
+    float othersSpread = sqrt(max((n.squares - n.brightest * n.brightest) / 7.0 - othersMean * othersMean, 0.0));
+    return othersMean + kFireflySpreads * othersSpread;
+}
+
+// A firefly: above the bound by no more than three standard deviations of its own noise. A
+// highlight that is really there has a small error of its own and stays; the bound rises and the
+// own noise falls with the samples, so it stops applying as the image converges.
+bool isFirefly(float luminanceP, float bound, float variance) {
+    return luminanceP > bound && luminanceP - bound < 3.0 * sqrt(variance);
+}
