@@ -129,9 +129,9 @@ float lightOnlySamples(PixelSums s) { return emissionSeparable(s) ? s.emission.a
 //
 // Where emission was taken out, of what is left: the sums less the emission's. Its sum of squares
 // is not summed, so it is taken as that of light-only samples all of one radiance (a lamp, a
-// constant sky: exact), the least it can be, so the variance left is the most it can be. Emission
-// on a surface sample (the helmet's glowing parts, a lamp in a varnish) is left in both sums, so
-// the variance there is of the whole samples, the most it can be.
+// constant sky: exact), the least it can be, so the variance left is the most it can be. Where no
+// sample's light is all emission, emission on surface samples (the helmet's glowing parts, a lamp
+// in a varnish) is left in both sums: the variance there is of the whole samples, again the most.
 float ownVariance(PixelSums s) {
     float n = sampleCount(s);
     vec3 sum = s.radiance.rgb;
