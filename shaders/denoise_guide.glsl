@@ -78,12 +78,9 @@ float luminanceWeightExponent(float luminanceP, float luminanceQ, float variance
 }
 
 // The firefly bound (docs/denoising.md), from the luminances of a pixel's eight neighbours,
-// gathered by addNeighbour: their mean plus kFireflySpreads of their spread, the brightest left
-// out (where a caustic sample lit two pixels side by side, each would otherwise raise the other's
-// bound past itself: on dof two such pixels carried half of the denoised image's error). Five,
-// not the three first chosen: the spread of seven noisy neighbours is often small, and three
-// brought real detail down too.
-const float kFireflySpreads = 5.0;
+// gathered by addNeighbour: their mean plus `spreads` of their spread, the brightest left out
+// (where a caustic sample lit two pixels side by side, each would otherwise raise the other's
+// bound past itself: on dof two such pixels carried half of the denoised image's error).
 
 struct Neighbourhood {
     float sum, squares, brightest;
@@ -97,10 +94,10 @@ void addNeighbour(inout Neighbourhood n, float luminanceQ) {
     n.brightest = max(n.brightest, luminanceQ);
 }
 
-float fireflyBound(Neighbourhood n) {
+float fireflyBound(Neighbourhood n, float spreads) {
     float othersMean = (n.sum - n.brightest) / 7.0;
     float othersSpread = sqrt(max((n.squares - n.brightest * n.brightest) / 7.0 - othersMean * othersMean, 0.0));
-    return othersMean + kFireflySpreads * othersSpread;
+    return othersMean + spreads * othersSpread;
 }
 
 // A firefly: above the bound by no more than three standard deviations of its own noise. A
