@@ -58,38 +58,21 @@ bool isPurelySpecular(Material material) {
     return false;
 }
 
-// The first vertex of a camera ray, shared by the features and the emission along the path (one
-// trace, one material lookup): in a scene with media, the first surface past null boundaries.
-struct FirstVertex {
-    bool found;
-    Hit hit;
-    Material material;
-};
-
-FirstVertex traceFirstVertex(Ray ray) {
-    FirstVertex first;
-    first.found = intersectSurface(ray, first.hit);
-    if (first.found) first.material = fetchSurfaceMaterial(first.hit.material, first.hit.uv);
-    return first;
-}
-
-// Albedo, normal and distance of one camera ray, whose first vertex is `first`; normal 0 and
-// distance -1 where it leaves the scene or meets an emitter (no surface: albedo 1, nothing to
-// demodulate).
-void sampleFeatures(Ray ray, FirstVertex first, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance) {
+// Albedo, normal and distance of one camera ray; normal 0 and distance -1 where it leaves the
+// scene or meets an emitter (no surface: albedo 1, nothing to demodulate).
+void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, out float distance) {
     vec3 tint = vec3(1.0);
     distance = 0.0;
-    bool found = first.found;
-    Hit hit = first.hit;
-    Material material = first.material;
     for (int bounce = 0; bounce <= kMaxDeltaBounces; ++bounce) {
-        if (!found) {
+        Hit hit;
+        if (!intersectSurface(ray, hit)) {
             albedo = tint;
             normal = vec3(0.0);
             distance = -1.0;
             return;
         }
         distance += hit.t;
+        Material material = fetchSurfaceMaterial(hit.material, hit.uv);
         if (material.type == kMaterialEmitter) {
             // An emitter's radiance, seen directly, has no noise to take out: like the
             // environment, it is no surface for the filter.
@@ -111,8 +94,6 @@ void sampleFeatures(Ray ray, FirstVertex first, Sampler sampler, out vec3 albedo
         if (bs.pdfSolidAngle == 0.0) return; // the surface itself, then
         tint *= bs.weight;
         ray = spawnRay(hit.posWorld, hit.normalGeom, toWorld(frame, bs.wiLocal));
-        found = intersectSurface(ray, hit);
-        if (found) material = fetchSurfaceMaterial(hit.material, hit.uv);
     }
 }
 
@@ -125,21 +106,20 @@ void sampleFeatures(Ray ray, FirstVertex first, Sampler sampler, out vec3 albedo
 // nothing else (no light sample where a lobe is not a delta, no scattering but delta ones), so the
 // sample's light is all this emission. In a scene with media the camera ray may scatter before it
 // gets anywhere: nothing is separated there (0, not only emission).
-vec3 emissionAlongDeltaChain(Ray cameraRay, FirstVertex first, Sampler sampler, out bool onlyEmission) {
+vec3 emissionAlongDeltaChain(Ray cameraRay, Sampler sampler, out bool onlyEmission) {
     onlyEmission = false;
     if (mediaInScene()) return vec3(0.0);
     onlyEmission = true;
     PathState path = startPath(cameraRay);
-    bool found = first.found;
-    Hit hit = first.hit;
-    Material material = first.material;
     for (int vertex = 0; vertex <= kMaxDeltaBounces; ++vertex) {
         int bounce = path.bounce;
-        if (!found) {
+        Hit hit;
+        if (!intersectScene(path.ray, hit)) {
             if (countsEmissionFoundAt(bounce))
                 addEmissionFound(path, environmentRadiance(path.ray.direction), uEnvironmentLight, kInfinity, vec3(0.0));
             return path.radiance;
         }
+        Material material = fetchSurfaceMaterial(hit.material, hit.uv);
         if (countsEmissionFoundAt(bounce)) {
             vec3 emitted = emittedRadiance(material, hit.normalGeom, -path.ray.direction);
             if (any(greaterThan(emitted, vec3(0.0)))) addEmissionFound(path, emitted, hit.light, hit.t, hit.normalGeom);
@@ -147,8 +127,9 @@ vec3 emissionAlongDeltaChain(Ray cameraRay, FirstVertex first, Sampler sampler, 
         if (bounce >= lastBounce() || material.type == kMaterialEmitter) return path.radiance;
         // A light sample finds nothing through delta lobes alone; elsewhere the path adds one here.
         if (samplesLights() && !isPurelySpecular(material)) onlyEmission = false;
-        if (!kDeltaLobeModels || !samplesBsdf()) {
-            onlyEmission = onlyEmission && !samplesBsdf();
+        if (!samplesBsdf()) return path.radiance; // `direct`: nothing after the light sample
+        if (!kDeltaLobeModels) {
+            onlyEmission = false; // the path scatters on, and by no delta lobe
             return path.radiance;
         }
         ShadingFrame frame = makeShadingFrame(hit.normalShading);
@@ -158,8 +139,6 @@ vec3 emissionAlongDeltaChain(Ray cameraRay, FirstVertex first, Sampler sampler, 
             return path.radiance;
         }
         if (playsRoulette(bounce) && !survivesRoulette(path, sampler, bounce)) return path.radiance;
-        found = intersectScene(path.ray, hit);
-        if (found) material = fetchSurfaceMaterial(hit.material, hit.uv);
     }
     onlyEmission = false; // the path goes on beyond the chain followed here
     return path.radiance;
@@ -181,10 +160,9 @@ void main() {
         Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
         vec3 albedo, normal;
         float distance;
-        FirstVertex first = traceFirstVertex(ray);
-        sampleFeatures(ray, first, sampler, albedo, normal, distance);
+        sampleFeatures(ray, sampler, albedo, normal, distance);
         bool onlyEmission;
-        vec3 emitted = emissionAlongDeltaChain(ray, first, sampler, onlyEmission);
+        vec3 emitted = emissionAlongDeltaChain(ray, sampler, onlyEmission);
         // A sample whose light is all emission has nothing to demodulate: albedo 0, its light is
         // all in the emission sums.
         if (onlyEmission) albedo = vec3(0.0);
