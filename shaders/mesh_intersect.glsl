@@ -3,8 +3,7 @@
 // moves into the mesh's object space (its direction is not renormalized, so t stays the world t)
 // and descends that mesh's own tree. Both trees are four wide (renderer/geometry/WideBvh.h): a
 // node holds its children's boxes, which one visit tests together; the children the ray enters
-// are taken nearest first, the others wait on a short explicit stack with their entry distances,
-// so that a hit found meanwhile drops them without reading them again. Shadow rays stop at the
+// are taken nearest first, the others wait on a short explicit stack. Shadow rays stop at the
 // first hit. A triangle whose material cuts it away there (alpha, surface_alpha.glsl) is no hit:
 // both walks go on past it.
 #include "constants.glsl"
@@ -122,12 +121,14 @@ vec2 triangleUv(int triangle, vec3 barycentric) {
     return barycentric.x * vec2(u0, v0) + barycentric.y * vec2(u1, v1U2V2.x) + barycentric.z * v1U2V2.yz;
 }
 
-// What both walks have still to visit, on one stack: per entry a child reference (see
-// childReference, its bits in x) and the distance at which the ray enters its box (y). An
-// instance's walk pushes above the entries of the top level's walk and pops back down to where it
+// What both walks have still to visit, on one stack of child references (see childReference). An
+// entry holds no entry distance: a hit found after the push cannot drop it unread, and its visit
+// then enters nothing, an iteration spent. Yet a distance was the dearer: llvmpipe writes a stack
+// entry lane by lane and component by component, and the second component cost more than the
+// iterations it saved (docs/performance.md, issue 35). An instance's walk pushes above the entries of the top level's walk and pops back down to where it
 // began. One global array rather than one passed to the functions, because GLSL copies array
 // parameters in and out: passing it made meshes render 4x slower on llvmpipe.
-vec2 bvhStack[2 * kBvhStackSize];
+int bvhStack[2 * kBvhStackSize];
 
 // A child as one integer: an inner node's index (>= 0), or a leaf as the complement of its
 // GpuBvhNode::child bits below kBvhLeafBit (first << 3 | count - 1), which is negative.
@@ -185,26 +186,20 @@ bool visitNode(MeshRay ray, float tBest, int node, out int reference, inout int 
     if (t0 == kInfinity) return false;
     // Every slot is written and only the entered ones kept: cheaper on llvmpipe than a masked
     // store each. The stack has room, since at most three go on per level.
-    bvhStack[stackSize] = vec2(intBitsToFloat(c3), t3);
+    bvhStack[stackSize] = c3;
     stackSize += t3 != kInfinity ? 1 : 0;
-    bvhStack[stackSize] = vec2(intBitsToFloat(c2), t2);
+    bvhStack[stackSize] = c2;
     stackSize += t2 != kInfinity ? 1 : 0;
-    bvhStack[stackSize] = vec2(intBitsToFloat(c1), t1);
+    bvhStack[stackSize] = c1;
     stackSize += t1 != kInfinity ? 1 : 0;
     return true;
 }
 
-// The top of the walk's part of the stack (above stackBottom), skipping what a hit found since it
-// was pushed has put out of reach (widened as visitNode's exits are). False when none is left.
-bool popReachable(float tBest, out int reference, inout int stackSize, int stackBottom) {
-    while (stackSize > stackBottom) {
-        vec2 entry = bvhStack[--stackSize];
-        if (entry.y <= tBest * 1.0000004) {
-            reference = floatBitsToInt(entry.x);
-            return true;
-        }
-    }
-    return false;
+// The top of the walk's part of the stack (above stackBottom). False when none is left.
+bool popStack(out int reference, inout int stackSize, int stackBottom) {
+    if (stackSize == stackBottom) return false;
+    reference = bvhStack[--stackSize];
+    return true;
 }
 
 // The nearest triangle of one instance closer than tBest (which it lowers), or, for anyHit, any
@@ -245,7 +240,7 @@ bool traverseInstance(int instance, Ray worldRay, inout float tBest, inout MeshH
                 found = true;
             }
         }
-        if (needPop && !popReachable(tBest, reference, stackSize, stackBottom)) return found;
+        if (needPop && !popStack(reference, stackSize, stackBottom)) return found;
     }
 }
 
@@ -272,7 +267,7 @@ bool traverseMeshes(Ray worldRay, inout float tBest, inout MeshHit best, bool an
                 }
             }
         }
-        if (!popReachable(tBest, reference, stackSize, 0)) return found;
+        if (!popStack(reference, stackSize, 0)) return found;
     }
 }
 
