@@ -10,6 +10,7 @@ error are interpolated (log-log) between the uniform renders. Times are the rend
 the machine and its load.
 
 usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.05,0.02,0.01] [--reference-spp 16384]
+       [--seed 2]   (the seed of the adaptive and uniform renders; the references keep theirs)
 """
 import math, os, re, subprocess, sys
 import numpy as np
@@ -49,6 +50,11 @@ def main():
         i = args.index('--reference-spp')
         reference_spp = int(args[i + 1])
         del args[i:i + 2]
+    render_seed = '2'
+    if '--seed' in args:
+        i = args.index('--seed')
+        render_seed = str(int(args[i + 1]))
+        del args[i:i + 2]
     ptview, outdir, size, scenes = args[0], args[1], args[2], args[3:]
     os.makedirs(outdir, exist_ok=True)
     print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
@@ -66,13 +72,13 @@ def main():
         true = lambda image: rel_mse(image, refs[0]) - floor
         adaptive = []
         for e in thresholds:
-            log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', '2')
+            log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', render_seed)
             mean_spp = float(re.search(r'spp min/mean/max \d+/([0-9.]+)/\d+', log).group(1))
             adaptive.append((e, seconds_of(log), mean_spp, true(read_pfm(f'{outdir}/{name}-adaptive.pfm'))))
         smallest = min(a[3] for a in adaptive)
         uniform, spp = [], 16
         while spp <= 65536:
-            log = render(ptview, scene, size, f'{outdir}/{name}-uniform.pfm', '--spp', str(spp), '--seed', '2')
+            log = render(ptview, scene, size, f'{outdir}/{name}-uniform.pfm', '--spp', str(spp), '--seed', render_seed)
             uniform.append((spp, seconds_of(log), true(read_pfm(f'{outdir}/{name}-uniform.pfm'))))
             if uniform[-1][2] < smallest / 1.5: break
             spp *= 2
