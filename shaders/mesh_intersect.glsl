@@ -121,13 +121,14 @@ vec2 triangleUv(int triangle, vec3 barycentric) {
     return barycentric.x * vec2(u0, v0) + barycentric.y * vec2(u1, v1U2V2.x) + barycentric.z * v1U2V2.yz;
 }
 
-// What both walks have still to visit, on one stack of child references (see childReference). An
-// entry holds no entry distance: a hit found after the push cannot drop it unread, and its visit
-// then enters nothing, an iteration spent. Yet a distance was the dearer: llvmpipe writes a stack
-// entry lane by lane and component by component, and the second component cost more than the
-// iterations it saved (docs/performance.md, issue 35). An instance's walk pushes above the entries of the top level's walk and pops back down to where it
-// began. One global array rather than one passed to the functions, because GLSL copies array
-// parameters in and out: passing it made meshes render 4x slower on llvmpipe.
+// What both walks have still to visit, on one stack of child references (see childReference).
+// An entry holds no entry distance: a hit found after the push cannot drop it unread, and its
+// visit then enters nothing, an iteration spent. Yet a distance was the dearer: llvmpipe writes
+// a stack entry lane by lane and component by component, and the second component cost more than
+// the iterations it saved (docs/performance.md, issue 35). An instance's walk pushes above the
+// entries of the top level's walk and pops back down to where it began. One global array rather
+// than one passed to the functions, because GLSL copies array parameters in and out: passing it
+// made meshes render 4x slower on llvmpipe.
 int bvhStack[2 * kBvhStackSize];
 
 // A child as one integer: an inner node's index (>= 0), or a leaf as the complement of its
