@@ -45,9 +45,9 @@ public:
             std::array<std::int8_t, kWideBvhWidth + 1> distributeSplit{};
             for (int j = 2; j <= kWideBvhWidth; ++j) {
                 distribute[j] = inf;
-                for (int l = 1; l < j; ++l) {
-                    const float c = cost_[left][l] + cost_[right][j - l];
-                    if (c < distribute[j]) { distribute[j] = c; distributeSplit[j] = static_cast<std::int8_t>(l); }
+                for (int leftSlots = 1; leftSlots < j; ++leftSlots) {
+                    const float c = cost_[left][leftSlots] + cost_[right][j - leftSlots];
+                    if (c < distribute[j]) { distribute[j] = c; distributeSplit[j] = static_cast<std::int8_t>(leftSlots); }
                 }
             }
             rootSplit_[k] = distributeSplit[kWideBvhWidth];
@@ -58,8 +58,9 @@ public:
             cost_[k][1] = one;
             split_[k][1] = 0;
             for (int i = 2; i <= kWideBvhWidth; ++i) {
-                if (distribute[i] < one) { cost_[k][i] = distribute[i]; split_[k][i] = distributeSplit[i]; }
-                else { cost_[k][i] = one; split_[k][i] = 0; }
+                const bool shared = distribute[i] < one;
+                cost_[k][i] = shared ? distribute[i] : one;
+                split_[k][i] = shared ? distributeSplit[i] : std::int8_t(0);
             }
         }
     }
@@ -69,9 +70,9 @@ public:
     // order), are the roots its subtree's best use of four slots names.
     std::uint32_t emit(std::uint32_t inner) {
         std::vector<std::uint32_t> roots;
-        const int l = rootSplit_[inner];
-        gather(inner + 1, l, roots);
-        gather(binary_.nodes[inner].firstOrRight, kWideBvhWidth - l, roots);
+        const int leftSlots = rootSplit_[inner];
+        gather(inner + 1, leftSlots, roots);
+        gather(binary_.nodes[inner].firstOrRight, kWideBvhWidth - leftSlots, roots);
         auto index = static_cast<std::uint32_t>(wide_.nodes.size());
         wide_.nodes.emplace_back();
         for (std::size_t c = 0; c < roots.size(); ++c) {
@@ -94,10 +95,13 @@ public:
 private:
     // The roots of k's subtree as at most i children, appended in depth-first order.
     void gather(std::uint32_t k, int i, std::vector<std::uint32_t>& roots) {
-        const int l = split_[k][i];
-        if (l == 0) { roots.push_back(k); return; }
-        gather(k + 1, l, roots);
-        gather(binary_.nodes[k].firstOrRight, i - l, roots);
+        const int leftSlots = split_[k][i];
+        if (leftSlots == 0) {
+            roots.push_back(k);
+            return;
+        }
+        gather(k + 1, leftSlots, roots);
+        gather(binary_.nodes[k].firstOrRight, i - leftSlots, roots);
     }
 
     const Bvh& binary_;
