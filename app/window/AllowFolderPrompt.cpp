@@ -9,34 +9,17 @@
 #include <optional>
 
 namespace ptview {
-namespace {
 
-// The answer a key gave while the question is up, and the key callback it displaced (ImGui's).
-// ImGui reads keys as held down at a frame's start; a key tapped while a frame draws (long, on a
-// software rasterizer under load) arrives pressed and released in one poll and never shows as
-// held, so the press is recorded here as it arrives. One question at a time.
-std::optional<bool> keyAnswer;
-GLFWkeyfun displacedKeyCallback = nullptr;
-
-void recordAnswerKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
-    if (action == GLFW_PRESS && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) keyAnswer = true;
-    if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) keyAnswer = false;
-    if (displacedKeyCallback) displacedKeyCallback(window, key, scancode, action, mods);
-}
-
-} // namespace
-
-bool askToAllowFolder(GLFWwindow* window, const std::string& question) {
+bool askToAllowFolder(GLFWwindow* window, const std::string& question,
+                      const std::function<std::vector<int>()>& takePressedKeys) {
     constexpr const char* kTitle = "Read a folder outside?";
     std::optional<bool> answer;
-    keyAnswer.reset();
-    displacedKeyCallback = glfwSetKeyCallback(window, recordAnswerKey);
+    takePressedKeys(); // keys pressed before the question are no answer to it
     while (!answer) {
         glfwWaitEventsTimeout(0.1);
         if (glfwWindowShouldClose(window)) {
             glfwSetWindowShouldClose(window, GLFW_FALSE); // this question only: the viewer decides next
-            answer = false;
-            break;
+            return false;
         }
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
@@ -62,9 +45,12 @@ bool askToAllowFolder(GLFWwindow* window, const std::string& question) {
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);
-        if (!answer) answer = keyAnswer;
+        for (int key : takePressedKeys()) {
+            if (answer) break;
+            if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) answer = true;
+            if (key == GLFW_KEY_ESCAPE) answer = false;
+        }
     }
-    glfwSetKeyCallback(window, displacedKeyCallback);
     return *answer;
 }
 

@@ -35,6 +35,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ptview {
@@ -1079,7 +1080,12 @@ int runViewer(const ViewerOptions& requested) {
                                      ", outside the folders a file from someone else may read.\n\nAllow ptview to read files in " +
                                      printableText(folder.string()) + " for this session?";
         printMessage("asking in the window whether to read " + folder.string());
-        if (!askToAllowFolder(window.get(), question)) {
+        auto takePressedKeys = [&inputEvents] {
+            std::vector<int> keys;
+            for (const KeyPress& press : std::exchange(inputEvents.pressedKeys, {})) keys.push_back(press.key);
+            return keys;
+        };
+        if (!askToAllowFolder(window.get(), question, takePressedKeys)) {
             printMessage("not allowed: " + folder.string() + " (--allow-dir DIR allows it)");
             return kExitBadInput;
         }
