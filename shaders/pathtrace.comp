@@ -6,6 +6,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform ivec2 uTileOrigin;
 uniform ivec2 uTileEnd;
+uniform uint uWorkGroupRowStride; // see renderer/tracer/WorkGroupOrder.h
 
 // The pixel of this invocation in its workgroup's 8x8 block: each run of 8 consecutive
 // invocations (a SIMD group on llvmpipe's AVX2) takes a block of 4x2 pixels, and four runs (a
@@ -20,7 +21,9 @@ ivec2 pixelInWorkGroup(uint invocation) {
 }
 
 void main() {
-    ivec2 pixel = uTileOrigin + ivec2(gl_WorkGroupID.xy * gl_WorkGroupSize.xy) + pixelInWorkGroup(gl_LocalInvocationIndex);
+    // Consecutive workgroups take rows spread over the tile (WorkGroupOrder.h).
+    uvec2 workGroup = uvec2(gl_WorkGroupID.x, (gl_WorkGroupID.y * uWorkGroupRowStride) % gl_NumWorkGroups.y);
+    ivec2 pixel = uTileOrigin + ivec2(workGroup * gl_WorkGroupSize.xy) + pixelInWorkGroup(gl_LocalInvocationIndex);
     if (any(greaterThanEqual(pixel, uTileEnd))) return;
     traceSamples(uvec2(pixel));
 }

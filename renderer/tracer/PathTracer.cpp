@@ -6,6 +6,7 @@
 #include <ptview/gl/FullScreenRows.h>
 #include <ptview/tracer/AdaptiveSampler.h>
 #include <ptview/tracer/DisplayViewGlsl.h>
+#include <ptview/tracer/WorkGroupOrder.h>
 #include <ptview/gpu/GlslEnums.h>
 #include <ptview/gpudata/GpuLayout.h>
 #include <ptview/probes/ProbePass.h>
@@ -89,6 +90,7 @@ PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) co
         Accumulator::bindImages(*trace.program, 0);
         trace.tileOrigin = trace.program->uniformLocation("uTileOrigin");
         trace.tileEnd = trace.program->uniformLocation("uTileEnd");
+        trace.workGroupRowStride = trace.program->uniformLocation("uWorkGroupRowStride");
     } else {
         trace.source = assembler.assemble("pathtrace.frag");
         trace.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), trace.source);
@@ -579,7 +581,9 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
         target.beginComputePass(kAccumulationUnit, 0);
         glUniform2i(trace.tileOrigin, 0, nextRow);
         glUniform2i(trace.tileEnd, size.x, endRow);
-        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((endRow - nextRow + 7) / 8), 1);
+        const int workGroupRows = (endRow - nextRow + 7) / 8;
+        glUniform1ui(trace.workGroupRowStride, static_cast<GLuint>(workGroupRowStride(workGroupRows)));
+        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>(workGroupRows), 1);
         // Later passes read these texels as textures, the display and read-backs as attachments.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     } else {

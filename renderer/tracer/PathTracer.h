@@ -252,6 +252,7 @@ private:
         AssembledShader source;
         GLint tileOrigin = -1; // compute only
         GLint tileEnd = -1;
+        GLint workGroupRowStride = -1;
     };
 
     DisplayProgram buildDisplayProgram(const OcioView* ocio) const;
