@@ -3,9 +3,9 @@
 namespace ptview {
 
 // The order in which the compute backend's workgroups take the rows of an image. llvmpipe hands
-// a dispatch's workgroups to its threads in contiguous runs (a first half to one thread, the rest
-// to the other on two), so in row order one thread gets the top of the image and another the
-// bottom, and a scene whose costly part (a mesh on the floor) lies in one half keeps one thread
+// a dispatch's workgroups, numbered row by row, to its threads in contiguous runs of workgroups /
+// threads each (Mesa's lp_cs_tpool.c), so in row order one of two threads gets the top of the
+// image and the other the bottom, and a scene whose costly part (a mesh on the floor) lies in one half keeps one thread
 // working alone at the end of every pass. Workgroup row y therefore renders image row
 // (y * stride) % rowCount (pathtrace.comp): with a stride coprime to rowCount every row is
 // rendered once, and near rowCount times the golden ratio's fractional part any run of
