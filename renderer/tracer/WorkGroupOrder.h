@@ -10,7 +10,8 @@ namespace ptview {
 // renders image row (y * stride) % rowCount (pathtrace.comp): with a stride coprime to rowCount
 // every row is rendered once, and with one near rowCount times the golden ratio's fractional part
 // any run of consecutive workgroups spreads over the whole image (docs/performance.md, issue 35).
-// GPUs, which schedule workgroups as they go, lose nothing by it.
+// GPUs schedule workgroups as they go and need no such order; that they lose nothing by it (rows
+// far apart running side by side share less of their cache) is not measured.
 int workGroupRowStride(int rowCount);
 
 } // namespace ptview
