@@ -91,6 +91,9 @@ PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) co
         trace.tileOrigin = trace.program->uniformLocation("uTileOrigin");
         trace.tileEnd = trace.program->uniformLocation("uTileEnd");
         trace.workGroupRowStride = trace.program->uniformLocation("uWorkGroupRowStride");
+        GLint workGroupSize[3] = {1, 1, 1}; // pathtrace.comp's local_size, so that the shader alone says it
+        glGetProgramiv(trace.program->id(), GL_COMPUTE_WORK_GROUP_SIZE, workGroupSize);
+        trace.workGroupSize = glm::ivec2(workGroupSize[0], workGroupSize[1]);
     } else {
         trace.source = assembler.assemble("pathtrace.frag");
         trace.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), trace.source);
@@ -581,9 +584,9 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
         target.beginComputePass(kAccumulationUnit, 0);
         glUniform2i(trace.tileOrigin, 0, nextRow);
         glUniform2i(trace.tileEnd, size.x, endRow);
-        const int workGroupRows = (endRow - nextRow + 7) / 8;
-        glUniform1ui(trace.workGroupRowStride, static_cast<GLuint>(workGroupRowStride(workGroupRows)));
-        glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>(workGroupRows), 1);
+        const glm::ivec2 workGroups = (glm::ivec2(size.x, endRow - nextRow) + trace.workGroupSize - 1) / trace.workGroupSize;
+        glUniform1ui(trace.workGroupRowStride, static_cast<GLuint>(workGroupRowStride(workGroups.y)));
+        glDispatchCompute(static_cast<GLuint>(workGroups.x), static_cast<GLuint>(workGroups.y), 1);
         // Later passes read these texels as textures, the display and read-backs as attachments.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     } else {

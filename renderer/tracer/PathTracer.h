@@ -253,6 +253,7 @@ private:
         GLint tileOrigin = -1; // compute only
         GLint tileEnd = -1;
         GLint workGroupRowStride = -1;
+        glm::ivec2 workGroupSize{1, 1};
     };
 
     DisplayProgram buildDisplayProgram(const OcioView* ocio) const;
