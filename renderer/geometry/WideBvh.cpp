@@ -1,6 +1,7 @@
 #include <ptview/geometry/WideBvh.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -69,14 +70,14 @@ public:
     // Its children, in the binary tree's depth-first order (so that leaves cover primitiveOrder in
     // order), are the roots its subtree's best use of four slots names.
     std::uint32_t emit(std::uint32_t inner) {
-        std::vector<std::uint32_t> roots;
+        Roots roots;
         const int leftSlots = rootSplit_[inner];
         gather(inner + 1, leftSlots, roots);
         gather(binary_.nodes[inner].firstOrRight, kWideBvhWidth - leftSlots, roots);
         auto index = static_cast<std::uint32_t>(wide_.nodes.size());
         wide_.nodes.emplace_back();
-        for (std::size_t c = 0; c < roots.size(); ++c) {
-            const std::uint32_t k = roots[c];
+        for (int c = 0; c < roots.count; ++c) {
+            const std::uint32_t k = roots.nodes[c];
             WideBvhChild child;
             child.bounds = boundsOf(binary_.nodes[k]);
             if (asLeaf_[k]) {
@@ -93,11 +94,17 @@ public:
     }
 
 private:
+    // A wide node's children as binary nodes: at most four, so no allocation per node.
+    struct Roots {
+        std::array<std::uint32_t, kWideBvhWidth> nodes{};
+        int count = 0;
+    };
+
     // The roots of k's subtree as at most i children, appended in depth-first order.
-    void gather(std::uint32_t k, int i, std::vector<std::uint32_t>& roots) {
+    void gather(std::uint32_t k, int i, Roots& roots) {
         const int leftSlots = split_[k][i];
         if (leftSlots == 0) {
-            roots.push_back(k);
+            roots.nodes[roots.count++] = k;
             return;
         }
         gather(k + 1, leftSlots, roots);
