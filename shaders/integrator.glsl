@@ -28,11 +28,18 @@
 // kIntegratorNaive, ...: generated from the C++ table (renderer/gpu/GlslEnums.cpp).
 #include "enums.glsl"
 
-// Scattering events before roulette may end a path. Later costs time per sample and saves
-// variance; on the Cornell box (docs/performance.md, issue 22) 4 instead of 3 took 1.12x the
-// time per sample for 0.92x, 0.86x and 0.81x the MSE at 16, 64 and 256 spp: roulette's noise is
-// plain Monte Carlo noise, which sobol's well-stratified first bounces leave exposed.
-const int kRussianRouletteStart = 4;
+// Russian roulette as particle transport's weight window: from kRussianRouletteStart scattering
+// events on, a path whose weight (its throughput's largest component) is below
+// kRouletteSurvivalWeight survives with probability weight / kRouletteSurvivalWeight and goes on
+// with exactly that weight. A path that has lost half its weight costs more than it is worth, and
+// a survivor never weighs more than 0.5 where roulette played: the rule this replaced (survive
+// with the weight itself, from the fourth event on) lifted survivors to 1, fireflies twice as
+// bright. On the bunny's Cornell box at 256x256 it takes 0.94x the time per sample for 0.88x to
+// 0.97x the variance (efficiency 1.11x, 1.15x, 1.20x at 16, 64, 256 spp); on the glass spheres'
+// box 1.35x at 64 spp (docs/performance.md, "Russian roulette as a weight window"). Starting
+// after the first, second or third event measured alike; weights of 1/4, 1/3, 2/3 and 1, worse.
+const int kRussianRouletteStart = 2;
+const float kRouletteSurvivalWeight = 0.5;
 
 // Shading normals bend the hemisphere a BSDF sees away from the true surface. A pair of directions
 // is used only when it is on the same sides of the surface for both normals; otherwise light
@@ -216,9 +223,11 @@ bool scatter(inout PathState path, Material material, ShadingFrame frame, Hit hi
     return true;
 }
 
-// Russian roulette after the sample of `bounce`: survive with the throughput's largest component.
+// Russian roulette after the sample of `bounce`: a weight below kRouletteSurvivalWeight survives
+// with probability weight / kRouletteSurvivalWeight.
 bool survivesRoulette(inout PathState path, Sampler sampler, int bounce) {
-    float survival = min(1.0, max(path.throughput.r, max(path.throughput.g, path.throughput.b)));
+    float weight = max(path.throughput.r, max(path.throughput.g, path.throughput.b));
+    float survival = min(1.0, weight / kRouletteSurvivalWeight);
     bool ended = samplerGet1D(sampler, russianRouletteDimension(bounce)) >= survival;
     recordRoulette(bounce, survival, ended);
     if (ended) return false;

@@ -106,26 +106,37 @@ INSTANTIATE_TEST_SUITE_P(Integrators, RecordedPaths,
                                            ReproduceCase{"spheres_full_roulette", "cornell_spheres", Integrator::Full, SamplerMode::Sobol, 8}),
                          [](const ::testing::TestParamInfo<ReproduceCase>& info) { return std::string(info.param.name); });
 
-// Roulette ends paths (full integrator, depth 8, from bounce 4 on) and a path that survives it
-// carries 1 / survival more: what the recorded throughputs say.
+// Roulette ends paths (full integrator, depth 8, from bounce 2 on) and is a weight window: a path
+// whose weight (largest throughput component) fell below 0.5 survives with probability weight /
+// 0.5 and goes on weighing exactly 0.5; one at 0.5 or more plays and always survives, unchanged.
+// What the recorded survival probabilities and throughputs say.
 TEST(RecordedPaths, RouletteEndsSomePathsAndReweightsTheSurvivors) {
     const Traced traced = renderAndRecord(scene("cornell"), settingsFor(Integrator::Full, SamplerMode::Random, 8), {32, 32}, 64, {{8, 28}});
-    int ended = 0, survived = 0;
+    const auto weight = [](glm::vec3 throughput) { return std::max(throughput.r, std::max(throughput.g, throughput.b)); };
+    int ended = 0, survivedWindow = 0, survivedWhole = 0;
     for (const RecordedPath& path : traced.paths[0])
-        for (const PathVertex& v : path.vertices) {
+        for (size_t i = 0; i < path.vertices.size(); ++i) {
+            const PathVertex& v = path.vertices[i];
+            if (v.kind == PathVertex::Kind::Surface && v.continued && i >= 2) EXPECT_TRUE(v.roulette) << "roulette from the second bounce on";
             if (!v.roulette) continue;
             ASSERT_GT(v.survival, 0.0f);
             ASSERT_LE(v.survival, 1.0f);
             if (v.rouletteEnded) {
                 ++ended;
+                EXPECT_LT(v.survival, 1.0f);
                 EXPECT_EQ(v.throughputOut, glm::vec3(0.0f));
                 EXPECT_EQ(&v, &path.vertices.back()) << "the path ends where roulette ended it";
+            } else if (v.survival < 1.0f) {
+                ++survivedWindow;
+                EXPECT_NEAR(weight(v.throughputOut), 0.5f, 1e-5f) << "a survivor goes on with the window's weight";
             } else {
-                ++survived;
+                ++survivedWhole;
+                EXPECT_GE(weight(v.throughputOut), 0.5f * (1.0f - 1e-6f)) << "only a weight below 0.5 is played for";
             }
         }
     EXPECT_GT(ended, 0);
-    EXPECT_GT(survived, 0);
+    EXPECT_GT(survivedWindow, 0);
+    EXPECT_GT(survivedWhole, 0);
 }
 
 double powerHeuristic(double chosen, double other) {
