@@ -106,19 +106,23 @@ INSTANTIATE_TEST_SUITE_P(Integrators, RecordedPaths,
                                            ReproduceCase{"spheres_full_roulette", "cornell_spheres", Integrator::Full, SamplerMode::Sobol, 8}),
                          [](const ::testing::TestParamInfo<ReproduceCase>& info) { return std::string(info.param.name); });
 
-// Roulette ends paths (full integrator, depth 8, from bounce 2 on) and is a weight window: a path
-// whose weight (largest throughput component) fell below 0.5 survives with probability weight /
-// 0.5 and goes on weighing exactly 0.5; one at 0.5 or more plays and always survives, unchanged.
-// What the recorded survival probabilities and throughputs say.
+// Roulette ends paths (full integrator, depth 8, from the fourth bounce on) and is a weight
+// window: a path whose weight (largest throughput component) fell below 0.5 survives with
+// probability weight / 0.5 and goes on weighing exactly 0.5; one at 0.5 or more (light that the
+// glass and the mirror pass on) plays and always survives, unchanged. What the recorded survival
+// probabilities and throughputs say.
 TEST(RecordedPaths, RouletteEndsSomePathsAndReweightsTheSurvivors) {
-    const Traced traced = renderAndRecord(scene("cornell"), settingsFor(Integrator::Full, SamplerMode::Random, 8), {32, 32}, 64, {{8, 28}});
+    const Traced traced = renderAndRecord(scene("cornell_spheres"), settingsFor(Integrator::Full, SamplerMode::Random, 8), {32, 32}, 64, {{8, 28}});
     const auto weight = [](glm::vec3 throughput) { return std::max(throughput.r, std::max(throughput.g, throughput.b)); };
     int ended = 0, survivedWindow = 0, survivedWhole = 0;
     for (const RecordedPath& path : traced.paths[0])
         for (size_t i = 0; i < path.vertices.size(); ++i) {
             const PathVertex& v = path.vertices[i];
-            if (v.kind == PathVertex::Kind::Surface && v.continued && i >= 2) EXPECT_TRUE(v.roulette) << "roulette from the second bounce on";
+            if (v.kind == PathVertex::Kind::Surface && v.continued && i >= 4) {
+                EXPECT_TRUE(v.roulette) << "played at vertex " << i;
+            }
             if (!v.roulette) continue;
+            EXPECT_GE(i, 4u) << "not before the fourth bounce";
             ASSERT_GT(v.survival, 0.0f);
             ASSERT_LE(v.survival, 1.0f);
             if (v.rouletteEnded) {
