@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include <sys/stat.h>
 
 namespace ptview {
@@ -115,6 +118,29 @@ TEST(ChooseBackend, MeasuresOnceThenRunsTheCachedDecision) {
     tracer.setSettings(settings);
     EXPECT_FALSE(tracer.chooseBackend(cache).fromCache);
     EXPECT_EQ(nlohmann::json::parse(testing::readFileBytes(path)).size(), 2u);
+}
+
+// A decision holds for the code it timed: the same scene and settings with a shader changed (an
+// upgraded ptview, an edited shaders/) are measured again, not run on the old decision.
+TEST(ChooseBackend, AChangedShaderIsMeasuredAgain) {
+    testing::glContext();
+    if (!PathTracer::computeSupported()) GTEST_SKIP() << "no OpenGL 4.3: fragment is the only backend";
+    testing::ScratchFiles files("backend_cache_shaders");
+    const std::filesystem::path folder = files.write("unused", "").parent_path();
+    const std::filesystem::path shaders = folder / "shaders";
+    std::filesystem::copy(PTVIEW_SHADER_DIR, shaders, std::filesystem::copy_options::recursive);
+    const BackendCache cache(folder / "backends.json");
+    auto choose = [&cache](const std::filesystem::path& shaderDir) {
+        PathTracer tracer(shaderDir);
+        tracer.setScene(loadScene(PTVIEW_ASSETS_DIR "/scenes/cornell.json"));
+        tracer.setImageSize({24, 16});
+        return tracer.chooseBackend(cache);
+    };
+    EXPECT_FALSE(choose(shaders).fromCache);
+    EXPECT_TRUE(choose(shaders).fromCache) << "the same shaders: the cached decision";
+    std::ofstream(shaders / "integrator.glsl", std::ios::app) << "\n// changed\n";
+    EXPECT_FALSE(choose(shaders).fromCache) << "integrator.glsl changed: measured again";
+    EXPECT_EQ(nlohmann::json::parse(testing::readFileBytes(folder / "backends.json")).size(), 2u);
 }
 
 } // namespace

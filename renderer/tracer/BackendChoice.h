@@ -37,7 +37,7 @@ inline constexpr double kComputeMargin = 1.1;
 BackendChoice decideBackend(const std::vector<BackendTiming>& rounds);
 
 // What identifies a decision: the OpenGL device and driver, and the program (its feature set,
-// integrator, sampler and view, as one text). The cache stores a hash of it with its text.
+// integrator, sampler and view, and both backends' assembled sources, as one text): a hash of it.
 std::string backendCacheKey(const std::string& device, const std::string& program);
 
 // $PTVIEW_BACKEND_CACHE if set (empty: no cache), else $XDG_CACHE_HOME/ptview/backends.json,

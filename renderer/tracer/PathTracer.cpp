@@ -80,9 +80,14 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio)
     return display;
 }
 
-PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) const {
+ShaderAssembler PathTracer::traceAssembler(const ProgramKey& key) const {
     ShaderAssembler assembler(shaderDir_);
     specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView, key.lightPaths);
+    return assembler;
+}
+
+PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) const {
+    const ShaderAssembler assembler = traceAssembler(key);
     TraceProgram trace;
     if (key.backend == Backend::Compute) {
         trace.source = assembler.assemble("pathtrace.comp");
@@ -165,9 +170,13 @@ BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     }
     const std::string device = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", " +
                                reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    // A decision holds for the code it timed: the key takes both backends' programs as assembled,
+    // so another ptview's shaders, or an edited shaders/, are measured again.
+    const ShaderAssembler assembler = traceAssembler(programKey_);
     const std::string program = programKey_.features.describe() + integratorName(programKey_.integrator) + " " +
                                 samplerModeName(programKey_.sampler) + " " + debugViewName(programKey_.debugView) + " " +
-                                lightPathsName(programKey_.lightPaths);
+                                lightPathsName(programKey_.lightPaths) + "\n" + assembler.assemble("pathtrace.frag").source +
+                                "\n" + assembler.assemble("pathtrace.comp").source;
     const std::string key = backendCacheKey(device, program);
     std::optional<BackendChoice> choice = cache.find(key);
     if (!choice) {

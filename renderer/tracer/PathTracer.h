@@ -257,6 +257,7 @@ private:
     };
 
     DisplayProgram buildDisplayProgram(const OcioView* ocio) const;
+    ShaderAssembler traceAssembler(const ProgramKey& key) const; // the shaders specialized for key
     TraceProgram buildTraceProgram(const ProgramKey& key) const;
     TraceProgram& useTraceProgram(); // compiles on first use; attaches the scene to it
     // The scene's and the environment map's samplers and uniform locations, looked up in program.
