@@ -8,16 +8,18 @@ uniform ivec2 uTileOrigin;
 uniform ivec2 uTileEnd;
 uniform uint uWorkGroupRowStride; // see renderer/tracer/WorkGroupOrder.h
 
-// The pixel of this invocation in its workgroup's 8x8 block: each run of 8 consecutive
-// invocations (a SIMD group on llvmpipe's AVX2) takes a block of 4x2 pixels, and four runs (a
-// 32-wide warp) one of 8x4, rather than a row of 8 or 32. Rays from pixels close together stay
+// The pixel of this invocation in its workgroup's block (a width a multiple of 4, a height of 2):
+// each run of 8 consecutive invocations (a SIMD group on llvmpipe's AVX2) takes a block of 4x2
+// pixels, runs side by side across the workgroup's width, and four runs of an 8-wide workgroup
+// (a 32-wide warp) take 8x4, rather than a row of 8 or 32. Rays from pixels close together stay
 // closer together and walk more of the same nodes: a SIMD group waits for its slowest ray, and
 // a 4x2 block cut instructions per pass by 1.3% on cornell_bunny and 3.0% on helmet against rows
 // (docs/performance.md, issue 35).
 ivec2 pixelInWorkGroup(uint invocation) {
+    uint runsPerRow = gl_WorkGroupSize.x / 4u;
     uint run = invocation / 8u;
     uint lane = invocation % 8u;
-    return ivec2((run % 2u) * 4u + lane % 4u, (run / 2u) * 2u + lane / 4u);
+    return ivec2((run % runsPerRow) * 4u + lane % 4u, (run / runsPerRow) * 2u + lane / 4u);
 }
 
 void main() {

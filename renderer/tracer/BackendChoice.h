@@ -36,8 +36,8 @@ struct BackendChoice {
 inline constexpr double kComputeMargin = 1.1;
 BackendChoice decideBackend(const std::vector<BackendTiming>& rounds);
 
-// What identifies a decision: the OpenGL device and driver, and the program (its feature set,
-// integrator, sampler and view, and both backends' assembled sources, as one text): a hash of it.
+// What identifies a decision: the OpenGL device and driver, and the program (both backends'
+// assembled sources, which carry its feature set, integrator, sampler and view): a hash of them.
 std::string backendCacheKey(const std::string& device, const std::string& program);
 
 // $PTVIEW_BACKEND_CACHE if set (empty: no cache), else $XDG_CACHE_HOME/ptview/backends.json,

@@ -170,13 +170,11 @@ BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     }
     const std::string device = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", " +
                                reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    // A decision holds for the code it timed: the key takes both backends' programs as assembled,
-    // so another ptview's shaders, or an edited shaders/, are measured again.
+    // A decision holds for the code it timed: the key is both backends' programs as assembled (the
+    // feature set, integrator, sampler and view are constants in them), so another ptview's
+    // shaders, or an edited shaders/, are measured again.
     const ShaderAssembler assembler = traceAssembler(programKey_);
-    const std::string program = programKey_.features.describe() + integratorName(programKey_.integrator) + " " +
-                                samplerModeName(programKey_.sampler) + " " + debugViewName(programKey_.debugView) + " " +
-                                lightPathsName(programKey_.lightPaths) + "\n" + assembler.assemble("pathtrace.frag").source +
-                                "\n" + assembler.assemble("pathtrace.comp").source;
+    const std::string program = assembler.assemble("pathtrace.frag").source + "\n" + assembler.assemble("pathtrace.comp").source;
     const std::string key = backendCacheKey(device, program);
     std::optional<BackendChoice> choice = cache.find(key);
     if (!choice) {
