@@ -1,14 +1,14 @@
-// Anti-aliasing where the camera sees the edge of an emitting surface. A pixel across a lamp's
-// outline is part bright, part dark: whether its camera ray finds the emission is a coin toss, far
-// more variance than any light reflected in the image. On the bunny's Cornell box at 256x256 and
-// 64 spp the emission the camera sees directly held half of the image's variance, nearly all of it
-// in the 0.17% of pixels along the light's edge. In such a pixel a sample estimates the emission
-// the camera sees directly as the mean over its own camera ray and kEdgeCameraRays more through the
+// Anti-aliasing where the camera sees an edge of emission. A pixel across the edge of an emitter
+// (or of a bright environment behind a silhouette) is part bright, part dark: whether its camera
+// ray finds the emission is a coin toss, far more variance than any light reflected in the image.
+// On the bunny's Cornell box at 256x256 and 64 spp the pixels along the light's edge, 1.2% of the
+// image, held half of its squared error. In such a pixel a sample estimates the emission the
+// camera sees directly as the mean over its own camera ray and kEdgeCameraRays more through the
 // pixel (and the lens); the rest of the path is the camera ray's, as everywhere else. An edge ray
 // needs only a nearest hit and its emission, no shading.
 //
-// A pixel is on an emission edge when the emission of the surfaces its four corners' pinhole rays
-// meet differs by more than 2:1. Its first pass decides, from rays that are none of its samples', so
+// A pixel is on an emission edge when the emission seen along its four corners' pinhole rays
+// differs by more than 2:1. Its first pass decides, from rays that are none of its samples', so
 // the choice does not depend on what the samples find and every sample's estimate stays unbiased
 // (docs/sampling.md, "Emission edges"); the pixel's sums keep the decision for its later passes
 // (accumulate_sum.glsl). Missed: an emitter that passes between the corners (smaller than a
@@ -40,14 +40,8 @@ float surfaceEmissionAlong(Ray ray) {
     return luminance(emittedRadiance(fetchSurfaceMaterial(hit.material, hit.uv), hit.normalGeom, -ray.direction));
 }
 
-// Lights of these kinds are the emitting surfaces; a program for a scene without any compiles
-// the edge rays out (light_kinds.glsl is generated per program).
-bool sceneHasEmittingSurfaces() {
-    return hasLightKind(kLightQuad) || hasLightKind(kLightSphere) || hasLightKind(kLightDisk) || hasLightKind(kLightTriangle);
-}
-
 bool cornersSeeEmissionEdge(uvec2 pixel) {
-    if (!sceneHasEmittingSurfaces() || mediaInScene()) return false;
+    if (mediaInScene()) return false;
     float dimmest = kInfinity, brightest = 0.0;
     for (int corner = 0; corner < 4; ++corner) {
         vec2 filmPos = vec2(pixel) + vec2(corner & 1, corner >> 1);
@@ -62,7 +56,6 @@ bool cornersSeeEmissionEdge(uvec2 pixel) {
 // adaptive sampling too): on a condition the same for every pixel llvmpipe skips the corners'
 // code in later passes, where a per-pixel condition would run it for nothing.
 bool pixelOnEmissionEdge(uvec2 pixel) {
-    if (!sceneHasEmittingSurfaces()) return false;
     bool onEdge;
     if (uFrameIndex == 0u) onEdge = cornersSeeEmissionEdge(pixel);
     else onEdge = storedOnEmissionEdge(ivec2(pixel));
@@ -84,22 +77,19 @@ vec3 edgeRayEmission(uvec2 pixel, uint ray) {
            (lightPathWeight(0, startPathHistory(), false) * cameraEmissionWeight(true));
 }
 
-// The edge rays' share of `samples` samples from firstSample on (0 for a pixel off the edges): their
-// sum, and the sum of their squares. One loop over all the pass's rays rather than one per sample:
-// a SIMD group runs a loop's body at least once even when none of its pixels is on an edge, and
-// that once is then per pass. (A sample's edge rays kept apart, to pair each with its path in the
-// sums of squares, cost the materials scene 5% more instructions, its array read in every
-// iteration of the path loop; the pass's sums are paired instead, pathtrace_sample.glsl.)
-void traceEdgeRays(uvec2 pixel, uint firstSample, uint samples, out vec3 sum, out vec3 sumSquares) {
-    sum = vec3(0.0);
-    sumSquares = vec3(0.0);
-    vec3 sampleEmission = vec3(0.0);
-    for (uint ray = 0u; ray < samples * kEdgeCameraRays; ++ray) {
-        sampleEmission += edgeRayEmission(pixel, firstSample * kEdgeCameraRays + ray);
-        if (ray % kEdgeCameraRays == kEdgeCameraRays - 1u) {
-            sum += sampleEmission;
-            sumSquares += sampleEmission * sampleEmission;
-            sampleEmission = vec3(0.0);
-        }
-    }
+// What the edge rays add to each sample of a chunk of a pass: a sample's value is its path's
+// radiance plus its entry, so that the sums of squares (the pixel's noise) pair them exactly and a
+// pass of 16 samples adds what 16 passes of one do. Global, as bvhStack is: GLSL copies array
+// parameters in and out.
+const uint kEdgeChunkSamples = 16u;
+vec3 edgeEmissionOfSample[kEdgeChunkSamples];
+
+// Fills edgeEmissionOfSample for `samples` (at most kEdgeChunkSamples) samples from firstSample on,
+// 0 where a pixel takes no edge rays (samples 0). One loop over all their rays rather than one per
+// sample: a SIMD group runs a loop's body at least once even when none of its pixels is on an edge,
+// and that once is then per chunk, not per sample.
+void traceEdgeRays(uvec2 pixel, uint firstSample, uint samples) {
+    for (uint s = 0u; s < kEdgeChunkSamples; ++s) edgeEmissionOfSample[s] = vec3(0.0);
+    for (uint ray = 0u; ray < samples * kEdgeCameraRays; ++ray)
+        edgeEmissionOfSample[ray / kEdgeCameraRays] += edgeRayEmission(pixel, firstSample * kEdgeCameraRays + ray);
 }

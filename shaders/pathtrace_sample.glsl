@@ -36,23 +36,21 @@ void traceSamples(uvec2 pixel) {
     } else {
         onEmissionEdge = pixelOnEmissionEdge(pixel);
         float cameraWeight = cameraEmissionWeight(onEmissionEdge);
-        vec3 edgeSum, edgeSumSquares;
-        traceEdgeRays(pixel, sampleIndex, onEmissionEdge ? uSamplesPerPass : 0u, edgeSum, edgeSumSquares);
-        PathState path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
-        for (;;) {
-            if (extendPath(path, sampler)) continue;
-            sum += path.radiance;
-            sumSquares += path.radiance * path.radiance;
-            if (++sampleIndex == endIndex) break;
-            path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
+        // In chunks of kEdgeChunkSamples, for the edge rays' sake: one chunk unless adaptive
+        // sampling gives a pass more samples.
+        for (uint chunkStart = sampleIndex; chunkStart < endIndex; chunkStart += kEdgeChunkSamples) {
+            uint chunkEnd = min(chunkStart + kEdgeChunkSamples, endIndex);
+            traceEdgeRays(pixel, chunkStart, onEmissionEdge ? chunkEnd - chunkStart : 0u);
+            PathState path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
+            for (;;) {
+                if (extendPath(path, sampler)) continue;
+                vec3 value = path.radiance + edgeEmissionOfSample[sampleIndex - chunkStart];
+                sum += value;
+                sumSquares += value * value;
+                if (++sampleIndex == chunkEnd) break;
+                path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
+            }
         }
-        // A sample is its path plus its edge rays, whose random numbers are apart: the cross term
-        // of the squares, 2 x (a path) x (its edge rays), is taken as the pass's paths times its
-        // edge rays over the samples, as for independent samples. Unbiased, but where passes end
-        // changes it: on emission edges a pass of 16 samples reports not quite the variance 16
-        // passes of one do (PathTracer.SeveralSamplesPerPassAreTheSamplesOfSinglePasses).
-        sumSquares += edgeSumSquares + 2.0 * sum * edgeSum / float(uSamplesPerPass);
-        sum += edgeSum;
     }
     accumulateSamples(ivec2(pixel), sum, sumSquares, uSamplesPerPass, onEmissionEdge);
 }
