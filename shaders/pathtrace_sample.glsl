@@ -5,7 +5,6 @@
 #include "sampler.glsl"
 #include "camera.glsl"
 #include "integrator.glsl"
-#include "emission_edges.glsl"
 #include "specialization.glsl"
 #include "debug_view.glsl"
 
@@ -17,7 +16,7 @@
 // longest path at every sample; this way a group waits once, for its longest total.
 void traceSamples(uvec2 pixel) {
     if (!pixelTakesSamples(ivec2(pixel))) {
-        accumulateSamples(ivec2(pixel), vec3(0.0), vec3(0.0), 0u, false);
+        accumulateSamples(ivec2(pixel), vec3(0.0), vec3(0.0), 0u);
         return;
     }
     vec3 sum = vec3(0.0);
@@ -25,7 +24,6 @@ void traceSamples(uvec2 pixel) {
     Sampler sampler;
     uint sampleIndex = accumulatedSampleCount(ivec2(pixel));
     uint endIndex = sampleIndex + uSamplesPerPass;
-    bool onEmissionEdge = false;
     // kDebugView is a constant of the program: the branch not taken is compiled out.
     if (kDebugView != kDebugViewRadiance) {
         for (; sampleIndex < endIndex; ++sampleIndex) {
@@ -34,23 +32,14 @@ void traceSamples(uvec2 pixel) {
             sumSquares += value * value;
         }
     } else {
-        onEmissionEdge = pixelOnEmissionEdge(pixel);
-        float cameraWeight = cameraEmissionWeight(onEmissionEdge);
-        // In chunks of kEdgeChunkSamples, for the edge rays' sake: one chunk unless adaptive
-        // sampling gives a pass more samples.
-        for (uint chunkStart = sampleIndex; chunkStart < endIndex; chunkStart += kEdgeChunkSamples) {
-            uint chunkEnd = min(chunkStart + kEdgeChunkSamples, endIndex);
-            traceEdgeRays(pixel, chunkStart, onEmissionEdge ? chunkEnd - chunkStart : 0u);
-            PathState path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
-            for (;;) {
-                if (extendPath(path, sampler)) continue;
-                vec3 value = path.radiance + edgeEmissionOfSample[sampleIndex - chunkStart];
-                sum += value;
-                sumSquares += value * value;
-                if (++sampleIndex == chunkEnd) break;
-                path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
-            }
+        PathState path = startPath(generatePixelRay(pixel, sampleIndex, sampler));
+        for (;;) {
+            if (extendPath(path, sampler)) continue;
+            sum += path.radiance;
+            sumSquares += path.radiance * path.radiance;
+            if (++sampleIndex == endIndex) break;
+            path = startPath(generatePixelRay(pixel, sampleIndex, sampler));
         }
     }
-    accumulateSamples(ivec2(pixel), sum, sumSquares, uSamplesPerPass, onEmissionEdge);
+    accumulateSamples(ivec2(pixel), sum, sumSquares, uSamplesPerPass);
 }
