@@ -26,6 +26,7 @@
 #include "microfacet.glsl"
 #include "media.glsl"
 #include "integrator.glsl"
+#include "emission_edges.glsl"
 
 uniform sampler2D uPrevAlbedoDepth;
 uniform sampler2D uPrevNormal;
@@ -105,12 +106,13 @@ void sampleFeatures(Ray ray, Sampler sampler, out vec3 albedo, out vec3 normal, 
 // features, glass reflects here where the path's sample reflected. `onlyEmission`: the path added
 // nothing else (no light sample where a lobe is not a delta, no scattering but delta ones), so the
 // sample's light is all this emission. In a scene with media the camera ray may scatter before it
-// gets anywhere: nothing is separated there (0, not only emission).
-vec3 emissionAlongDeltaChain(Ray cameraRay, Sampler sampler, out bool onlyEmission) {
+// gets anywhere: nothing is separated there (0, not only emission). cameraEmissionWeight: the
+// path's (emission_edges.glsl).
+vec3 emissionAlongDeltaChain(Ray cameraRay, Sampler sampler, float cameraEmissionWeight, out bool onlyEmission) {
     onlyEmission = false;
     if (mediaInScene()) return vec3(0.0);
     onlyEmission = true;
-    PathState path = startPath(cameraRay);
+    PathState path = startPath(cameraRay, cameraEmissionWeight);
     for (int vertex = 0; vertex <= kMaxDeltaBounces; ++vertex) {
         int bounce = path.bounce;
         Hit hit;
@@ -155,6 +157,11 @@ void main() {
         normalSum = texelFetch(uPrevNormal, ivec2(pixel), 0);
         emission = texelFetch(uPrevEmission, ivec2(pixel), 0);
     }
+    // On an emission edge the render's samples take the emission their camera ray meets from it and
+    // its edge rays (emission_edges.glsl): so do these, sample for sample (the same corners decide,
+    // here in every pass, since these sums keep no decision). The coverage run's rays stay plain.
+    bool onEdge = false;
+    if (!uCoverage && edgeRaysPay()) onEdge = cornersSeeEmissionEdge(pixel);
     for (uint i = 0u; i < uSamplesPerPass; ++i) {
         Sampler sampler;
         Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
@@ -162,7 +169,9 @@ void main() {
         float distance;
         sampleFeatures(ray, sampler, albedo, normal, distance);
         bool onlyEmission;
-        vec3 emitted = emissionAlongDeltaChain(ray, sampler, onlyEmission);
+        vec3 emitted = emissionAlongDeltaChain(ray, sampler, cameraEmissionWeight(onEdge), onlyEmission);
+        for (uint k = 0u; onEdge && k < kEdgeCameraRays; ++k)
+            emitted += edgeRayEmission(pixel, (uFrameIndex + i) * kEdgeCameraRays + k);
         // A sample whose light is all emission has nothing to demodulate: albedo 0, its light is
         // all in the emission sums.
         if (onlyEmission) albedo = vec3(0.0);

@@ -144,11 +144,17 @@ struct PathState {
     bool previousDelta;       // the camera ray counts as delta: nothing else could find it
     PathHistory history;      // for the light-path views (light_paths.glsl)
     MediumStack media;        // the media the ray is in (media.glsl)
+    float cameraEmissionWeight; // of the emission the camera ray itself finds: below 1 where
+                                // more camera rays share that estimate (emission_edges.glsl)
 };
 
-PathState startPath(Ray cameraRay) {
+PathState startPath(Ray cameraRay, float cameraEmissionWeight) {
     return PathState(cameraRay, 0, vec3(0.0), vec3(1.0), cameraRay.origin, 0.0, true, startPathHistory(),
-                     cameraMediumStack());
+                     cameraMediumStack(), cameraEmissionWeight);
+}
+
+PathState startPath(Ray cameraRay) {
+    return startPath(cameraRay, 1.0);
 }
 
 // ---- What each integrator does ------------------------------------------------------------------
@@ -191,7 +197,7 @@ void addEmissionFound(inout PathState path, vec3 emitted, int light, float hitDi
                  : emissionWeight(light, path.previousPos, path.ray.direction, hitDistance, hitNormal, path.previousPdf);
     recordEmissionWeight(bounce, weight, emitted);
     weight *= lightPathWeight(bounce, path.history, bounce > 0);
-    vec3 added = clampContribution(path.throughput * emitted * weight);
+    vec3 added = clampContribution(path.throughput * emitted * weight) * (bounce == 0 ? path.cameraEmissionWeight : 1.0);
     recordEmission(bounce, added);
     path.radiance += added;
 }

@@ -6,3 +6,4 @@
 #define kSamplerMode uSamplerMode
 #define kDebugView 0u
 #define kLightPaths 0u
+const bool kEdgeRays = true; // emission_edges.glsl

@@ -891,5 +891,119 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, AreaLight,
                          ::testing::Combine(::testing::ValuesIn(kAreaLights), ::testing::ValuesIn(kAreaLightConfigs)),
                          areaLightName);
 
+// ---- Emission edges -----------------------------------------------------------------------------
+// shaders/emission_edges.glsl: in a pixel across an emitter's edge, a sample estimates the emission
+// the camera sees from its own camera ray and more through the pixel. A square lamp faces the
+// camera head-on over a black background, so at depth 0 a pixel's exact value is the lamp's
+// radiance times the share of the pixel the square covers. Its edges cross pixels at 0.2 and 0.8.
+
+struct LampInView {
+    Scene scene;
+    double left, right, bottom, top; // the square on the film, in pixels
+};
+
+LampInView squareLampInView() {
+    LampInView view;
+    Scene& scene = view.scene;
+    scene.environment = glm::vec3(0.0f);
+    scene.camera.eye = {0.0f, 0.0f, 3.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.vfovDeg = 20.0f;
+    scene.camera.resolution = {24, 24};
+    scene.materials.push_back(Material{});
+    scene.materials.push_back(lampEmitter());
+    Shape lamp;
+    lamp.type = ShapeType::Quad;
+    lamp.center = glm::vec3(0.0f);
+    const float halfSide = 0.3f;
+    lamp.u = {halfSide, 0.0f, 0.0f};
+    lamp.v = {0.0f, halfSide, 0.0f}; // cross(u, v) = +z: toward the camera
+    lamp.material = 1;
+    scene.shapes.push_back(lamp);
+    // Film position of a point in the plane z = 0 (shaders/camera.glsl): ndc = x / (d tan(fov/2)).
+    const double ndc = halfSide / (3.0 * std::tan(glm::radians(10.0)));
+    view.left = view.bottom = (1.0 - ndc) * 0.5 * 24.0;
+    view.right = view.top = (1.0 + ndc) * 0.5 * 24.0;
+    return view;
+}
+
+double coveredShare(const LampInView& view, int x, int y) {
+    double width = std::max(0.0, std::min(x + 1.0, view.right) - std::max(double(x), view.left));
+    double height = std::max(0.0, std::min(y + 1.0, view.top) - std::max(double(y), view.bottom));
+    return width * height;
+}
+
+bool acrossAnEdge(const LampInView& view, int x, int y) {
+    double share = coveredShare(view, x, y);
+    return share > 0.0 && share < 1.0;
+}
+
+TEST(EmissionEdges, PixelsAcrossTheEdgeAverageTheLampOverTheShareTheyCover) {
+    LampInView view = squareLampInView();
+    for (SamplerMode sampler : kUnbiasedSamplers) {
+        RenderConfig config{Integrator::Full, sampler, 0};
+        PixelStatistics stats = render(view.scene, config, 64, 45);
+        // The edge pixels' mean difference from the exact value, against its standard error.
+        glm::dvec3 differenceSum(0.0), varianceSum(0.0), expectedSum(0.0);
+        int edgePixels = 0;
+        for (int y = 0; y < 24; ++y)
+            for (int x = 0; x < 24; ++x) {
+                if (!acrossAnEdge(view, x, y)) continue;
+                glm::dvec3 expected = glm::dvec3(kLampRadiance) * coveredShare(view, x, y);
+                differenceSum += glm::dvec3(stats.mean.at(x, y)) - expected;
+                varianceSum += glm::dvec3(stats.varianceOfMean.at(x, y));
+                expectedSum += expected;
+                ++edgePixels;
+            }
+        ASSERT_EQ(edgePixels, 4 * 12 + 4) << "twelve pixels along each side, and the four corners";
+        for (int c = 0; c < 3; ++c) {
+            double tolerance = kSigmas * std::sqrt(varianceSum[c]) + kFloatSlack * expectedSum[c];
+            EXPECT_LE(std::abs(differenceSum[c]), tolerance)
+                << config.name() << " channel " << c << ": the edge pixels sum to " << differenceSum[c] + expectedSum[c]
+                << ", exactly " << expectedSum[c];
+        }
+        expectEveryPixel(stats, [&](int x, int y) { return coveredShare(view, x, y) == 1.0; }, kLampRadiance,
+                         config.name() + " inside the lamp");
+        expectEveryPixel(stats, [&](int x, int y) { return coveredShare(view, x, y) == 0.0; }, glm::vec3(0.0f),
+                         config.name() + " beside the lamp");
+    }
+}
+
+// With independent random numbers one camera ray gives a sample of an edge pixel the variance
+// L^2 c (1 - c) (c the share covered); the camera ray and the edge rays together, weighted alike,
+// 1 / (1 + kEdgeCameraRays) of it: 0.2 with four edge rays. The variance the renderer reports must
+// show it, and agree with the spread between renders, from the second pass on too (the decision is
+// kept with the pixel's sums, and these renders take one sample a pass).
+TEST(EmissionEdges, EdgeRaysCutTheVarianceOfPixelsAcrossTheEdge) {
+    LampInView view = squareLampInView();
+    RenderConfig config{Integrator::Full, SamplerMode::Random, 0};
+    const int samples = 256, renders = 6;
+    std::vector<PixelStatistics> runs;
+    for (int k = 0; k < renders; ++k) runs.push_back(render(view.scene, config, samples, 46 + k));
+    double reported = 0.0, oneCameraRay = 0.0, spread = 0.0;
+    int edgePixels = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x) {
+            if (!acrossAnEdge(view, x, y)) continue;
+            double share = coveredShare(view, x, y);
+            oneCameraRay += kLampRadiance.r * kLampRadiance.r * share * (1.0 - share) / samples;
+            double mean = 0.0;
+            for (const PixelStatistics& run : runs) mean += run.mean.at(x, y).r / renders;
+            for (const PixelStatistics& run : runs) {
+                reported += run.varianceOfMean.at(x, y).r / renders;
+                spread += (run.mean.at(x, y).r - mean) * (run.mean.at(x, y).r - mean) / (renders - 1);
+            }
+            ++edgePixels;
+        }
+    std::printf("emission edges: reported variance / one camera ray's %.3f, spread between renders / reported %.3f "
+                "(%d pixels)\n", reported / oneCameraRay, spread / reported, edgePixels);
+    // 1 without edge rays, 1/25 if the edge rays' variance were left out of the sums of squares.
+    EXPECT_GT(reported / oneCameraRay, 0.14);
+    EXPECT_LT(reported / oneCameraRay, 0.28);
+    // The spread has 52 x 5 degrees of freedom: a relative standard deviation of 0.09.
+    EXPECT_GT(spread / reported, 0.7);
+    EXPECT_LT(spread / reported, 1.3);
+}
+
 } // namespace
 } // namespace ptview

@@ -185,6 +185,7 @@ struct ProgramChoices {
     DebugView view;
     LightPaths lightPaths;
     bool recordsPaths; // the path recorder's program (renderer/tracer/PathRecorder.cpp)
+    bool edgeRays;     // emission_edges.glsl traces its edge rays (gpudata/PassSize.h)
 };
 
 // An include that a program without its feature takes from a variant declaring the same functions
@@ -214,7 +215,8 @@ std::string generateSpecialization(const ProgramChoices& program) {
            "const uint kIntegrator = " + std::string(integratorNames().entry(program.integrator).glslConstant) + ";\n" +
            "const uint kSamplerMode = " + samplerModeNames().entry(program.sampler).glslConstant + ";\n" +
            "const uint kDebugView = " + debugViewNames().entry(program.view).glslConstant + ";\n" +
-           "const uint kLightPaths = " + lightPathsNames().entry(program.lightPaths).glslConstant + ";\n";
+           "const uint kLightPaths = " + lightPathsNames().entry(program.lightPaths).glslConstant + ";\n" +
+           "const bool kEdgeRays = " + (program.edgeRays ? "true" : "false") + ";\n";
 }
 
 void specialize(ShaderAssembler& assembler, const ProgramChoices& program) {
@@ -243,13 +245,13 @@ void specializeBsdfs(ShaderAssembler& assembler, const ShaderFeatures& features)
 }
 
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
-                       SamplerMode sampler, DebugView view, LightPaths lightPaths) {
-    specialize(assembler, ProgramChoices{features, integrator, sampler, view, lightPaths, false});
+                       SamplerMode sampler, DebugView view, LightPaths lightPaths, bool edgeRays) {
+    specialize(assembler, ProgramChoices{features, integrator, sampler, view, lightPaths, false, edgeRays});
 }
 
 void specializePathRecorder(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
                             SamplerMode sampler, LightPaths lightPaths) {
-    specialize(assembler, ProgramChoices{features, integrator, sampler, DebugView::Radiance, lightPaths, true});
+    specialize(assembler, ProgramChoices{features, integrator, sampler, DebugView::Radiance, lightPaths, true, true});
 }
 
 } // namespace ptview

@@ -25,7 +25,7 @@ namespace ptview {
 // (kIncludeVariants in ShaderFeatures.cpp; the path recorder's hooks are always empty here).
 void specializeShaders(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,
                        SamplerMode sampler, DebugView view = DebugView::Radiance,
-                       LightPaths lightPaths = LightPaths::All);
+                       LightPaths lightPaths = LightPaths::All, bool edgeRays = true);
 // The same for the path recorder's program (path_record.frag): the radiance view, with the
 // recording hooks of path_recorder.glsl.
 void specializePathRecorder(ShaderAssembler& assembler, const ShaderFeatures& features, Integrator integrator,

@@ -171,10 +171,10 @@ void Denoiser::prepareFeatureProgram(PathTracer& tracer) {
     // specialized the same way, and the same sampler, so sample i is the same camera ray and the
     // same path through delta lobes.
     const RenderSettings& settings = tracer.settings();
-    const FeatureProgramKey key{tracer.features(), settings.integrator, settings.sampler, settings.lightPaths};
+    const FeatureProgramKey key{tracer.features(), settings.integrator, settings.sampler, settings.lightPaths, tracer.edgeRays()};
     if (!featureProgram_ || !(featureProgramKey_ == key)) {
         ShaderAssembler assembler(shaderDir_);
-        specializeShaders(assembler, key.features, key.integrator, key.sampler, DebugView::Radiance, key.lightPaths);
+        specializeShaders(assembler, key.features, key.integrator, key.sampler, DebugView::Radiance, key.lightPaths, key.edgeRays);
         featureProgram_ = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("denoise_features.frag"));
         featureProgram_->bindSamplerUnit("uPrevAlbedoDepth", kPrevAlbedoDepthUnit); // the scene's units start at 3
         featureProgram_->bindSamplerUnit("uPrevNormal", kPrevNormalUnit);

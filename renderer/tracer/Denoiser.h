@@ -150,9 +150,10 @@ private:
         Integrator integrator = Integrator::Full;
         SamplerMode sampler = SamplerMode::Random;
         LightPaths lightPaths = LightPaths::All;
+        bool edgeRays = true; // the path-tracing program's (PathTracer::edgeRays)
         bool operator==(const FeatureProgramKey& other) const {
             return features == other.features && integrator == other.integrator && sampler == other.sampler &&
-                   lightPaths == other.lightPaths;
+                   lightPaths == other.lightPaths && edgeRays == other.edgeRays;
         }
     };
     std::unique_ptr<GlProgram> featureProgram_;

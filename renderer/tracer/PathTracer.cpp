@@ -45,8 +45,8 @@ void resetPassState() {
 
 bool PathTracer::ProgramKey::operator<(const ProgramKey& other) const {
     if (features != other.features) return features < other.features;
-    return std::tie(integrator, sampler, debugView, lightPaths, backend) <
-           std::tie(other.integrator, other.sampler, other.debugView, other.lightPaths, other.backend);
+    return std::tie(integrator, sampler, debugView, lightPaths, backend, edgeRays) <
+           std::tie(other.integrator, other.sampler, other.debugView, other.lightPaths, other.backend, other.edgeRays);
 }
 
 PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio) const {
@@ -82,7 +82,7 @@ PathTracer::DisplayProgram PathTracer::buildDisplayProgram(const OcioView* ocio)
 
 ShaderAssembler PathTracer::traceAssembler(const ProgramKey& key) const {
     ShaderAssembler assembler(shaderDir_);
-    specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView, key.lightPaths);
+    specializeShaders(assembler, key.features, key.integrator, key.sampler, key.debugView, key.lightPaths, key.edgeRays);
     return assembler;
 }
 
@@ -143,6 +143,7 @@ void PathTracer::updateProgramKey() {
     programKey_.debugView = settings_.debugView;
     programKey_.lightPaths = settings_.lightPaths;
     programKey_.backend = backend_;
+    programKey_.edgeRays = edgeRays();
 }
 
 const AssembledShader& PathTracer::pathTraceSource() {
@@ -308,6 +309,7 @@ void PathTracer::setImageSize(glm::ivec2 size) {
     accumulator_.resize(size);
     nextRow_ = 0;
     resizePreview();
+    updateProgramKey();
     ++restartCount_;
 }
 
@@ -395,7 +397,7 @@ void PathTracer::updateFrameUniforms(glm::ivec2 size, int firstSample, int sampl
 std::vector<glm::vec4> PathTracer::runSurfaceProbe(glm::vec2 filmPos, int outputSet) {
     if (!surfaceProbe_ || surfaceProbe_->features != programKey_.features) {
         ShaderAssembler assembler(shaderDir_);
-        specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler);
+        specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler, DebugView::Radiance, LightPaths::All, programKey_.edgeRays);
         SurfaceProbe probe;
         probe.features = programKey_.features;
         probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("surface_probe.frag"));

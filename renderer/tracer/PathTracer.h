@@ -4,6 +4,7 @@
 // that tone maps the running mean. Used as-is by the headless renderer and the viewer; it needs
 // a current OpenGL 4.1+ core context.
 
+#include <ptview/gpudata/PassSize.h>
 #include <ptview/tracer/Accumulator.h>
 #include <ptview/tracer/BackendChoice.h>
 #include <ptview/tracer/Denoiser.h>
@@ -103,8 +104,10 @@ public:
     // million paths, short enough on a software rasterizer (docs/performance.md, "Measurements
     // behind code comments").
     int samplesPerPass() const;
-    static constexpr int kPixelSamplesPerPass = 1 << 20;
-    static constexpr int kMaxSamplesPerPass = 16;
+    // Whether the program traces edge rays (shaders/emission_edges.glsl): where a pass takes at
+    // least kEdgeRaysMinSamplesPerPass samples. A constant of the program, since llvmpipe runs their
+    // loop masked in every pass of a program that has it (docs/performance.md, "Light edges").
+    bool edgeRays() const { return samplesPerPass() >= kEdgeRaysMinSamplesPerPass; }
     // Part of a sample: the next rowCount rows (or fewer, at the top) of the pass in progress, so
     // that a slow GPU can spread one pass over several displayed frames. The new sums become
     // visible (sampleCount() grows) when the pass's last row is done; returns whether it was.
@@ -239,6 +242,7 @@ private:
         DebugView debugView = DebugView::Radiance;
         LightPaths lightPaths = LightPaths::All;
         Backend backend = Backend::Fragment;
+        bool edgeRays = true; // edgeRays()
         bool operator<(const ProgramKey& other) const;
     };
     struct SurfaceProbe {

@@ -1,0 +1,114 @@
+// Anti-aliasing where the camera sees the edge of an emitting surface. A pixel across a lamp's
+// outline is part bright, part dark: whether its camera ray finds the emission is a coin toss, far
+// more variance than any light reflected in the image. On the bunny's Cornell box at 256x256 and
+// 64 spp the emission the camera sees directly held half of the image's variance, nearly all of it
+// in the 0.17% of pixels along the light's edge. In such a pixel a sample estimates the emission
+// the camera sees directly as the mean over its own camera ray and kEdgeCameraRays more through the
+// pixel (and the lens); the rest of the path is the camera ray's, as everywhere else. An edge ray
+// needs only a nearest hit and its emission, no shading.
+//
+// A pixel is on an emission edge when the emission of the surfaces its four corners' pinhole rays
+// meet differs by more than 2:1. Its first pass decides, from rays that are none of its samples', so
+// the choice does not depend on what the samples find and every sample's estimate stays unbiased
+// (docs/sampling.md, "Emission edges"); the pixel's sums keep the decision for its later passes
+// (accumulate_sum.glsl). Missed: an emitter that passes between the corners (smaller than a
+// pixel); those pixels keep the plain estimate. Scenes with media are left out: through a medium
+// the camera sees less than the first surface's emission.
+#include "accumulate_sum.glsl"
+#include "camera.glsl"
+#include "integrator.glsl"
+
+const uint kEdgeCameraRays = 4u;
+const uint kEdgeRaySeed = 0x2545f491u; // the edge rays' random numbers are none of the paths'
+
+// Emission the camera sees along `ray`: the first surface's, or the environment's where the ray
+// meets nothing.
+vec3 emissionSeenAlong(Ray ray) {
+    Hit hit;
+    if (!intersectScene(ray, hit)) return environmentRadiance(ray.direction);
+    return emittedRadiance(fetchSurfaceMaterial(hit.material, hit.uv), hit.normalGeom, -ray.direction);
+}
+
+// The corners look for emitting surfaces only: against the environment the other side of an edge
+// is a surface lit by that environment, and there the plain estimate is the better one (a white
+// sphere under a uniform sky is exactly as bright as the sky in every sample, silhouette included,
+// which edge rays would turn into noise). Measured on the helmet and the outdoor hdr scene:
+// silhouettes against the sky gained nothing and cost 10-20% of the time.
+float surfaceEmissionAlong(Ray ray) {
+    Hit hit;
+    if (!intersectScene(ray, hit)) return 0.0;
+    return luminance(emittedRadiance(fetchSurfaceMaterial(hit.material, hit.uv), hit.normalGeom, -ray.direction));
+}
+
+// Lights of these kinds are the emitting surfaces; a program for a scene without any compiles
+// the edge rays out (light_kinds.glsl is generated per program).
+bool sceneHasEmittingSurfaces() {
+    return hasLightKind(kLightQuad) || hasLightKind(kLightSphere) || hasLightKind(kLightDisk) || hasLightKind(kLightTriangle);
+}
+
+// Edge rays are traced by programs for images whose passes take several samples per pixel
+// (kEdgeRays, a constant of the program: PathTracer::edgeRays). llvmpipe runs the loop of a pass's
+// edge rays once for every SIMD group, masked, whether or not one of its pixels is on an edge, even
+// behind a condition the same for every pixel: in a pass of one sample that is a camera ray per
+// sample, which cost the Cornell box 25% of its samples per second at 1280x720.
+bool edgeRaysPay() {
+    return kEdgeRays && sceneHasEmittingSurfaces();
+}
+
+bool cornersSeeEmissionEdge(uvec2 pixel) {
+    if (mediaInScene()) return false;
+    float dimmest = kInfinity, brightest = 0.0;
+    for (int corner = 0; corner < 4; ++corner) {
+        vec2 filmPos = vec2(pixel) + vec2(corner & 1, corner >> 1);
+        float seen = surfaceEmissionAlong(generatePinholeRay(filmPos));
+        dimmest = min(dimmest, seen);
+        brightest = max(brightest, seen);
+    }
+    return brightest > 2.0 * dimmest;
+}
+
+// Whether the pass's samples take edge rays. A pixel's first samples are those of frame 0 (with
+// adaptive sampling too): on a condition the same for every pixel llvmpipe skips the corners'
+// code in later passes, where a per-pixel condition would run it for nothing.
+bool pixelOnEmissionEdge(uvec2 pixel) {
+    bool onEdge = false;
+    if (!edgeRaysPay()) return onEdge;
+    if (uFrameIndex == 0u) onEdge = cornersSeeEmissionEdge(pixel);
+    else onEdge = storedOnEmissionEdge(ivec2(pixel));
+    return onEdge;
+}
+
+// Weight of the emission a path's own camera ray finds: one of 1 + kEdgeCameraRays rays on an edge.
+float cameraEmissionWeight(bool onEdge) {
+    return onEdge ? 1.0 / float(1u + kEdgeCameraRays) : 1.0;
+}
+
+// Edge ray `ray` of the pixel, weighted. The rays are numbered on across the pixel's samples
+// (sample s has rays s * kEdgeCameraRays ...), so that all of a pixel's edge rays are one
+// well-spread sequence of their own.
+vec3 edgeRayEmission(uvec2 pixel, uint ray) {
+    Sampler sampler = createSampler(pixel, ray, uSeed ^ kEdgeRaySeed, kSamplerMode, uSampleBudget * kEdgeCameraRays);
+    Ray cameraRay = generateCameraRay(vec2(pixel) + samplerGet2D(sampler, kDimensionCamera), sampler);
+    return clampContribution(emissionSeenAlong(cameraRay)) *
+           (lightPathWeight(0, startPathHistory(), false) * cameraEmissionWeight(true));
+}
+
+// The edge rays' share of `samples` samples from firstSample on (0 for a pixel off the edges): their
+// sum, and the sum of their squares. One loop over all the pass's rays rather than one per sample:
+// a SIMD group runs a loop's body at least once even when none of its pixels is on an edge, and
+// that once is then per pass. (A sample's edge rays kept apart, to pair each with its path in the
+// sums of squares, cost the materials scene 5% more instructions, its array read in every
+// iteration of the path loop; the pass's sums are paired instead, pathtrace_sample.glsl.)
+void traceEdgeRays(uvec2 pixel, uint firstSample, uint samples, out vec3 sum, out vec3 sumSquares) {
+    sum = vec3(0.0);
+    sumSquares = vec3(0.0);
+    vec3 sampleEmission = vec3(0.0);
+    for (uint ray = 0u; ray < samples * kEdgeCameraRays; ++ray) {
+        sampleEmission += edgeRayEmission(pixel, firstSample * kEdgeCameraRays + ray);
+        if (ray % kEdgeCameraRays == kEdgeCameraRays - 1u) {
+            sum += sampleEmission;
+            sumSquares += sampleEmission * sampleEmission;
+            sampleEmission = vec3(0.0);
+        }
+    }
+}
