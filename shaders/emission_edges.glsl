@@ -21,23 +21,20 @@
 const uint kEdgeCameraRays = 4u;
 const uint kEdgeRaySeed = 0x2545f491u; // the edge rays' random numbers are none of the paths'
 
+// Whether `ray` meets a surface, and the emission that surface sends back along it.
+bool surfaceEmissionAlong(Ray ray, out vec3 emitted) {
+    Hit hit;
+    emitted = vec3(0.0);
+    if (!intersectScene(ray, hit)) return false;
+    emitted = emittedRadiance(fetchSurfaceMaterial(hit.material, hit.uv), hit.normalGeom, -ray.direction);
+    return true;
+}
+
 // Emission the camera sees along `ray`: the first surface's, or the environment's where the ray
 // meets nothing.
 vec3 emissionSeenAlong(Ray ray) {
-    Hit hit;
-    if (!intersectScene(ray, hit)) return environmentRadiance(ray.direction);
-    return emittedRadiance(fetchSurfaceMaterial(hit.material, hit.uv), hit.normalGeom, -ray.direction);
-}
-
-// The corners look for emitting surfaces only: against the environment the other side of an edge
-// is a surface lit by that environment, and there the plain estimate is the better one (a white
-// sphere under a uniform sky is exactly as bright as the sky in every sample, silhouette included,
-// which edge rays would turn into noise). Measured on the helmet and the outdoor hdr scene:
-// silhouettes against the sky gained nothing and cost 10-20% of the time.
-float surfaceEmissionAlong(Ray ray) {
-    Hit hit;
-    if (!intersectScene(ray, hit)) return 0.0;
-    return luminance(emittedRadiance(fetchSurfaceMaterial(hit.material, hit.uv), hit.normalGeom, -ray.direction));
+    vec3 emitted;
+    return surfaceEmissionAlong(ray, emitted) ? emitted : environmentRadiance(ray.direction);
 }
 
 // Lights of these kinds are the emitting surfaces; a program for a scene without any compiles
@@ -55,12 +52,19 @@ bool edgeRaysPay() {
     return kEdgeRays && sceneHasEmittingSurfaces();
 }
 
+// The corners look for emitting surfaces only: against the environment the other side of an edge
+// is a surface lit by that environment, and there the plain estimate is the better one (a white
+// sphere under a uniform sky is exactly as bright as the sky in every sample, silhouette included,
+// which edge rays would turn into noise). Measured on the helmet and the outdoor hdr scene:
+// silhouettes against the sky gained nothing and cost 10-20% of the time.
 bool cornersSeeEmissionEdge(uvec2 pixel) {
     if (mediaInScene()) return false;
     float dimmest = kInfinity, brightest = 0.0;
     for (int corner = 0; corner < 4; ++corner) {
         vec2 filmPos = vec2(pixel) + vec2(corner & 1, corner >> 1);
-        float seen = surfaceEmissionAlong(generatePinholeRay(filmPos));
+        vec3 emitted;
+        surfaceEmissionAlong(generatePinholeRay(filmPos), emitted);
+        float seen = luminance(emitted);
         dimmest = min(dimmest, seen);
         brightest = max(brightest, seen);
     }

@@ -36,8 +36,8 @@ void traceSamples(uvec2 pixel) {
     } else {
         onEmissionEdge = pixelOnEmissionEdge(pixel);
         float cameraWeight = cameraEmissionWeight(onEmissionEdge);
-        vec3 edgeSum = vec3(0.0), edgeSumSquares = vec3(0.0);
-        if (edgeRaysPay()) traceEdgeRays(pixel, sampleIndex, onEmissionEdge ? uSamplesPerPass : 0u, edgeSum, edgeSumSquares);
+        vec3 edgeSum, edgeSumSquares; // a program without edge rays folds them to 0 (edgeRaysPay)
+        traceEdgeRays(pixel, sampleIndex, onEmissionEdge ? uSamplesPerPass : 0u, edgeSum, edgeSumSquares);
         PathState path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
         for (;;) {
             if (extendPath(path, sampler)) continue;

@@ -397,7 +397,7 @@ void PathTracer::updateFrameUniforms(glm::ivec2 size, int firstSample, int sampl
 std::vector<glm::vec4> PathTracer::runSurfaceProbe(glm::vec2 filmPos, int outputSet) {
     if (!surfaceProbe_ || surfaceProbe_->features != programKey_.features) {
         ShaderAssembler assembler(shaderDir_);
-        specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler, DebugView::Radiance, LightPaths::All, programKey_.edgeRays);
+        specializeShaders(assembler, programKey_.features, programKey_.integrator, programKey_.sampler);
         SurfaceProbe probe;
         probe.features = programKey_.features;
         probe.program = std::make_unique<GlProgram>(assembler.assemble("fullscreen.vert"), assembler.assemble("surface_probe.frag"));
