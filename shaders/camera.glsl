@@ -21,10 +21,14 @@ Ray generateCameraRay(vec2 filmPos, Sampler sampler) {
     return refractThroughLens(generatePinholeRay(filmPos), sampler);
 }
 
-// The camera ray of a pixel's sample sampleIndex, and the sampler its path goes on with: a
-// position inside the pixel (a box filter one pixel wide), then the lens.
+// The camera ray of the pixel's sample that `sampler` numbers: a position inside the pixel (a box
+// filter one pixel wide), then the lens.
+Ray generatePixelRay(uvec2 pixel, Sampler sampler) {
+    return generateCameraRay(vec2(pixel) + samplerGet2D(sampler, kDimensionCamera), sampler);
+}
+
+// The camera ray of a pixel's sample sampleIndex, and the sampler its path goes on with.
 Ray generatePixelRay(uvec2 pixel, uint sampleIndex, out Sampler sampler) {
     sampler = createSampler(pixel, sampleIndex, uSeed, kSamplerMode, uSampleBudget);
-    vec2 filmPos = vec2(pixel) + samplerGet2D(sampler, kDimensionCamera);
-    return generateCameraRay(filmPos, sampler);
+    return generatePixelRay(pixel, sampler);
 }

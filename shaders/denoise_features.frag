@@ -112,7 +112,7 @@ vec3 emissionAlongDeltaChain(Ray cameraRay, Sampler sampler, float cameraEmissio
     onlyEmission = false;
     if (mediaInScene()) return vec3(0.0);
     onlyEmission = true;
-    PathState path = startPath(cameraRay, cameraEmissionWeight);
+    PathState path = startPath(cameraRay, cameraEmissionWeight, false);
     for (int vertex = 0; vertex <= kMaxDeltaBounces; ++vertex) {
         int bounce = path.bounce;
         Hit hit;

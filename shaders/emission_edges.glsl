@@ -44,10 +44,10 @@ bool sceneHasEmittingSurfaces() {
 }
 
 // Edge rays are traced by programs for images whose passes take several samples per pixel
-// (kEdgeRays, a constant of the program: PathTracer::edgeRays). llvmpipe runs the loop of a pass's
-// edge rays once for every SIMD group, masked, whether or not one of its pixels is on an edge, even
-// behind a condition the same for every pixel: in a pass of one sample that is a camera ray per
-// sample, which cost the Cornell box 25% of its samples per second at 1280x720.
+// (kEdgeRays, a constant of the program: PathTracer::edgeRays). The path loop traces them
+// (pathtrace_sample.glsl), and llvmpipe runs each line of it for a whole SIMD group: in a pass of
+// one sample, the corners of the first pass and the choice of each next camera ray cost the
+// Cornell box 15% of its samples per second at 1280x720 (docs/sampling.md, "Emission edges").
 bool edgeRaysPay() {
     return kEdgeRays && sceneHasEmittingSurfaces();
 }
@@ -87,32 +87,21 @@ float cameraEmissionWeight(bool onEdge) {
     return onEdge ? 1.0 / float(1u + kEdgeCameraRays) : 1.0;
 }
 
-// Edge ray `ray` of the pixel, weighted. The rays are numbered on across the pixel's samples
-// (sample s has rays s * kEdgeCameraRays ...), so that all of a pixel's edge rays are one
-// well-spread sequence of their own.
-vec3 edgeRayEmission(uvec2 pixel, uint ray) {
-    Sampler sampler = createSampler(pixel, ray, uSeed ^ kEdgeRaySeed, kSamplerMode, uSampleBudget * kEdgeCameraRays);
-    Ray cameraRay = generateCameraRay(vec2(pixel) + samplerGet2D(sampler, kDimensionCamera), sampler);
-    return clampContribution(emissionSeenAlong(cameraRay)) *
-           (lightPathWeight(0, startPathHistory(), false) * cameraEmissionWeight(true));
+// Edge ray `ray` of the pixel: a camera ray through it, and its sampler. The rays are numbered on
+// across the pixel's samples (sample s has rays s * kEdgeCameraRays ...), so that all of a pixel's
+// edge rays are one well-spread sequence of their own.
+Sampler createEdgeRaySampler(uvec2 pixel, uint ray) {
+    return createSampler(pixel, ray, uSeed ^ kEdgeRaySeed, kSamplerMode, uSampleBudget * kEdgeCameraRays);
 }
 
-// The edge rays' share of `samples` samples from firstSample on (0 for a pixel off the edges): their
-// sum, and the sum of their squares. One loop over all the pass's rays rather than one per sample:
-// a SIMD group runs a loop's body at least once even when none of its pixels is on an edge, and
-// that once is then per pass. (A sample's edge rays kept apart, to pair each with its path in the
-// sums of squares, cost the materials scene 5% more instructions, its array read in every
-// iteration of the path loop; the pass's sums are paired instead, pathtrace_sample.glsl.)
-void traceEdgeRays(uvec2 pixel, uint firstSample, uint samples, out vec3 sum, out vec3 sumSquares) {
-    sum = vec3(0.0);
-    sumSquares = vec3(0.0);
-    vec3 sampleEmission = vec3(0.0);
-    for (uint ray = 0u; ray < samples * kEdgeCameraRays; ++ray) {
-        sampleEmission += edgeRayEmission(pixel, firstSample * kEdgeCameraRays + ray);
-        if (ray % kEdgeCameraRays == kEdgeCameraRays - 1u) {
-            sum += sampleEmission;
-            sumSquares += sampleEmission * sampleEmission;
-            sampleEmission = vec3(0.0);
-        }
-    }
+Ray generateEdgeRay(uvec2 pixel, uint ray, out Sampler sampler) {
+    sampler = createEdgeRaySampler(pixel, ray);
+    return generatePixelRay(pixel, sampler);
+}
+
+// What edge ray `ray` adds to its sample: its share of the emission the camera sees.
+vec3 edgeRayEmission(uvec2 pixel, uint ray) {
+    Sampler sampler;
+    return clampContribution(emissionSeenAlong(generateEdgeRay(pixel, ray, sampler))) *
+           (lightPathWeight(0, startPathHistory(), false) * cameraEmissionWeight(true));
 }

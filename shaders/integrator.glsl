@@ -146,15 +146,16 @@ struct PathState {
     MediumStack media;        // the media the ray is in (media.glsl)
     float cameraEmissionWeight; // of the emission the camera ray itself finds: below 1 where
                                 // more camera rays share that estimate (emission_edges.glsl)
+    bool emissionOnly;          // an edge ray: the emission its camera ray meets, and no more
 };
 
-PathState startPath(Ray cameraRay, float cameraEmissionWeight) {
+PathState startPath(Ray cameraRay, float cameraEmissionWeight, bool emissionOnly) {
     return PathState(cameraRay, 0, vec3(0.0), vec3(1.0), cameraRay.origin, 0.0, true, startPathHistory(),
-                     cameraMediumStack(), cameraEmissionWeight);
+                     cameraMediumStack(), cameraEmissionWeight, emissionOnly);
 }
 
 PathState startPath(Ray cameraRay) {
-    return startPath(cameraRay, 1.0);
+    return startPath(cameraRay, 1.0, false);
 }
 
 // ---- What each integrator does ------------------------------------------------------------------
@@ -311,7 +312,7 @@ bool extendPath(inout PathState path, Sampler sampler) {
         vec3 emitted = emittedRadiance(material, hit.normalGeom, -path.ray.direction);
         if (any(greaterThan(emitted, vec3(0.0)))) addEmissionFound(path, emitted, hit.light, hit.t, hit.normalGeom);
     }
-    if (bounce >= lastBounce() || material.type == kMaterialEmitter) return false; // emitters reflect nothing
+    if (bounce >= lastBounce() || material.type == kMaterialEmitter || path.emissionOnly) return false; // emitters reflect nothing
 
     ShadingFrame frame = makeShadingFrame(hit.normalShading); // BSDFs handle either side themselves
     vec3 woLocal = toLocal(frame, -path.ray.direction);

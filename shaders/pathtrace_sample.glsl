@@ -36,23 +36,34 @@ void traceSamples(uvec2 pixel) {
     } else {
         onEmissionEdge = pixelOnEmissionEdge(pixel);
         float cameraWeight = cameraEmissionWeight(onEmissionEdge);
-        vec3 edgeSum, edgeSumSquares; // a program without edge rays folds them to 0 (edgeRaysPay)
-        traceEdgeRays(pixel, sampleIndex, onEmissionEdge ? uSamplesPerPass : 0u, edgeSum, edgeSumSquares);
-        PathState path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
+        // A sample on an emission edge is its path and then its kEdgeCameraRays edge rays, each
+        // a path that ends at its first surface (emission_edges.glsl), traced by the same loop:
+        // a loop of their own would run once, masked, for every SIMD group, edge or not.
+        // The samplers of the two kinds of path, numbered per path below: created once, since
+        // the loop runs each line for the whole SIMD group whichever kind its pixels start.
+        Sampler pathSampler = createSampler(pixel, sampleIndex, uSeed, kSamplerMode, uSampleBudget);
+        Sampler edgeRaySampler = createEdgeRaySampler(pixel, 0u);
+        uint edgeRaysLeft = onEmissionEdge ? kEdgeCameraRays : 0u;
+        vec3 sampleValue = vec3(0.0);
+        sampler = pathSampler;
+        PathState path = startPath(generatePixelRay(pixel, sampler), cameraWeight, false);
         for (;;) {
             if (extendPath(path, sampler)) continue;
-            sum += path.radiance;
-            sumSquares += path.radiance * path.radiance;
-            if (++sampleIndex == endIndex) break;
-            path = startPath(generatePixelRay(pixel, sampleIndex, sampler), cameraWeight);
+            sampleValue += path.radiance;
+            bool edgeRay = edgeRaysLeft > 0u;
+            if (edgeRay) {
+                --edgeRaysLeft;
+            } else {
+                sum += sampleValue;
+                sumSquares += sampleValue * sampleValue;
+                sampleValue = vec3(0.0);
+                if (++sampleIndex == endIndex) break;
+                edgeRaysLeft = onEmissionEdge ? kEdgeCameraRays : 0u;
+            }
+            sampler = edgeRay ? edgeRaySampler : pathSampler;
+            sampler.sampleIndex = edgeRay ? (sampleIndex + 1u) * kEdgeCameraRays - 1u - edgeRaysLeft : sampleIndex;
+            path = startPath(generatePixelRay(pixel, sampler), cameraWeight, edgeRay);
         }
-        // A sample is its path plus its edge rays, whose random numbers are apart: the cross term
-        // of the squares, 2 x (a path) x (its edge rays), is taken as the pass's paths times its
-        // edge rays over the samples, as for independent samples. Unbiased, but where passes end
-        // changes it: on emission edges a pass of 16 samples reports not quite the variance 16
-        // passes of one do (PathTracer.SeveralSamplesPerPassAreTheSamplesOfSinglePasses).
-        sumSquares += edgeSumSquares + 2.0 * sum * edgeSum / float(uSamplesPerPass);
-        sum += edgeSum;
     }
     accumulateSamples(ivec2(pixel), sum, sumSquares, uSamplesPerPass, onEmissionEdge);
 }
