@@ -11,6 +11,7 @@ the machine and its load.
 
 usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.05,0.02,0.01] [--reference-spp 16384]
        [--seed 2]   (the seed of the adaptive and uniform renders; the references keep theirs)
+       [--spp-cap N] (the adaptive renders' --spp cap; default render's own, 4096)
 """
 import math, os, re, subprocess, sys
 import numpy as np
@@ -55,6 +56,11 @@ def main():
         i = args.index('--seed')
         render_seed = str(int(args[i + 1]))
         del args[i:i + 2]
+    cap = []
+    if '--spp-cap' in args:
+        i = args.index('--spp-cap')
+        cap = ['--spp', str(int(args[i + 1]))]
+        del args[i:i + 2]
     ptview, outdir, size, scenes = args[0], args[1], args[2], args[3:]
     os.makedirs(outdir, exist_ok=True)
     print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
@@ -72,7 +78,7 @@ def main():
         true = lambda image: rel_mse(image, refs[0]) - floor
         adaptive = []
         for e in thresholds:
-            log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', render_seed)
+            log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', render_seed, *cap)
             mean_spp = float(re.search(r'spp min/mean/max \d+/([0-9.]+)/\d+', log).group(1))
             adaptive.append((e, seconds_of(log), mean_spp, true(read_pfm(f'{outdir}/{name}-adaptive.pfm'))))
         smallest = min(a[3] for a in adaptive)
