@@ -45,9 +45,9 @@ bool sceneHasEmittingSurfaces() {
 
 // Edge rays are traced by programs for images whose passes take several samples per pixel
 // (kEdgeRays, a constant of the program: PathTracer::edgeRays). The path loop traces them
-// (pathtrace_sample.glsl), and llvmpipe runs each line of it for a whole SIMD group: in a pass of
-// one sample, the corners of the first pass and the choice of each next camera ray cost the
-// Cornell box 15% of its samples per second at 1280x720 (docs/sampling.md, "Emission edges").
+// (pathtrace_sample.glsl), but in a pass of one sample they still cost the Cornell box 15% of its
+// samples per second at 1280x720, mostly the first pass's corner loop, which llvmpipe runs once,
+// masked, in every pass (docs/performance.md, "The path loop").
 bool edgeRaysPay() {
     return kEdgeRays && sceneHasEmittingSurfaces();
 }
