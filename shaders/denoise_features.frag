@@ -171,7 +171,7 @@ void main() {
         bool onlyEmission;
         vec3 emitted = emissionAlongDeltaChain(ray, sampler, cameraEmissionWeight(onEdge), onlyEmission);
         for (uint k = 0u; onEdge && k < kEdgeCameraRays; ++k)
-            emitted += edgeRayEmission(pixel, (uFrameIndex + i) * kEdgeCameraRays + k);
+            emitted += edgeRayEmission(pixel, edgeRayIndex(uFrameIndex + i, k));
         // A sample whose light is all emission has nothing to demodulate: albedo 0, its light is
         // all in the emission sums.
         if (onlyEmission) albedo = vec3(0.0);

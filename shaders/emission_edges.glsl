@@ -87,21 +87,20 @@ float cameraEmissionWeight(bool onEdge) {
     return onEdge ? 1.0 / float(1u + kEdgeCameraRays) : 1.0;
 }
 
-// Edge ray `ray` of the pixel: a camera ray through it, and its sampler. The rays are numbered on
-// across the pixel's samples (sample s has rays s * kEdgeCameraRays ...), so that all of a pixel's
-// edge rays are one well-spread sequence of their own.
+// The sampler of the pixel's edge ray `ray`, whose camera ray generatePixelRay makes. The rays are
+// numbered on across the pixel's samples (edgeRayIndex), so that all of a pixel's edge rays are
+// one well-spread sequence of their own.
 Sampler createEdgeRaySampler(uvec2 pixel, uint ray) {
     return createSampler(pixel, ray, uSeed ^ kEdgeRaySeed, kSamplerMode, uSampleBudget * kEdgeCameraRays);
 }
 
-Ray generateEdgeRay(uvec2 pixel, uint ray, out Sampler sampler) {
-    sampler = createEdgeRaySampler(pixel, ray);
-    return generatePixelRay(pixel, sampler);
+// The number of edge ray k (0 ... kEdgeCameraRays - 1) of sample sampleIndex.
+uint edgeRayIndex(uint sampleIndex, uint k) {
+    return sampleIndex * kEdgeCameraRays + k;
 }
 
 // What edge ray `ray` adds to its sample: its share of the emission the camera sees.
 vec3 edgeRayEmission(uvec2 pixel, uint ray) {
-    Sampler sampler;
-    return clampContribution(emissionSeenAlong(generateEdgeRay(pixel, ray, sampler))) *
+    return clampContribution(emissionSeenAlong(generatePixelRay(pixel, createEdgeRaySampler(pixel, ray)))) *
            (lightPathWeight(0, startPathHistory(), false) * cameraEmissionWeight(true));
 }

@@ -61,7 +61,7 @@ void traceSamples(uvec2 pixel) {
                 edgeRaysLeft = onEmissionEdge ? kEdgeCameraRays : 0u;
             }
             sampler = edgeRay ? edgeRaySampler : pathSampler;
-            sampler.sampleIndex = edgeRay ? (sampleIndex + 1u) * kEdgeCameraRays - 1u - edgeRaysLeft : sampleIndex;
+            sampler.sampleIndex = edgeRay ? edgeRayIndex(sampleIndex, kEdgeCameraRays - 1u - edgeRaysLeft) : sampleIndex;
             path = startPath(generatePixelRay(pixel, sampler), cameraWeight, edgeRay);
         }
     }

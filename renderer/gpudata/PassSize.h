@@ -1,6 +1,6 @@
 #pragma once
-// How many samples per pixel a pass of the path tracer takes, shared with the shaders
-// (shaders/emission_edges.glsl decides by it whether its edge rays pay).
+// How many samples per pixel a pass of the path tracer takes, and from how many on its program
+// traces edge rays (PathTracer::edgeRays, which sets kEdgeRays for shaders/emission_edges.glsl).
 
 namespace ptview {
 
@@ -10,9 +10,9 @@ namespace ptview {
 constexpr int kPixelSamplesPerPass = 1 << 20;
 constexpr int kMaxSamplesPerPass = 16;
 
-// Edge rays are traced in images whose passes take at least this many samples per pixel: a pass
-// pays one masked edge ray per pixel on llvmpipe whether or not the pixel is on an edge
-// (docs/sampling.md, "Emission edges").
+// Edge rays are traced in images whose passes take at least this many samples per pixel: on
+// llvmpipe every pass pays the first pass's corner rays, masked, whether or not a pixel is on an
+// edge, which cost a pass of one sample 7% to 15% (docs/sampling.md, "Emission edges").
 constexpr int kEdgeRaysMinSamplesPerPass = 4;
 
 } // namespace ptview

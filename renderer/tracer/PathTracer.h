@@ -105,8 +105,9 @@ public:
     // behind code comments").
     int samplesPerPass() const;
     // Whether the program traces edge rays (shaders/emission_edges.glsl): where a pass takes at
-    // least kEdgeRaysMinSamplesPerPass samples. A constant of the program, since llvmpipe runs their
-    // loop masked in every pass of a program that has it (docs/performance.md, "Light edges").
+    // least kEdgeRaysMinSamplesPerPass samples. A constant of the program, since llvmpipe runs the
+    // corner rays that decide them masked in every pass of a program that has them
+    // (docs/sampling.md, "Emission edges").
     bool edgeRays() const { return samplesPerPass() >= kEdgeRaysMinSamplesPerPass; }
     // Part of a sample: the next rowCount rows (or fewer, at the top) of the pass in progress, so
     // that a slow GPU can spread one pass over several displayed frames. The new sums become
