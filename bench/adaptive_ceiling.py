@@ -4,7 +4,7 @@ gains, and where it cannot").
 
 Adaptive sampling can only move samples between pixels; what that buys depends on how unevenly the
 scene's noise is spread, and on how well a render can tell where it is. This renders the scene
-16 times with independent seeds at SPP samples, so each pixel's relative variance per sample v_p
+16 times (--renders) with independent seeds at SPP samples, so each pixel's relative variance per sample v_p
 is measured from the spread between renders, not from a render's own samples. Then, at equal mean
 samples (at least 64 per pixel, as kAdaptiveMinSamples), the true mean relative MSE of:
 
@@ -15,11 +15,17 @@ samples (at least 64 per pixel, as kAdaptiveMinSamples), the true mean relative 
                            8 x SPP samples per pixel, if it knew each pixel's variance that well;
   ... 3x3, 4x4 tiles       v averaged over each pixel's 3x3 neighbourhood, and the samples of a
                            4x4 tile set by its neediest pixel, as AdaptiveStopRule does;
-  v (equal threshold)      samples in proportion to v, what stopping every pixel at the same error does.
+  v (equal threshold)      samples in proportion to v, what stopping every pixel at the same error does;
+  bound: v known           samples in proportion to the square root of the judging half's own v: no
+                           allocation of samples to pixels does better on these renders (it is
+                           judged by the samples it was chosen from, so it is an upper bound,
+                           and a loose one unless the judging half's variances are well measured:
+                           at 8 x 64 samples it mostly rewards that half's fireflies; use many
+                           renders of many samples, e.g. --renders 32 at 4096 spp).
 
 The gain of each is uniform's error over its own. Not a test: a measurement of the scene.
 
-usage: bench/adaptive_ceiling.py PTVIEW OUTDIR SIZE SPP BUDGET SCENE...
+usage: bench/adaptive_ceiling.py PTVIEW OUTDIR SIZE SPP BUDGET SCENE... [--renders 16]
   e.g. bench/adaptive_ceiling.py build/ptview /tmp/ceiling 64x64 64 800 assets/scenes/cornell_spheres.json
 """
 import os, subprocess, sys
@@ -52,14 +58,20 @@ def samples_for(weights, budget):
     return np.maximum(MIN_SAMPLES, low * weights)
 
 def main():
-    ptview, outdir, size, spp, budget, scenes = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), float(sys.argv[5]), sys.argv[6:]
+    args = sys.argv[1:]
+    renders = RENDERS
+    if '--renders' in args:
+        i = args.index('--renders')
+        renders = int(args[i + 1])
+        del args[i:i + 2]
+    ptview, outdir, size, spp, budget, scenes = args[0], args[1], args[2], int(args[3]), float(args[4]), args[5:]
     os.makedirs(outdir, exist_ok=True)
-    print(f'| scene | sqrt(v), own estimate | ... 3x3, 4x4 tiles | v (equal threshold), 3x3, 4x4 tiles |')
-    print('|---|---:|---:|---:|')
+    print(f'| scene | sqrt(v), own estimate | ... 3x3, 4x4 tiles | v (equal threshold), 3x3, 4x4 tiles | bound: v known |')
+    print('|---|---:|---:|---:|---:|')
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
         images = []
-        for seed in range(1, RENDERS + 1):
+        for seed in range(1, renders + 1):
             path = f'{outdir}/{name}-{size}-{spp}-{seed}.pfm'
             if not os.path.exists(path):
                 subprocess.run([ptview, 'render', scene, '--size', size, '--spp', str(spp), '--seed', str(seed),
@@ -69,12 +81,12 @@ def main():
         converged = images.mean(0)
         def variance_per_sample(part):  # relative, as ErrorMetrics.h normalizes
             return (part.var(0, ddof=1) / (converged ** 2 + 1e-2)).mean(-1) * spp
-        measured, judged = variance_per_sample(images[:RENDERS // 2]), variance_per_sample(images[RENDERS // 2:])
+        measured, judged = variance_per_sample(images[:renders // 2]), variance_per_sample(images[renders // 2:])
         uniform = judged.mean() / budget
         def gain(weights):
             return uniform / np.mean(judged / samples_for(weights, budget))
         print(f'| {name} | {gain(np.sqrt(measured)):.2f}x | {gain(tile_max(np.sqrt(box3(measured)))):.2f}x | '
-              f'{gain(tile_max(box3(measured))):.2f}x |', flush=True)
+              f'{gain(tile_max(box3(measured))):.2f}x | {gain(np.sqrt(judged)):.2f}x |', flush=True)
 
 if __name__ == '__main__':
     main()

@@ -9,8 +9,15 @@ error are interpolated (log-log) between the uniform renders. Times are the rend
 ("after T s" / the written line), so they include no compilation. Not a test: times depend on
 the machine and its load.
 
+With several seeds (--seeds 2,3,4,5) every render is repeated at each, and the table compares
+expectations: the adaptive renders' mean time, mean spp and mean true relMSE over the seeds,
+against the uniform renders' mean time and mean true relMSE at each spp. One seed's error is a
+few pixels' luck where rare bright paths carry it (`mis`: five pixels hold 40% to 76% of a
+64x64 render's error, which can rise from 1024 to 2048 spp), so one seed's speed-up is too.
+
 usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.05,0.02,0.01] [--reference-spp 16384]
-       [--seed 2]   (the seed of the adaptive and uniform renders; the references keep theirs)
+       [--seeds 2]  (the seeds of the adaptive and uniform renders, comma-separated; the references keep theirs;
+                     --seed S is the same as --seeds S)
        [--spp-cap N] (the adaptive renders' --spp cap; default render's own, 4096)
 """
 import math, os, re, subprocess, sys
@@ -51,11 +58,12 @@ def main():
         i = args.index('--reference-spp')
         reference_spp = int(args[i + 1])
         del args[i:i + 2]
-    render_seed = '2'
-    if '--seed' in args:
-        i = args.index('--seed')
-        render_seed = str(int(args[i + 1]))
-        del args[i:i + 2]
+    render_seeds = ['2']
+    for option in ('--seed', '--seeds'):
+        if option in args:
+            i = args.index(option)
+            render_seeds = [str(int(seed)) for seed in args[i + 1].split(',')]
+            del args[i:i + 2]
     cap = []
     if '--spp-cap' in args:
         i = args.index('--spp-cap')
@@ -78,16 +86,24 @@ def main():
         true = lambda image: rel_mse(image, refs[0]) - floor
         adaptive = []
         for e in thresholds:
-            log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', render_seed, *cap)
-            mean_spp = float(re.search(r'spp min/mean/max \d+/([0-9.]+)/\d+', log).group(1))
-            adaptive.append((e, seconds_of(log), mean_spp, true(read_pfm(f'{outdir}/{name}-adaptive.pfm'))))
+            runs = []
+            for seed in render_seeds:
+                log = render(ptview, scene, size, f'{outdir}/{name}-adaptive.pfm', '--noise-threshold', str(e), '--seed', seed, *cap)
+                mean_spp = float(re.search(r'spp min/mean/max \d+/([0-9.]+)/\d+', log).group(1))
+                runs.append((seconds_of(log), mean_spp, true(read_pfm(f'{outdir}/{name}-adaptive.pfm'))))
+            adaptive.append((e, *np.mean(runs, axis=0)))
         smallest = min(a[3] for a in adaptive)
         uniform, spp = [], 16
         while spp <= 65536:
-            log = render(ptview, scene, size, f'{outdir}/{name}-uniform.pfm', '--spp', str(spp), '--seed', render_seed)
-            uniform.append((spp, seconds_of(log), true(read_pfm(f'{outdir}/{name}-uniform.pfm'))))
+            runs = []
+            for seed in render_seeds:
+                log = render(ptview, scene, size, f'{outdir}/{name}-uniform.pfm', '--spp', str(spp), '--seed', seed)
+                runs.append((seconds_of(log), true(read_pfm(f'{outdir}/{name}-uniform.pfm'))))
+            uniform.append((spp, *np.mean(runs, axis=0)))
             if uniform[-1][2] < smallest / 1.5: break
             spp *= 2
+        if len(render_seeds) > 1:
+            print(f'<!-- {name}: means over seeds {",".join(render_seeds)} -->', flush=True)
         for e, seconds, mean_spp, error in adaptive:
             u_seconds = interpolate([(s, r) for _, s, r in uniform], error)
             u_spp = interpolate([(n, r) for n, _, r in uniform], error)
