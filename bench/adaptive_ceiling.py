@@ -13,8 +13,9 @@ samples (at least 64 per pixel, as kAdaptiveMinSamples), the true mean relative 
                            renders, judged by the other 8 (so that a pixel's luck in the first
                            half is not rewarded in the second): the best any render can do from
                            8 x SPP samples per pixel, if it knew each pixel's variance that well;
-  ... 3x3, 4x4 tiles       v averaged over each pixel's 3x3 neighbourhood, and the samples of a
-                           4x4 tile set by its neediest pixel, as AdaptiveStopRule does;
+  ... 3x3, NxN tiles       v averaged over each pixel's 3x3 neighbourhood, and the samples of an
+                           NxN tile (--tile N, 2 as kAdaptiveTileSide; 4 before 2026-12-06) set by
+                           its neediest pixel, as AdaptiveStopRule does;
   v (equal threshold)      samples in proportion to v, what stopping every pixel at the same error does;
   bound: v known           samples in proportion to the square root of the judging half's own v: no
                            allocation of samples to pixels does better on these renders (it is
@@ -25,7 +26,7 @@ samples (at least 64 per pixel, as kAdaptiveMinSamples), the true mean relative 
 
 The gain of each is uniform's error over its own. Not a test: a measurement of the scene.
 
-usage: bench/adaptive_ceiling.py PTVIEW OUTDIR SIZE SPP BUDGET SCENE... [--renders 16]
+usage: bench/adaptive_ceiling.py PTVIEW OUTDIR SIZE SPP BUDGET SCENE... [--renders 16] [--tile 2]
   e.g. bench/adaptive_ceiling.py build/ptview /tmp/ceiling 64x64 64 800 assets/scenes/cornell_spheres.json
 """
 import os, subprocess, sys
@@ -41,7 +42,7 @@ def box3(a):
     padded = np.pad(a, 1, mode='edge')
     return sum(padded[dy:dy + a.shape[0], dx:dx + a.shape[1]] for dy in range(3) for dx in range(3)) / 9.0
 
-def tile_max(a, side=4):
+def tile_max(a, side):
     h, w = a.shape
     hh, ww = -(-h // side) * side, -(-w // side) * side
     padded = np.pad(a, ((0, hh - h), (0, ww - w)), mode='edge')
@@ -64,9 +65,14 @@ def main():
         i = args.index('--renders')
         renders = int(args[i + 1])
         del args[i:i + 2]
+    tile = 2
+    if '--tile' in args:
+        i = args.index('--tile')
+        tile = int(args[i + 1])
+        del args[i:i + 2]
     ptview, outdir, size, spp, budget, scenes = args[0], args[1], args[2], int(args[3]), float(args[4]), args[5:]
     os.makedirs(outdir, exist_ok=True)
-    print(f'| scene | sqrt(v), own estimate | ... 3x3, 4x4 tiles | v (equal threshold), 3x3, 4x4 tiles | bound: v known |')
+    print(f'| scene | sqrt(v), own estimate | ... 3x3, {tile}x{tile} tiles | v (equal threshold), 3x3, {tile}x{tile} tiles | bound: v known |')
     print('|---|---:|---:|---:|---:|')
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
@@ -85,8 +91,8 @@ def main():
         uniform = judged.mean() / budget
         def gain(weights):
             return uniform / np.mean(judged / samples_for(weights, budget))
-        print(f'| {name} | {gain(np.sqrt(measured)):.2f}x | {gain(tile_max(np.sqrt(box3(measured)))):.2f}x | '
-              f'{gain(tile_max(box3(measured))):.2f}x | {gain(np.sqrt(judged)):.2f}x |', flush=True)
+        print(f'| {name} | {gain(np.sqrt(measured)):.2f}x | {gain(tile_max(np.sqrt(box3(measured)), tile)):.2f}x | '
+              f'{gain(tile_max(box3(measured), tile)):.2f}x | {gain(np.sqrt(judged)):.2f}x |', flush=True)
 
 if __name__ == '__main__':
     main()
