@@ -29,7 +29,7 @@ The gain of each is uniform's error over its own. Not a test: a measurement of t
 usage: bench/adaptive_ceiling.py PTVIEW OUTDIR SIZE SPP BUDGET SCENE... [--renders 16] [--tile 2]
   e.g. bench/adaptive_ceiling.py build/ptview /tmp/ceiling 64x64 64 800 assets/scenes/cornell_spheres.json
 """
-import os, subprocess, sys
+import argparse, os, subprocess, sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "cycles"))
@@ -59,18 +59,14 @@ def samples_for(weights, budget):
     return np.maximum(MIN_SAMPLES, low * weights)
 
 def main():
-    args = sys.argv[1:]
-    renders = RENDERS
-    if '--renders' in args:
-        i = args.index('--renders')
-        renders = int(args[i + 1])
-        del args[i:i + 2]
-    tile = 2
-    if '--tile' in args:
-        i = args.index('--tile')
-        tile = int(args[i + 1])
-        del args[i:i + 2]
-    ptview, outdir, size, spp, budget, scenes = args[0], args[1], args[2], int(args[3]), float(args[4]), args[5:]
+    parser = argparse.ArgumentParser(description='How much any allocation of samples to pixels can gain (see the top of this file).')
+    parser.add_argument('ptview'); parser.add_argument('outdir'); parser.add_argument('size')
+    parser.add_argument('spp', type=int); parser.add_argument('budget', type=float); parser.add_argument('scenes', nargs='+')
+    parser.add_argument('--renders', type=int, default=RENDERS)
+    parser.add_argument('--tile', type=int, default=2)
+    options = parser.parse_intermixed_args()
+    ptview, outdir, size, spp, budget, scenes = options.ptview, options.outdir, options.size, options.spp, options.budget, options.scenes
+    renders, tile = options.renders, options.tile
     os.makedirs(outdir, exist_ok=True)
     print(f'| scene | sqrt(v), own estimate | ... 3x3, {tile}x{tile} tiles | v (equal threshold), 3x3, {tile}x{tile} tiles | bound: v known |')
     print('|---|---:|---:|---:|---:|')

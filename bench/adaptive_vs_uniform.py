@@ -20,7 +20,7 @@ usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.
                      --seed S is the same as --seeds S)
        [--spp-cap N] (the adaptive renders' --spp cap; default render's own, 4096)
 """
-import math, os, re, subprocess, sys
+import argparse, math, os, re, subprocess, sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "cycles"))
@@ -47,29 +47,18 @@ def interpolate(points, error):  # (seconds or spp, error) pairs, errors falling
     return float('nan')
 
 def main():
-    args = sys.argv[1:]
-    thresholds = [0.05, 0.02, 0.01]
-    if '--thresholds' in args:
-        i = args.index('--thresholds')
-        thresholds = [float(t) for t in args[i + 1].split(',')]
-        del args[i:i + 2]
-    reference_spp = 16384
-    if '--reference-spp' in args:
-        i = args.index('--reference-spp')
-        reference_spp = int(args[i + 1])
-        del args[i:i + 2]
-    render_seeds = ['2']
-    for option in ('--seed', '--seeds'):
-        if option in args:
-            i = args.index(option)
-            render_seeds = [str(int(seed)) for seed in args[i + 1].split(',')]
-            del args[i:i + 2]
-    cap = []
-    if '--spp-cap' in args:
-        i = args.index('--spp-cap')
-        cap = ['--spp', str(int(args[i + 1]))]
-        del args[i:i + 2]
-    ptview, outdir, size, scenes = args[0], args[1], args[2], args[3:]
+    parser = argparse.ArgumentParser(description='Adaptive against uniform sampling (see the top of this file).')
+    parser.add_argument('ptview'); parser.add_argument('outdir'); parser.add_argument('size'); parser.add_argument('scenes', nargs='+')
+    parser.add_argument('--thresholds', default='0.05,0.02,0.01')
+    parser.add_argument('--reference-spp', type=int, default=16384)
+    parser.add_argument('--seeds', '--seed', default='2')
+    parser.add_argument('--spp-cap', type=int)
+    options = parser.parse_intermixed_args()
+    thresholds = [float(t) for t in options.thresholds.split(',')]
+    reference_spp = options.reference_spp
+    render_seeds = [str(int(seed)) for seed in options.seeds.split(',')]
+    cap = ['--spp', str(options.spp_cap)] if options.spp_cap else []
+    ptview, outdir, size, scenes = options.ptview, options.outdir, options.size, options.scenes
     os.makedirs(outdir, exist_ok=True)
     print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
     print('|---|---:|---|---|---:|', flush=True)
