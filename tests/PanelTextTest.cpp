@@ -20,6 +20,14 @@ TEST(PanelText, OneOfAThingIsSingular) {
     EXPECT_EQ(countOf(3, "program"), "3 programs");
 }
 
+// The tooltips that explain adaptive sampling say when it checks from AdaptiveSampler's constants,
+// not from a copy of them that a change of the constants leaves behind (they said 1.25x after the
+// growth became 1.1x).
+TEST(PanelText, TheAdaptiveCheckScheduleIsWordedFromItsConstants) {
+    EXPECT_EQ(adaptiveCheckSchedule(64, 1.1), "32 spp, then each 1.1x the last; no pixel stops before 64");
+    EXPECT_EQ(adaptiveCheckSchedule(16, 1.25), "8 spp, then each 1.25x the last; no pixel stops before 16");
+}
+
 TEST(PanelText, AViewNamesItsSideOnlyInTheSplitView) {
     EXPECT_EQ(viewHeading(false, true, Integrator::Full, SamplerMode::Sobol), "full, sobol");
     EXPECT_EQ(viewHeading(true, true, Integrator::Full, SamplerMode::Sobol), "left: full, sobol");

@@ -30,6 +30,16 @@ inline std::string viewHeading(bool comparing, bool leftSide, Integrator integra
     return comparing ? std::string(leftSide ? "left: " : "right: ") + heading : heading;
 }
 
+// When adaptive sampling reads the image back, for the tooltips that explain it: "32 spp, then each
+// 1.1x the last; no pixel stops before 64", from AdaptiveSampler's constants (the first check only
+// takes the snapshot the next one compares with).
+inline std::string adaptiveCheckSchedule(int minSamples, double checkGrowth) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%d spp, then each %gx the last; no pixel stops before %d", (minSamples + 1) / 2,
+                  checkGrowth, minSamples);
+    return text;
+}
+
 // A percentage as the panels print it: three significant digits ("9.2%", "0.537%").
 inline std::string percentText(double fraction) {
     char text[32];

@@ -5,6 +5,7 @@
 #include <ptview/window/PanelWidgets.h>
 #include <ptview/io/PrintableText.h>
 #include <ptview/settings/SettingRanges.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 
 #include <imgui.h>
 
@@ -122,11 +123,11 @@ void ocioControls(ViewerSession& session, PanelState& state) {
 void targetErrorControls(ViewerSession& session) {
     ViewerModel& model = session.model();
     ImGui::Checkbox("stop at error", &model.targetErrorOn);
-    itemTooltip("adaptive sampling: each pixel stops once the estimated error of its neighbourhood reaches the target,\n"
-                "and the render stops when the image's estimate does (or every pixel stopped), as\n"
-                "`ptview render --noise-threshold` does. The checks read the image back at fixed sample counts\n"
-                "(64 spp, then each 1.25x the last); changing the target restarts. The \"samples per pixel\" view\n"
-                "shows where the samples went");
+    itemTooltip((std::string("adaptive sampling: each pixel stops once the estimated error of its neighbourhood reaches the target, "
+                             "and the render stops when the image's estimate does (or every pixel stopped), as "
+                             "`ptview render --noise-threshold` does. The checks read the image back at fixed sample counts (") +
+                 adaptiveCheckSchedule(kAdaptiveMinSamples, kAdaptiveCheckGrowth) +
+                 "); changing the target restarts. The \"samples per pixel\" view shows where the samples went").c_str());
     if (!model.targetErrorOn) return;
     ImGui::SameLine();
     float percent = 100.0f * model.targetError;

@@ -4,6 +4,7 @@
 #include <ptview/window/Panels.h>
 #include <ptview/io/PrintableText.h>
 #include <ptview/settings/SamplerMode.h>
+#include <ptview/tracer/AdaptiveSampler.h>
 
 #include <imgui.h>
 
@@ -54,8 +55,9 @@ void drawViewStats(const ViewerSession& session, ViewerSession::Side side, doubl
         ImGui::Text("adaptive (target %.3g%%): %.1f%% of pixels done", 100.0 * adaptive.targetError,
                     100.0 * adaptive.samples.stoppedShare);
         ImGui::Text("spp min / mean / max: %d / %.1f / %d", adaptive.samples.min, adaptive.samples.mean, adaptive.samples.max);
-        itemTooltip("each pixel's own sample count at the last check (the checks come at 64 spp and then each 1.25x\n"
-                    "the last); a pixel done takes no more samples until the render restarts");
+        itemTooltip(("each pixel's own sample count at the last check (the checks come at " +
+                     adaptiveCheckSchedule(kAdaptiveMinSamples, kAdaptiveCheckGrowth) +
+                     "); a pixel done takes no more samples until the render restarts").c_str());
         if (!adaptive.note.empty()) noteText(adaptive.note);
     }
     ImGui::Text("%.2f M samples/s, %.1f s rendering", stats.samplesPerSecond * 1e-6, stats.renderSeconds);
