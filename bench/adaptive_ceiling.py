@@ -62,9 +62,13 @@ def main():
     parser = argparse.ArgumentParser(description='How much any allocation of samples to pixels can gain (see the top of this file).')
     parser.add_argument('ptview'); parser.add_argument('outdir'); parser.add_argument('size')
     parser.add_argument('spp', type=int); parser.add_argument('budget', type=float); parser.add_argument('scenes', nargs='+')
-    parser.add_argument('--renders', type=int, default=RENDERS)
-    parser.add_argument('--tile', type=int, default=2)
+    parser.add_argument('--renders', type=int, default=RENDERS, help='an even number, at least 4')
+    parser.add_argument('--tile', type=int, default=2, help='the tile side, at least 1')
     options = parser.parse_intermixed_args()
+    if options.renders < 4 or options.renders % 2:
+        parser.error(f'--renders {options.renders}: an even number of at least 4 (two halves of at least 2)')
+    if options.tile < 1:
+        parser.error(f'--tile {options.tile}: at least 1')
     ptview, outdir, size, spp, budget, scenes = options.ptview, options.outdir, options.size, options.spp, options.budget, options.scenes
     renders, tile = options.renders, options.tile
     os.makedirs(outdir, exist_ok=True)
