@@ -63,6 +63,7 @@ const char* typeName(MaterialType type) {
     case MaterialType::Metal: return "metal";
     case MaterialType::Plastic: return "plastic";
     case MaterialType::Principled: return "principled";
+    case MaterialType::Medium: return "medium";
     }
     return "?";
 }
@@ -710,6 +711,7 @@ bool isLossless(const Material& material, double cosThetaO) {
     case MaterialType::Principled:
         return (material.metallic == 1.0f && isSmooth(material.roughness)) ||
                (material.metallic == 0.0f && material.transmission == 1.0f);
+    case MaterialType::Medium: return true; // a volume's boundary: light passes it unchanged
     case MaterialType::Emitter: return false;
     }
     return false;

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace ptview {
 namespace {
 
@@ -28,15 +30,20 @@ std::string text(float value) {
     return std::string(buffer, result.ptr);
 }
 
-// A 1x1 tangent-space normal map (straight up) for the principled material's normal_map.
+// A 1x1 tangent-space normal map (straight up) for the principled material's normal_map, written
+// once per process (named after it: ctest runs tests in parallel processes) and removed at exit.
 std::string normalMapFile() {
-    static const std::filesystem::path file = [] {
-        std::filesystem::path path = std::filesystem::temp_directory_path() / "ptview_scene_ranges_normal.png";
-        ImageRgba8 flat{1, 1, {128, 128, 255, 255}};
-        writePng(path, flat);
-        return path;
-    }();
-    return file.generic_string();
+    struct FlatNormalMap {
+        std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("ptview_scene_ranges_normal_" + std::to_string(::getpid()) + ".png");
+        FlatNormalMap() { writePng(path, ImageRgba8{1, 1, {128, 128, 255, 255}}); }
+        ~FlatNormalMap() {
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+        }
+    };
+    static const FlatNormalMap file;
+    return file.path.generic_string();
 }
 
 // One scene with every ranged quantity at an ordinary value; `key` replaced by `value`.

@@ -34,13 +34,6 @@ using testing::statusLines;
 const std::string kXvfb = testing::xvfbRun("1600x1000x24"); // after a cd into the test's directory
 const std::string kCornell = PTVIEW_ASSETS_DIR "/scenes/cornell.json";
 
-fs::path freshDirectory(const std::string& name) {
-    fs::path directory = fs::temp_directory_path() / ("ptview_scripted_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(directory);
-    fs::create_directories(directory);
-    return directory;
-}
-
 testing::CommandResult runViewer(const fs::path& directory, const std::string& scene, const std::string& script,
                                  const std::string& extraArguments = "") {
     fs::path scriptPath = directory / "script.txt";
@@ -76,7 +69,8 @@ protected:
 // The strongest check that an edit restarts accumulation and is applied exactly: after it, the
 // viewer's image equals a headless render of the saved, edited scene with the same settings.
 TEST_F(ScriptedViewer, EditsRestartAccumulationAndMatchAHeadlessRenderOfTheEditedScene) {
-    fs::path directory = freshDirectory("edits");
+    testing::ScratchFiles scratch("scripted_edits");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(# 192x192 of the 768x768 image area
 resolution-scale 0.25
 seed 7
@@ -138,13 +132,13 @@ quit
     glm::dvec3 wallBefore = regionMean(before, 4, 24, 60, 130), wallAfter = regionMean(viewer, 4, 24, 60, 130);
     EXPECT_LT(wallAfter.r, wallBefore.r / 3.0);
     EXPECT_GT(wallAfter.b, wallBefore.b * 5.0);
-    fs::remove_all(directory);
 }
 
 // The light-path explorer in the window: a view of one bounce shows less light than the render,
 // and going back to all light gives the render again, pixel for pixel (same seed and spp).
 TEST_F(ScriptedViewer, ALightPathViewChangesTheImageAndSwitchingBackRestoresIt) {
-    fs::path directory = freshDirectory("light_paths");
+    testing::ScratchFiles scratch("scripted_light_paths");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
 seed 3
 depth 4
@@ -176,7 +170,6 @@ quit
     const glm::dvec3 secondMean = regionMean(second, 0, second.width, 0, second.height);
     EXPECT_GT(secondMean.r, 0.05 * allMean.r) << "the second bounce carries light";
     EXPECT_LT(secondMean.r, 0.8 * allMean.r) << "but not all of it";
-    fs::remove_all(directory);
 }
 
 // What the window says beyond the sidebar, for when Tab hides it or a panel is scrolled away
@@ -184,7 +177,8 @@ quit
 // scene did not apply (cleared by a good one), and which files F12 wrote. The status line gives
 // the title, the image's label and its last notice as the window draws them (PanelText.h).
 TEST_F(ScriptedViewer, TheTitleAndTheImageSayWhatTheSidebarWouldSay) {
-    fs::path directory = freshDirectory("feedback");
+    testing::ScratchFiles scratch("scripted_feedback");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     fs::copy_file(kCornell, directory / "good.json");
     std::ofstream(directory / "broken.json") << "{ \"camera\": ";
@@ -224,13 +218,13 @@ quit
     EXPECT_EQ(notice.rfind("\"saved screenshots/", 0), 0u) << notice;
     EXPECT_NE(notice.find(".png, "), std::string::npos) << notice;
     EXPECT_NE(notice.find(".exr"), std::string::npos) << notice;
-    fs::remove_all(directory);
 }
 
 // The real viewer started with --ocio-config shows the view, a script switches views, and the
 // screenshots (the display pass read back) have each view's values and record it.
 TEST_F(ScriptedViewer, OcioViewsFromTheCommandLineAndTheScriptReachTheScreenshots) {
-    fs::path directory = freshDirectory("ocio");
+    testing::ScratchFiles scratch("scripted_ocio");
+    const fs::path& directory = scratch.directory();
     std::ofstream(directory / "env.json") << R"({"camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40,
         "resolution": [64, 64]}, "environment": {"color": [0.8, 0.8, 0.4]}, "materials": {}, "shapes": []})";
     const std::string config = PTVIEW_TEST_DATA_DIR "/ocio/config.ocio";
@@ -263,14 +257,14 @@ quit
     const std::string settings = *readPngTextFile(directory / "lut.png").find("ptview.settings");
     EXPECT_NE(settings.find("\"ocio_view\": \"lut\""), std::string::npos) << settings;
     EXPECT_NE(settings.find("\"tone_mapper\": \"ocio\""), std::string::npos) << settings;
-    fs::remove_all(directory);
 }
 
 // A direction is any non-zero vector and is stored at unit length. A float's square underflows
 // for (1e-30, 0, 0) and overflows for (1e20, 1e20, 1e20): normalized in float they became Inf and
 // (0, 0, 0), and the spot light a NaN in the shader.
 TEST_F(ScriptedViewer, SpotDirectionsOfExtremeLengthAreStoredAtUnitLength) {
-    fs::path directory = freshDirectory("directions");
+    testing::ScratchFiles scratch("scripted_directions");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, PTVIEW_ASSETS_DIR "/scenes/lights.json", R"(resolution-scale 0.125
 set-light spot.direction 1e-30 0 0
 save-scene tiny.json
@@ -289,14 +283,14 @@ quit
     glm::vec3 huge = spotDirection(loadScene(directory / "huge.json"));
     EXPECT_EQ(tiny, glm::vec3(1.0f, 0.0f, 0.0f));
     for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(huge[axis], 1.0f / std::sqrt(3.0f), 1e-6f);
-    fs::remove_all(directory);
 }
 
 // The target error in the real viewer: `target-error` turns adaptive sampling on, the status
 // reports the checks' sample counts and the share of pixels stopped, the samples-per-pixel view
 // shows, and `target-error off` restarts with every pixel sampled again.
 TEST_F(ScriptedViewer, TargetErrorSamplesAdaptivelyAndTheStatusSaysHowFar) {
-    fs::path directory = freshDirectory("target_error");
+    testing::ScratchFiles scratch("scripted_target_error");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
 depth 3
 target-error 0.01
@@ -325,14 +319,14 @@ quit
     EXPECT_EQ(field(status[2], "target-error"), "off");
     EXPECT_EQ(field(status[2], "spp"), "0") << "turning it off restarts";
     EXPECT_EQ(field(status[2], "stopped-share"), "<missing stopped-share>") << "no adaptive fields without a target";
-    fs::remove_all(directory);
 }
 
 // Grid without a target gets one (the status says which); a spot cone the file format cannot
 // hold is refused at the command that makes it, naming the line, not found out at Save. The
 // default integrator is full.
 TEST_F(ScriptedViewer, PatternSamplersGetATargetAndCrossedConeAnglesAreRefusedAtTheEdit) {
-    fs::path directory = freshDirectory("ranges");
+    testing::ScratchFiles scratch("scripted_ranges");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, PTVIEW_ASSETS_DIR "/scenes/lights.json", R"(resolution-scale 0.125
 status
 sampler grid
@@ -353,11 +347,11 @@ quit
               std::string::npos)
         << result.output;
     EXPECT_FALSE(fs::exists(directory / "never.json")) << "the script stops at the refused edit";
-    fs::remove_all(directory);
 }
 
 TEST_F(ScriptedViewer, SplitViewShowsTwoIntegratorsWithTheirSampleCountsAndADivider) {
-    fs::path directory = freshDirectory("compare");
+    testing::ScratchFiles scratch("scripted_compare");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.25
 integrator direct
 compare on
@@ -390,11 +384,11 @@ quit
     }
     stbi_image_free(pixels);
     EXPECT_EQ(white, height - height / 4);
-    fs::remove_all(directory);
 }
 
 TEST_F(ScriptedViewer, BrokenSceneOnDiskIsReportedAndTheSceneKeepsRendering) {
-    fs::path directory = freshDirectory("reload");
+    testing::ScratchFiles scratch("scripted_reload");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "broken.json") << "{ \"camera\": { \"eye\": [0, 1, ";
     testing::CommandResult result = runViewer(directory, (directory / "scene.json").string(), R"(resolution-scale 0.25
@@ -416,11 +410,11 @@ quit
     // target stops them at exactly 4 (without one, a frame may add several and pass 4).
     EXPECT_EQ(field(status[1], "spp"), "4") << "the last good scene keeps rendering";
     EXPECT_EQ(field(status[1], "scene-error"), field(status[0], "scene-error")) << "the error stays shown";
-    fs::remove_all(directory);
 }
 
 TEST_F(ScriptedViewer, ScriptErrorsNameFileAndLineBeforeAnyWindowOpens) {
-    fs::path directory = freshDirectory("bad");
+    testing::ScratchFiles scratch("scripted_bad");
+    const fs::path& directory = scratch.directory();
     fs::path script = directory / "bad.txt";
     std::ofstream(script) << "frames 2\nintegrator fastest\n";
     // No xvfb-run: the script is checked before a display is needed.
@@ -435,13 +429,13 @@ TEST_F(ScriptedViewer, ScriptErrorsNameFileAndLineBeforeAnyWindowOpens) {
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find("script.txt:1: set-material: the scene has no material \"nosuch\""), std::string::npos)
         << result.output;
-    fs::remove_all(directory);
 }
 
 // Right after an edit the accumulation has no sample: `screenshot` waits for the first (as
 // `wait-spp 1` would) instead of failing with "nothing rendered yet".
 TEST_F(ScriptedViewer, ScreenshotRightAfterAnEditWaitsForTheFirstSample) {
-    fs::path directory = freshDirectory("shot_after_edit");
+    testing::ScratchFiles scratch("scripted_shot_after_edit");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.125
 set-material red.color 0.1 0.1 0.9
 screenshot edited.pfm
@@ -461,13 +455,13 @@ screenshot paused.pfm
     glm::dvec3 leftWall = regionMean(image, 2, 12, 30, 66);
     EXPECT_GT(leftWall.z, leftWall.x) << "the edited, blue wall";
     EXPECT_FALSE(fs::exists(directory / "paused.pfm"));
-    fs::remove_all(directory);
 }
 
 // "camera-zoom 1e38" put the eye at infinity (status: eye=-nan,-nan,inf) and the next wait-spp timed
 // out after 120 s. The move is refused at its line, exit 2, and the camera stays as it was.
 TEST_F(ScriptedViewer, CameraMovesThatWouldMakeTheCameraUnusableAreRefusedAtTheirLine) {
-    fs::path directory = freshDirectory("camera");
+    testing::ScratchFiles scratch("scripted_camera");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result =
         runViewer(directory, kCornell, "resolution-scale 0.125\ncamera-zoom 1e38\nwait-spp 1\nquit\n");
     EXPECT_EQ(result.exitCode, 2) << result.output;
@@ -493,7 +487,8 @@ const char* const kWallScene = R"({
 // of the surface at the given place (a wall 3 m ahead is 3 m away at the image's centre and at its
 // corner alike); a place where the ray leaves the scene is refused at its line, the focus kept.
 TEST_F(ScriptedViewer, CameraFocusAtFocusesOnTheSurfaceThere) {
-    fs::path directory = freshDirectory("focus");
+    testing::ScratchFiles scratch("scripted_focus");
+    const fs::path& directory = scratch.directory();
     const std::string scene = (directory / "wall.json").string();
     std::ofstream(scene) << kWallScene;
     testing::CommandResult result = runViewer(directory, scene,
@@ -513,13 +508,13 @@ TEST_F(ScriptedViewer, CameraFocusAtFocusesOnTheSurfaceThere) {
     result = runViewer(directory, scene, "resolution-scale 0.125\ncamera-focus-at 0.75 0.5\nquit\n");
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find("script.txt:2: camera-focus-at: nothing there to focus on"), std::string::npos) << result.output;
-    fs::remove_all(directory);
 }
 
 // The same by hand: Ctrl+click on the image (xdotool, tests/window_focus.sh) focuses on the wall
 // there; the camera does not move.
 TEST_F(ScriptedViewer, CtrlClickOnTheImageFocusesThere) {
-    fs::path directory = freshDirectory("ctrl_click");
+    testing::ScratchFiles scratch("scripted_ctrl_click");
+    const fs::path& directory = scratch.directory();
     std::ofstream(directory / "scene.json") << kWallScene;
     std::ofstream(directory / "script.txt") << "resolution-scale 0.25\ncamera-aperture 0.05\nwait-spp 1\nstatus\nwait-reload\nframes 2\nstatus\nquit\n";
     testing::CommandResult result = runWindowDriver(directory, "window_focus.sh");
@@ -529,14 +524,14 @@ TEST_F(ScriptedViewer, CtrlClickOnTheImageFocusesThere) {
     EXPECT_EQ(field(status[0], "focus"), "1");
     EXPECT_NEAR(std::stod(field(status[1], "focus")), 3.0, 1e-3) << result.output;
     EXPECT_EQ(field(status[0], "eye"), field(status[1], "eye")) << "a Ctrl+click does not orbit";
-    fs::remove_all(directory);
 }
 
 // The pixel inspector from a script: pin-pixel and save-pixel give the numbers of that pixel of
 // a headless render with the same settings, the shape and material seen there, and a pixel
 // outside the image is an error naming the line.
 TEST_F(ScriptedViewer, PinPixelSavesThePixelOfAHeadlessRender) {
-    fs::path directory = freshDirectory("pin_pixel");
+    testing::ScratchFiles scratch("scripted_pin_pixel");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(# 96x96 of the 768x768 image area
 resolution-scale 0.125
 seed 7
@@ -587,14 +582,14 @@ save-pixel none.json
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find("script.txt:2: pin-pixel: pixel 96 0 is outside the 96x96 image"), std::string::npos)
         << result.output;
-    fs::remove_all(directory);
 }
 
 // The paths behind a pixel in the window: after pin-pixel and trace-paths the image shows them
 // (the window's image area changes; the image itself had converged to its target), and
 // save-paths writes what `ptview paths` writes for that pixel, size and settings.
 TEST_F(ScriptedViewer, TracedPathsAreDrawnAndSavedAsPtviewPathsWritesThem) {
-    fs::path directory = freshDirectory("trace_paths");
+    testing::ScratchFiles scratch("scripted_trace_paths");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(# 96x96 of the 768x768 image area
 resolution-scale 0.125
 seed 7
@@ -649,7 +644,6 @@ quit
     stbi_image_free(before);
     stbi_image_free(after);
     EXPECT_GT(changed, 500) << "the paths' lines over the image";
-    fs::remove_all(directory);
 }
 
 // The paths table, cramped in the sidebar (its pdf and MIS columns scrolled out of sight), pops out
@@ -657,7 +651,8 @@ quit
 // light-path and split-view controls pop out beside it without covering it; closing puts them back
 // (issue 37).
 TEST_F(ScriptedViewer, PoppedOutSectionsGetTheirOwnWindowsOverTheImageAndGoBack) {
-    fs::path directory = freshDirectory("pop_out");
+    testing::ScratchFiles scratch("scripted_pop_out");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, R"(resolution-scale 0.25
 target-spp 2
 wait-spp 2
@@ -723,7 +718,6 @@ quit
     EXPECT_FALSE(overlap(windows["light-paths"], table));
     stbi_image_free(inside);
     stbi_image_free(out);
-    fs::remove_all(directory);
 }
 
 // The most common colour of the window's left `width` columns (the sidebar's background).
@@ -746,7 +740,8 @@ glm::ivec3 commonColour(const fs::path& png, int width) {
 // the choice and the high-contrast theme are kept for the next run; a scale out of range is
 // clamped and said so (issue 37).
 TEST_F(ScriptedViewer, CtrlPlusScalesTheInterfaceAndTheChoiceIsKeptForTheNextRun) {
-    fs::path directory = freshDirectory("ui_scale");
+    testing::ScratchFiles scratch("scripted_ui_scale");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
 target-spp 1
@@ -792,14 +787,14 @@ quit
     ASSERT_EQ(status.size(), 1u) << result.output;
     EXPECT_EQ(field(status[0], "ui-scale"), "3");
     EXPECT_EQ(field(status[0], "high-contrast"), "on");
-    fs::remove_all(directory);
 }
 
 // The same by hand: Alt+click on the image (xdotool, tests/window_pixel.sh) pins the render pixel
 // under the cursor, through the resolution scale (8 window pixels per render pixel here); the
 // camera does not move.
 TEST_F(ScriptedViewer, AltClickPinsThePixelUnderTheCursor) {
-    fs::path directory = freshDirectory("alt_click");
+    testing::ScratchFiles scratch("scripted_alt_click");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt")
         << "resolution-scale 0.125\ntarget-spp 2\nwait-spp 1\nstatus\nwait-reload\nwait-spp 2\nstatus\nsave-pixel clicked.json\nquit\n";
@@ -813,13 +808,13 @@ TEST_F(ScriptedViewer, AltClickPinsThePixelUnderTheCursor) {
     EXPECT_EQ(clicked["pixel"], nlohmann::json::array({20, 60}));
     EXPECT_EQ(clicked["spp"], 2);
     EXPECT_FALSE(clicked["hit"].is_null());
-    fs::remove_all(directory);
 }
 
 // Zoomed 16:1 and panned (`zoom`, `pan`), an Alt+click (tests/window_pixel.sh) pins the render
 // pixel drawn under the cursor, and the Pixel panel's numbers (save-pixel) are that pixel's.
 TEST_F(ScriptedViewer, ZoomedAltClickPinsTheRenderPixelDrawnUnderTheCursor) {
-    fs::path directory = freshDirectory("zoomed_click");
+    testing::ScratchFiles scratch("scripted_zoomed_click");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << "resolution-scale 0.125\ntarget-spp 2\nwait-spp 1\nzoom 16\npan 40 -24\n"
                                                "view estimated-error\nstatus\nwait-reload\nwait-spp 2\nstatus\n"
@@ -839,14 +834,14 @@ TEST_F(ScriptedViewer, ZoomedAltClickPinsTheRenderPixelDrawnUnderTheCursor) {
     nlohmann::json clicked = nlohmann::json::parse(std::ifstream(directory / "clicked.json"));
     EXPECT_EQ(clicked["pixel"], nlohmann::json::array({35, 44}));
     EXPECT_EQ(clicked["spp"], 2);
-    fs::remove_all(directory);
 }
 
 // The difference view end to end: the render against its own saved PFM is white (no difference)
 // everywhere; a comparison image that cannot be read, or of another size, is said in status
 // (scene-error) without ending the script, and the image loaded before stays.
 TEST_F(ScriptedViewer, DifferenceFromItsOwnImageIsWhiteAndABadComparisonImageKeepsTheOneBefore) {
-    fs::path directory = freshDirectory("difference");
+    testing::ScratchFiles scratch("scripted_difference");
+    const fs::path& directory = scratch.directory();
     std::ofstream(directory / "bad.pfm") << "PF\n3 3\n-1.0\ntoo short";
     std::ofstream(directory / "small.pfm") << "PF\n2 1\n-1.0\n" << std::string(2 * 3 * 4, '\0');
     testing::CommandResult result = runViewer(directory, kCornell,
@@ -879,13 +874,13 @@ TEST_F(ScriptedViewer, DifferenceFromItsOwnImageIsWhiteAndABadComparisonImageKee
     ASSERT_EQ(other.size(), image.size());
     for (size_t i = 0; i < image.size(); ++i) // the saved mean and the display's differ in float rounding only
         ASSERT_LE(std::abs(int(other[i]) - int(image[i])), 1) << "its own image, shown like the render: byte " << i;
-    fs::remove_all(directory);
 }
 
 // Before: `screenshot-window` to a missing directory failed after the frame, in the window's
 // code, without the script's file and line (exit 1); `screenshot` always named them.
 TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {
-    fs::path directory = freshDirectory("screenshot_dir");
+    testing::ScratchFiles scratch("scripted_screenshot_dir");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, "resolution-scale 0.25\nwait-spp 1\nscreenshot-window nodir/w.png\n");
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find("script.txt:3: screenshot-window: nodir/w.png: directory nodir does not exist"),
@@ -893,12 +888,12 @@ TEST_F(ScriptedViewer, ScreenshotsToAMissingDirectoryNameTheScriptLine) {
     result = runViewer(directory, kCornell, "resolution-scale 0.25\nwait-spp 1\nscreenshot nodir/i.png\n");
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find("script.txt:3: screenshot: nodir/i.png"), std::string::npos) << result.output;
-    fs::remove_all(directory);
 }
 
 // F12 as a user presses it (xdotool), in an interactive session without a script.
 TEST_F(ScriptedViewer, F12SavesPngPfmAndExrIntoScreenshots) {
-    fs::path directory = freshDirectory("f12");
+    testing::ScratchFiles scratch("scripted_f12");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runWindowDriver(directory, "window_keys.sh", testing::shellQuoted(kCornell) +
         // Naive, as the default was when this was written: the test is about F12, and a naive
         // first 768x768 sample is the cheapest to have within the script's ten presses.
@@ -920,13 +915,13 @@ TEST_F(ScriptedViewer, F12SavesPngPfmAndExrIntoScreenshots) {
     EXPECT_GE(png, 1);
     EXPECT_EQ(pfm, png);
     EXPECT_EQ(exr, png);
-    fs::remove_all(directory);
 }
 
 // N as a user presses it (xdotool): the denoiser comes on without a restart (the same samples,
 // the same render time), the image saved is the denoised one, and the EXR keeps the raw mean.
 TEST_F(ScriptedViewer, NKeyTurnsDenoiseOnWithoutRestartingAndScreenshotsShowIt) {
-    fs::path directory = freshDirectory("denoise");
+    testing::ScratchFiles scratch("scripted_denoise");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
 target-spp 4
@@ -962,7 +957,6 @@ quit
     status = statusLines(result.output);
     ASSERT_EQ(status.size(), 1u) << result.output;
     EXPECT_EQ(field(status[0], "denoise"), "on");
-    fs::remove_all(directory);
 }
 
 glm::vec3 eyeOf(const std::string& statusLine) {
@@ -974,7 +968,8 @@ glm::vec3 eyeOf(const std::string& statusLine) {
 // Real mouse and keyboard events (xdotool): a drag over the sidebar leaves the camera alone, a
 // drag over the image orbits it (keeping its distance to the target), W flies it forward.
 TEST_F(ScriptedViewer, MouseOrbitsOverTheImageOnlyAndWFliesForward) {
-    fs::path directory = freshDirectory("mouse");
+    testing::ScratchFiles scratch("scripted_mouse");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
 wait-spp 1
@@ -1000,14 +995,14 @@ quit
     EXPECT_GT(glm::length(afterImageDrag - start), 0.1f) << "a drag over the image orbits";
     EXPECT_NEAR(glm::length(afterImageDrag - target), glm::length(start - target), 1e-3f) << "orbiting keeps the distance";
     EXPECT_LT(glm::length(afterFlying - target), glm::length(afterImageDrag - target) - 0.05f) << "W flies toward the target";
-    fs::remove_all(directory);
 }
 
 // The wheel belongs to what is under the pointer when it turns: a pointer that reaches the
 // sidebar and a wheel turned in the same frame (ImGui's WantCaptureMouse still of the frame before,
 // over the image) must not zoom the camera, which would restart the accumulation.
 TEST_F(ScriptedViewer, TheWheelOverTheSidebarNeverZoomsEvenInTheFrameThePointerArrives) {
-    fs::path directory = freshDirectory("wheel");
+    testing::ScratchFiles scratch("scripted_wheel");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
 wait-spp 1
@@ -1027,14 +1022,14 @@ quit
     glm::vec3 start = eyeOf(status[0]), afterSidebarWheel = eyeOf(status[1]), afterImageWheel = eyeOf(status[2]);
     EXPECT_EQ(start, afterSidebarWheel) << "a wheel over the sidebar is the sidebar's";
     EXPECT_GT(glm::length(afterImageWheel - start), 0.01f) << "a wheel over the image zooms";
-    fs::remove_all(directory);
 }
 
 // Undo and redo by the keys, in the real window: an orbit dragged over many frames is one step
 // (Ctrl+Z puts the eye back exactly), Ctrl+Shift+Z redoes it, a burst of wheel notches is one step
 // too, Ctrl+Y redoes; the status line names the steps (the Edit section's buttons say the same).
 TEST_F(ScriptedViewer, CtrlZUndoesAWholeDragAndAWheelBurstAndCtrlShiftZRedoes) {
-    fs::path directory = freshDirectory("undo");
+    testing::ScratchFiles scratch("scripted_undo");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.25
 wait-spp 1
@@ -1079,13 +1074,13 @@ quit
     EXPECT_EQ(field(status[4], "undo-steps"), "2");
     EXPECT_EQ(field(status[4], "redo-steps"), "0");
     EXPECT_NE(field(status[4], "notice").find("redid camera"), std::string::npos) << status[4];
-    fs::remove_all(directory);
 }
 
 // A reference loaded into the viewer gives the true error: present, small, not zero (another
 // seed), and absent for a reference of another size.
 TEST_F(ScriptedViewer, ReferenceImageGivesTheTrueErrorInStatus) {
-    fs::path directory = freshDirectory("reference");
+    testing::ScratchFiles scratch("scripted_reference");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult render = testing::runCommand(std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted(kCornell) +
                                                         " --size 96x96 --spp 256 --seed 99 --integrator full --out " +
                                                         testing::shellQuoted((directory / "ref.pfm").string()));
@@ -1113,14 +1108,14 @@ quit
     EXPECT_GT(trueError, 0.0);
     EXPECT_LT(trueError, 0.5);
     EXPECT_EQ(field(status[1], "true-rel-mse").rfind("<missing", 0), 0u) << "a 32x32 reference cannot judge a 96x96 render";
-    fs::remove_all(directory);
 }
 
 // A script answers no questions: `quit` and `load-scene` go ahead, and say on stderr which kinds
 // of unsaved edits they threw away. The status line shows the edits and the save target, which
 // follows the open scene (after a save to a.json, opening another scene makes Save write that one).
 TEST_F(ScriptedViewer, ScriptsSayWhatUnsavedEditsTheyDiscardAndTheSaveTargetFollowsTheScene) {
-    fs::path directory = freshDirectory("discard");
+    testing::ScratchFiles scratch("scripted_discard");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/materials.json", directory / "other.json");
     testing::CommandResult result = runViewer(directory, "scene.json", R"(resolution-scale 0.125
@@ -1157,14 +1152,14 @@ quit
               std::string::npos) << result.output;
     EXPECT_NE(result.output.find("script.txt:15: quit: discarded unsaved edits (environment)"), std::string::npos)
         << result.output;
-    fs::remove_all(directory);
 }
 
 // What the window shows and does with unsaved edits, driven as a user would (window_unsaved.sh):
 // the title is starred; Escape and the close button ask instead of quitting, Escape in the
 // question cancels it, D discards and quits, leaving the file alone.
 TEST_F(ScriptedViewer, EscapeAndCloseAskBeforeDiscardingEditsAndDiscardQuits) {
-    fs::path directory = freshDirectory("unsaved_discard");
+    testing::ScratchFiles scratch("scripted_unsaved_discard");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     const std::string original = testing::readFileBytes(directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.125
@@ -1197,13 +1192,13 @@ wait-reload
     const std::string titles = testing::readFileBytes(directory / "titles.txt");
     EXPECT_EQ(titles.substr(0, titles.find('\n')), "ptview \xE2\x80\x94 scene.json *") << "an edited scene is starred";
     EXPECT_EQ(testing::readFileBytes(directory / "scene.json"), original) << "discarded, not saved";
-    fs::remove_all(directory);
 }
 
 // Save in the question writes the edits to the scene's file, then quits; a save (here the
 // script's) takes the star off the title.
 TEST_F(ScriptedViewer, SaveInTheQuestionWritesTheSceneFileThenQuits) {
-    fs::path directory = freshDirectory("unsaved_save");
+    testing::ScratchFiles scratch("scripted_unsaved_save");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(kCornell, directory / "scene.json");
     std::ofstream(directory / "script.txt") << R"(resolution-scale 0.125
 target-spp 1
@@ -1240,13 +1235,13 @@ wait-reload
             EXPECT_EQ(m.color, glm::vec3(0.0f, 1.0f, 0.0f));
         }
     EXPECT_TRUE(found);
-    fs::remove_all(directory);
 }
 
 // `ptview shot.png`: the viewer opens the scene and the settings the image carries (Provenance.h),
 // and its own screenshots (the image's EXR, the window's PNG) then record them again.
 TEST_F(ScriptedViewer, OpeningAnImagePtviewWroteRestoresItsSceneAndSettings) {
-    fs::path directory = freshDirectory("from_image");
+    testing::ScratchFiles scratch("scripted_from_image");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult render = testing::runCommand(
         std::string(PTVIEW_BINARY) + " render " + testing::shellQuoted(kCornell) + " --out " +
         testing::shellQuoted((directory / "shot.png").string()) +
@@ -1284,17 +1279,16 @@ quit
     EXPECT_EQ(viewerImage.width, headlessImage.width);
     EXPECT_EQ(viewerImage.height, headlessImage.height);
     EXPECT_TRUE(viewerImage.rgb == headlessImage.rgb) << "the viewer's render and its headless reproduction differ";
-    fs::remove_all(directory);
 }
 
 // open-material with a name the scene does not have ends the script, naming the line.
 TEST_F(ScriptedViewer, OpenMaterialOfAnUnknownNameIsAnErrorAtItsLine) {
-    fs::path directory = freshDirectory("open_material");
+    testing::ScratchFiles scratch("scripted_open_material");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runViewer(directory, kCornell, "resolution-scale 0.125\nopen-material red\nopen-material nope\n");
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find("script.txt:3: open-material: the scene has no material \"nope\""), std::string::npos)
         << result.output;
-    fs::remove_all(directory);
 }
 
 // The Materials panel's texture slot driven by mouse and keyboard (xdotool, tests/window_textures.sh):
@@ -1304,7 +1298,8 @@ TEST_F(ScriptedViewer, OpenMaterialOfAnUnknownNameIsAnErrorAtItsLine) {
 // the G channel it reads. The layout is fixed: a
 // 1000x520 screen (window 852x472), the material's node at the top of the sidebar (open-material).
 TEST_F(ScriptedViewer, TexturePanelLoadsShowsAndRemovesATextureByMouse) {
-    fs::path directory = freshDirectory("texture_panel");
+    testing::ScratchFiles scratch("scripted_texture_panel");
+    const fs::path& directory = scratch.directory();
     std::ofstream(directory / "scene.json") << R"({
   "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "vfov_deg": 30, "resolution": [64, 64]},
   "environment": {"color": [1, 1, 1]},
@@ -1427,7 +1422,6 @@ quit
     Scene saved = loadScene(directory / "removed.json");
     ASSERT_EQ(saved.materials.size(), 1u);
     EXPECT_FALSE(saved.materials[0].baseColorTexture.used()) << "Remove took the texture away";
-    fs::remove_all(directory);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // Files in tests: a fresh directory for the files one test writes, and reading a file back whole.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,13 +13,15 @@
 namespace ptview::testing {
 
 // Named after the process and the test, so tests running in parallel never share one; removed
-// when the test ends.
+// when the test ends. A parameterized test's name holds a '/' ("Case/mesh"), which would make
+// the directory a subdirectory whose empty parent nothing removes: it becomes '_'.
 class ScratchFiles {
 public:
     explicit ScratchFiles(const std::string& prefix) {
         const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = std::filesystem::temp_directory_path() /
-               ("ptview_" + prefix + "_" + std::to_string(::getpid()) + "_" + test->name());
+        std::string testName = test->name();
+        std::replace(testName.begin(), testName.end(), '/', '_');
+        dir_ = std::filesystem::temp_directory_path() / ("ptview_" + prefix + "_" + std::to_string(::getpid()) + "_" + testName);
         std::filesystem::remove_all(dir_);
         std::filesystem::create_directories(dir_);
     }

@@ -30,13 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDirectory(const std::string& name) {
-    fs::path directory = fs::temp_directory_path() / ("ptview_session_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(directory);
-    fs::create_directories(directory);
-    return directory;
-}
-
 void writeText(const fs::path& path, const std::string& text) {
     std::ofstream(path) << text;
 }
@@ -93,7 +86,8 @@ protected:
 // Click-to-focus headless: a tilted wall, so that each place has its own distance along the view
 // direction; the focus follows the place, and a place on the sky changes nothing.
 TEST_F(ViewerSessionTest, FocusAtSetsTheDistanceOfTheSurfaceUnderThePoint) {
-    fs::path directory = freshDirectory("focus");
+    testing::ScratchFiles scratch("session_focus");
+    const fs::path& directory = scratch.directory();
     // The wall's plane: z = -3 - 0.5 x (it recedes to the right), for x in [-4, 0.5].
     writeText(directory / "wall.json", R"({
   "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "vfov_deg": 40, "resolution": [24, 24]},
@@ -120,7 +114,6 @@ TEST_F(ViewerSessionTest, FocusAtSetsTheDistanceOfTheSurfaceUnderThePoint) {
     const float before = session->model().scene.camera.focusDistance;
     EXPECT_FALSE(session->focusAt({0.98f, 0.5f})) << "the wall ends at x = 0.5: the sky there";
     EXPECT_EQ(session->model().scene.camera.focusDistance, before);
-    fs::remove_all(directory);
 }
 
 // Tab or a resize must not throw away an image: with samples, the render keeps its size and is
@@ -157,7 +150,8 @@ TEST_F(ViewerSessionTest, ResizeKeepsARenderWithSamplesUntilARestart) {
 }
 
 TEST_F(ViewerSessionTest, BrokenSceneReloadKeepsTheSceneAndEditsThenAGoodOneMergesWithThem) {
-    fs::path directory = freshDirectory("reload");
+    testing::ScratchFiles scratch("session_reload");
+    const fs::path& directory = scratch.directory();
     fs::path scenePath = directory / "cornell.json";
     const std::string original = testing::readFileBytes(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
     writeText(scenePath, original);
@@ -191,11 +185,11 @@ TEST_F(ViewerSessionTest, BrokenSceneReloadKeepsTheSceneAndEditsThenAGoodOneMerg
     EXPECT_EQ(material(*session, "white").color, glm::vec3(0.2f, 0.7f, 0.2f));
     session->update();
     EXPECT_EQ(session->stats(ViewerSession::Side::Left).samples, 0) << "a reload restarts accumulation";
-    fs::remove_all(directory);
 }
 
 TEST_F(ViewerSessionTest, BrokenShaderReloadKeepsTheLastGoodProgram) {
-    fs::path directory = freshDirectory("shaders");
+    testing::ScratchFiles scratch("session_shaders");
+    const fs::path& directory = scratch.directory();
     fs::copy(PTVIEW_SHADER_DIR, directory, fs::copy_options::recursive);
     fs::path scenePath = fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json";
     auto session = openSession(scenePath, directory);
@@ -216,7 +210,6 @@ TEST_F(ViewerSessionTest, BrokenShaderReloadKeepsTheLastGoodProgram) {
     EXPECT_EQ(session->model().shaderError, "");
     EXPECT_NE(session->model().notice.find("shaders reloaded"), std::string::npos);
     renderSamples(*session, 1);
-    fs::remove_all(directory);
 }
 
 // Equal time means equal time from the first frame: turning the split view on restarts the left
@@ -299,7 +292,8 @@ TEST_F(ViewerSessionTest, SplitViewRendersBothSidesWithTheirOwnSettings) {
     EXPECT_EQ(session->settings(ViewerSession::Side::Left).integrator, Integrator::Naive);
     EXPECT_EQ(session->settings(ViewerSession::Side::Right).integrator, Integrator::Mis);
 
-    fs::path directory = freshDirectory("compare");
+    testing::ScratchFiles scratch("session_compare");
+    const fs::path& directory = scratch.directory();
     std::vector<fs::path> files = session->saveScreenshots(directory);
     ASSERT_EQ(files.size(), 6u); // PNG, PFM and EXR of each side
     ImageRgbF naive = readPfm(files[1]), mis = readPfm(files[4]);
@@ -314,7 +308,6 @@ TEST_F(ViewerSessionTest, SplitViewRendersBothSidesWithTheirOwnSettings) {
     EXPECT_EQ(readProvenance(files[5]).recipe.settings.integrator, Integrator::Mis);
     EXPECT_EQ(readProvenance(files[3]).recipe.settings.integrator, Integrator::Mis); // the PNG
     EXPECT_EQ(readProvenance(files[2]).recipe.samplesPerPixel, left);
-    fs::remove_all(directory);
 }
 
 TEST_F(ViewerSessionTest, TargetSamplesStopsAccumulationAtExactlyTheTarget) {
@@ -371,13 +364,16 @@ TEST_F(ViewerSessionTest, TargetErrorStopsAdaptivelyAndStoppedPixelsTakeNoMoreSa
     EXPECT_EQ(adaptive.samples.max, tracer.sampleCount());
     EXPECT_LE(adaptive.samples.min, adaptive.samples.max);
     EXPECT_NE(adaptive.note.find("stopped: "), std::string::npos) << adaptive.note;
-    if (reached) EXPECT_NE(adaptive.note.find("<= 5%"), std::string::npos) << adaptive.note;
+    if (reached) {
+        EXPECT_NE(adaptive.note.find("<= 5%"), std::string::npos) << adaptive.note;
+    }
     // Finished means finished: further frames add nothing.
     const int samples = tracer.sampleCount();
     session->renderFrame();
     EXPECT_EQ(tracer.sampleCount(), samples);
     // A screenshot of it carries the threshold, so `render --from` samples it adaptively too.
-    fs::path directory = freshDirectory("adaptive");
+    testing::ScratchFiles scratch("session_adaptive");
+    const fs::path& directory = scratch.directory();
     std::vector<fs::path> files = session->saveScreenshots(directory);
     ASSERT_EQ(files.size(), 3u);
     const RenderRecipe recipe = readProvenance(files[2]).recipe;
@@ -503,7 +499,8 @@ double imageMean(const ImageRgbF& image) {
 }
 
 TEST_F(ViewerSessionTest, EnvironmentMapAndLightEditsReachTheRenderer) {
-    fs::path directory = freshDirectory("lights");
+    testing::ScratchFiles scratch("session_lights");
+    const fs::path& directory = scratch.directory();
     auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/lights.json");
     ViewerModel& model = session->model();
     ASSERT_FALSE(model.scene.lights.empty());
@@ -534,11 +531,11 @@ TEST_F(ViewerSessionTest, EnvironmentMapAndLightEditsReachTheRenderer) {
     // A map at intensity 0 adds no light and takes no light samples: the very image without it.
     double mapOff = meanAfter(8);
     EXPECT_NEAR(mapOff, dimmed, 1e-6 * dimmed);
-    fs::remove_all(directory);
 }
 
 TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneWatched) {
-    fs::path directory = freshDirectory("unsaved");
+    testing::ScratchFiles scratch("session_unsaved");
+    const fs::path& directory = scratch.directory();
     auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
     ViewerModel& model = session->model();
     EXPECT_FALSE(session->hasUnsavedEdits());
@@ -564,14 +561,14 @@ TEST_F(ViewerSessionTest, UnsavedEditsAreKnownUntilSavedAndTheSavedFileIsTheOneW
     EXPECT_EQ(model.sceneError, "");
     EXPECT_EQ(material(*session, "light").radiance, glm::vec3(1.0f));
     EXPECT_EQ(model.scene.materials[0].color, model.fileScene.materials[0].color);
-    fs::remove_all(directory);
 }
 
 // A material a glTF file made is saved as an override in the scene file's reference to the glTF
 // (it used to stay an unsaved edit that Save could not keep): after Save nothing is unsaved (the
 // title loses its *), and the saved file opens with the edit.
 TEST_F(ViewerSessionTest, EditsToGltfMaterialsAreSavedAsOverrides) {
-    fs::path directory = freshDirectory("gltf_edits");
+    testing::ScratchFiles scratch("session_gltf_edits");
+    const fs::path& directory = scratch.directory();
     auto session = openSession(PTVIEW_ASSETS_DIR "/scenes/helmet.json");
     ViewerModel& model = session->model();
     auto imported = std::find_if(model.scene.materials.begin(), model.scene.materials.end(),
@@ -598,14 +595,14 @@ TEST_F(ViewerSessionTest, EditsToGltfMaterialsAreSavedAsOverrides) {
     ASSERT_NE(again, reopened.materials.end());
     EXPECT_EQ(again->metallic, metallic);
     EXPECT_EQ(again->importedFrom, 0) << "still the glTF file's material";
-    fs::remove_all(directory);
 }
 
 // A scene an image carries (SceneInput::carriedBy) has no file of its own, whatever its
 // ptview.scene_file says: no save target, nothing watched, and an edit answered with Save in the
 // unsaved-edits question writes nothing (it asks for a name) and leaves the named file alone.
 TEST_F(ViewerSessionTest, ASceneCarriedByAnImageHasNoSaveTarget) {
-    fs::path directory = freshDirectory("carried");
+    testing::ScratchFiles scratch("session_carried");
+    const fs::path& directory = scratch.directory();
     const fs::path notes = directory / "notes.txt";
     writeText(notes, "my notes\n");
     std::optional<SceneInput> input = loadSceneInput(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
@@ -625,14 +622,14 @@ TEST_F(ViewerSessionTest, ASceneCarriedByAnImageHasNoSaveTarget) {
     EXPECT_FALSE(prompt.quitConfirmed());
     EXPECT_NE(prompt.saveError().find("no file to save to"), std::string::npos) << prompt.saveError();
     EXPECT_EQ(testing::readFileBytes(notes), "my notes\n");
-    fs::remove_all(directory);
 }
 
 // Opening a screenshot: the scene it carries counts as unsaved (the star; Save asks for a name)
 // unless the file it names holds it as it is. A lens the user set before the screenshot is such a
 // difference; the named file is read only inside the image's folder, as the scene's files are.
 TEST_F(ViewerSessionTest, AScreenshotsSceneIsUnsavedUnlessTheFileItNamesHoldsIt) {
-    fs::path directory = freshDirectory("screenshot-star");
+    testing::ScratchFiles scratch("session_screenshot-star");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/cornell.json", directory / "scene.json");
     fs::create_directories(directory / "elsewhere");
     auto session = openSession(directory / "scene.json");
@@ -666,14 +663,14 @@ TEST_F(ViewerSessionTest, AScreenshotsSceneIsUnsavedUnlessTheFileItNamesHoldsIt)
             EXPECT_FALSE(opened.hasUnsavedEdits()) << "saved";
         }
     }
-    fs::remove_all(directory);
 }
 
 // Save to a.json, then open another scene: Save must now write that scene's own file, not a.json
 // (the Materials panel kept the first path it showed, and a Save replaced the edited a.json with
 // the other scene). What the user types after opening is the target until the next open or save.
 TEST_F(ViewerSessionTest, SaveTargetFollowsTheOpenScene) {
-    fs::path directory = freshDirectory("target");
+    testing::ScratchFiles scratch("session_target");
+    const fs::path& directory = scratch.directory();
     fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/cornell.json", directory / "cornell.json");
     fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/materials.json", directory / "materials.json");
     auto session = openSession(directory / "cornell.json");
@@ -694,7 +691,6 @@ TEST_F(ViewerSessionTest, SaveTargetFollowsTheOpenScene) {
     EXPECT_EQ(session->saveTarget(), (directory / "typed.json").string()) << "a failed open changes nothing";
     ASSERT_TRUE(session->openScene(directory / "a.json"));
     EXPECT_EQ(session->saveTarget(), (directory / "a.json").string());
-    fs::remove_all(directory);
 }
 
 TEST_F(ViewerSessionTest, QuitWaitsForAnAnswerOnlyWhenThereAreUnsavedEdits) {
@@ -720,7 +716,8 @@ TEST_F(ViewerSessionTest, QuitWaitsForAnAnswerOnlyWhenThereAreUnsavedEdits) {
 }
 
 TEST_F(ViewerSessionTest, SaveAnswerWritesTheEditsBeforeOpeningAnotherScene) {
-    fs::path directory = freshDirectory("prompt_save");
+    testing::ScratchFiles scratch("session_prompt_save");
+    const fs::path& directory = scratch.directory();
     fs::path scenePath = directory / "cornell.json";
     fs::copy_file(PTVIEW_ASSETS_DIR "/scenes/cornell.json", scenePath);
     auto session = openSession(scenePath);
@@ -745,7 +742,6 @@ TEST_F(ViewerSessionTest, SaveAnswerWritesTheEditsBeforeOpeningAnotherScene) {
     EXPECT_EQ(loadScene(scenePath).materials[0].color, glm::vec3(0.25f, 0.5f, 0.75f)) << "the edit is in the file";
     EXPECT_EQ(session->model().fileScene.path, other) << "then the other scene opened";
     EXPECT_FALSE(session->hasUnsavedEdits());
-    fs::remove_all(directory);
 }
 
 TEST_F(ViewerSessionTest, DiscardOpensTheOtherSceneAndReloadDiscardReadsTheFileAsItIs) {
@@ -894,7 +890,8 @@ TEST_F(ViewerSessionTest, ScreenshotsWithDenoiseHoldTheDenoisedImageTheRawLayerA
     renderSamples(*session, 3);
     model.denoise = DenoiseSettings{true, 3, 6.0f};
     session->update(); // no renderFrame: the screenshot denoises what there is itself
-    fs::path directory = freshDirectory("denoise");
+    testing::ScratchFiles scratch("session_denoise");
+    const fs::path& directory = scratch.directory();
     std::vector<fs::path> files = session->saveScreenshots(directory);
     ASSERT_EQ(files.size(), 3u);
     const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
@@ -918,7 +915,6 @@ TEST_F(ViewerSessionTest, ScreenshotsWithDenoiseHoldTheDenoisedImageTheRawLayerA
     EXPECT_EQ(readPfm(files[1]).rgb, raw.rgb);
     EXPECT_EQ(exrChannel(readExr(files[2]), "raw.R"), nullptr);
     EXPECT_FALSE(readProvenance(files[0]).recipe.denoise.enabled);
-    fs::remove_all(directory);
 }
 
 // The split view compares raw and denoised of one render (no second tracer, both halves the same
@@ -941,7 +937,8 @@ TEST_F(ViewerSessionTest, SplitViewShowsRawAndDenoisedOfOneRenderOrEachRendersOw
     EXPECT_TRUE(right->denoised);
     EXPECT_FALSE(session->displaySettings(ViewerSession::Side::Left).denoised);
     EXPECT_TRUE(session->displaySettings(ViewerSession::Side::Right).denoised);
-    fs::path directory = freshDirectory("split_denoise");
+    testing::ScratchFiles scratch("session_split_denoise");
+    const fs::path& directory = scratch.directory();
     std::vector<fs::path> files = session->saveScreenshots(directory);
     ASSERT_EQ(files.size(), 6u);
     const PathTracer& tracer = session->tracer(ViewerSession::Side::Left);
@@ -963,7 +960,6 @@ TEST_F(ViewerSessionTest, SplitViewShowsRawAndDenoisedOfOneRenderOrEachRendersOw
     model.denoise.enabled = true;
     session->update();
     EXPECT_TRUE(session->displaySettings(ViewerSession::Side::Left).denoised);
-    fs::remove_all(directory);
 }
 
 // The difference views' image: a file that cannot be read, or of another size than the render,
@@ -1173,7 +1169,8 @@ TEST_F(ViewerSessionTest, UndoTakesBackATextureAssignment) {
 // after a failed reload restores the last good scene with the edits before the undone one kept.
 // A good reload then rebases the history: undo walks the user's edits on top of the new file.
 TEST_F(ViewerSessionTest, UndoAfterAFailedReloadRestoresTheLastGoodSceneWithItsEditsKept) {
-    fs::path directory = freshDirectory("undo_reload");
+    testing::ScratchFiles scratch("session_undo_reload");
+    const fs::path& directory = scratch.directory();
     fs::path scenePath = directory / "cornell.json";
     const std::string original = testing::readFileBytes(PTVIEW_ASSETS_DIR "/scenes/cornell.json");
     writeText(scenePath, original);
@@ -1222,14 +1219,14 @@ TEST_F(ViewerSessionTest, UndoAfterAFailedReloadRestoresTheLastGoodSceneWithItsE
     EXPECT_EQ(material(*session, "white").color, named(file.materials, "white").color);
     EXPECT_EQ(material(*session, "light").radiance, glm::vec3(34.0f, 24.0f, 8.0f)) << "the file's change stays";
     EXPECT_FALSE(session->hasUnsavedEdits()) << "back to the file as it is now";
-    fs::remove_all(directory);
 }
 
 // Save moves the "saved" mark, not the history: the title's star follows undo and redo back to
 // the saved state. Reload with the edits discarded is a step undo takes back; opening another
 // scene starts afresh.
 TEST_F(ViewerSessionTest, SaveKeepsTheHistoryAndTheStarFollowsUndoBackToTheSavedState) {
-    fs::path directory = freshDirectory("undo_save");
+    testing::ScratchFiles scratch("session_undo_save");
+    const fs::path& directory = scratch.directory();
     auto session = openSession(fs::path(PTVIEW_ASSETS_DIR) / "scenes/cornell.json");
     const glm::vec3 fileColor = material(*session, "white").color;
     editable(*session, "white").color = glm::vec3(0.2f, 0.7f, 0.2f);
@@ -1260,7 +1257,6 @@ TEST_F(ViewerSessionTest, SaveKeepsTheHistoryAndTheStarFollowsUndoBackToTheSaved
     EXPECT_FALSE(session->history().canUndo());
     EXPECT_FALSE(session->history().canRedo());
     EXPECT_FALSE(session->undo());
-    fs::remove_all(directory);
 }
 
 } // namespace

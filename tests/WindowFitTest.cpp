@@ -3,6 +3,7 @@
 // too large for the software rasterizer shows a preview within a few frames.
 #include "RunCommand.h"
 #include "ScriptStatus.h"
+#include "TestFiles.h"
 
 #include <stb_image.h>
 
@@ -23,13 +24,6 @@ using testing::field;
 using testing::statusLines;
 
 constexpr int kSidebarWidth = 380;
-
-fs::path freshDirectory(const std::string& name) {
-    fs::path directory = fs::temp_directory_path() / ("ptview_windowfit_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(directory);
-    fs::create_directories(directory);
-    return directory;
-}
 
 struct Png {
     int width = 0, height = 0;
@@ -77,7 +71,8 @@ protected:
 // a 1280x800 screen cut off its right side. The window shot is the framebuffer, so its size is
 // the window's.
 TEST_F(WindowFit, MaterialsSceneOpensInsideA1280x800ScreenInItsAspect) {
-    fs::path directory = freshDirectory("fits");
+    testing::ScratchFiles scratch("windowfit_fits");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result =
         runScript(directory, "1280x800x24", PTVIEW_ASSETS_DIR "/scenes/materials.json", "frames 2\nscreenshot-window w.png\nquit\n");
     ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -88,7 +83,6 @@ TEST_F(WindowFit, MaterialsSceneOpensInsideA1280x800ScreenInItsAspect) {
     // The image beside the sidebar keeps the scene's 3:2 within a pixel of rounding.
     EXPECT_NEAR(double(png->width - kSidebarWidth) / png->height, 480.0 / 320.0, 2.0 / png->height) << png->width << "x" << png->height;
     EXPECT_GT(png->height, 400) << "fitting must not shrink the window to nothing";
-    fs::remove_all(directory);
 }
 
 // Tab and F1 pressed by xdotool (tests/window_tab_help.sh) once the image has its samples; the
@@ -96,7 +90,9 @@ TEST_F(WindowFit, MaterialsSceneOpensInsideA1280x800ScreenInItsAspect) {
 class WindowKeys : public WindowFit {
 protected:
     static void SetUpTestSuite() {
-        directory_ = freshDirectory("keys");
+        directory_ = fs::temp_directory_path() / ("ptview_windowfit_keys_" + std::to_string(::getpid()));
+        fs::remove_all(directory_);
+        fs::create_directories(directory_);
         std::ofstream(directory_ / "script.txt") << "integrator direct\nresolution-scale 0.125\ntarget-spp 4\nwait-spp 4\nstatus\n"
                                                     "wait-seconds 2.5\nstatus\nscreenshot-window keys.png\nquit\n";
         result_ = testing::runCommand("cd " + testing::shellQuoted(directory_.string()) +
@@ -157,7 +153,8 @@ TEST_F(WindowKeys, HelpOverlayIsWideEnoughToRead) {
 // takes minutes, and the image stayed black until it was done. The preview must show an image
 // within a few frames (its coarsest level's first pass goes in one piece), and the render go on.
 TEST_F(WindowFit, LargeRenderShowsAPreviewWithinAFewFramesAndTracesOn) {
-    fs::path directory = freshDirectory("preview");
+    testing::ScratchFiles scratch("windowfit_preview");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = runScript(directory, "1600x1000x24", PTVIEW_ASSETS_DIR "/scenes/cornell.json",
                                               "integrator direct\ndepth 1\nframes 3\nstatus\n"
                                               "screenshot-window preview.png\nwait-seconds 5\nstatus\nquit\n");
@@ -177,13 +174,13 @@ TEST_F(WindowFit, LargeRenderShowsAPreviewWithinAFewFramesAndTracesOn) {
     for (int y = 0; y < png->height; ++y)
         for (int x = kSidebarWidth; x < png->width; ++x) lit += png->at(x, y)[0] > 40 || png->at(x, y)[1] > 40;
     EXPECT_GT(lit, long(png->width - kSidebarWidth) * png->height / 4) << "the preview fills the image area";
-    fs::remove_all(directory);
 }
 
 // The visualizer was centred on the window, its left third under the sidebar: the points'
 // centroid must sit at the centre of the image area beside the sidebar.
 TEST_F(WindowFit, WarpVisualizerIsCentredInTheImageArea) {
-    fs::path directory = freshDirectory("warp");
+    testing::ScratchFiles scratch("windowfit_warp");
+    const fs::path& directory = scratch.directory();
     testing::CommandResult result = testing::runCommand(
         "cd " + testing::shellQuoted(directory.string()) + " && xvfb-run -a -s '-screen 0 1280x800x24' " + PTVIEW_BINARY +
         " --warp uniform-disk --sampler sobol --frames 2 --screenshot warp.png");
@@ -202,7 +199,6 @@ TEST_F(WindowFit, WarpVisualizerIsCentredInTheImageArea) {
     ASSERT_GT(count, 1000) << "points drawn";
     double centre = kSidebarWidth + (png->width - kSidebarWidth) / 2.0;
     EXPECT_NEAR(sumX / count, centre, 0.03 * (png->width - kSidebarWidth));
-    fs::remove_all(directory);
 }
 
 } // namespace

@@ -27,7 +27,7 @@ struct DisplaySettings {
     // The image, or its error or difference (DisplayView.h) against PathTracer::setOtherImage's
     // image; the estimated error is always of the raw samples, denoised or not.
     DisplayView view = DisplayView::Image;
-    ErrorMapRange mapRange;
+    ErrorMapRange mapRange{};
     DisplayTransfer transfer = DisplayTransfer::Srgb;
 };
 
