@@ -111,13 +111,14 @@ int triangleMaterial(int instance, int triangle) {
 int triangleAttributes(int triangle) { return uMeshAttributeStart + kTriangleAttributeTexels * triangle; }
 
 // Texture coordinates at barycentric on a triangle, interpolated from its corners (GpuTriangle:
-// u0 in attribute texel 0's w, v0 in 1's, u1 in 2's, then (v1, u2, v2) in texel 3).
+// u0 in attribute texel 0's w, v0 in 1's, u1 in 2's, and (v1, u2, v2) in the last texel of the
+// corners' record, which fills it to a cache line).
 vec2 triangleUv(int triangle, vec3 barycentric) {
     int base = triangleAttributes(triangle);
     float u0 = texelFetch(uMeshTriangles, base).w;
     float v0 = texelFetch(uMeshTriangles, base + 1).w;
     float u1 = texelFetch(uMeshTriangles, base + 2).w;
-    vec3 v1U2V2 = texelFetch(uMeshTriangles, base + 3).xyz;
+    vec3 v1U2V2 = texelFetch(uMeshTriangles, kTrianglePositionTexels * triangle + 3).xyz;
     return barycentric.x * vec2(u0, v0) + barycentric.y * vec2(u1, v1U2V2.x) + barycentric.z * v1U2V2.yz;
 }
 

@@ -63,7 +63,7 @@ std::string glslLayoutConstants() {
            glslIntConstant("kTextureRecordTexels", kTextureRecordTexels, "GpuTextureRecord, after the materials") +
            glslIntConstant("kLightTexels", kLightTexels, "GpuLight") +
            glslIntConstant("kBvhNodeTexels", kBvhNodeTexels, "GpuBvhNode") +
-           glslIntConstant("kTrianglePositionTexels", kTrianglePositionTexels, "GpuTriangle's corners, material slot and tangent texel") +
+           glslIntConstant("kTrianglePositionTexels", kTrianglePositionTexels, "GpuTriangle's corners, material slot, tangent texel and (v1, u2, v2)") +
            glslIntConstant("kTriangleAttributeTexels", kTriangleAttributeTexels, "GpuTriangle's normals and uvs, from uMeshAttributeStart") +
            glslIntConstant("kInstanceTexels", kInstanceTexels, "a mesh instance (GpuMeshes.h)") +
            "const uint kBvhNoChild = " + std::to_string(kBvhNoChild) + "u; // GpuBvhNode::child: no child\n"

@@ -232,12 +232,17 @@ constexpr std::uint32_t kBvhLeafBit = 0x80000000u;
 constexpr int kBvhNodeTexels = sizeof(GpuBvhNode) / 16;
 
 // shaders/mesh_intersect.glsl: seven RGBA32F texels per triangle, in the order of its mesh's BVH
-// leaves (so a leaf's triangles are contiguous), uploaded as two arrays: the first three texels of
-// every triangle (what the intersection loop reads: corners, material slot), then from
-// kTrianglePositionTexels * triangles on the last four of every triangle (what only the closest
-// hit reads), so that a leaf's corners lie together in memory. Triangles of meshes that a
-// normal-mapped material covers have three more texels, after all triangles in the same buffer:
-// the corners' tangents (xyz unit, w the bitangent's sign: MeshTangents.h); other meshes carry none.
+// leaves (so a leaf's triangles are contiguous), uploaded as two arrays: the first four texels of
+// every triangle (the corners and material slot, which the intersection loop reads, and a last
+// texel that fills the record to 64 bytes, one cache line), then from kTrianglePositionTexels *
+// triangles on the last three of every triangle (what only the closest hit reads), so that a
+// leaf's corners lie together in memory. Records of 64 bytes start on a cache line: a triangle's
+// corners are then one line, never two, and on llvmpipe that paid 2% to 6% in samples per second
+// on every mesh scene over 48-byte records (docs/performance.md, issue 35); the filler holds
+// three of the uvs, which the closest hit reads with the corners anyway, so no memory is added.
+// Triangles of meshes that a normal-mapped material covers have three more texels, after all
+// triangles in the same buffer: the corners' tangents (xyz unit, w the bitangent's sign:
+// MeshTangents.h); other meshes carry none.
 struct GpuTriangle {
     glm::vec3 p0;
     float materialSlot; // into the instance's material table (an integer value: GpuLayout.h)
@@ -245,15 +250,16 @@ struct GpuTriangle {
     float tangentTexel; // first of the triangle's three tangent texels in the buffer; -1: none
     glm::vec3 p2;
     float pad1;
+    glm::vec4 v1U2V2;   // (v1, u2, v2, -): the rest of the texture coordinates below
     glm::vec4 n0AndU0;  // per-corner shading normals (0: none, use the geometric normal) and
     glm::vec4 n1AndV0;  // texture coordinates (0 when the mesh has none)
     glm::vec4 n2AndU1;
-    glm::vec4 v1U2V2;   // (v1, u2, v2, -)
 };
 static_assert(sizeof(GpuTriangle) == 112, "seven RGBA32F texels");
 constexpr int kTriangleTexels = sizeof(GpuTriangle) / 16;
 // Generated into gpu_layout.glsl.
 constexpr int kTrianglePositionTexels = offsetof(GpuTriangle, n0AndU0) / 16;
+static_assert(kTrianglePositionTexels * 16 == 64, "a triangle's corners fill one cache line");
 constexpr int kTriangleAttributeTexels = kTriangleTexels - kTrianglePositionTexels;
 
 // Texels per instance: world-to-object and object-to-world rows (three each), (bottom-level root,
