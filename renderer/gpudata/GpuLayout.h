@@ -237,9 +237,10 @@ constexpr int kBvhNodeTexels = sizeof(GpuBvhNode) / 16;
 // texel that fills the record to 64 bytes, one cache line), then from kTrianglePositionTexels *
 // triangles on the last three of every triangle (what only the closest hit reads), so that a
 // leaf's corners lie together in memory. Records of 64 bytes start on a cache line: a triangle's
-// corners are then one line, never two, and on llvmpipe that paid 2% to 6% in samples per second
-// on every mesh scene over 48-byte records (docs/performance.md, issue 35); the filler holds
-// three of the uvs, which the closest hit reads with the corners anyway, so no memory is added.
+// corners are then one line, never two, as GPUs' memory systems want too. On llvmpipe that is
+// worth little, 0.3% to 1.3% in time on the mesh scenes against 48-byte records
+// (docs/performance.md, issue 35); the filler holds three of the uvs, which the closest hit reads
+// with the corners anyway, so it costs no memory.
 // Triangles of meshes that a normal-mapped material covers have three more texels, after all
 // triangles in the same buffer: the corners' tangents (xyz unit, w the bitangent's sign:
 // MeshTangents.h); other meshes carry none.
