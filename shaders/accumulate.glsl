@@ -5,6 +5,6 @@ layout(location = 0) out vec4 outSum;
 layout(location = 1) out vec4 outCompensation;
 layout(location = 2) out vec4 outSumSquares;
 
-void accumulateSamples(ivec2 pixel, vec3 sampleSum, vec3 sampleSquares, uint samplesAdded, bool onEmissionEdge) {
-    accumulatedSums(pixel, sampleSum, sampleSquares, samplesAdded, onEmissionEdge, outSum, outCompensation, outSumSquares);
+void accumulateSamples(ivec2 pixel, vec3 sampleSum, vec3 sampleSquares, uint samplesAdded, uint edgeRays) {
+    accumulatedSums(pixel, sampleSum, sampleSquares, samplesAdded, edgeRays, outSum, outCompensation, outSumSquares);
 }

@@ -11,8 +11,9 @@
 // the pixel takes samples and 0 once adaptive sampling stopped it (Accumulator::stopPixels writes
 // it). OpenGL 4.1 guarantees 16 texture units and the path tracer uses all of them, so the mask
 // has no texture of its own. Without adaptive sampling every count is uFrameIndex and every
-// pixel takes samples. The compensation's alpha is 1 where the pixel straddles an emission edge
-// (emission_edges.glsl), decided with its first samples and kept from then on.
+// pixel takes samples. The compensation's alpha is the number of edge rays a sample of the pixel
+// takes, 0 unless it straddles an emission edge (emission_edges.glsl), decided with its first
+// samples and kept from then on.
 
 #include "frame_uniforms.glsl"
 
@@ -25,9 +26,9 @@ uint accumulatedSampleCount(ivec2 pixel) {
     return uFrameIndex > 0u ? uint(texelFetch(uPrevSum, pixel, 0).a) : 0u;
 }
 
-// Whether the pixel's first samples found it on an emission edge (emission_edges.glsl).
-bool storedOnEmissionEdge(ivec2 pixel) {
-    return texelFetch(uPrevCompensation, pixel, 0).a > 0.5;
+// The edge rays the pixel's first samples chose (emission_edges.glsl): 0 off an emission edge.
+uint storedEdgeRays(ivec2 pixel) {
+    return uint(texelFetch(uPrevCompensation, pixel, 0).a + 0.5);
 }
 
 // False once adaptive sampling stopped the pixel: it then adds no samples.
@@ -36,8 +37,8 @@ bool pixelTakesSamples(ivec2 pixel) {
 }
 
 // sampleSum and sampleSquares: the sum of this pass's samplesAdded samples of the pixel, and of
-// their squares; onEmissionEdge: what the pixel's next passes read from storedOnEmissionEdge.
-void accumulatedSums(ivec2 pixel, vec3 sampleSum, vec3 sampleSquares, uint samplesAdded, bool onEmissionEdge,
+// their squares; edgeRays: what the pixel's next passes read from storedEdgeRays.
+void accumulatedSums(ivec2 pixel, vec3 sampleSum, vec3 sampleSquares, uint samplesAdded, uint edgeRays,
                      out vec4 sumOut, out vec4 compensationOut, out vec4 sumSquaresOut) {
     vec4 sum = vec4(0.0);
     vec4 compensation = vec4(0.0);
@@ -57,6 +58,6 @@ void accumulatedSums(ivec2 pixel, vec3 sampleSum, vec3 sampleSquares, uint sampl
     precise vec3 newSum = sum.rgb + corrected;
     precise vec3 newCompensation = (newSum - sum.rgb) - corrected;
     sumOut = vec4(newSum, sum.a + float(samplesAdded));
-    compensationOut = vec4(newCompensation, onEmissionEdge ? 1.0 : 0.0);
+    compensationOut = vec4(newCompensation, float(edgeRays));
     sumSquaresOut = vec4(sumSquares.rgb + sampleSquares, sumSquares.a);
 }

@@ -160,8 +160,8 @@ void main() {
     // On an emission edge the render's samples take the emission their camera ray meets from it and
     // its edge rays (emission_edges.glsl): so do these, sample for sample (the same corners decide,
     // here in every pass, since these sums keep no decision). The coverage run's rays stay plain.
-    bool onEdge = false;
-    if (!uCoverage && edgeRaysPay()) onEdge = cornersSeeEmissionEdge(pixel);
+    uint edgeRays = 0u;
+    if (!uCoverage && edgeRaysPay()) edgeRays = cornerEdgeRays(pixel);
     for (uint i = 0u; i < uSamplesPerPass; ++i) {
         Sampler sampler;
         Ray ray = generatePixelRay(pixel, uFrameIndex + i, sampler);
@@ -169,9 +169,9 @@ void main() {
         float distance;
         sampleFeatures(ray, sampler, albedo, normal, distance);
         bool onlyEmission;
-        vec3 emitted = emissionAlongDeltaChain(ray, sampler, cameraEmissionWeight(onEdge), onlyEmission);
-        for (uint k = 0u; onEdge && k < kEdgeCameraRays; ++k)
-            emitted += edgeRayEmission(pixel, edgeRayIndex(uFrameIndex + i, k));
+        vec3 emitted = emissionAlongDeltaChain(ray, sampler, cameraEmissionWeight(edgeRays), onlyEmission);
+        for (uint k = 0u; k < edgeRays; ++k)
+            emitted += edgeRayEmission(pixel, edgeRayIndex(uFrameIndex + i, k, edgeRays), edgeRays);
         // A sample whose light is all emission has nothing to demodulate: albedo 0, its light is
         // all in the emission sums.
         if (onlyEmission) albedo = vec3(0.0);

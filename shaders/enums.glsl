@@ -53,3 +53,6 @@ const uint kTextureWrapClampToEdge = 1u; // clamp
 const uint kTextureWrapMirroredRepeat = 2u; // mirror
 // renderer/gpudata/QuadLightReach.h
 const float kSolidAngleSamplingMaxDistance = 2.000000;
+// renderer/gpudata/PassSize.h
+const uint kOutlineEdgeRays = 16u; // edge rays across a lamp's outline
+const uint kTextureEdgeRays = 4u; // edge rays within an emitting texture

@@ -17,7 +17,7 @@
 // longest path at every sample; this way a group waits once, for its longest total.
 void traceSamples(uvec2 pixel) {
     if (!pixelTakesSamples(ivec2(pixel))) {
-        accumulateSamples(ivec2(pixel), vec3(0.0), vec3(0.0), 0u, false);
+        accumulateSamples(ivec2(pixel), vec3(0.0), vec3(0.0), 0u, 0u);
         return;
     }
     vec3 sum = vec3(0.0);
@@ -25,7 +25,7 @@ void traceSamples(uvec2 pixel) {
     Sampler sampler;
     uint sampleIndex = accumulatedSampleCount(ivec2(pixel));
     uint endIndex = sampleIndex + uSamplesPerPass;
-    bool onEmissionEdge = false;
+    uint edgeRays = 0u;
     // kDebugView is a constant of the program: the branch not taken is compiled out.
     if (kDebugView != kDebugViewRadiance) {
         for (; sampleIndex < endIndex; ++sampleIndex) {
@@ -34,16 +34,16 @@ void traceSamples(uvec2 pixel) {
             sumSquares += value * value;
         }
     } else {
-        onEmissionEdge = pixelOnEmissionEdge(pixel);
-        float cameraWeight = cameraEmissionWeight(onEmissionEdge);
-        // A sample on an emission edge is its path and then its kEdgeCameraRays edge rays, each
+        edgeRays = pixelEdgeRays(pixel);
+        float cameraWeight = cameraEmissionWeight(edgeRays);
+        // A sample on an emission edge is its path and then its edgeRays edge rays, each
         // a path that ends at its first surface (emission_edges.glsl), traced by the same loop:
         // a loop of their own would run once, masked, for every SIMD group, edge or not.
         // The samplers of the two kinds of path, numbered per path below: created once, since
         // the loop runs each line for the whole SIMD group whichever kind its pixels start.
         Sampler pathSampler = createSampler(pixel, sampleIndex, uSeed, kSamplerMode, uSampleBudget);
-        Sampler edgeRaySampler = createEdgeRaySampler(pixel, 0u);
-        uint edgeRaysLeft = onEmissionEdge ? kEdgeCameraRays : 0u;
+        Sampler edgeRaySampler = createEdgeRaySampler(pixel, 0u, max(edgeRays, 1u));
+        uint edgeRaysLeft = edgeRays;
         vec3 sampleValue = vec3(0.0);
         sampler = pathSampler;
         PathState path = startPath(generatePixelRay(pixel, sampler), cameraWeight, false);
@@ -58,12 +58,12 @@ void traceSamples(uvec2 pixel) {
                 sumSquares += sampleValue * sampleValue;
                 sampleValue = vec3(0.0);
                 if (++sampleIndex == endIndex) break;
-                edgeRaysLeft = onEmissionEdge ? kEdgeCameraRays : 0u;
+                edgeRaysLeft = edgeRays;
             }
             sampler = edgeRay ? edgeRaySampler : pathSampler;
-            sampler.sampleIndex = edgeRay ? edgeRayIndex(sampleIndex, kEdgeCameraRays - 1u - edgeRaysLeft) : sampleIndex;
+            sampler.sampleIndex = edgeRay ? edgeRayIndex(sampleIndex, edgeRays - 1u - edgeRaysLeft, edgeRays) : sampleIndex;
             path = startPath(generatePixelRay(pixel, sampler), cameraWeight, edgeRay);
         }
     }
-    accumulateSamples(ivec2(pixel), sum, sumSquares, uSamplesPerPass, onEmissionEdge);
+    accumulateSamples(ivec2(pixel), sum, sumSquares, uSamplesPerPass, edgeRays);
 }

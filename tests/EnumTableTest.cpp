@@ -115,9 +115,9 @@ TEST(GlslEnums, ShadersDefineNoneOfTheGeneratedConstants) {
     const std::string enums = glslEnumConstants();
     static const std::regex enumDefinition(R"(const uint k\w+ = \d+u;)");
     EXPECT_EQ(std::distance(std::sregex_iterator(enums.begin(), enums.end(), enumDefinition), std::sregex_iterator()),
-              4 + 4 + 4 + 5 + 2 + 8 + 10 + 6 + 3 + 3); // integrators, samplers, views, tone mappers, display
-                                                  // transfers, light kinds, materials, light paths,
-                                                  // alpha modes, wrap modes
+              4 + 4 + 4 + 5 + 2 + 8 + 10 + 6 + 3 + 3 + 2); // integrators, samplers, views, tone mappers,
+                                                      // display transfers, light kinds, materials, light
+                                                      // paths, alpha modes, wrap modes; edge-ray counts
     EXPECT_GT(constants, 60); // and the layouts' numbers
 }
 

@@ -384,7 +384,7 @@ void traceSamples(uvec2 pixel) {
     float nan = uZero / uZero;
     float inf = 1.0 / uZero;
     vec3 value = pixel.x < uImageSize.x / 2 ? vec3(nan) : pixel.y >= uImageSize.y - 2 ? vec3(inf) : vec3(0.25);
-    accumulateSamples(ivec2(pixel), value, value * value, 1u, false);
+    accumulateSamples(ivec2(pixel), value, value * value, 1u, 0u);
 }
 )";
     PathTracer tracer(shaders);

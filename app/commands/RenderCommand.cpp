@@ -285,7 +285,7 @@ int runRenderCommand(const RenderOptions& requested) {
             const std::string filter = options.denoise.algorithm == DenoiseAlgorithm::Atrous
                                            ? "a-trous, " + std::to_string(options.denoise.iterations) + " iterations"
                                            : std::string(denoiseAlgorithmName(options.denoise.algorithm));
-            const int coverageSamples = Denoiser::coverageSamplesFor(samplesPerPixel);
+            const int coverageSamples = Denoiser::coverageSamplesFor(samplesPerPixel, tracer.edgeRays());
             const std::string outlines =
                 coverageSamples > 0 ? ", lights from " + std::to_string(coverageSamples) + " camera rays" : std::string();
             std::fprintf(stderr, "ptview: denoised (biased: docs/denoising.md) in %.3f s: %s, strength %g, features of %d spp%s%s\n",

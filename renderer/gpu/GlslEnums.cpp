@@ -3,6 +3,7 @@
 #include <ptview/geometry/WideBvh.h>
 #include <ptview/settings/DebugView.h>
 #include <ptview/gpudata/GpuLayout.h>
+#include <ptview/gpudata/PassSize.h>
 #include <ptview/gpu/GpuMeshes.h>
 #include <ptview/gpu/GpuScene.h>
 #include <ptview/gpu/SrgbDecodeTable.h>
@@ -50,7 +51,9 @@ std::string glslEnumConstants() {
            toneMapperNames().glslConstants() + displayTransferNames().glslConstants() + lightKindNames().glslConstants() + materialTypeConstants() +
            lightPathsNames().glslConstants() + alphaModeNames().glslConstants() + textureWrapNames().glslConstants() +
            "// renderer/gpudata/QuadLightReach.h\nconst float kSolidAngleSamplingMaxDistance = " +
-           std::to_string(kSolidAngleSamplingMaxDistance) + ";\n";
+           std::to_string(kSolidAngleSamplingMaxDistance) + ";\n" + "// renderer/gpudata/PassSize.h\n" +
+           glslUintConstant("kOutlineEdgeRays", kOutlineEdgeRays, "edge rays across a lamp's outline") +
+           glslUintConstant("kTextureEdgeRays", kTextureEdgeRays, "edge rays within an emitting texture");
 }
 
 std::string glslLayoutConstants() {

@@ -15,4 +15,15 @@ constexpr int kMaxSamplesPerPass = 16;
 // edge, which cost a pass of one sample 7% to 15% (docs/sampling.md, "Emission edges").
 constexpr int kEdgeRaysMinSamplesPerPass = 4;
 
+// Edge rays a sample of a pixel on an emission edge takes besides its camera ray (generated into
+// enums.glsl). Across a lamp's outline (the corners meet different surfaces, or some meet none)
+// the coin toss between lamp and dark is most of an image's variance and an edge ray, a nearest
+// hit, is cheap beside a path: 16 there. Within one emitting surface's texture (the corners meet
+// the same material, emitting unevenly) the contrast is weaker and such pixels can be many (the
+// helmet's emissive map): 4 there, where 12 cost the helmet 17% of its time for nothing
+// (docs/sampling.md, "Emission edges"). Powers of two, so that a sample's edge rays are an aligned
+// block of their Sobol' sequence.
+constexpr int kOutlineEdgeRays = 16;
+constexpr int kTextureEdgeRays = 4;
+
 } // namespace ptview

@@ -205,7 +205,7 @@ void Denoiser::begin(PathTracer& tracer, const DenoiseSettings& settings) {
     cycle_.featurePasses = (cycle_.featureTarget - featureSamples_ + perPass - 1) / perPass;
     // Past kMaxFeatureSamples the features are not of the radiance's samples, so nothing is
     // separated and the coverage run stops where it is.
-    cycle_.coverageTarget = std::max(coverageSamples_, coverageSamplesFor(tracer.sampleCount()));
+    cycle_.coverageTarget = std::max(coverageSamples_, coverageSamplesFor(tracer.sampleCount(), tracer.edgeRays()));
     cycle_.coverage = cycle_.coverageTarget > coverageSamples_;
     cycle_.samples = tracer.sampleCount();
 }

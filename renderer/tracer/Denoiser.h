@@ -10,6 +10,7 @@
 #include <ptview/gl/GlObjects.h>
 #include <ptview/gl/GlProgram.h>
 #include <ptview/gpu/ShaderFeatures.h>
+#include <ptview/gpudata/PassSize.h>
 #include <ptview/io/Image.h>
 #include <ptview/settings/DenoiseSettings.h>
 #include <ptview/settings/Integrator.h>
@@ -70,13 +71,20 @@ public:
     // own (docs/denoising.md: lights' and the sky's outlines). For n samples,
     // n * max(kMinCoverageSamplesPerSample, 2n) rays, at most kMaxCoverageSamples: the filtered
     // surface's error falls faster than 1/n, and the emission's must keep up (dof at 16 spp,
-    // regression: relMSE 0.00215 with 256 rays, 0.00186 with 512).
-    static constexpr int kMinCoverageSamplesPerSample = 4;
+    // regression: relMSE 0.00215 with 256 rays, 0.00186 with 512). And it must beat the raw
+    // image's own: where the tracer traces edge rays (PathTracer::edgeRays), a raw sample of a
+    // pixel across a lamp's outline meets the emission with its camera ray and kOutlineEdgeRays
+    // edge rays (emission_edges.glsl), so the floor is four times those rays a sample. At 4, once
+    // outlines took 16 edge rays, a lamp's denoised outline had 1.3x the raw's error
+    // (Denoiser.ALightsOutlineIsDenoisedLikeTheWallBesideIt).
+    static constexpr int kMinCoverageSamplesPerRawRay = 4;
     static constexpr int kMaxCoverageSamples = 1024;
-    // The coverage run's camera rays per pixel for a radiance of `samples` per pixel (0: none).
-    static int coverageSamplesFor(int samples) {
+    // The coverage run's camera rays per pixel for a radiance of `samples` per pixel (0: none),
+    // traced with edge rays or not.
+    static int coverageSamplesFor(int samples, bool edgeRays) {
         if (samples > kMaxFeatureSamples) return 0;
-        return std::min(samples * std::max(kMinCoverageSamplesPerSample, 2 * samples), kMaxCoverageSamples);
+        const int floor = kMinCoverageSamplesPerRawRay * (1 + (edgeRays ? kOutlineEdgeRays : 0));
+        return std::min(samples * std::max(floor, 2 * samples), kMaxCoverageSamples);
     }
 
     // The passes between prepare and compose: the à-trous iterations, or the regression's two

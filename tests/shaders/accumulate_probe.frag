@@ -9,5 +9,5 @@ void main() {
     uint k = uFrameIndex % 10u;
     float value = k == 9u ? 10000.0 : 0.125 * float(k) + 0.0625;
     vec3 sampleValue = vec3(value, 0.5 * value, value + 1.0);
-    accumulateSamples(ivec2(gl_FragCoord.xy), sampleValue, sampleValue * sampleValue, 1u, false);
+    accumulateSamples(ivec2(gl_FragCoord.xy), sampleValue, sampleValue * sampleValue, 1u, 0u);
 }
