@@ -2,6 +2,7 @@
 #include "DisplayTransformReference.h"
 #include "FoggyCornell.h"
 #include "GlTestContext.h"
+#include "TestFiles.h"
 #include <ptview/tracer/PathTracer.h>
 #include <ptview/scene/Scene.h>
 #include <ptview/scene/SceneLoader.h>
@@ -374,8 +375,8 @@ TEST(PathTracer, DebugViewsSeeThroughAFogBox) {
 // NaN on the left half and infinite on the top rows stands in for a bug.
 TEST(PathTracer, NonFinitePixelsAreHighlightedInMagenta) {
     testing::glContext();
-    std::filesystem::path shaders = std::filesystem::temp_directory_path() / ("ptview_nan_shaders_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(shaders);
+    testing::ScratchFiles scratch("nan_shaders");
+    const std::filesystem::path shaders = scratch.directory() / "shaders";
     std::filesystem::copy(PTVIEW_SHADER_DIR, shaders, std::filesystem::copy_options::recursive);
     std::ofstream(shaders / "pathtrace_sample.glsl") << R"(#include "frame_uniforms.glsl"
 #include "specialization.glsl"
@@ -403,7 +404,6 @@ void traceSamples(uvec2 pixel) {
     glm::ivec3 finite = pixel(6, 4);
     EXPECT_NE(finite, glm::ivec3(255, 0, 255));
     EXPECT_EQ(finite.r, finite.g);
-    std::filesystem::remove_all(shaders);
 }
 
 // The viewer's preview: levels at 1/8 of the width (and coarser while they keep ~256 pixels or
