@@ -68,8 +68,7 @@ bool edgeRaysPay() {
 uint cornerEdgeRays(uvec2 pixel) {
     if (mediaInScene()) return 0u;
     float dimmest = kInfinity, brightest = 0.0;
-    int firstMaterial = -2;
-    bool oneMaterial = true;
+    int lowestMaterial = 2147483647, highestMaterial = -1; // -1: a corner that meets nothing
     for (int corner = 0; corner < 4; ++corner) {
         vec2 filmPos = vec2(pixel) + vec2(corner & 1, corner >> 1);
         vec3 emitted;
@@ -78,11 +77,11 @@ uint cornerEdgeRays(uvec2 pixel) {
         float seen = luminance(emitted);
         dimmest = min(dimmest, seen);
         brightest = max(brightest, seen);
-        if (corner == 0) firstMaterial = material;
-        oneMaterial = oneMaterial && material == firstMaterial;
+        lowestMaterial = min(lowestMaterial, material);
+        highestMaterial = max(highestMaterial, material);
     }
     if (!(brightest > 2.0 * dimmest)) return 0u;
-    return oneMaterial && firstMaterial >= 0 ? kTextureEdgeRays : kOutlineEdgeRays;
+    return lowestMaterial == highestMaterial && lowestMaterial >= 0 ? kTextureEdgeRays : kOutlineEdgeRays;
 }
 
 // Whether the pass's samples take edge rays. A pixel's first samples are those of frame 0 (with

@@ -984,43 +984,55 @@ TEST(EmissionEdges, PixelsAcrossTheEdgeAverageTheLampOverTheShareTheyCover) {
     }
 }
 
-// With independent random numbers one camera ray gives a sample of an edge pixel the variance
-// L^2 c (1 - c) (c the share covered); the camera ray and its edge rays together, weighted alike,
-// 1 / (1 + edge rays) of it. The variance the renderer reports must show it, and agree with the
-// spread between renders, from the second pass on too (the decision is kept with the pixel's
-// sums, and these renders take one sample a pass).
-void expectEdgeRaysCutTheVariance(const LampInView& view, int edgeRays) {
-    RenderConfig config{Integrator::Full, SamplerMode::Random, 0};
+// Six renders (seeds 46 to 51) of 256 samples of the view, over its edge pixels: the variance of
+// one camera ray's estimate of the mean, L^2 c (1 - c) / samples (c the share covered), the
+// variance the renderer reports, and the spread between the renders, each summed over the pixels.
+struct EdgeSpread {
+    double oneCameraRay = 0.0, reported = 0.0, spread = 0.0;
+    int pixels = 0;
+};
+
+EdgeSpread edgePixelSpread(const LampInView& view, SamplerMode sampler) {
+    RenderConfig config{Integrator::Full, sampler, 0};
     const int samples = 256, renders = 6;
     std::vector<PixelStatistics> runs;
     for (int k = 0; k < renders; ++k) runs.push_back(render(view.scene, config, samples, 46 + k));
-    double reported = 0.0, oneCameraRay = 0.0, spread = 0.0;
-    int edgePixels = 0;
+    EdgeSpread edges;
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 24; ++x) {
             if (!acrossAnEdge(view, x, y)) continue;
             double share = coveredShare(view, x, y);
-            oneCameraRay += kLampRadiance.r * kLampRadiance.r * share * (1.0 - share) / samples;
+            edges.oneCameraRay += kLampRadiance.r * kLampRadiance.r * share * (1.0 - share) / samples;
             double mean = 0.0;
             for (const PixelStatistics& run : runs) mean += run.mean.at(x, y).r / renders;
             for (const PixelStatistics& run : runs) {
-                reported += run.varianceOfMean.at(x, y).r / renders;
-                spread += (run.mean.at(x, y).r - mean) * (run.mean.at(x, y).r - mean) / (renders - 1);
+                edges.reported += run.varianceOfMean.at(x, y).r / renders;
+                edges.spread += (run.mean.at(x, y).r - mean) * (run.mean.at(x, y).r - mean) / (renders - 1);
             }
-            ++edgePixels;
+            ++edges.pixels;
         }
+    return edges;
+}
+
+// With independent random numbers one camera ray gives a sample of an edge pixel the variance
+// L^2 c (1 - c); the camera ray and its edge rays together, weighted alike, 1 / (1 + edge rays)
+// of it. The variance the renderer reports must show it, and agree with the spread between
+// renders, from the second pass on too (the decision is kept with the pixel's sums, and these
+// renders take one sample a pass).
+void expectEdgeRaysCutTheVariance(const LampInView& view, int edgeRays) {
+    const EdgeSpread edges = edgePixelSpread(view, SamplerMode::Random);
     const double expected = 1.0 / (1.0 + edgeRays);
     std::printf("emission edges, %d edge rays: reported variance / one camera ray's %.4f (expected %.4f), spread "
                 "between renders / reported %.3f (%d pixels)\n",
-                edgeRays, reported / oneCameraRay, expected, spread / reported, edgePixels);
+                edgeRays, edges.reported / edges.oneCameraRay, expected, edges.spread / edges.reported, edges.pixels);
     // The reported variance is an estimate from 52 x 6 x 256 samples: within 30% of the theory.
     // The neighbouring counts (4 against 16 edge rays, 0 without edge rays) and 1 / (1 + edge
     // rays)^2 (their variance left out of the sums of squares) lie outside it.
-    EXPECT_GT(reported / oneCameraRay, 0.7 * expected);
-    EXPECT_LT(reported / oneCameraRay, 1.3 * expected);
+    EXPECT_GT(edges.reported / edges.oneCameraRay, 0.7 * expected);
+    EXPECT_LT(edges.reported / edges.oneCameraRay, 1.3 * expected);
     // The spread has 52 x 5 degrees of freedom: a relative standard deviation of 0.09.
-    EXPECT_GT(spread / reported, 0.7);
-    EXPECT_LT(spread / reported, 1.3);
+    EXPECT_GT(edges.spread / edges.reported, 0.7);
+    EXPECT_LT(edges.spread / edges.reported, 1.3);
 }
 
 // With the sobol sampler a pixel's edge rays are a prefix of one scrambled Sobol' sequence, so
@@ -1032,24 +1044,11 @@ void expectEdgeRaysCutTheVariance(const LampInView& view, int edgeRays) {
 TEST(EmissionEdges, SobolEdgeRaysStayStratifiedInEveryPixel) {
     const std::pair<LampInView, int> views[] = {{squareLampInView(), kOutlineEdgeRays}, {lampOverItsOwnBack(), kTextureEdgeRays}};
     for (const auto& [view, edgeRays] : views) {
-        RenderConfig config{Integrator::Full, SamplerMode::Sobol, 0};
-        const int samples = 256, renders = 6;
-        std::vector<PixelStatistics> runs;
-        for (int k = 0; k < renders; ++k) runs.push_back(render(view.scene, config, samples, 46 + k));
-        double independent = 0.0, spread = 0.0;
-        for (int y = 0; y < 24; ++y)
-            for (int x = 0; x < 24; ++x) {
-                if (!acrossAnEdge(view, x, y)) continue;
-                double share = coveredShare(view, x, y);
-                independent += kLampRadiance.r * kLampRadiance.r * share * (1.0 - share) / samples / (1.0 + edgeRays);
-                double mean = 0.0;
-                for (const PixelStatistics& run : runs) mean += run.mean.at(x, y).r / renders;
-                for (const PixelStatistics& run : runs)
-                    spread += (run.mean.at(x, y).r - mean) * (run.mean.at(x, y).r - mean) / (renders - 1);
-            }
+        const EdgeSpread edges = edgePixelSpread(view, SamplerMode::Sobol);
+        const double independent = edges.oneCameraRay / (1.0 + edgeRays);
         std::printf("emission edges, %d edge rays, sobol: spread between renders / independent edge rays' %.5f\n",
-                    edgeRays, spread / independent);
-        EXPECT_LT(spread / independent, 0.1) << edgeRays << " edge rays";
+                    edgeRays, edges.spread / independent);
+        EXPECT_LT(edges.spread / independent, 0.1) << edgeRays << " edge rays";
     }
 }
 
