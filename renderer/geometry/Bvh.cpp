@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
 
 namespace ptview {
 namespace {
@@ -24,10 +25,25 @@ struct BuildPrimitive {
     std::uint32_t index;
 };
 
+// A bin of the SAH's binning. Not initialized on construction: findSahSplit sets a bin with the
+// first primitive that falls in it and knows which bins it set.
 struct Bin {
-    Aabb bounds;
-    std::uint32_t count = 0;
+    glm::vec3 boundsMin, boundsMax;
+    std::uint32_t count;
+
+    void set(const Aabb& b) {
+        boundsMin = b.min;
+        boundsMax = b.max;
+        count = 1;
+    }
+    void add(const Aabb& b) {
+        boundsMin = glm::min(boundsMin, b.min);
+        boundsMax = glm::max(boundsMax, b.max);
+        ++count;
+    }
+    Aabb bounds() const { return Aabb{boundsMin, boundsMax}; }
 };
+static_assert(std::is_trivially_default_constructible_v<Bin>, "bins are set as used, not on construction");
 
 struct SahSplit {
     int axis = -1;
@@ -179,40 +195,54 @@ private:
                            std::isfinite(binnings[axis].scale);
         }
 
+        // Only the bins a primitive fell in are set (`used`) and swept: on a million triangles
+        // most nodes hold a few, and resetting and sweeping all the bins of all three axes cost
+        // them far more than binning their primitives.
         Bin bins[3][kMaxBinCount];
+        std::uint64_t used[3] = {0, 0, 0};
         for (std::uint32_t i = begin; i < end; ++i) {
             const BuildPrimitive& p = primitives_[i];
             for (int axis = 0; axis < 3; ++axis) {
                 if (!usable[axis]) continue;
-                Bin& bin = bins[axis][binnings[axis].binOf(p.centroid[axis])];
-                bin.bounds.extend(p.bounds);
-                ++bin.count;
+                const int b = binnings[axis].binOf(p.centroid[axis]);
+                const std::uint64_t bit = std::uint64_t(1) << b;
+                if (used[axis] & bit) {
+                    bins[axis][b].add(p.bounds);
+                } else {
+                    bins[axis][b].set(p.bounds);
+                    used[axis] |= bit;
+                }
             }
         }
 
         SahSplit best;
         for (int axis = 0; axis < 3; ++axis) {
             if (!usable[axis]) continue;
-            // rightArea[b], rightCount[b]: everything in bins [b, binCount).
+            int filled[kMaxBinCount]; // the bins in use, in order
+            int filledCount = 0;
+            for (int b = 0; b < binCount_; ++b)
+                if ((used[axis] >> b) & 1u) filled[filledCount++] = b;
+            // A split between bins that are both empty costs what the split after the last
+            // filled bin before them costs, and the first of equal costs wins: so the candidates
+            // are the splits just after each filled bin but the last. rightArea[j], rightCount[j]:
+            // everything in filled bins j and on.
             float rightArea[kMaxBinCount];
             std::uint32_t rightCount[kMaxBinCount];
             Aabb right;
             std::uint32_t rightSum = 0;
-            for (int b = binCount_ - 1; b > 0; --b) {
-                right.extend(bins[axis][b].bounds);
-                rightSum += bins[axis][b].count;
-                rightArea[b] = right.surfaceArea();
-                rightCount[b] = rightSum;
+            for (int j = filledCount - 1; j > 0; --j) {
+                right.extend(bins[axis][filled[j]].bounds());
+                rightSum += bins[axis][filled[j]].count;
+                rightArea[j] = right.surfaceArea();
+                rightCount[j] = rightSum;
             }
             Aabb left;
             std::uint32_t leftSum = 0;
-            for (int b = 1; b < binCount_; ++b) {
-                left.extend(bins[axis][b - 1].bounds);
-                leftSum += bins[axis][b - 1].count;
-                if (leftSum == 0 || rightCount[b] == 0) continue;
-                const float cost =
-                    left.surfaceArea() * float(leftSum) + rightArea[b] * float(rightCount[b]);
-                if (cost < best.cost) best = SahSplit{axis, b, cost, leftSum};
+            for (int j = 1; j < filledCount; ++j) {
+                left.extend(bins[axis][filled[j - 1]].bounds());
+                leftSum += bins[axis][filled[j - 1]].count;
+                const float cost = left.surfaceArea() * float(leftSum) + rightArea[j] * float(rightCount[j]);
+                if (cost < best.cost) best = SahSplit{axis, filled[j - 1] + 1, cost, leftSum};
             }
         }
         return best;
