@@ -684,6 +684,86 @@ TEST(Bvh, SahTreeIsCheaperThanMedianSplitTree) {
     EXPECT_LT(sahCost, medianCost);
 }
 
+// The cheapest split of `primitives` between 16 bins of their centroids on any axis, as the
+// builder documents it, by the plain sweep over every bin boundary: areaLeft * countLeft +
+// areaRight * countRight. Infinity when no axis separates them.
+float cheapestBinnedSplitCost(const std::vector<std::uint32_t>& primitives, const BuildInput& input) {
+    constexpr int kBins = 16;
+    Aabb centroidBounds;
+    for (std::uint32_t p : primitives) centroidBounds.extend(input.centroids[p]);
+    float best = kInf;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float extent = centroidBounds.max[axis] - centroidBounds.min[axis];
+        if (!(extent > 0.0f)) continue;
+        Aabb bins[kBins];
+        int counts[kBins] = {};
+        for (std::uint32_t p : primitives) {
+            const float c = input.centroids[p][axis];
+            const int b = std::min(int((c - centroidBounds.min[axis]) * (float(kBins) / extent)), kBins - 1);
+            bins[b].extend(input.bounds[p]);
+            ++counts[b];
+        }
+        for (int split = 1; split < kBins; ++split) {
+            Aabb left, right;
+            int leftCount = 0, rightCount = 0;
+            for (int b = 0; b < kBins; ++b) {
+                (b < split ? left : right).extend(bins[b]);
+                (b < split ? leftCount : rightCount) += counts[b];
+            }
+            if (leftCount == 0 || rightCount == 0) continue;
+            best = std::min(best, left.surfaceArea() * float(leftCount) + right.surfaceArea() * float(rightCount));
+        }
+    }
+    return best;
+}
+
+// The builder costs only the bins its primitives fill (Bvh.cpp); every inner node must still be
+// cut where the full sweep over all bins finds the least cost.
+TEST(Bvh, EverySplitIsTheCheapestBinnedSplit) {
+    std::mt19937 rng(57);
+    Mesh soup = randomSoup(rng, 3000, 0.02f);
+    const Mesh big = randomSoup(rng, 300, 0.4f);
+    const auto offset = static_cast<std::uint32_t>(soup.positions.size());
+    soup.positions.insert(soup.positions.end(), big.positions.begin(), big.positions.end());
+    for (TriangleIndices t : big.triangles) soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const BuildInput input = buildInputOf(soup);
+    const Bvh bvh = buildBvh(input.bounds, input.centroids);
+
+    // Each node's primitives: a contiguous run of the leaf order.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> range(bvh.nodes.size());
+    std::function<void(std::uint32_t)> findRange = [&](std::uint32_t index) {
+        const BvhNode& node = bvh.nodes[index];
+        if (node.isLeaf()) {
+            range[index] = {node.firstOrRight, node.firstOrRight + node.primitiveCount};
+            return;
+        }
+        findRange(index + 1);
+        findRange(node.firstOrRight);
+        range[index] = {range[index + 1].first, range[node.firstOrRight].second};
+    };
+    findRange(0);
+    int splits = 0, smallSplits = 0;
+    for (std::uint32_t index = 0; index < bvh.nodes.size(); ++index) {
+        const BvhNode& node = bvh.nodes[index];
+        if (node.isLeaf()) continue;
+        const std::vector<std::uint32_t> primitives(bvh.primitiveOrder.begin() + range[index].first,
+                                                    bvh.primitiveOrder.begin() + range[index].second);
+        const BvhNode& left = bvh.nodes[index + 1];
+        const BvhNode& right = bvh.nodes[node.firstOrRight];
+        const auto countOf = [&](std::uint32_t child) { return float(range[child].second - range[child].first); };
+        const float cost = Aabb{left.boundsMin, left.boundsMax}.surfaceArea() * countOf(index + 1) +
+                           Aabb{right.boundsMin, right.boundsMax}.surfaceArea() * countOf(node.firstOrRight);
+        const float cheapest = cheapestBinnedSplitCost(primitives, input);
+        ASSERT_LT(cheapest, kInf) << "node " << index;
+        EXPECT_LE(cost, cheapest * (1.0f + 1e-6f)) << "node " << index << " of " << primitives.size() << " primitives";
+        ++splits;
+        smallSplits += primitives.size() <= 16 ? 1 : 0;
+    }
+    // Nodes of few primitives, whose bins are mostly empty, are where the skipping acts.
+    EXPECT_GT(smallSplits, splits / 4);
+    std::printf("[ splits ] %d inner nodes, %d of them of 16 primitives or fewer\n", splits, smallSplits);
+}
+
 TEST(Bvh, BuildsAMillionTrianglesQuickly) {
     std::mt19937 rng(1);
     const Mesh soup = randomSoup(rng, 1000000, 0.005f);
