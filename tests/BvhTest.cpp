@@ -1,5 +1,6 @@
 // The BVH builder's structural guarantees and those of its four-wide collapse (the GPU relies on them), its queries against brute force,
-// watertightness on closed meshes, and its SAH quality against a median-split tree.
+// watertightness on closed meshes, its SAH quality against a median-split tree, and that every split is the
+// cheapest between bins.
 #include <ptview/geometry/Bvh.h>
 #include <ptview/geometry/TriangleIntersect.h>
 #include <ptview/geometry/WideBvh.h>
