@@ -85,6 +85,17 @@ Mesh randomSoup(std::mt19937& rng, std::size_t count, float size) {
     return mesh;
 }
 
+// Triangles of two sizes over two orders of magnitude or so, where the SAH has something to
+// exploit: `smallCount` of about `smallSize`, then `largeCount` of about `largeSize`.
+Mesh smallAndLargeSoup(std::mt19937& rng, std::size_t smallCount, float smallSize, std::size_t largeCount, float largeSize) {
+    Mesh soup = randomSoup(rng, smallCount, smallSize);
+    const Mesh large = randomSoup(rng, largeCount, largeSize);
+    const auto offset = static_cast<std::uint32_t>(soup.positions.size());
+    soup.positions.insert(soup.positions.end(), large.positions.begin(), large.positions.end());
+    for (TriangleIndices t : large.triangles) soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    return soup;
+}
+
 // A unit icosphere: an icosahedron whose faces are split in four `subdivisions` times, with
 // every vertex stored once, so neighbouring triangles share their edges' endpoints exactly.
 Mesh icosphere(int subdivisions) {
@@ -664,12 +675,7 @@ void buildMedianTree(std::vector<std::uint32_t>& order, std::uint32_t begin, std
 
 TEST(Bvh, SahTreeIsCheaperThanMedianSplitTree) {
     std::mt19937 rng(2024);
-    // Sizes spread over two orders of magnitude, where the SAH has something to exploit.
-    Mesh soup = randomSoup(rng, 4000, 0.01f);
-    const Mesh big = randomSoup(rng, 400, 0.3f);
-    const auto offset = static_cast<std::uint32_t>(soup.positions.size());
-    soup.positions.insert(soup.positions.end(), big.positions.begin(), big.positions.end());
-    for (TriangleIndices t : big.triangles) soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const Mesh soup = smallAndLargeSoup(rng, 4000, 0.01f, 400, 0.3f);
 
     const BuildInput input = buildInputOf(soup);
     const Bvh sah = buildBvh(input.bounds, input.centroids);
@@ -722,11 +728,7 @@ float cheapestBinnedSplitCost(const std::vector<std::uint32_t>& primitives, cons
 // cut where the full sweep over all bins finds the least cost.
 TEST(Bvh, EverySplitIsTheCheapestBinnedSplit) {
     std::mt19937 rng(57);
-    Mesh soup = randomSoup(rng, 3000, 0.02f);
-    const Mesh big = randomSoup(rng, 300, 0.4f);
-    const auto offset = static_cast<std::uint32_t>(soup.positions.size());
-    soup.positions.insert(soup.positions.end(), big.positions.begin(), big.positions.end());
-    for (TriangleIndices t : big.triangles) soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const Mesh soup = smallAndLargeSoup(rng, 3000, 0.02f, 300, 0.4f);
     const BuildInput input = buildInputOf(soup);
     const Bvh bvh = buildBvh(input.bounds, input.centroids);
 
