@@ -691,11 +691,11 @@ TEST(Bvh, SahTreeIsCheaperThanMedianSplitTree) {
     EXPECT_LT(sahCost, medianCost);
 }
 
-// The cheapest split of `primitives` between 16 bins of their centroids on any axis, as the
-// builder documents it, by the plain sweep over every bin boundary: areaLeft * countLeft +
+// The cheapest split of `primitives` between the default build's bins of their centroids on any
+// axis, as the builder documents it, by the plain sweep over every bin boundary: areaLeft * countLeft +
 // areaRight * countRight. Infinity when no axis separates them.
 float cheapestBinnedSplitCost(const std::vector<std::uint32_t>& primitives, const BuildInput& input) {
-    constexpr int kBins = 16;
+    constexpr int kBins = BvhBuildOptions{}.binCount;
     Aabb centroidBounds;
     for (std::uint32_t p : primitives) centroidBounds.extend(input.centroids[p]);
     float best = kInf;
