@@ -19,6 +19,9 @@ usage: bench/adaptive_vs_uniform.py PTVIEW OUTDIR SIZE SCENE... [--thresholds 0.
        [--seeds 2]  (the seeds of the adaptive and uniform renders, comma-separated; the references keep theirs;
                      --seed S is the same as --seeds S)
        [--spp-cap N] (the adaptive renders' --spp cap; default render's own, 4096)
+       [--backend fragment|compute] (of every render, references included; default fragment, as the
+                     tables before 2026-12-06 stop 58 were measured. compute packs the adaptive renders'
+                     passes with the pixels still sampled: docs/sampling.md, "Packed passes")
 """
 import argparse, math, os, re, subprocess, sys
 import numpy as np
@@ -29,8 +32,10 @@ from pfm import read_pfm  # noqa: E402
 def rel_mse(x, ref):
     return float(np.mean((x - ref) ** 2 / (ref ** 2 + 1e-2)))
 
+BACKEND = ['--backend', 'fragment']
+
 def render(ptview, scene, size, out, *args):
-    result = subprocess.run([ptview, 'render', scene, '--size', size, '--out', out, '--backend', 'fragment', *args],
+    result = subprocess.run([ptview, 'render', scene, '--size', size, '--out', out, *BACKEND, *args],
                             capture_output=True, text=True, check=True)
     return result.stderr
 
@@ -53,7 +58,9 @@ def main():
     parser.add_argument('--reference-spp', type=int, default=16384)
     parser.add_argument('--seeds', '--seed', default='2')
     parser.add_argument('--spp-cap', type=int)
+    parser.add_argument('--backend', choices=['fragment', 'compute'], default='fragment')
     options = parser.parse_intermixed_args()
+    BACKEND[1] = options.backend
     thresholds = [float(t) for t in options.thresholds.split(',')]
     reference_spp = options.reference_spp
     render_seeds = [str(int(seed)) for seed in options.seeds.split(',')]

@@ -7,6 +7,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 uniform ivec2 uTileOrigin;
 uniform ivec2 uTileEnd;
 uniform uint uWorkGroupRowStride; // see renderer/tracer/WorkGroupOrder.h
+// Adaptive sampling's pixels still sampled, packed (PixelList.h): invocation i of a pass with
+// uPixelListCount > 0 traces the pixel of the list's entry i, so that the stopped pixels leave
+// no SIMD lane idle and no workgroup light. 0: every pixel of the tile.
+uniform int uPixelListCount;
+uniform int uPixelListWidth;
+layout(r32ui) uniform readonly uimage2D uPixelList;
 
 // The pixel of this invocation in its workgroup's block (a width a multiple of 4, a height of 2):
 // each run of 8 consecutive invocations (a SIMD group on llvmpipe's AVX2) takes a block of 4x2
@@ -23,6 +29,13 @@ ivec2 pixelInWorkGroup(uint invocation) {
 }
 
 void main() {
+    if (uPixelListCount > 0) {
+        int entry = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y) + gl_LocalInvocationIndex);
+        if (entry >= uPixelListCount) return;
+        uint entryPixel = imageLoad(uPixelList, ivec2(entry % uPixelListWidth, entry / uPixelListWidth)).r;
+        traceSamples(uvec2(entryPixel & 0xffffu, entryPixel >> 16));
+        return;
+    }
     // Consecutive workgroups take rows spread over the tile (WorkGroupOrder.h).
     uvec2 workGroup = uvec2(gl_WorkGroupID.x, (gl_WorkGroupID.y * uWorkGroupRowStride) % gl_NumWorkGroups.y);
     ivec2 pixel = uTileOrigin + ivec2(workGroup * gl_WorkGroupSize.xy) + pixelInWorkGroup(gl_LocalInvocationIndex);

@@ -1,6 +1,6 @@
 // `ptview render --noise-threshold E` end to end (docs/sampling.md, "Adaptive sampling"): the
-// summary line, provenance that `render --from` reproduces bit for bit, and bad input refused
-// with exit 2 naming the option.
+// summary line, the backend `auto` picks for it, provenance that `render --from` reproduces bit for
+// bit (on compute, with its packed passes), and bad input refused with exit 2 naming the option.
 #include <ptview/io/ImageIO.h>
 #include <ptview/io/PngText.h>
 #include "RunCommand.h"
@@ -43,6 +43,11 @@ TEST_F(AdaptiveRender, StopsAtTheThresholdSaysWhyAndRendersAgainBitForBitFromIts
         EXPECT_NE(result.output.find("ptview: adaptive: estimated error "), std::string::npos) << result.output;
         EXPECT_NE(result.output.find("spp min/mean/max "), std::string::npos) << result.output;
         EXPECT_NE(result.output.find("stopped: the estimate reached --noise-threshold 0.1"), std::string::npos) << result.output;
+        // `auto` runs compute for adaptive sampling wherever the context has it, unmeasured: only
+        // its passes are packed with the pixels still sampled (chooseBackendForAdaptiveSampling).
+        const bool compute = result.output.find("ptview: backend auto: compute (adaptive sampling: ") != std::string::npos;
+        const bool noCompute = result.output.find("ptview: backend auto: fragment (this context has no compute shaders)") != std::string::npos;
+        EXPECT_TRUE(compute || noCompute) << result.output;
     }
     const ImageMetadata metadata = readPngTextFile(path("first.png"));
     const auto settings = metadata.find("ptview.settings");

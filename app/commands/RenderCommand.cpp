@@ -172,7 +172,8 @@ int runRenderCommand(const RenderOptions& requested) {
         allocating = "the image, size " + std::to_string(size.x) + "x" + std::to_string(size.y);
         tracer.setImageSize(size);
         if (!options.program.backend)
-            std::fprintf(stderr, "ptview: backend auto: %s\n", tracer.chooseBackend().describe().c_str());
+            std::fprintf(stderr, "ptview: backend auto: %s\n",
+                         (options.noiseThreshold ? tracer.chooseBackendForAdaptiveSampling() : tracer.chooseBackend()).describe().c_str());
         else
             tracer.warmUp(); // llvmpipe compiles a program at its first draw: not part of the render's time
 

@@ -177,6 +177,12 @@ PixelReading Accumulator::readPixel(glm::ivec2 glPixel) const {
     return reading;
 }
 
+void Accumulator::copyLatestIntoNext() const {
+    for (int i = 0; i < kTextureCount; ++i)
+        glCopyImageSubData(latest().textures[i].id(), GL_TEXTURE_2D, 0, 0, 0, 0, targets_[writeIndex_].textures[i].id(),
+                           GL_TEXTURE_2D, 0, 0, 0, 0, size_.x, size_.y, 1);
+}
+
 void Accumulator::stopPixels(const std::vector<std::uint8_t>& stopped) {
     const size_t pixels = static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y);
     if (stopped.size() != pixels) throw std::invalid_argument("Accumulator::stopPixels: one flag per pixel expected");

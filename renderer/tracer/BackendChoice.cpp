@@ -16,6 +16,8 @@ namespace ptview {
 
 std::string BackendChoice::describe() const {
     if (computeSpeedup <= 0.0) return std::string(backendName(backend)) + " (this context has no compute shaders)";
+    if (forAdaptiveSampling)
+        return std::string(backendName(backend)) + " (adaptive sampling: its passes trace only the pixels still sampled there)";
     char speed[64];
     std::snprintf(speed, sizeof speed, "%.2fx", computeSpeedup);
     return std::string(backendName(backend)) + ", compute at " + speed + " the fragment backend's speed (" +

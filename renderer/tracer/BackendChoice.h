@@ -26,6 +26,9 @@ struct BackendChoice {
     // shaders (below OpenGL 4.3), so nothing was measured.
     double computeSpeedup = 1.0;
     bool fromCache = false;
+    // Chosen for adaptive sampling, unmeasured: only the compute backend packs its passes with
+    // the pixels still sampled (PathTracer::chooseBackendForAdaptiveSampling).
+    bool forAdaptiveSampling = false;
     // "compute, 1.84x the fragment backend's speed (measured)", for reports and the Render panel.
     std::string describe() const;
 };

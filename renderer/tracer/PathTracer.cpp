@@ -5,6 +5,7 @@
 #include <ptview/gl/FloatTexture.h>
 #include <ptview/gl/FullScreenRows.h>
 #include <ptview/tracer/AdaptiveSampler.h>
+#include <ptview/tracer/PixelList.h>
 #include <ptview/tracer/DisplayViewGlsl.h>
 #include <ptview/tracer/WorkGroupOrder.h>
 #include <ptview/gpu/GlslEnums.h>
@@ -29,6 +30,8 @@ constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // un
 static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
 static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
 // The display program's own: the sums (0, 1), the sum of squares (2) and the other image (3).
+constexpr int kPixelListImageUnit = Accumulator::kTextureCount; // after the accumulation's images
+constexpr int kPixelListWidth = 1024;
 constexpr int kDisplaySumSquaresUnit = 2;
 constexpr int kDisplayOtherImageUnit = 3; // OcioLuts::kFirstUnit follows these
 
@@ -96,6 +99,9 @@ PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) co
         trace.tileOrigin = trace.program->uniformLocation("uTileOrigin");
         trace.tileEnd = trace.program->uniformLocation("uTileEnd");
         trace.workGroupRowStride = trace.program->uniformLocation("uWorkGroupRowStride");
+        trace.pixelListCount = trace.program->uniformLocation("uPixelListCount");
+        trace.pixelListWidth = trace.program->uniformLocation("uPixelListWidth");
+        trace.program->bindSamplerUnit("uPixelList", kPixelListImageUnit); // an image uniform holds its unit the same way
         GLint workGroupSize[3] = {1, 1, 1}; // pathtrace.comp's local_size, so that the shader alone says it
         glGetProgramiv(trace.program->id(), GL_COMPUTE_WORK_GROUP_SIZE, workGroupSize);
         trace.workGroupSize = glm::ivec2(workGroupSize[0], workGroupSize[1]);
@@ -111,6 +117,7 @@ PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) co
 PathTracer::TraceProgram& PathTracer::useTraceProgram() {
     auto found = tracePrograms_.find(programKey_);
     if (found == tracePrograms_.end()) {
+        if (programKey_.backend == Backend::Compute && accumulator_.size().x > 0) bindPixelList();
         found = tracePrograms_.emplace(programKey_, buildTraceProgram(programKey_)).first;
         ++programsCompiled_;
     }
@@ -185,6 +192,18 @@ BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     setBackend(choice->backend);
     restart();
     return *choice;
+}
+
+// On llvmpipe adaptive renders ran 1.3x to 2.1x faster on compute than on fragment, on scenes
+// whose uniform passes run compute at 0.71x to 0.92x fragment's speed (docs/sampling.md,
+// "Packed passes"); on NVIDIA GPUs compute is the faster backend anyway (docs/performance.md).
+BackendChoice PathTracer::chooseBackendForAdaptiveSampling() {
+    const Backend backend = computeSupported() ? Backend::Compute : Backend::Fragment;
+    setBackend(backend);
+    warmUp();
+    BackendChoice choice{backend, computeSupported() ? 1.0 : 0.0, false};
+    choice.forAdaptiveSampling = true;
+    return choice;
 }
 
 // Alternating rounds (fragment first, then compute first, ...) of the same passes at 128x128, a
@@ -290,6 +309,8 @@ void PathTracer::setCamera(const CameraDesc& camera) {
 
 void PathTracer::restart() {
     accumulator_.restart();
+    pixelList_.stopped.clear();
+    pixelList_.count = 0;
     for (Accumulator& level : previews_) level.restart();
     nextRow_ = 0;
     previewLevel_ = 0;
@@ -307,6 +328,8 @@ void PathTracer::setSettings(const RenderSettings& settings) {
 void PathTracer::setImageSize(glm::ivec2 size) {
     if (size == accumulator_.size()) return;
     accumulator_.resize(size);
+    pixelList_.stopped.clear();
+    pixelList_.count = 0;
     nextRow_ = 0;
     resizePreview();
     updateProgramKey();
@@ -589,8 +612,13 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
     int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
     const TraceProgram& trace = useTraceProgram();
     bindScene(*trace.program, size, target.sampleCount(), samplesPerPass);
-    if (backend_ == Backend::Compute) {
+    if (backend_ == Backend::Compute && &target == &accumulator_ && pixelList_.count > 0 && nextRow == 0 && endRow == size.y) {
         target.beginComputePass(kAccumulationUnit, 0);
+        dispatchPixelList(trace);
+    } else if (backend_ == Backend::Compute) {
+        target.beginComputePass(kAccumulationUnit, 0);
+        glUniform1i(trace.pixelListCount, 0);
+        bindPixelList();
         glUniform2i(trace.tileOrigin, 0, nextRow);
         glUniform2i(trace.tileEnd, size.x, endRow);
         const glm::ivec2 workGroups = (glm::ivec2(size.x, endRow - nextRow) + trace.workGroupSize - 1) / trace.workGroupSize;
@@ -610,6 +638,54 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
     target.endPass(samplesPerPass);
     nextRow = 0;
     return true;
+}
+
+void PathTracer::stopPixels(const std::vector<std::uint8_t>& stopped) {
+    accumulator_.stopPixels(stopped);
+    if (accumulator_.sampleCount() == 0) return;
+    if (pixelList_.stopped.size() != stopped.size()) pixelList_.stopped.assign(stopped.size(), 0);
+    for (size_t i = 0; i < stopped.size(); ++i) pixelList_.stopped[i] |= stopped[i];
+    if (backend_ != Backend::Compute) return;
+    // A packed pass writes only the pixels it traces into the target it writes, so the stopped
+    // ones must be there already: both targets hold the latest sums from here on.
+    accumulator_.copyLatestIntoNext();
+    std::vector<std::uint32_t> packed = packedPixelsStillSampled(pixelList_.stopped, accumulator_.size());
+    pixelList_.count = static_cast<int>(packed.size());
+    if (packed.empty()) return;
+    bindPixelList();
+    const int rows = (pixelList_.count + kPixelListWidth - 1) / kPixelListWidth;
+    packed.resize(static_cast<size_t>(rows) * kPixelListWidth, 0u);
+    glBindTexture(GL_TEXTURE_2D, pixelList_.texture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kPixelListWidth, rows, GL_RED_INTEGER, GL_UNSIGNED_INT, packed.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+// Every compute pass binds the list, with storage for every pixel of the image made with the
+// accumulation's: llvmpipe compiles a variant of the program for the images bound as they were
+// made, 1.4 s for the Cornell box's, and a list made anew at a check would pay for it in the
+// middle of a render.
+void PathTracer::bindPixelList() {
+    const glm::ivec2 size = accumulator_.size();
+    int height = 1;
+    while (static_cast<long long>(height) * kPixelListWidth < static_cast<long long>(size.x) * size.y) height *= 2;
+    if (pixelList_.texture.id() == 0 || pixelList_.height != height) {
+        pixelList_.texture = createTexture();
+        pixelList_.height = height;
+        glBindTexture(GL_TEXTURE_2D, pixelList_.texture.id());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, kPixelListWidth, height);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glBindImageTexture(kPixelListImageUnit, pixelList_.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+}
+
+void PathTracer::dispatchPixelList(const TraceProgram& trace) {
+    glUniform1i(trace.pixelListCount, pixelList_.count);
+    glUniform1i(trace.pixelListWidth, kPixelListWidth);
+    bindPixelList();
+    const int perGroup = trace.workGroupSize.x * trace.workGroupSize.y;
+    glDispatchCompute(static_cast<GLuint>((pixelList_.count + perGroup - 1) / perGroup), 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void PathTracer::display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const {

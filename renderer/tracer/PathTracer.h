@@ -72,6 +72,10 @@ public:
     // decided by decideBackend) and then cached. What the device measures, not what its OpenGL
     // version suggests; the same on every run. Sets it and returns how it was chosen.
     BackendChoice chooseBackend(const BackendCache& cache = BackendCache());
+    // `auto` for a render with adaptive sampling: compute wherever the context has it, since only
+    // there do the passes after pixels stop trace just the pixels still sampled (PixelList.h);
+    // uniform passes are no measure of that. Else fragment. Warms the program up.
+    BackendChoice chooseBackendForAdaptiveSampling();
 
     // Each of these restarts accumulation.
     // Reads scene.environmentMap unless the caller already has (environmentMap, to report a bad
@@ -197,7 +201,7 @@ public:
     PixelStatistics readStatistics() const { return accumulator_.readStatistics(); }
     // Adaptive sampling (AdaptiveSampler.h): the flagged pixels (rows top first) take no more
     // samples until the next restart; every read-back and the display then use each pixel's own count.
-    void stopPixels(const std::vector<std::uint8_t>& stopped) { accumulator_.stopPixels(stopped); }
+    void stopPixels(const std::vector<std::uint8_t>& stopped);
 
     // The first surface that the pinhole ray through filmPos (pixels of the image from its
     // bottom-left corner, as the camera counts them; a pixel's centre is its index + 0.5) meets,
@@ -258,6 +262,8 @@ private:
         GLint tileOrigin = -1; // compute only
         GLint tileEnd = -1;
         GLint workGroupRowStride = -1;
+        GLint pixelListCount = -1;
+        GLint pixelListWidth = -1;
         glm::ivec2 workGroupSize{1, 1};
     };
 
@@ -290,6 +296,17 @@ private:
     ProgramKey programKey_;
     const TraceProgram* attached_ = nullptr; // the program the scene's uniforms were last found in
     std::optional<SurfaceProbe> surfaceProbe_; // compiled on the first probeSurface
+    // The compute backend's packed passes (PixelList.h): the pixels adaptive sampling stopped
+    // since the last restart, and the others packed in an R32UI image (count 0: none stopped).
+    struct PixelList {
+        std::vector<std::uint8_t> stopped;
+        GlTexture texture;
+        int count = 0;
+        int height = 0; // of the texture, kPixelListWidth wide
+    };
+    PixelList pixelList_;
+    void dispatchPixelList(const TraceProgram& trace);
+    void bindPixelList();
     int programsCompiled_ = 0;
     Backend backend_ = Backend::Fragment;
     Scene scene_; // shapes and materials: which features the materials call for
