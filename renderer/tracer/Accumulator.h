@@ -53,11 +53,11 @@ public:
     // more samples until the next restart; the others go on. Writes the flag into the latest sum
     // of squares' alpha (accumulate_sum.glsl), rewriting its colour channels bit for bit.
     void stopPixels(const std::vector<std::uint8_t>& stopped);
-    // Whether stopPixels stopped any pixel since the last restart: the display then divides each
-    // pixel by its own count.
     // Copies the latest sums into the target the next pass writes (OpenGL 4.3), so that a pass
     // that writes only some pixels (PixelList.h) leaves the others as they are.
     void copyLatestIntoNext() const;
+    // Whether stopPixels stopped any pixel since the last restart: the display then divides each
+    // pixel by its own count.
     bool hasStoppedPixels() const { return hasStoppedPixels_ && sampleCount_ > 0; }
 
     PixelStatistics readStatistics() const;

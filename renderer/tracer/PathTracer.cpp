@@ -29,9 +29,9 @@ constexpr int kSceneUnit = kAccumulationUnit + Accumulator::kTextureCount; // un
 constexpr int kEnvironmentUnit = kSceneUnit + GpuScene::kTextureCount;     // units 13..15
 static_assert(kSceneUnit + GpuScene::kTextureCount <= kEnvironmentUnit, "texture units overlap");
 static_assert(kEnvironmentUnit + GpuEnvironmentMap::kTextureCount <= 16, "OpenGL 4.1 guarantees 16 units");
+constexpr int kPixelListImageUnit = Accumulator::kTextureCount; // compute: after the accumulation's images
+constexpr int kPixelListWidth = 4096;
 // The display program's own: the sums (0, 1), the sum of squares (2) and the other image (3).
-constexpr int kPixelListImageUnit = Accumulator::kTextureCount; // after the accumulation's images
-constexpr int kPixelListWidth = 1024;
 constexpr int kDisplaySumSquaresUnit = 2;
 constexpr int kDisplayOtherImageUnit = 3; // OcioLuts::kFirstUnit follows these
 
@@ -117,6 +117,7 @@ PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) co
 PathTracer::TraceProgram& PathTracer::useTraceProgram() {
     auto found = tracePrograms_.find(programKey_);
     if (found == tracePrograms_.end()) {
+        // The images a compute program is made with are those llvmpipe compiles it for (bindPixelList).
         if (programKey_.backend == Backend::Compute && accumulator_.size().x > 0) bindPixelList();
         found = tracePrograms_.emplace(programKey_, buildTraceProgram(programKey_)).first;
         ++programsCompiled_;
@@ -194,8 +195,8 @@ BackendChoice PathTracer::chooseBackend(const BackendCache& cache) {
     return *choice;
 }
 
-// On llvmpipe adaptive renders ran 1.3x to 2.1x faster on compute than on fragment, on scenes
-// whose uniform passes run compute at 0.71x to 0.92x fragment's speed (docs/sampling.md,
+// On llvmpipe at 256x256 packed adaptive renders took 0.60x to 0.97x the fragment backend's time,
+// on scenes whose uniform passes run compute at 0.71x to 0.92x fragment's speed (docs/sampling.md,
 // "Packed passes"); on NVIDIA GPUs compute is the faster backend anyway (docs/performance.md).
 BackendChoice PathTracer::chooseBackendForAdaptiveSampling() {
     const Backend backend = computeSupported() ? Backend::Compute : Backend::Fragment;
@@ -612,18 +613,24 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
     int endRow = std::min(size.y, nextRow + std::max(1, rowCount));
     const TraceProgram& trace = useTraceProgram();
     bindScene(*trace.program, size, target.sampleCount(), samplesPerPass);
-    if (backend_ == Backend::Compute && &target == &accumulator_ && pixelList_.count > 0 && nextRow == 0 && endRow == size.y) {
+    if (backend_ == Backend::Compute) {
         target.beginComputePass(kAccumulationUnit, 0);
-        dispatchPixelList(trace);
-    } else if (backend_ == Backend::Compute) {
-        target.beginComputePass(kAccumulationUnit, 0);
-        glUniform1i(trace.pixelListCount, 0);
         bindPixelList();
-        glUniform2i(trace.tileOrigin, 0, nextRow);
-        glUniform2i(trace.tileEnd, size.x, endRow);
-        const glm::ivec2 workGroups = (glm::ivec2(size.x, endRow - nextRow) + trace.workGroupSize - 1) / trace.workGroupSize;
-        glUniform1ui(trace.workGroupRowStride, static_cast<GLuint>(workGroupRowStride(workGroups.y)));
-        glDispatchCompute(static_cast<GLuint>(workGroups.x), static_cast<GLuint>(workGroups.y), 1);
+        // Adaptive sampling's whole passes trace the pixels still sampled, packed; rows and the
+        // preview levels every pixel of the rows.
+        const bool packed = &target == &accumulator_ && pixelList_.count > 0 && nextRow == 0 && endRow == size.y;
+        glUniform1i(trace.pixelListCount, packed ? pixelList_.count : 0);
+        glUniform1i(trace.pixelListWidth, kPixelListWidth);
+        if (packed) {
+            const int perGroup = trace.workGroupSize.x * trace.workGroupSize.y;
+            glDispatchCompute(static_cast<GLuint>((pixelList_.count + perGroup - 1) / perGroup), 1, 1);
+        } else {
+            glUniform2i(trace.tileOrigin, 0, nextRow);
+            glUniform2i(trace.tileEnd, size.x, endRow);
+            const glm::ivec2 workGroups = (glm::ivec2(size.x, endRow - nextRow) + trace.workGroupSize - 1) / trace.workGroupSize;
+            glUniform1ui(trace.workGroupRowStride, static_cast<GLuint>(workGroupRowStride(workGroups.y)));
+            glDispatchCompute(static_cast<GLuint>(workGroups.x), static_cast<GLuint>(workGroups.y), 1);
+        }
         // Later passes read these texels as textures, the display and read-backs as attachments.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     } else {
@@ -650,9 +657,11 @@ void PathTracer::stopPixels(const std::vector<std::uint8_t>& stopped) {
     // ones must be there already: both targets hold the latest sums from here on.
     accumulator_.copyLatestIntoNext();
     std::vector<std::uint32_t> packed = packedPixelsStillSampled(pixelList_.stopped, accumulator_.size());
-    pixelList_.count = static_cast<int>(packed.size());
-    if (packed.empty()) return;
     bindPixelList();
+    // A list longer than the image the GPU can hold (beyond 67M pixels) is not packed.
+    const bool fits = packed.size() <= static_cast<size_t>(kPixelListWidth) * static_cast<size_t>(pixelList_.height);
+    pixelList_.count = fits ? static_cast<int>(packed.size()) : 0;
+    if (pixelList_.count == 0) return;
     const int rows = (pixelList_.count + kPixelListWidth - 1) / kPixelListWidth;
     packed.resize(static_cast<size_t>(rows) * kPixelListWidth, 0u);
     glBindTexture(GL_TEXTURE_2D, pixelList_.texture.id());
@@ -661,14 +670,17 @@ void PathTracer::stopPixels(const std::vector<std::uint8_t>& stopped) {
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-// Every compute pass binds the list, with storage for every pixel of the image made with the
-// accumulation's: llvmpipe compiles a variant of the program for the images bound as they were
-// made, 1.4 s for the Cornell box's, and a list made anew at a check would pay for it in the
-// middle of a render.
+// Every compute pass binds the list, its storage made once for the image's every pixel: llvmpipe
+// compiles a variant of a program for the images bound when it is made and again whenever they
+// change (1.4 s for the Cornell box's), so a list made at a check, or bound only then, would cost
+// a compile in the middle of the render. Sides of powers of two, which llvmpipe's variants tell
+// apart too.
 void PathTracer::bindPixelList() {
     const glm::ivec2 size = accumulator_.size();
+    GLint largest = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
     int height = 1;
-    while (static_cast<long long>(height) * kPixelListWidth < static_cast<long long>(size.x) * size.y) height *= 2;
+    while (height < largest && static_cast<long long>(height) * kPixelListWidth < static_cast<long long>(size.x) * size.y) height *= 2;
     if (pixelList_.texture.id() == 0 || pixelList_.height != height) {
         pixelList_.texture = createTexture();
         pixelList_.height = height;
@@ -677,15 +689,6 @@ void PathTracer::bindPixelList() {
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glBindImageTexture(kPixelListImageUnit, pixelList_.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-}
-
-void PathTracer::dispatchPixelList(const TraceProgram& trace) {
-    glUniform1i(trace.pixelListCount, pixelList_.count);
-    glUniform1i(trace.pixelListWidth, kPixelListWidth);
-    bindPixelList();
-    const int perGroup = trace.workGroupSize.x * trace.workGroupSize.y;
-    glDispatchCompute(static_cast<GLuint>((pixelList_.count + perGroup - 1) / perGroup), 1, 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void PathTracer::display(PixelRect target, const DisplaySettings& settings, PixelRect clip) const {

@@ -302,10 +302,9 @@ private:
         std::vector<std::uint8_t> stopped;
         GlTexture texture;
         int count = 0;
-        int height = 0; // of the texture, kPixelListWidth wide
+        int height = 0; // of the image, kPixelListWidth wide
     };
     PixelList pixelList_;
-    void dispatchPixelList(const TraceProgram& trace);
     void bindPixelList();
     int programsCompiled_ = 0;
     Backend backend_ = Backend::Fragment;
