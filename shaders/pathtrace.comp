@@ -30,7 +30,8 @@ ivec2 pixelInWorkGroup(uint invocation) {
 
 void main() {
     if (uPixelListCount > 0) {
-        int entry = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y) + gl_LocalInvocationIndex);
+        uint workGroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; // rows of them: see PathTracer.cpp
+        int entry = int(workGroup * (gl_WorkGroupSize.x * gl_WorkGroupSize.y) + gl_LocalInvocationIndex);
         if (entry >= uPixelListCount) return;
         uint entryPixel = imageLoad(uPixelList, ivec2(entry % uPixelListWidth, entry / uPixelListWidth)).r;
         traceSamples(uvec2(entryPixel & 0xffffu, entryPixel >> 16));

@@ -622,8 +622,12 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
         glUniform1i(trace.pixelListCount, packed ? pixelList_.count : 0);
         glUniform1i(trace.pixelListWidth, kPixelListWidth);
         if (packed) {
+            // Rows of 1024 workgroups: OpenGL promises 65535 along an axis, 4M pixels in one row.
+            constexpr int kGroupsPerRow = 1024;
             const int perGroup = trace.workGroupSize.x * trace.workGroupSize.y;
-            glDispatchCompute(static_cast<GLuint>((pixelList_.count + perGroup - 1) / perGroup), 1, 1);
+            const int groups = (pixelList_.count + perGroup - 1) / perGroup;
+            const int groupsAcross = std::min(groups, kGroupsPerRow);
+            glDispatchCompute(static_cast<GLuint>(groupsAcross), static_cast<GLuint>((groups + groupsAcross - 1) / groupsAcross), 1);
         } else {
             glUniform2i(trace.tileOrigin, 0, nextRow);
             glUniform2i(trace.tileEnd, size.x, endRow);
