@@ -183,24 +183,28 @@ void Accumulator::copyLatestIntoNext() const {
                            GL_TEXTURE_2D, 0, 0, 0, 0, size_.x, size_.y, 1);
 }
 
-void Accumulator::stopPixels(const std::vector<std::uint8_t>& stopped) {
+std::vector<std::uint8_t> Accumulator::stopPixels(const std::vector<std::uint8_t>& stopped) {
     const size_t pixels = static_cast<size_t>(size_.x) * static_cast<size_t>(size_.y);
     if (stopped.size() != pixels) throw std::invalid_argument("Accumulator::stopPixels: one flag per pixel expected");
-    if (sampleCount_ == 0) return; // the next pass starts afresh, every pixel taking samples
+    if (sampleCount_ == 0) return {}; // the next pass starts afresh, every pixel taking samples
+    std::vector<std::uint8_t> allStopped(pixels, 0);
     std::vector<float> sumSquares;
     readAttachment(2, sumSquares);
     for (int y = 0; y < size_.y; ++y)
         for (int x = 0; x < size_.x; ++x) {
             const size_t row = static_cast<size_t>(size_.y - 1 - y); // GL rows run bottom-up
-            const bool stop = stopped[row * static_cast<size_t>(size_.x) + static_cast<size_t>(x)] != 0;
+            const size_t flag = row * static_cast<size_t>(size_.x) + static_cast<size_t>(x);
+            const bool stop = stopped[flag] != 0;
             float& takesSamples = sumSquares[(static_cast<size_t>(y) * static_cast<size_t>(size_.x) + static_cast<size_t>(x)) * 4 + 3];
             if (stop) takesSamples = 0.0f;
             hasStoppedPixels_ = hasStoppedPixels_ || stop;
+            allStopped[flag] = takesSamples == 0.0f ? 1 : 0;
         }
     glBindTexture(GL_TEXTURE_2D, latest().textures[2].id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, sumSquares.data());
     glBindTexture(GL_TEXTURE_2D, 0);
+    return allStopped;
 }
 
 } // namespace ptview

@@ -51,8 +51,10 @@ public:
 
     // Adaptive sampling: the pixels flagged (rows top first, size().x * size().y of them) take no
     // more samples until the next restart; the others go on. Writes the flag into the latest sum
-    // of squares' alpha (accumulate_sum.glsl), rewriting its colour channels bit for bit.
-    void stopPixels(const std::vector<std::uint8_t>& stopped);
+    // of squares' alpha (accumulate_sum.glsl), rewriting its colour channels bit for bit. Returns
+    // every pixel stopped since the restart, these and earlier ones, flagged the same way (empty
+    // before the first pass, which starts afresh).
+    std::vector<std::uint8_t> stopPixels(const std::vector<std::uint8_t>& stopped);
     // Copies the latest sums into the target the next pass writes (OpenGL 4.3), so that a pass
     // that writes only some pixels (PixelList.h) leaves the others as they are.
     void copyLatestIntoNext() const;

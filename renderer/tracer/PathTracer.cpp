@@ -310,7 +310,6 @@ void PathTracer::setCamera(const CameraDesc& camera) {
 
 void PathTracer::restart() {
     accumulator_.restart();
-    pixelList_.stopped.clear();
     pixelList_.count = 0;
     for (Accumulator& level : previews_) level.restart();
     nextRow_ = 0;
@@ -329,7 +328,6 @@ void PathTracer::setSettings(const RenderSettings& settings) {
 void PathTracer::setImageSize(glm::ivec2 size) {
     if (size == accumulator_.size()) return;
     accumulator_.resize(size);
-    pixelList_.stopped.clear();
     pixelList_.count = 0;
     nextRow_ = 0;
     resizePreview();
@@ -652,15 +650,12 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
 }
 
 void PathTracer::stopPixels(const std::vector<std::uint8_t>& stopped) {
-    accumulator_.stopPixels(stopped);
-    if (accumulator_.sampleCount() == 0) return;
-    if (pixelList_.stopped.size() != stopped.size()) pixelList_.stopped.assign(stopped.size(), 0);
-    for (size_t i = 0; i < stopped.size(); ++i) pixelList_.stopped[i] |= stopped[i];
-    if (backend_ != Backend::Compute) return;
+    const std::vector<std::uint8_t> allStopped = accumulator_.stopPixels(stopped);
+    if (allStopped.empty() || backend_ != Backend::Compute) return;
     // A packed pass writes only the pixels it traces into the target it writes, so the stopped
     // ones must be there already: both targets hold the latest sums from here on.
     accumulator_.copyLatestIntoNext();
-    std::vector<std::uint32_t> packed = packedPixelsStillSampled(pixelList_.stopped, accumulator_.size());
+    std::vector<std::uint32_t> packed = packedPixelsStillSampled(allStopped, accumulator_.size());
     bindPixelList();
     // A list longer than the image the GPU can hold (beyond 67M pixels) is not packed.
     const bool fits = packed.size() <= static_cast<size_t>(kPixelListWidth) * static_cast<size_t>(pixelList_.height);

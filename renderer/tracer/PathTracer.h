@@ -296,10 +296,9 @@ private:
     ProgramKey programKey_;
     const TraceProgram* attached_ = nullptr; // the program the scene's uniforms were last found in
     std::optional<SurfaceProbe> surfaceProbe_; // compiled on the first probeSurface
-    // The compute backend's packed passes (PixelList.h): the pixels adaptive sampling stopped
-    // since the last restart, and the others packed in an R32UI image (count 0: none stopped).
+    // The compute backend's packed passes (PixelList.h): the pixels adaptive sampling still
+    // samples, packed in an R32UI image (count 0: none stopped since the last restart).
     struct PixelList {
-        std::vector<std::uint8_t> stopped;
         GlTexture texture;
         int count = 0;
         int height = 0; // of the image, kPixelListWidth wide
