@@ -671,7 +671,7 @@ void PathTracer::stopPixels(const std::vector<std::uint8_t>& stopped) {
 
 // Every compute pass binds the list, its storage made once for the image's every pixel: llvmpipe
 // compiles a variant of a program for the images bound when it is made and again whenever they
-// change (1.4 s for the Cornell box's), so a list made at a check, or bound only then, would cost
+// change (0.9 s to 1.4 s for the Cornell box's), so a list made at a check, or bound only then, would cost
 // a compile in the middle of the render. Sides of powers of two, which llvmpipe's variants tell
 // apart too.
 void PathTracer::bindPixelList() {
