@@ -100,8 +100,9 @@ PathTracer::TraceProgram PathTracer::buildTraceProgram(const ProgramKey& key) co
         trace.tileEnd = trace.program->uniformLocation("uTileEnd");
         trace.workGroupRowStride = trace.program->uniformLocation("uWorkGroupRowStride");
         trace.pixelListCount = trace.program->uniformLocation("uPixelListCount");
-        trace.pixelListWidth = trace.program->uniformLocation("uPixelListWidth");
         trace.program->bindSamplerUnit("uPixelList", kPixelListImageUnit); // an image uniform holds its unit the same way
+        glUseProgram(trace.program->id());
+        glUniform1i(trace.program->uniformLocation("uPixelListWidth"), kPixelListWidth); // constant: set once
         GLint workGroupSize[3] = {1, 1, 1}; // pathtrace.comp's local_size, so that the shader alone says it
         glGetProgramiv(trace.program->id(), GL_COMPUTE_WORK_GROUP_SIZE, workGroupSize);
         trace.workGroupSize = glm::ivec2(workGroupSize[0], workGroupSize[1]);
@@ -618,7 +619,6 @@ bool PathTracer::renderRowsInto(Accumulator& target, int& nextRow, int rowCount,
         // preview levels every pixel of the rows.
         const bool packed = &target == &accumulator_ && pixelList_.count > 0 && nextRow == 0 && endRow == size.y;
         glUniform1i(trace.pixelListCount, packed ? pixelList_.count : 0);
-        glUniform1i(trace.pixelListWidth, kPixelListWidth);
         if (packed) {
             // Rows of 1024 workgroups: OpenGL promises 65535 along an axis, 4M pixels in one row.
             constexpr int kGroupsPerRow = 1024;
@@ -676,16 +676,19 @@ void PathTracer::stopPixels(const std::vector<std::uint8_t>& stopped) {
 // apart too.
 void PathTracer::bindPixelList() {
     const glm::ivec2 size = accumulator_.size();
-    GLint largest = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
-    int height = 1;
-    while (height < largest && static_cast<long long>(height) * kPixelListWidth < static_cast<long long>(size.x) * size.y) height *= 2;
-    if (pixelList_.texture.id() == 0 || pixelList_.height != height) {
-        pixelList_.texture = createTexture();
-        pixelList_.height = height;
-        glBindTexture(GL_TEXTURE_2D, pixelList_.texture.id());
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, kPixelListWidth, height);
-        glBindTexture(GL_TEXTURE_2D, 0);
+    if (pixelList_.imageSize != size) { // the storage's height, worked out once per image size
+        pixelList_.imageSize = size;
+        GLint largest = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+        int height = 1;
+        while (height < largest && static_cast<long long>(height) * kPixelListWidth < static_cast<long long>(size.x) * size.y) height *= 2;
+        if (height != pixelList_.height) {
+            pixelList_.texture = createTexture();
+            pixelList_.height = height;
+            glBindTexture(GL_TEXTURE_2D, pixelList_.texture.id());
+            glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32UI, kPixelListWidth, height);
+            glBindTexture(GL_TEXTURE_2D, 0);
+        }
     }
     glBindImageTexture(kPixelListImageUnit, pixelList_.texture.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
 }

@@ -263,7 +263,6 @@ private:
         GLint tileEnd = -1;
         GLint workGroupRowStride = -1;
         GLint pixelListCount = -1;
-        GLint pixelListWidth = -1;
         glm::ivec2 workGroupSize{1, 1};
     };
 
@@ -301,7 +300,8 @@ private:
     struct PixelList {
         GlTexture texture;
         int count = 0;
-        int height = 0; // of the image, kPixelListWidth wide
+        glm::ivec2 imageSize{0, 0}; // the image its storage was made for
+        int height = 0;             // of the list's image, kPixelListWidth wide
     };
     PixelList pixelList_;
     void bindPixelList();
