@@ -32,10 +32,8 @@ from pfm import read_pfm  # noqa: E402
 def rel_mse(x, ref):
     return float(np.mean((x - ref) ** 2 / (ref ** 2 + 1e-2)))
 
-BACKEND = ['--backend', 'fragment']
-
-def render(ptview, scene, size, out, *args):
-    result = subprocess.run([ptview, 'render', scene, '--size', size, '--out', out, *BACKEND, *args],
+def render(command, scene, size, out, *args):  # command: ptview render and its backend
+    result = subprocess.run([*command, scene, '--size', size, '--out', out, *args],
                             capture_output=True, text=True, check=True)
     return result.stderr
 
@@ -60,12 +58,12 @@ def main():
     parser.add_argument('--spp-cap', type=int)
     parser.add_argument('--backend', choices=['fragment', 'compute'], default='fragment')
     options = parser.parse_intermixed_args()
-    BACKEND[1] = options.backend
     thresholds = [float(t) for t in options.thresholds.split(',')]
     reference_spp = options.reference_spp
     render_seeds = [str(int(seed)) for seed in options.seeds.split(',')]
     cap = ['--spp', str(options.spp_cap)] if options.spp_cap else []
-    ptview, outdir, size, scenes = options.ptview, options.outdir, options.size, options.scenes
+    outdir, size, scenes = options.outdir, options.size, options.scenes
+    ptview = [options.ptview, 'render', '--backend', options.backend]
     os.makedirs(outdir, exist_ok=True)
     print('| scene | E | adaptive: s, mean spp, true error | uniform to that error: s, spp | speed-up (time, samples) |')
     print('|---|---:|---|---|---:|', flush=True)
