@@ -16,6 +16,7 @@
 // command's, a value out of its documented range or not finite, an accessor that refuses a word
 // the parser accepted, a path that is not what the operating system will open) is a finding.
 
+#include <ptview/settings/DenoiseAlgorithm.h>
 #include <ptview/settings/Integrator.h>
 #include <ptview/settings/LightPaths.h>
 #include <ptview/scene/MaterialSchema.h>
@@ -93,12 +94,20 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["seed"] = {unsignedInteger()};
         t["exposure"] = {number(-20, 20)};
         t["tone-mapper"] = {choice(namesOf(ptview::toneMapperNames()))};
+        t["display-transfer"] = {choice(namesOf(ptview::displayTransferNames()))};
+        t["ocio-config"] = {path({".ocio"}, "none")};
+        t["ocio-display"] = {path()}; // NAME: the rest of the line
+        t["ocio-view"] = {path()};
         t["resolution-scale"] = {number(0.125, 2)};
         t["samples-per-frame"] = {integer(1, 1024, "auto")};
         t["pause"] = {};
         t["resume"] = {};
         t["target-spp"] = {integer(0)};
         t["target-error"] = {Arg{Kind::Number, 0.0, 1.0, true, {}, "off"}}; // the noise threshold's range: (0, 1]
+        t["denoise"] = {choice({"on", "off"})};
+        t["denoise-strength"] = {number(0.25, 64)};
+        t["denoise-iterations"] = {integer(1, 8)};
+        t["denoise-algorithm"] = {choice(namesOf(ptview::denoiseAlgorithmNames()))};
         t["set-material"] = {}; // NAME.FIELD: fields below
         t["set-light"] = {};
         t["environment"] = {path({}, "none")};
@@ -115,6 +124,8 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["camera-reset"] = {};
         t["load-scene"] = {path()};
         t["reload"] = {};
+        t["undo"] = {};
+        t["redo"] = {};
         t["wait-reload"] = {};
         t["save-scene"] = {path({".json"})};
         t["copy-file"] = {token(), token()};
@@ -123,6 +134,8 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["compare-integrator"] = {choice(namesOf(ptview::integratorNames()))};
         t["compare-sampler"] = {choice(namesOf(ptview::samplerModeNames()))};
         t["compare-depth"] = {integer(0, 1024)};
+        t["compare-sides"] = {choice({"renders", "raw-denoised", "image-view"})};
+        t["compare-denoise"] = {choice({"on", "off"})};
         t["divider"] = {number(0, 1)};
         t["view"] = {choice(namesOf(ptview::displayViewNames()))};
         t["error-range"] = {number(0, 100, true), number(0, 100, true)};
@@ -141,7 +154,10 @@ const std::map<std::string, std::vector<Arg>>& commands() {
         t["trace-paths"] = {};
         t["save-paths"] = {path({".json"})};
         t["reference"] = {path({".pfm", ".exr"}, "none")};
-        t["open-panel"] = {choice({"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "help", "all"})};
+        t["open-panel"] = {choice({"render", "stats", "scene", "environment", "materials", "lights", "camera", "pixel", "interface", "help", "all"})};
+        t["ui-scale"] = {number()}; // any finite number: the viewer clamps it to [0.5, 3] and says so
+        t["high-contrast"] = {choice({"on", "off"})};
+        t["pop-out"] = {choice({"paths-table", "light-paths", "compare"}), choice({"on", "off"})};
         t["pin-pixel"] = {integer(0), integer(0)};
         t["unpin-pixel"] = {};
         t["save-pixel"] = {path({".json"})};
