@@ -176,6 +176,18 @@ TEST_F(CommandLineTest, NumbersAreDecimalAndFinite) {
     EXPECT_NE(ten.output.find("10 spp"), std::string::npos) << ten.output;
 }
 
+// The clamp's documented lower bound, 1e-6, is no float: "--clamp 1e-06" was refused as "must be in
+// [1e-06, 1000000000], got 1e-06". The bound stands for the float nearest it, here and when the
+// image's settings are read back.
+TEST_F(CommandLineTest, ABoundNoFloatHoldsCanBeTypedAndReadBack) {
+    const std::string render = "render " + shellQuoted(kCornell) + " --out " + shellQuoted(path("out.png")) + " ";
+    expectRefused(render + "--clamp 9.9e-07", "--clamp: the radiance clamp must be in [1e-06, 1000000000], got 9.9e-07");
+    testing::CommandResult atBound = runCommand(kBinary + " " + render + "--size 4x4 --spp 1 --clamp 1e-06");
+    ASSERT_EQ(atBound.exitCode, 0) << atBound.output;
+    testing::CommandResult info = runCommand(kBinary + " info " + shellQuoted(path("out.png")));
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+}
+
 // "--configs mis/sobol/1," was accepted (a trailing empty item dropped), and "mis/sobol/1/2" read
 // as depth 1.
 TEST_F(CommandLineTest, ConvergeConfigsRefuseEmptyItemsAndExtraParts) {

@@ -252,6 +252,13 @@ TEST(ViewerScript, NumbersParseStrictly) {
     EXPECT_EQ(parse("environment-rotation 1e-60").commands[0].number(0), 0.0f);
 }
 
+// A documented bound no float holds (the clamp's 1e-6) stands for the float nearest it, so the
+// bound itself can be typed; the next float below is still out of range.
+TEST(ViewerScript, ABoundNoFloatHoldsCanBeTyped) {
+    EXPECT_EQ(parse("clamp 1e-06").commands[0].number(0), 1e-6f);
+    EXPECT_EQ(errorOf("clamp 9.9e-07"), "s.txt:1: clamp: VALUE must be in [1e-06, 1000000000], got 9.9e-07");
+}
+
 TEST(ViewerScript, NonFiniteNumbersAreRejected) {
     EXPECT_EQ(errorOf("exposure nan"), "s.txt:1: exposure: F must be a finite number, got \"nan\"");
     EXPECT_EQ(errorOf("environment-rotation -inf"),

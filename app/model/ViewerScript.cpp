@@ -525,10 +525,11 @@ void checkWord(const LineContext& at, const std::string& prefix, const ArgSpec& 
         if (!std::isfinite(*value)) at.fail(prefix + arg.meta + " must be a finite number, got " + inQuotes(word));
         if (std::abs(*value) > FLT_MAX) at.fail(prefix + arg.meta + " is too large for a float, got " + inQuotes(word));
         // The range holds for the float the viewer gets (number()), not for the double read here:
-        // "camera-zoom 1e-60" is above 0 as a double but 0 as a float.
-        const double asFloat = static_cast<float>(*value);
-        if (asFloat < arg.lo || asFloat > arg.hi || (arg.loOpen && asFloat == arg.lo) || (arg.hiOpen && asFloat == arg.hi))
-            outOfRange();
+        // "camera-zoom 1e-60" is above 0 as a double but 0 as a float. A bound no float holds
+        // (1e-6) stands for the float nearest it, so that the bound itself can be typed.
+        const float asFloat = static_cast<float>(*value);
+        const float lo = static_cast<float>(arg.lo), hi = static_cast<float>(arg.hi);
+        if (asFloat < lo || asFloat > hi || (arg.loOpen && asFloat == lo) || (arg.hiOpen && asFloat == hi)) outOfRange();
         break;
     }
     case ArgType::Choice: {

@@ -28,6 +28,13 @@ struct NumberRange {
         bool belowHi = hiOpen ? value < hi : value <= hi;
         return aboveLo && belowHi;
     }
+    // For a value stored as a float: a bound that no float holds exactly (1e-6) stands for the
+    // float nearest it, which is what a user who types the bound gets.
+    bool containsFloat(float value) const {
+        NumberRange asStored = *this;
+        asStored.lo = static_cast<float>(lo), asStored.hi = static_cast<float>(hi);
+        return asStored.contains(value);
+    }
     bool boundedBelow() const { return std::isfinite(lo); }
     bool boundedAbove() const { return std::isfinite(hi); }
 

@@ -253,11 +253,13 @@ void checkWord(const ptview::ScriptCommand& command, std::size_t i, const Arg& a
     }
     case Kind::Unsigned: command.unsignedInteger(i); break; // every uint32 is valid
     case Kind::Number: {
-        // What the viewer gets is the float, so that is what must be in range.
+        // What the viewer gets is the float, so that is what must be in range; a documented bound
+        // no float holds (1e-6) is the float nearest it.
         const float value = command.number(i);
+        const float lo = static_cast<float>(arg.lo), hi = static_cast<float>(arg.hi);
         require(std::isfinite(value), "finite number");
-        require(value >= arg.lo && value <= arg.hi, "number in its documented range");
-        require(!arg.loOpen || value > arg.lo, "number above its documented open lower bound");
+        require(value >= lo && value <= hi, "number in its documented range");
+        require(!arg.loOpen || value > lo, "number above its documented open lower bound");
         break;
     }
     case Kind::Choice: {
