@@ -49,7 +49,7 @@ CLI::Validator inRange(const NumberRange& range) {
     return CLI::Validator(
         [&range](std::string& text) -> std::string {
             const double value = std::strtod(text.c_str(), nullptr);
-            if (range.integer ? range.contains(value) : range.containsFloat(static_cast<float>(value))) return {};
+            if (range.containsAsStored(value)) return {};
             return "the " + std::string(range.quantity) + " must be " + range.text() + ", got " + text;
         },
         "NUMBER");

@@ -42,7 +42,7 @@ Value numberInRange(const Json& j, const NumberRange& range) {
                           : j.is_number_integer() ? double(j.get<std::int64_t>())
                                                   : j.get<double>();
     if (!integer) value = static_cast<float>(value); // as stored
-    if (!typeFits || !(integer ? range.contains(value) : range.containsFloat(static_cast<float>(value))))
+    if (!typeFits || !range.containsAsStored(value))
         throw RecipeError(std::string("expected ") + range.expected() + " (the " + range.quantity + "), got " + quotedValue(j));
     return static_cast<Value>(value);
 }

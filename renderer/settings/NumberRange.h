@@ -28,12 +28,14 @@ struct NumberRange {
         bool belowHi = hiOpen ? value < hi : value <= hi;
         return aboveLo && belowHi;
     }
-    // For a value stored as a float: a bound that no float holds exactly (1e-6) stands for the
-    // float nearest it, which is what a user who types the bound gets.
-    bool containsFloat(float value) const {
+    // The value as a setting stores it: an integer as it is, any other number as the float it
+    // rounds to, against bounds rounded the same way, so that a bound no float holds (1e-6)
+    // stands for the float nearest it, which is what a user who types the bound gets.
+    bool containsAsStored(double value) const {
+        if (integer) return contains(value);
         NumberRange asStored = *this;
         asStored.lo = static_cast<float>(lo), asStored.hi = static_cast<float>(hi);
-        return asStored.contains(value);
+        return asStored.contains(static_cast<float>(value));
     }
     bool boundedBelow() const { return std::isfinite(lo); }
     bool boundedAbove() const { return std::isfinite(hi); }
